@@ -1,0 +1,246 @@
+//! Critical loads: every change of stability along the load axis, located to
+//! near machine precision.
+
+use serde::Serialize;
+
+use super::AnalysisError;
+use super::locus::locus;
+use super::pencil::AffinePencil;
+use super::stability::{State, classify};
+
+/// Default upper end of the load range searched, `p = 10` (twice the ideal
+/// columns' divergence loads).
+pub const DEFAULT_LOAD_MAX: f64 = 10.0;
+
+/// Samples of the locus that brackets the transitions before they are refined.
+const BRACKET_SAMPLES: usize = 1000;
+
+/// Transitions are located to this relative width of the load bracket.
+const RELATIVE_LOAD_TOLERANCE: f64 = 1e-14;
+
+/// A change of stability at a load.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Transition {
+    /// The load p at which the state changes.
+    pub load: f64,
+    pub from: State,
+    pub to: State,
+}
+
+fn state_at(pencil: &AffinePencil, p: f64) -> Result<State, AnalysisError> {
+    let spectrum = pencil.spectrum(p)?;
+    Ok(classify(&spectrum.eigenvalues, spectrum.scale_per_s).state)
+}
+
+/// Largest real part of the moving eigenvalues at p, with the tolerance there.
+fn max_real_part(pencil: &AffinePencil, p: f64) -> Result<(f64, f64), AnalysisError> {
+    let spectrum = pencil.spectrum(p)?;
+    let s = classify(&spectrum.eigenvalues, spectrum.scale_per_s);
+    Ok((s.dominant.re, s.tolerance_per_s))
+}
+
+fn width_tolerance(a: f64, b: f64) -> f64 {
+    RELATIVE_LOAD_TOLERANCE * a.abs().max(b.abs()).max(f64::MIN_POSITIVE)
+}
+
+/// Every transition in `[a, b]` whose ends have states `sa != sb`, by
+/// bisection on the state. Exact at square-root branch points (eigenvalues
+/// meeting on an axis), where the state flips with no tolerance band.
+fn bisect(
+    pencil: &AffinePencil,
+    (a, sa): (f64, State),
+    (b, sb): (f64, State),
+    out: &mut Vec<Transition>,
+) -> Result<(), AnalysisError> {
+    if b - a <= width_tolerance(a, b) {
+        out.push(Transition {
+            load: 0.5 * (a + b),
+            from: sa,
+            to: sb,
+        });
+        return Ok(());
+    }
+    let m = 0.5 * (a + b);
+    let sm = state_at(pencil, m)?;
+    if sm != sa {
+        bisect(pencil, (a, sa), (m, sm), out)?;
+    }
+    if sm != sb {
+        bisect(pencil, (m, sm), (b, sb), out)?;
+    }
+    Ok(())
+}
+
+/// The root of `f` in `[a, b]` with `f(a) < 0 < f(b)` by Brent's method.
+fn brent(
+    mut f: impl FnMut(f64) -> Result<f64, AnalysisError>,
+    (mut a, mut fa): (f64, f64),
+    (mut b, mut fb): (f64, f64),
+) -> Result<f64, AnalysisError> {
+    let (mut c, mut fc) = (a, fa);
+    let mut d = b - a;
+    let mut e = d;
+    for _ in 0..200 {
+        if fb.signum() == fc.signum() {
+            (c, fc) = (a, fa);
+            d = b - a;
+            e = d;
+        }
+        if fc.abs() < fb.abs() {
+            (a, fa) = (b, fb);
+            (b, fb) = (c, fc);
+            (c, fc) = (a, fa);
+        }
+        let tol = 0.5 * width_tolerance(b, c);
+        let half = 0.5 * (c - b);
+        if half.abs() <= tol || fb == 0.0 {
+            return Ok(b);
+        }
+        if e.abs() >= tol && fa.abs() > fb.abs() {
+            let s = fb / fa;
+            let (mut p, mut q) = if a == c {
+                (2.0 * half * s, 1.0 - s)
+            } else {
+                let (q, r) = (fa / fc, fb / fc);
+                (
+                    s * (2.0 * half * q * (q - r) - (b - a) * (r - 1.0)),
+                    (q - 1.0) * (r - 1.0) * (s - 1.0),
+                )
+            };
+            if p > 0.0 {
+                q = -q;
+            }
+            p = p.abs();
+            if 2.0 * p < (3.0 * half * q - (tol * q).abs()).min((e * q).abs()) {
+                e = d;
+                d = p / q;
+            } else {
+                d = half;
+                e = d;
+            }
+        } else {
+            d = half;
+            e = d;
+        }
+        (a, fa) = (b, fb);
+        b += if d.abs() > tol { d } else { tol.copysign(half) };
+        fb = f(b)?;
+    }
+    Ok(b)
+}
+
+/// Every transition between the bracket's ends: bisection on the state, then
+/// each loss (or gain) of stability polished by [`polish_crossing`].
+fn refine(
+    pencil: &AffinePencil,
+    (a, sa): (f64, State),
+    (b, sb): (f64, State),
+    range: (f64, f64),
+    out: &mut Vec<Transition>,
+) -> Result<(), AnalysisError> {
+    let mut found = Vec::new();
+    bisect(pencil, (a, sa), (b, sb), &mut found)?;
+    for transition in &mut found {
+        if let Some(root) = polish_crossing(pencil, transition, range)? {
+            transition.load = root;
+        }
+    }
+    out.extend(found);
+    Ok(())
+}
+
+/// Bisection on the state finds where the growth rate exceeds the
+/// classification's tolerance. Where an eigenvalue crosses Re = 0
+/// transversally (a damped column), that is off by tolerance / slope; the
+/// root of the smooth, signed `max Re(lambda)` is then found by Brent's method
+/// in the smallest bracket around the bisection's answer where it changes
+/// sign. That bracket may reach beyond the locus samples that bracketed the
+/// flip (for weak damping the offset is large), but not beyond the load
+/// range. An undamped column never has a strictly damped side (its stable
+/// eigenvalues sit on the axis); the bisection's answer is exact there
+/// (square-root branch point) and is kept.
+fn polish_crossing(
+    pencil: &AffinePencil,
+    transition: &Transition,
+    (load_min, load_max): (f64, f64),
+) -> Result<Option<f64>, AnalysisError> {
+    let toward_unstable = match (transition.from, transition.to) {
+        (State::Stable, State::Stable) => return Ok(None),
+        (State::Stable, _) => 1.0,
+        (_, State::Stable) => -1.0,
+        _ => return Ok(None),
+    };
+    let growth = |p| max_real_part(pencil, p).map(|(re, _)| re);
+    let p = transition.load;
+    let unstable_p = (p + toward_unstable * width_tolerance(p, p)).clamp(load_min, load_max);
+    let unstable_growth = growth(unstable_p)?;
+    if unstable_growth <= 0.0 {
+        return Ok(None);
+    }
+    let mut width = 2.0 * width_tolerance(p, p);
+    loop {
+        let stable_p = p - toward_unstable * width;
+        if !(load_min..=load_max).contains(&stable_p) {
+            return Ok(None);
+        }
+        let (stable_growth, tolerance) = max_real_part(pencil, stable_p)?;
+        if stable_growth > 2.0 * tolerance {
+            // Clearly unstable again (near the flip itself the growth equals
+            // the tolerance up to rounding): not a lone crossing.
+            return Ok(None);
+        }
+        // Strictly damped: the sign is the crossing's, not rounding's.
+        if stable_growth < -tolerance {
+            let (lo, hi) = if toward_unstable > 0.0 {
+                ((stable_p, stable_growth), (unstable_p, unstable_growth))
+            } else {
+                ((unstable_p, -unstable_growth), (stable_p, -stable_growth))
+            };
+            let sign = toward_unstable;
+            return brent(|q| growth(q).map(|g| sign * g), lo, hi).map(Some);
+        }
+        width *= 2.0;
+    }
+}
+
+/// Every change of stability for loads in `[load_min, load_max]`, in
+/// increasing load. Brackets come from a tracked, refined root locus
+/// (so changes between its samples are caught where branches cross an axis);
+/// each is confirmed and refined on the robust Schur path.
+///
+/// # Errors
+/// A bad range or a failed eigenvalue computation.
+pub fn critical_loads(
+    pencil: &AffinePencil,
+    load_min: f64,
+    load_max: f64,
+) -> Result<Vec<Transition>, AnalysisError> {
+    let samples = if load_max > load_min {
+        BRACKET_SAMPLES
+    } else {
+        1
+    };
+    let locus = locus(pencil, load_min, load_max, samples)?;
+    let mut transitions = Vec::new();
+    let mut previous: Option<(f64, State)> = None;
+    for (i, &p) in locus.loads.iter().enumerate() {
+        let state = classify(&locus.moving_at(i), pencil.scale_per_s(p)).state;
+        if let Some((p0, s0)) = previous
+            && s0 != state
+        {
+            // Confirm on the Schur path: the tracked roots are bracketing only.
+            let (sa, sb) = (state_at(pencil, p0)?, state_at(pencil, p)?);
+            if sa != sb {
+                refine(
+                    pencil,
+                    (p0, sa),
+                    (p, sb),
+                    (load_min, load_max),
+                    &mut transitions,
+                )?;
+            }
+        }
+        previous = Some((p, state));
+    }
+    Ok(transitions)
+}

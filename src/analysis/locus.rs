@@ -1,0 +1,258 @@
+//! Root loci: eigenvalue branches followed continuously along the load axis,
+//! with samples added where branches meet or cross an axis.
+
+use super::pencil::AffinePencil;
+use super::roots::{aberth, char_poly};
+use super::stability::RELATIVE_TOLERANCE;
+use super::{AnalysisError, C64};
+
+/// Largest number of evenly spaced loads a locus accepts.
+pub const MAX_SAMPLES: usize = 1_000_000;
+
+/// A prediction is good when it misses by less than this fraction of the
+/// eigenvalue's size (plus a floor of this fraction of the frequency scale):
+/// the straight segments of a plot then stay within about 1% of the curve.
+const STEP_TOLERANCE: f64 = 0.02;
+
+/// Steps are never halved below this fraction of the load range.
+const MIN_STEP_FRACTION: f64 = 1e-6;
+
+/// Eigenvalue branches over a range of loads.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Locus {
+    /// Loads, increasing: the evenly spaced ones and those added by refinement.
+    pub loads: Vec<f64>,
+    /// True where `loads[i]` is one of the evenly spaced loads asked for.
+    pub on_grid: Vec<bool>,
+    /// `branches[b][i]` is branch b at `loads[i]`. Each branch is continuous;
+    /// the structural zero roots are the last `structural_zeros` branches.
+    pub branches: Vec<Vec<C64>>,
+    pub structural_zeros: usize,
+}
+
+impl Locus {
+    /// The eigenvalues at sample i, branch by branch (structural zeros included).
+    pub fn at(&self, i: usize) -> impl Iterator<Item = C64> + '_ {
+        self.branches.iter().map(move |branch| branch[i])
+    }
+
+    /// The moving eigenvalues at sample i.
+    #[must_use]
+    pub fn moving_at(&self, i: usize) -> Vec<C64> {
+        let moving = self.branches.len() - self.structural_zeros;
+        self.branches[..moving]
+            .iter()
+            .map(|branch| branch[i])
+            .collect()
+    }
+}
+
+/// The evenly spaced loads from `min` to `max` inclusive.
+///
+/// # Errors
+/// Non-finite or negative bounds, `max < min`, no samples or too many, or
+/// one sample over a range.
+pub fn load_grid(min: f64, max: f64, samples: usize) -> Result<Vec<f64>, AnalysisError> {
+    let bad = |what, value, allowed| {
+        Err(AnalysisError::BadRange {
+            what,
+            value,
+            allowed,
+        })
+    };
+    if !(min.is_finite() && min >= 0.0) {
+        return bad("load-min", min, "must be a finite load >= 0");
+    }
+    if !(max.is_finite() && max >= min) {
+        return bad("load-max", max, "must be finite and >= load-min");
+    }
+    if samples == 0 || samples > MAX_SAMPLES {
+        #[expect(clippy::cast_precision_loss, reason = "a count shown in a message")]
+        return bad("samples", samples as f64, "must be between 1 and 1000000");
+    }
+    if samples == 1 {
+        return if min == max {
+            Ok(vec![min])
+        } else {
+            bad(
+                "samples",
+                1.0,
+                "must be >= 2 unless load-min equals load-max",
+            )
+        };
+    }
+    #[expect(
+        clippy::cast_precision_loss,
+        reason = "sample counts are far below 2^52"
+    )]
+    let step = (max - min) / (samples - 1) as f64;
+    #[expect(
+        clippy::cast_precision_loss,
+        reason = "sample counts are far below 2^52"
+    )]
+    Ok((0..samples)
+        .map(|i| {
+            if i + 1 == samples {
+                max
+            } else {
+                min + step * i as f64
+            }
+        })
+        .collect())
+}
+
+/// Reorders `found` to follow `guess` branch by branch (least total distance;
+/// exhaustive up to 6 eigenvalues, greedy beyond).
+fn assign(found: &[C64], guess: &[C64]) -> Vec<C64> {
+    let n = found.len();
+    if n <= 6 {
+        let mut best: (f64, Vec<usize>) = (f64::INFINITY, (0..n).collect());
+        let mut perm: Vec<usize> = (0..n).collect();
+        permute(&mut perm, 0, &mut |perm| {
+            let cost: f64 = perm
+                .iter()
+                .zip(guess)
+                .map(|(&k, g)| (found[k] - g).norm())
+                .sum();
+            if cost < best.0 {
+                best = (cost, perm.to_vec());
+            }
+        });
+        return best.1.iter().map(|&k| found[k]).collect();
+    }
+    let mut free: Vec<C64> = found.to_vec();
+    guess
+        .iter()
+        .map(|g| {
+            let k = (0..free.len())
+                .min_by(|&a, &b| (free[a] - g).norm().total_cmp(&(free[b] - g).norm()))
+                .unwrap_or(0);
+            free.swap_remove(k)
+        })
+        .collect()
+}
+
+fn permute(perm: &mut [usize], k: usize, visit: &mut impl FnMut(&[usize])) {
+    if k == perm.len() {
+        visit(perm);
+        return;
+    }
+    for i in k..perm.len() {
+        perm.swap(k, i);
+        permute(perm, k + 1, visit);
+        perm.swap(k, i);
+    }
+}
+
+/// The moving eigenvalues at load p, attached branch by branch to `guess`:
+/// Aberth from the guess when the characteristic polynomial is available,
+/// the Schur path and an assignment otherwise.
+pub(crate) fn eigenvalues_near(
+    pencil: &AffinePencil,
+    p: f64,
+    guess: &[C64],
+) -> Result<Vec<C64>, AnalysisError> {
+    if let Some(poly) = char_poly(pencil, p) {
+        let mut roots = guess.to_vec();
+        if aberth(&poly, &mut roots, 60) {
+            return Ok(roots);
+        }
+    }
+    let spectrum = pencil.spectrum(p)?;
+    Ok(assign(&spectrum.eigenvalues, guess))
+}
+
+/// -1, 0 or 1 with a dead band of `tolerance` around zero.
+fn sign_with_tolerance(x: f64, tolerance: f64) -> i8 {
+    if x > tolerance {
+        1
+    } else if x < -tolerance {
+        -1
+    } else {
+        0
+    }
+}
+
+/// The eigenvalue branches of `pencil` over the evenly spaced loads from
+/// `min` to `max`, with samples added by adaptive halving of the step where
+/// the linear prediction of a branch misses (branches meeting, turning) or a
+/// branch's real or imaginary part changes sign (crossing Re = 0, landing on
+/// the real axis).
+///
+/// # Errors
+/// A bad range (see [`load_grid`]) or an eigenvalue computation that fails.
+pub fn locus(
+    pencil: &AffinePencil,
+    min: f64,
+    max: f64,
+    samples: usize,
+) -> Result<Locus, AnalysisError> {
+    let grid = load_grid(min, max, samples)?;
+    let min_step = (max - min) * MIN_STEP_FRACTION;
+    let mut first = pencil.spectrum(grid[0])?.eigenvalues;
+    first.sort_by(|a, b| b.im.total_cmp(&a.im).then(b.re.total_cmp(&a.re)));
+    let structural_zeros = pencil.structural_zeros();
+    let mut out = Locus {
+        loads: Vec::with_capacity(grid.len()),
+        on_grid: Vec::with_capacity(grid.len()),
+        branches: vec![Vec::with_capacity(grid.len()); first.len() + structural_zeros],
+        structural_zeros,
+    };
+    let push = |out: &mut Locus, p: f64, on_grid: bool, eigenvalues: &[C64]| {
+        out.loads.push(p);
+        out.on_grid.push(on_grid);
+        for (branch, &z) in out.branches.iter_mut().zip(eigenvalues) {
+            branch.push(z);
+        }
+        for branch in &mut out.branches[eigenvalues.len()..] {
+            branch.push(C64::new(0.0, 0.0));
+        }
+    };
+    push(&mut out, grid[0], true, &first);
+    let (mut p, mut current) = (grid[0], first);
+    let mut previous: Option<(f64, Vec<C64>)> = None;
+    let mut step = grid.get(1).map_or(0.0, |g| g - grid[0]);
+    for &target in &grid[1..] {
+        while p < target {
+            let (next_p, next) = loop {
+                let trial = step.min(target - p);
+                let next_p = if trial >= target - p {
+                    target
+                } else {
+                    p + trial
+                };
+                let guess: Vec<C64> = match &previous {
+                    Some((p0, z0)) => {
+                        let t = (next_p - p) / (p - p0);
+                        current
+                            .iter()
+                            .zip(z0)
+                            .map(|(&z, &w)| z + (z - w) * t)
+                            .collect()
+                    }
+                    None => current.clone(),
+                };
+                let next = eigenvalues_near(pencil, next_p, &guess)?;
+                let scale = pencil.scale_per_s(next_p);
+                let tolerance = RELATIVE_TOLERANCE * scale;
+                let smooth = next.iter().zip(&guess).all(|(z, g)| {
+                    (z - g).norm() <= STEP_TOLERANCE * (z.norm() + STEP_TOLERANCE * scale)
+                });
+                let crosses = next.iter().zip(&current).any(|(z, w)| {
+                    sign_with_tolerance(z.re, tolerance) != sign_with_tolerance(w.re, tolerance)
+                        || sign_with_tolerance(z.im, tolerance)
+                            != sign_with_tolerance(w.im, tolerance)
+                });
+                if (smooth && !crosses) || trial <= min_step {
+                    step = if smooth { 2.0 * trial } else { trial };
+                    break (next_p, next);
+                }
+                step = trial / 2.0;
+            };
+            push(&mut out, next_p, next_p == target, &next);
+            previous = Some((p, std::mem::replace(&mut current, next)));
+            p = next_p;
+        }
+    }
+    Ok(out)
+}

@@ -1,0 +1,34 @@
+//! Linear stability of the column: eigenvalues of the quadratic pencil,
+//! classification, tracked root loci and critical loads. Pure f64 (no UI, no clock).
+
+mod critical;
+mod locus;
+mod pencil;
+mod roots;
+mod stability;
+
+pub use critical::{DEFAULT_LOAD_MAX, Transition, critical_loads};
+pub use locus::{Locus, locus};
+pub use pencil::{AffinePencil, Spectrum, spectrum};
+pub use roots::{aberth, char_poly};
+pub use stability::{RELATIVE_TOLERANCE, Stability, State, classify};
+
+use crate::model::ModelError;
+
+/// Complex eigenvalue, in 1/s.
+pub type C64 = nalgebra::Complex<f64>;
+
+/// Why an analysis gave no answer.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum AnalysisError {
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    #[error("the eigenvalue iteration did not converge at load p = {load}")]
+    NotConverged { load: f64 },
+    #[error("{what} = {value}: {allowed}")]
+    BadRange {
+        what: &'static str,
+        value: f64,
+        allowed: &'static str,
+    },
+}

@@ -1,0 +1,253 @@
+//! Eigenvalues of the quadratic pencil `lambda^2 M + lambda D + K`, any number
+//! of degrees of freedom, and the pencil as an affine function of the load.
+
+use nalgebra::{DMatrix, linalg::Schur};
+
+use super::{AnalysisError, C64};
+use crate::model::{LinearModel, Model, linearize};
+
+/// The eigenvalues of one pencil.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Spectrum {
+    /// The eigenvalues that move with the parameters.
+    pub eigenvalues: Vec<C64>,
+    /// Exact zero roots from free coordinates (the roller's spin angle appears
+    /// only through its rate: the third column of K is zero). Not in `eigenvalues`.
+    pub structural_zeros: usize,
+    /// The pencil's frequency scale in 1/s, `sqrt(|K|/|M|) + |D|/|M|`
+    /// (Frobenius norms): what tolerances are relative to.
+    pub scale_per_s: f64,
+}
+
+impl Spectrum {
+    /// All `2n` eigenvalues, the structural zeros last.
+    pub fn all(&self) -> impl Iterator<Item = C64> + '_ {
+        self.eigenvalues.iter().copied().chain(std::iter::repeat_n(
+            C64::new(0.0, 0.0),
+            self.structural_zeros,
+        ))
+    }
+}
+
+/// Indices of coordinates that enter only through their rates (zero K column).
+pub(crate) fn cyclic_coordinates(stiffness: &DMatrix<f64>) -> Vec<usize> {
+    (0..stiffness.ncols())
+        .filter(|&j| stiffness.column(j).iter().all(|&v| v == 0.0))
+        .collect()
+}
+
+/// The frequency scale of a pencil in 1/s.
+pub(crate) fn frequency_scale(lin: &LinearModel) -> f64 {
+    let mass = lin.mass.norm();
+    (lin.stiffness.norm() / mass).sqrt() + lin.damping.norm() / mass
+}
+
+/// The first-order companion matrix with the cyclic coordinates' positions
+/// removed: state `(q_i for non-cyclic i, q')`, size `2n - cyclic`.
+fn companion(lin: &LinearModel, cyclic: &[usize]) -> Option<DMatrix<f64>> {
+    let n = lin.mass.nrows();
+    let mass_inv = lin.mass.clone().cholesky()?.inverse();
+    let keep: Vec<usize> = (0..n).filter(|j| !cyclic.contains(j)).collect();
+    let kept = keep.len();
+    let minv_k = -&mass_inv * &lin.stiffness;
+    let minv_d = -&mass_inv * &lin.damping;
+    let mut a = DMatrix::zeros(kept + n, kept + n);
+    for (row, &j) in keep.iter().enumerate() {
+        a[(row, kept + j)] = 1.0;
+    }
+    for i in 0..n {
+        for (col, &j) in keep.iter().enumerate() {
+            a[(kept + i, col)] = minv_k[(i, j)];
+        }
+        for j in 0..n {
+            a[(kept + i, kept + j)] = minv_d[(i, j)];
+        }
+    }
+    Some(a)
+}
+
+/// Diagonal similarity scaling by powers of two (Parlett and Reinsch) so that
+/// rows and columns have comparable norms: a light roller's fast spin row
+/// would otherwise cost the slow eigenvalues their accuracy.
+fn balance(a: &mut DMatrix<f64>) {
+    const RADIX: f64 = 2.0;
+    let n = a.nrows();
+    for _sweep in 0..64 {
+        let mut changed = false;
+        for i in 0..n {
+            let (mut col, mut row) = (0.0, 0.0);
+            for j in (0..n).filter(|&j| j != i) {
+                col += a[(j, i)].abs();
+                row += a[(i, j)].abs();
+            }
+            if col == 0.0 || row == 0.0 {
+                continue;
+            }
+            let sum = col + row;
+            let mut f = 1.0;
+            while col < row / RADIX {
+                f *= RADIX;
+                col *= RADIX * RADIX;
+            }
+            while col > row * RADIX {
+                f /= RADIX;
+                col /= RADIX * RADIX;
+            }
+            if (col + row) / f < 0.95 * sum {
+                changed = true;
+                for j in 0..n {
+                    a[(i, j)] /= f;
+                    a[(j, i)] *= f;
+                }
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+}
+
+/// All eigenvalues of the pencil by a balanced real Schur decomposition of its
+/// companion matrix: the general, robust path (any n).
+///
+/// # Errors
+/// Non-finite entries, a mass matrix that is not positive definite, or a
+/// Schur iteration that does not converge.
+pub fn spectrum(lin: &LinearModel, load: f64) -> Result<Spectrum, AnalysisError> {
+    let finite = [&lin.mass, &lin.damping, &lin.stiffness]
+        .iter()
+        .all(|m| m.iter().all(|v| v.is_finite()));
+    let not_converged = AnalysisError::NotConverged { load };
+    if !finite {
+        return Err(not_converged);
+    }
+    let cyclic = cyclic_coordinates(&lin.stiffness);
+    let mut a = companion(lin, &cyclic).ok_or(not_converged.clone())?;
+    balance(&mut a);
+    let schur = Schur::try_new(a, f64::EPSILON, 100_000).ok_or(not_converged.clone())?;
+    let eigenvalues: Vec<C64> = schur.complex_eigenvalues().iter().copied().collect();
+    if eigenvalues
+        .iter()
+        .any(|z| !(z.re.is_finite() && z.im.is_finite()))
+    {
+        return Err(not_converged);
+    }
+    Ok(Spectrum {
+        eigenvalues,
+        structural_zeros: cyclic.len() + lin.extra_zero_roots,
+        scale_per_s: frequency_scale(lin),
+    })
+}
+
+/// The linearization as an affine function of the load p: M is fixed and
+/// `D = D0 + p D1`, `K = K0 + p K1` (every load here is proportional to p).
+#[derive(Clone, Debug, PartialEq)]
+pub struct AffinePencil {
+    at_zero: LinearModel,
+    per_unit_load: LinearModel,
+    /// Coordinates that are cyclic at every load (zero K column).
+    cyclic: usize,
+}
+
+impl AffinePencil {
+    /// Linearizes `model` at p = 0 and p = 1.
+    ///
+    /// # Errors
+    /// Whatever [`linearize`] rejects.
+    pub fn new(model: &Model) -> Result<Self, AnalysisError> {
+        let at_zero = linearize(&model.at_load(0.0))?;
+        let at_one = linearize(&model.at_load(1.0))?;
+        let per_unit_load = LinearModel {
+            mass: DMatrix::zeros(at_zero.mass.nrows(), at_zero.mass.ncols()),
+            damping: &at_one.damping - &at_zero.damping,
+            stiffness: &at_one.stiffness - &at_zero.stiffness,
+            extra_zero_roots: 0,
+        };
+        let always_cyclic = cyclic_coordinates(&at_zero.stiffness)
+            .into_iter()
+            .filter(|j| cyclic_coordinates(&per_unit_load.stiffness).contains(j))
+            .count();
+        Ok(Self {
+            at_zero,
+            per_unit_load,
+            cyclic: always_cyclic,
+        })
+    }
+
+    /// Degrees of freedom of the pencil.
+    #[must_use]
+    pub fn dof(&self) -> usize {
+        self.at_zero.mass.nrows()
+    }
+
+    /// The pencil at load p.
+    #[must_use]
+    pub fn at(&self, p: f64) -> LinearModel {
+        LinearModel {
+            mass: self.at_zero.mass.clone(),
+            damping: &self.at_zero.damping + p * &self.per_unit_load.damping,
+            stiffness: &self.at_zero.stiffness + p * &self.per_unit_load.stiffness,
+            extra_zero_roots: self.at_zero.extra_zero_roots,
+        }
+    }
+
+    /// Entry `(i, j)` of `lambda^2 M + lambda D + K` at load p, as the
+    /// coefficients `[K, D, M]` of a quadratic in lambda. Allocation-free.
+    #[must_use]
+    pub fn entry(&self, p: f64, i: usize, j: usize) -> [f64; 3] {
+        let (z, u) = (&self.at_zero, &self.per_unit_load);
+        [
+            z.stiffness[(i, j)] + p * u.stiffness[(i, j)],
+            z.damping[(i, j)] + p * u.damping[(i, j)],
+            z.mass[(i, j)],
+        ]
+    }
+
+    /// Number of exact zero roots at every load (cyclic coordinates and the
+    /// massless roller's spin angle).
+    #[must_use]
+    pub fn structural_zeros(&self) -> usize {
+        self.cyclic + self.at_zero.extra_zero_roots
+    }
+
+    /// Zero roots that are factors of the pencil's determinant (cyclic coordinates).
+    #[must_use]
+    pub fn cyclic_zeros(&self) -> usize {
+        self.cyclic
+    }
+
+    /// The spectrum at load p by the robust (Schur) path.
+    ///
+    /// # Errors
+    /// See [`spectrum`].
+    pub fn spectrum(&self, p: f64) -> Result<Spectrum, AnalysisError> {
+        let lin = self.at(p);
+        let mut spectrum = spectrum(&lin, p)?;
+        // A coordinate that is cyclic only at this load (the roller at p = 0)
+        // is not structural: report its zero among the moving eigenvalues.
+        let structural = self.structural_zeros();
+        let extra = spectrum.structural_zeros - structural;
+        spectrum
+            .eigenvalues
+            .extend(std::iter::repeat_n(C64::new(0.0, 0.0), extra));
+        spectrum.structural_zeros = structural;
+        Ok(spectrum)
+    }
+
+    /// The frequency scale at load p (see [`Spectrum::scale_per_s`]). Allocation-free.
+    #[must_use]
+    pub fn scale_per_s(&self, p: f64) -> f64 {
+        let n = self.dof();
+        let (mut k, mut d, mut m) = (0.0, 0.0, 0.0);
+        for i in 0..n {
+            for j in 0..n {
+                let [kij, dij, mij] = self.entry(p, i, j);
+                k += kij * kij;
+                d += dij * dij;
+                m += mij * mij;
+            }
+        }
+        let (k, d, m) = (k.sqrt(), d.sqrt(), m.sqrt());
+        (k / m).sqrt() + d / m
+    }
+}

@@ -1,0 +1,260 @@
+//! Parses the command line, runs one subcommand, and turns every error into
+//! one line on stderr with exit status 2.
+
+use std::io::Write;
+use std::process::ExitCode;
+
+use anyhow::Result;
+use clap::{Parser, Subcommand, ValueEnum};
+use serde_json::json;
+
+use zieglerlab::analysis::{AffinePencil, DEFAULT_LOAD_MAX, critical_loads, locus};
+use zieglerlab::model::{KEYS, Model, PRESETS, apply_assignments, parse_assignment, preset};
+
+/// The load axis, as printed in every output.
+const LOAD_AXIS: &str = "p = P l/k";
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "zieglerlab",
+    version,
+    about = "Flutter and divergence of the Ziegler column: ideal follower force versus a roller on a moving band"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+/// The model options shared by the analysis subcommands.
+#[derive(clap::Args, Debug)]
+struct ModelArgs {
+    /// Preset name (see `zieglerlab presets`).
+    #[arg(long)]
+    preset: String,
+    /// Parameter override, `key=value` (repeatable): `load`, the paper's groups
+    /// `a`, `nu`, `rho`, `mu`, `V`, or any SI key that `presets` lists.
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    set: Vec<String>,
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum LocusFormat {
+    Csv,
+    Json,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// List the presets with every parameter, its unit and its range.
+    Presets {
+        #[arg(long)]
+        json: bool,
+    },
+    /// Critical loads: every change of stability along the load axis.
+    Critical {
+        #[command(flatten)]
+        model: ModelArgs,
+        /// Lower end of the load range searched.
+        #[arg(long, default_value_t = 0.0)]
+        load_min: f64,
+        /// Upper end of the load range searched.
+        #[arg(long, default_value_t = DEFAULT_LOAD_MAX)]
+        load_max: f64,
+        #[arg(long)]
+        json: bool,
+    },
+    /// Root locus: every eigenvalue at evenly spaced loads, branches tracked.
+    Locus {
+        #[command(flatten)]
+        model: ModelArgs,
+        #[arg(long)]
+        load_min: f64,
+        #[arg(long)]
+        load_max: f64,
+        #[arg(long)]
+        samples: usize,
+        #[arg(long, value_enum, default_value_t = LocusFormat::Csv)]
+        format: LocusFormat,
+    },
+}
+
+/// Runs the command line; status 0 on success, 2 with one line on any error.
+pub fn run() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(error) => {
+            use clap::error::ErrorKind;
+            if matches!(
+                error.kind(),
+                ErrorKind::DisplayHelp | ErrorKind::DisplayVersion
+            ) {
+                let _ = error.print();
+                return ExitCode::SUCCESS;
+            }
+            let text = error.to_string();
+            let first = text.lines().next().unwrap_or("error: bad arguments");
+            eprintln!("{first} (see zieglerlab --help)");
+            return ExitCode::from(2);
+        }
+    };
+    let Some(command) = cli.command else {
+        // No subcommand: the help, until the app is what runs here.
+        let _ = <Cli as clap::CommandFactory>::command().print_help();
+        return ExitCode::SUCCESS;
+    };
+    match execute(command) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => {
+            let chain: Vec<String> = error.chain().map(ToString::to_string).collect();
+            eprintln!("error: {}", chain.join(": "));
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn execute(command: Command) -> Result<()> {
+    let mut out = std::io::stdout().lock();
+    match command {
+        Command::Presets { json } => presets(&mut out, json),
+        Command::Critical {
+            model,
+            load_min,
+            load_max,
+            json,
+        } => {
+            let (name, model) = build_model(&model)?;
+            let pencil = AffinePencil::new(&model)?;
+            let transitions = critical_loads(&pencil, load_min, load_max)?;
+            if json {
+                let value = json!({
+                    "preset": name,
+                    "load_axis": LOAD_AXIS,
+                    "load_min": load_min,
+                    "load_max": load_max,
+                    "transitions": transitions,
+                });
+                writeln!(out, "{}", serde_json::to_string_pretty(&value)?)?;
+            } else {
+                writeln!(
+                    out,
+                    "{name}: stability changes for {LOAD_AXIS} in [{load_min}, {load_max}]"
+                )?;
+                if transitions.is_empty() {
+                    writeln!(out, "  none")?;
+                }
+                for t in &transitions {
+                    writeln!(
+                        out,
+                        "  p = {:<22} {} -> {}",
+                        t.load,
+                        t.from.name(),
+                        t.to.name()
+                    )?;
+                }
+            }
+            Ok(())
+        }
+        Command::Locus {
+            model,
+            load_min,
+            load_max,
+            samples,
+            format,
+        } => {
+            let (name, model) = build_model(&model)?;
+            let pencil = AffinePencil::new(&model)?;
+            let locus = locus(&pencil, load_min, load_max, samples)?;
+            let locus = &locus;
+            let rows = (0..locus.loads.len())
+                .filter(|&i| locus.on_grid[i])
+                .flat_map(|i| {
+                    locus
+                        .at(i)
+                        .enumerate()
+                        .map(move |(b, z)| (locus.loads[i], b, z))
+                });
+            match format {
+                LocusFormat::Csv => {
+                    writeln!(out, "load,branch,re,im")?;
+                    for (load, branch, z) in rows {
+                        writeln!(out, "{load},{branch},{},{}", z.re, z.im)?;
+                    }
+                }
+                LocusFormat::Json => {
+                    let rows: Vec<_> = rows
+                        .map(|(load, branch, z)| json!({"load": load, "branch": branch, "re": z.re, "im": z.im}))
+                        .collect();
+                    let value = json!({
+                        "preset": name,
+                        "load_axis": LOAD_AXIS,
+                        "structural_zero_branches": locus.structural_zeros,
+                        "rows": rows,
+                    });
+                    writeln!(out, "{}", serde_json::to_string(&value)?)?;
+                }
+            }
+            Ok(())
+        }
+    }
+}
+
+/// The preset with the `--set` overrides applied and validated.
+fn build_model(args: &ModelArgs) -> Result<(String, Model)> {
+    let preset = preset(&args.preset)?;
+    let assignments = args
+        .set
+        .iter()
+        .map(|text| parse_assignment(text))
+        .collect::<Result<Vec<_>, _>>()?;
+    let mut model = preset.model();
+    apply_assignments(&mut model, preset.name, &assignments)?;
+    Ok((preset.name.to_owned(), model))
+}
+
+fn presets(out: &mut impl Write, json: bool) -> Result<()> {
+    if json {
+        let presets: Vec<_> = PRESETS
+            .iter()
+            .map(|preset| {
+                let model = preset.model();
+                let parameters: Vec<_> = KEYS
+                    .iter()
+                    .filter(|key| key.applies_to(&model))
+                    .map(|key| {
+                        json!({
+                            "key": key.key,
+                            "value": key.get(&model),
+                            "unit": key.unit,
+                            "range": key.range,
+                            "group": key.is_group,
+                            "description": key.description,
+                        })
+                    })
+                    .collect();
+                json!({"name": preset.name, "description": preset.description, "parameters": parameters})
+            })
+            .collect();
+        writeln!(out, "{}", serde_json::to_string_pretty(&presets)?)?;
+        return Ok(());
+    }
+    for preset in &PRESETS {
+        let model = preset.model();
+        writeln!(out, "{}\n  {}", preset.name, preset.description)?;
+        for key in KEYS.iter().filter(|key| key.applies_to(&model)) {
+            let unit = if key.unit.is_empty() { "-" } else { key.unit };
+            writeln!(
+                out,
+                "  {:<6} {:>12} {:<10} {:<12} {}",
+                key.key,
+                format!("{:.6}", key.get(&model))
+                    .trim_end_matches('0')
+                    .trim_end_matches('.'),
+                unit,
+                key.range,
+                key.description
+            )?;
+        }
+        writeln!(out)?;
+    }
+    Ok(())
+}

@@ -1,0 +1,153 @@
+//! The full nonlinear equations of motion (physics.md section 3) as a pure
+//! function state -> state derivative, with the roller's Coulomb friction.
+
+use nalgebra::{SVector, Vector2};
+
+use super::params::{Column, Load, Model, Roller};
+
+/// `(phi1, phi2, psi, phi1', phi2', psi')` in rad and rad/s. The spin entries
+/// stay zero for the 2-DOF loads.
+pub type StateVec = SVector<f64, 6>;
+
+/// Below this slip speed |w| the Coulomb law `F = -mu R w/|w|` is replaced by
+/// the viscous law `F = -mu R w/eps` (continuous at |w| = eps). Above it the
+/// friction is exactly Coulomb's. The model is singular at w = 0 (physics.md
+/// section 2): this is the stated regularization, 1e-4 of the paper's band speed.
+pub const SLIP_REGULARIZATION_M_PER_S: f64 = 1e-5;
+
+/// The friction of the band on the roller in one state.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Friction {
+    /// Slip velocity of the contact point K relative to the band, eq. (21).
+    pub slip_m_per_s: Vector2<f64>,
+    /// Force of the band on the roller, eq. (15).
+    pub force_n: Vector2<f64>,
+    /// Angle of the force from the ideal follower direction (-rod 2), eq. (23).
+    pub delta_rad: f64,
+    /// Generalized forces on `(phi1, phi2, psi)` by virtual power, eq. (28)
+    /// with the erratum `Q3 = -(r/l2) Q2`.
+    pub generalized_n_m: [f64; 3],
+    /// True when |w| fell below [`SLIP_REGULARIZATION_M_PER_S`]: stick-slip,
+    /// outside the model's validity.
+    pub regularized: bool,
+}
+
+fn unit(angle_rad: f64) -> Vector2<f64> {
+    Vector2::new(angle_rad.cos(), angle_rad.sin())
+}
+
+fn normal(angle_rad: f64) -> Vector2<f64> {
+    Vector2::new(-angle_rad.sin(), angle_rad.cos())
+}
+
+/// The slip speed `l2 phi2' - r psi'` that makes the transverse friction
+/// vanish: what a massless roller spins up to instantly (`Q3 = 0` forces `Q2 = 0`).
+fn massless_roller_spin_rate(column: &Column, roller: &Roller, x: &StateVec) -> f64 {
+    let (l1, l2) = (column.rod1.length_m, column.rod2.length_m);
+    let slip_along_normal =
+        roller.band_speed_m_per_s * x[1].sin() - l1 * x[3] * (x[1] - x[0]).cos();
+    (l2 * x[4] - slip_along_normal) / roller.radius_m
+}
+
+/// Friction of the band on the roller, eqs (15)-(28). For a massless roller the
+/// spin rate in `x` is ignored and replaced by the slaved one, so the force is
+/// exactly the ideal follower force `P = mu R` while the contact slips forward.
+#[must_use]
+pub fn friction(column: &Column, roller: &Roller, x: &StateVec) -> Friction {
+    let (l1, l2, r) = (column.rod1.length_m, column.rod2.length_m, roller.radius_m);
+    let (phi1, phi2) = (x[0], x[1]);
+    let psi_dot = if roller.mass_kg > 0.0 {
+        x[5]
+    } else {
+        massless_roller_spin_rate(column, roller, x)
+    };
+    let (t1, t2) = (normal(phi1), normal(phi2));
+    let band = Vector2::new(roller.band_speed_m_per_s, 0.0);
+    let slip = l1 * x[3] * t1 + (l2 * x[4] - r * psi_dot) * t2 + band;
+    let speed = slip.norm();
+    let regularized = speed < SLIP_REGULARIZATION_M_PER_S;
+    let force_n = -roller.friction_force_n() * slip / speed.max(SLIP_REGULARIZATION_M_PER_S);
+    let e2 = unit(phi2);
+    let delta_rad = slip.dot(&t2).atan2(slip.dot(&e2));
+    let q1 = force_n.dot(&(l1 * t1));
+    let q2 = force_n.dot(&(l2 * t2));
+    Friction {
+        slip_m_per_s: slip,
+        force_n,
+        delta_rad,
+        generalized_n_m: [q1, q2, -r / l2 * q2],
+        regularized,
+    }
+}
+
+/// Generalized load on `(phi1, phi2, psi)` in state `x`, section 2.
+fn generalized_load(model: &Model, x: &StateVec) -> [f64; 3] {
+    let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
+    match model.load {
+        Load::Follower { force_n } => [-force_n * l1 * (x[1] - x[0]).sin(), 0.0, 0.0],
+        Load::Dead { force_n } => [force_n * l1 * x[0].sin(), force_n * l2 * x[1].sin(), 0.0],
+        Load::Roller(roller) => friction(&model.column, &roller, x).generalized_n_m,
+    }
+}
+
+/// The state derivative of the nonlinear equations of motion (section 3,
+/// eqs 29-30 corrected), with the joint dampers. For a massless roller the
+/// spin follows its slaved rate: `psi''` is that rate's time derivative, so a
+/// state that starts consistent stays so.
+#[must_use]
+pub fn state_derivative(model: &Model, x: &StateVec) -> StateVec {
+    let Column {
+        k1_nm_per_rad: k1,
+        k2_nm_per_rad: k2,
+        c1_nms_per_rad: c1,
+        c2_nms_per_rad: c2,
+        ..
+    } = model.column;
+    let inertia = model.inertia();
+    let (phi1, phi2, phi1_dot, phi2_dot) = (x[0], x[1], x[3], x[4]);
+    let d = phi2 - phi1;
+    let (sin_d, cos_d) = d.sin_cos();
+    let [q1, q2, q3] = generalized_load(model, x);
+    let b = inertia.b_kg_m2;
+    let rhs1 = q1 + b * sin_d * phi2_dot * phi2_dot - (k1 + k2) * phi1 + k2 * phi2
+        - (c1 + c2) * phi1_dot
+        + c2 * phi2_dot;
+    let rhs2 =
+        q2 - b * sin_d * phi1_dot * phi1_dot + k2 * (phi1 - phi2) + c2 * (phi1_dot - phi2_dot);
+    // 2x2 mass matrix [[A, B cos d], [B cos d, C]]; its determinant is at
+    // least A C - B^2 > 0, which `Model::validate` guarantees.
+    let (a, c, b_cos) = (inertia.a_kg_m2, inertia.c_kg_m2, b * cos_d);
+    let det = a * c - b_cos * b_cos;
+    let phi1_ddot = (c * rhs1 - b_cos * rhs2) / det;
+    let phi2_ddot = (a * rhs2 - b_cos * rhs1) / det;
+    let (psi_dot, psi_ddot) = match model.roller() {
+        None => (0.0, 0.0),
+        Some(roller) if roller.mass_kg > 0.0 => (x[5], q3 / inertia.spin_kg_m2),
+        Some(roller) => {
+            let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
+            let rate = massless_roller_spin_rate(&model.column, roller, x);
+            let slip_along_normal_dot = roller.band_speed_m_per_s * phi2.cos() * phi2_dot
+                - l1 * phi1_ddot * cos_d
+                + l1 * phi1_dot * sin_d * (phi2_dot - phi1_dot);
+            (
+                rate,
+                (l2 * phi2_ddot - slip_along_normal_dot) / roller.radius_m,
+            )
+        }
+    };
+    StateVec::from([phi1_dot, phi2_dot, psi_dot, phi1_ddot, phi2_ddot, psi_ddot])
+}
+
+/// Kinetic energy (13) and spring energy (14), in joules.
+#[must_use]
+pub fn energy_j(model: &Model, x: &StateVec) -> (f64, f64) {
+    let inertia = model.inertia();
+    let (phi1, phi2, phi1_dot, phi2_dot, psi_dot) = (x[0], x[1], x[3], x[4], x[5]);
+    let kinetic = 0.5 * inertia.a_kg_m2 * phi1_dot * phi1_dot
+        + inertia.b_kg_m2 * (phi2 - phi1).cos() * phi1_dot * phi2_dot
+        + 0.5 * inertia.c_kg_m2 * phi2_dot * phi2_dot
+        + 0.5 * inertia.spin_kg_m2 * psi_dot * psi_dot;
+    let spring = 0.5 * model.column.k1_nm_per_rad * phi1 * phi1
+        + 0.5 * model.column.k2_nm_per_rad * (phi2 - phi1).powi(2);
+    (kinetic, spring)
+}

@@ -1,0 +1,528 @@
+//! The parameters a user can set by name (`--set key=value`, the UI's fields):
+//! every SI parameter and the paper's dimensionless groups, with units and ranges.
+
+use super::ModelError;
+use super::params::{Load, Model};
+
+/// Which loads a key exists for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scope {
+    All,
+    /// Ideal follower or dead force.
+    Force,
+    Roller,
+}
+
+/// The immediate check on a value, before the whole model is validated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Sign {
+    Positive,
+    NonNegative,
+}
+
+/// One settable parameter.
+#[derive(Clone, Copy, Debug)]
+pub struct KeySpec {
+    pub key: &'static str,
+    pub unit: &'static str,
+    pub description: &'static str,
+    /// The allowed range, as text (bounds may name other parameters).
+    pub range: &'static str,
+    pub scope: Scope,
+    /// True for the paper's dimensionless groups (and the load p).
+    pub is_group: bool,
+    sign: Sign,
+    /// Keys are applied in increasing stage, so that the load is set last and
+    /// a group is computed from the final lengths and masses.
+    stage: u8,
+    get: fn(&Model) -> f64,
+    set: fn(&mut Model, f64),
+}
+
+impl KeySpec {
+    /// Whether the key exists for this model's load.
+    #[must_use]
+    pub fn applies_to(&self, model: &Model) -> bool {
+        match self.scope {
+            Scope::All => true,
+            Scope::Force => model.roller().is_none(),
+            Scope::Roller => model.roller().is_some(),
+        }
+    }
+
+    /// The parameter's current value in `model`.
+    #[must_use]
+    pub fn get(&self, model: &Model) -> f64 {
+        (self.get)(model)
+    }
+}
+
+/// A parsed `key=value`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Assignment {
+    pub key: String,
+    pub value: f64,
+}
+
+/// Parses `key=value` with a decimal number (`nan` and `inf` parse and are
+/// rejected later, with the key named).
+///
+/// # Errors
+/// [`ModelError::Malformed`] when there is no `=` or the value is not a number.
+pub fn parse_assignment(text: &str) -> Result<Assignment, ModelError> {
+    let malformed = |reason: &str| ModelError::Malformed {
+        text: text.to_owned(),
+        reason: reason.to_owned(),
+    };
+    let (key, value) = text.split_once('=').ok_or_else(|| malformed("no '='"))?;
+    let key = key.trim();
+    if key.is_empty() {
+        return Err(malformed("empty key"));
+    }
+    let value = value
+        .trim()
+        .parse::<f64>()
+        .map_err(|_| malformed(&format!("'{}' is not a number", value.trim())))?;
+    Ok(Assignment {
+        key: key.to_owned(),
+        value,
+    })
+}
+
+/// Keys that write the same quantity; setting both is ambiguous.
+const CONFLICTS: [(&str, &str); 6] = [
+    ("m3", "nu"),
+    ("r", "rho"),
+    ("k1", "a"),
+    ("k2", "a"),
+    ("load", "P"),
+    ("load", "R"),
+];
+
+/// Applies the assignments to `model` in the canonical order and validates the result.
+///
+/// # Errors
+/// Unknown or inapplicable key, a key given twice or with a conflicting
+/// partner, a value out of range (named by the key the user typed), or a
+/// resulting model that [`Model::validate`] rejects.
+pub fn apply_assignments(
+    model: &mut Model,
+    preset_name: &str,
+    assignments: &[Assignment],
+) -> Result<(), ModelError> {
+    let mut specs: Vec<&KeySpec> = Vec::with_capacity(assignments.len());
+    for assignment in assignments {
+        let spec = KEYS
+            .iter()
+            .find(|spec| spec.key == assignment.key && spec.applies_to(model))
+            .ok_or_else(|| ModelError::UnknownKey {
+                key: assignment.key.clone(),
+                preset: preset_name.to_owned(),
+                known: KEYS
+                    .iter()
+                    .filter(|spec| spec.applies_to(model))
+                    .map(|spec| spec.key)
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            })?;
+        for earlier in &specs {
+            let clash = earlier.key == spec.key
+                || CONFLICTS.iter().any(|&(a, b)| {
+                    (a, b) == (earlier.key, spec.key) || (b, a) == (earlier.key, spec.key)
+                });
+            if clash {
+                return Err(ModelError::Conflict {
+                    first: earlier.key.to_owned(),
+                    second: spec.key.to_owned(),
+                });
+            }
+        }
+        specs.push(spec);
+    }
+    let mut order: Vec<(&KeySpec, f64)> = specs
+        .into_iter()
+        .zip(assignments.iter().map(|assignment| assignment.value))
+        .collect();
+    order.sort_by_key(|(spec, _)| spec.stage);
+    for (spec, value) in order {
+        check_sign(spec, value)?;
+        (spec.set)(model, value);
+    }
+    model.validate()
+}
+
+fn check_sign(spec: &KeySpec, value: f64) -> Result<(), ModelError> {
+    let allowed = format!("must be a finite number {} {}", spec.range, spec.unit);
+    let ok = value.is_finite()
+        && match spec.sign {
+            Sign::Positive => value > 0.0,
+            Sign::NonNegative => value >= 0.0,
+        };
+    if ok {
+        Ok(())
+    } else {
+        Err(ModelError::invalid(spec.key, value, allowed.trim_end()))
+    }
+}
+
+fn set_length(model: &mut Model, rod: usize, length_m: f64) {
+    // The rod keeps its shape: centre of mass and radius of gyration scale with it.
+    let rod = if rod == 1 {
+        &mut model.column.rod1
+    } else {
+        &mut model.column.rod2
+    };
+    let ratio = length_m / rod.length_m;
+    rod.com_m *= ratio;
+    rod.inertia_kg_m2 *= ratio * ratio;
+    rod.length_m = length_m;
+}
+
+fn set_mass(model: &mut Model, rod: usize, mass_kg: f64) {
+    // The rod keeps its mass distribution (its radius of gyration).
+    let rod = if rod == 1 {
+        &mut model.column.rod1
+    } else {
+        &mut model.column.rod2
+    };
+    rod.inertia_kg_m2 = if rod.mass_kg > 0.0 {
+        rod.inertia_kg_m2 * mass_kg / rod.mass_kg
+    } else {
+        rod.inertia_kg_m2
+    };
+    rod.mass_kg = mass_kg;
+}
+
+fn roller_mut(model: &mut Model) -> Option<&mut super::params::Roller> {
+    match &mut model.load {
+        Load::Roller(roller) => Some(roller),
+        Load::Follower { .. } | Load::Dead { .. } => None,
+    }
+}
+
+fn roller_value(model: &Model, get: fn(&super::params::Roller) -> f64) -> f64 {
+    model.roller().map_or(f64::NAN, get)
+}
+
+/// Every settable key, in the order `zieglerlab presets` lists them.
+pub const KEYS: [KeySpec; 23] = [
+    KeySpec {
+        key: "load",
+        unit: "",
+        description: "load p = P l/k on the common axis (P = mu R for the roller; l = l1, k = k1)",
+        range: ">= 0",
+        scope: Scope::All,
+        is_group: true,
+        sign: Sign::NonNegative,
+        stage: 5,
+        get: Model::load_p,
+        set: Model::set_load_p,
+    },
+    KeySpec {
+        key: "a",
+        unit: "1/s^2",
+        description: "a = k/(m l^2): sets k1 (and k2 in the same ratio), keeps p",
+        range: "> 0",
+        scope: Scope::All,
+        is_group: true,
+        sign: Sign::Positive,
+        stage: 3,
+        get: |m| {
+            m.reference_stiffness_nm_per_rad()
+                / (m.reference_mass_kg() * m.reference_length_m().powi(2))
+        },
+        set: |m, a| {
+            let p = m.load_p();
+            let k1 = a * m.reference_mass_kg() * m.reference_length_m().powi(2);
+            m.column.k2_nm_per_rad *= k1 / m.column.k1_nm_per_rad;
+            m.column.k1_nm_per_rad = k1;
+            m.set_load_p(p);
+        },
+    },
+    KeySpec {
+        key: "nu",
+        unit: "",
+        description: "nu = m3/m, roller mass over the rod's mass",
+        range: ">= 0",
+        scope: Scope::Roller,
+        is_group: true,
+        sign: Sign::NonNegative,
+        stage: 3,
+        get: |m| roller_value(m, |r| r.mass_kg) / m.reference_mass_kg(),
+        set: |m, nu| {
+            let mass_kg = nu * m.reference_mass_kg();
+            if let Some(roller) = roller_mut(m) {
+                roller.mass_kg = mass_kg;
+            }
+        },
+    },
+    KeySpec {
+        key: "rho",
+        unit: "",
+        description: "rho = r/l, roller radius over the rod's length",
+        range: "in (0, l2/l]",
+        scope: Scope::Roller,
+        is_group: true,
+        sign: Sign::Positive,
+        stage: 3,
+        get: |m| roller_value(m, |r| r.radius_m) / m.reference_length_m(),
+        set: |m, rho| {
+            let radius_m = rho * m.reference_length_m();
+            if let Some(roller) = roller_mut(m) {
+                roller.radius_m = radius_m;
+            }
+        },
+    },
+    KeySpec {
+        key: "mu",
+        unit: "",
+        description: "friction coefficient; only mu R enters the equations, so R is held and the load p = mu R l/k moves",
+        range: "> 0",
+        scope: Scope::Roller,
+        is_group: true,
+        sign: Sign::Positive,
+        stage: 4,
+        get: |m| roller_value(m, |r| r.mu),
+        set: |m, mu| {
+            if let Some(roller) = roller_mut(m) {
+                roller.mu = mu;
+            }
+        },
+    },
+    KeySpec {
+        key: "V",
+        unit: "m/s",
+        description: "band speed (the band moves toward -x); the linear analysis needs V > 0",
+        range: ">= 0",
+        scope: Scope::Roller,
+        is_group: true,
+        sign: Sign::NonNegative,
+        stage: 2,
+        get: |m| roller_value(m, |r| r.band_speed_m_per_s),
+        set: |m, v| {
+            if let Some(roller) = roller_mut(m) {
+                roller.band_speed_m_per_s = v;
+            }
+        },
+    },
+    KeySpec {
+        key: "l1",
+        unit: "m",
+        description: "length of rod 1 (its mass distribution scales with it)",
+        range: "> 0",
+        scope: Scope::All,
+        is_group: false,
+        sign: Sign::Positive,
+        stage: 0,
+        get: |m| m.column.rod1.length_m,
+        set: |m, v| set_length(m, 1, v),
+    },
+    KeySpec {
+        key: "l2",
+        unit: "m",
+        description: "length of rod 2 (its mass distribution scales with it)",
+        range: "> 0",
+        scope: Scope::All,
+        is_group: false,
+        sign: Sign::Positive,
+        stage: 0,
+        get: |m| m.column.rod2.length_m,
+        set: |m, v| set_length(m, 2, v),
+    },
+    KeySpec {
+        key: "m1",
+        unit: "kg",
+        description: "mass of rod 1, point masses on it included (distribution kept)",
+        range: ">= 0",
+        scope: Scope::All,
+        is_group: false,
+        sign: Sign::NonNegative,
+        stage: 1,
+        get: |m| m.column.rod1.mass_kg,
+        set: |m, v| set_mass(m, 1, v),
+    },
+    KeySpec {
+        key: "m2",
+        unit: "kg",
+        description: "mass of rod 2 (distribution kept)",
+        range: ">= 0",
+        scope: Scope::All,
+        is_group: false,
+        sign: Sign::NonNegative,
+        stage: 1,
+        get: |m| m.column.rod2.mass_kg,
+        set: |m, v| set_mass(m, 2, v),
+    },
+    KeySpec {
+        key: "s1",
+        unit: "m",
+        description: "centre of mass of rod 1, from the clamp O",
+        range: "in [0, l1]",
+        scope: Scope::All,
+        is_group: false,
+        sign: Sign::NonNegative,
+        stage: 2,
+        get: |m| m.column.rod1.com_m,
+        set: |m, v| m.column.rod1.com_m = v,
+    },
+    KeySpec {
+        key: "s2",
+        unit: "m",
+        description: "centre of mass of rod 2, from the joint A",
+        range: "in [0, l2]",
+        scope: Scope::All,
+        is_group: false,
+        sign: Sign::NonNegative,
+        stage: 2,
+        get: |m| m.column.rod2.com_m,
+        set: |m, v| m.column.rod2.com_m = v,
+    },
+    KeySpec {
+        key: "I1",
+        unit: "kg m^2",
+        description: "moment of inertia of rod 1 about its centre of mass",
+        range: ">= 0",
+        scope: Scope::All,
+        is_group: false,
+        sign: Sign::NonNegative,
+        stage: 2,
+        get: |m| m.column.rod1.inertia_kg_m2,
+        set: |m, v| m.column.rod1.inertia_kg_m2 = v,
+    },
+    KeySpec {
+        key: "I2",
+        unit: "kg m^2",
+        description: "moment of inertia of rod 2 about its centre of mass",
+        range: ">= 0",
+        scope: Scope::All,
+        is_group: false,
+        sign: Sign::NonNegative,
+        stage: 2,
+        get: |m| m.column.rod2.inertia_kg_m2,
+        set: |m, v| m.column.rod2.inertia_kg_m2 = v,
+    },
+    KeySpec {
+        key: "m_tip",
+        unit: "kg",
+        description: "point mass at the tip B (the roller's mass is m3)",
+        range: ">= 0",
+        scope: Scope::All,
+        is_group: false,
+        sign: Sign::NonNegative,
+        stage: 2,
+        get: |m| m.column.tip_mass_kg,
+        set: |m, v| m.column.tip_mass_kg = v,
+    },
+    KeySpec {
+        key: "k1",
+        unit: "N m/rad",
+        description: "rotary spring at the clamp O",
+        range: "> 0",
+        scope: Scope::All,
+        is_group: false,
+        sign: Sign::Positive,
+        stage: 2,
+        get: |m| m.column.k1_nm_per_rad,
+        set: |m, v| m.column.k1_nm_per_rad = v,
+    },
+    KeySpec {
+        key: "k2",
+        unit: "N m/rad",
+        description: "rotary spring at the joint A",
+        range: "> 0",
+        scope: Scope::All,
+        is_group: false,
+        sign: Sign::Positive,
+        stage: 2,
+        get: |m| m.column.k2_nm_per_rad,
+        set: |m, v| m.column.k2_nm_per_rad = v,
+    },
+    KeySpec {
+        key: "c1",
+        unit: "N m s/rad",
+        description: "viscous damper at the clamp O",
+        range: ">= 0",
+        scope: Scope::All,
+        is_group: false,
+        sign: Sign::NonNegative,
+        stage: 2,
+        get: |m| m.column.c1_nms_per_rad,
+        set: |m, v| m.column.c1_nms_per_rad = v,
+    },
+    KeySpec {
+        key: "c2",
+        unit: "N m s/rad",
+        description: "viscous damper at the joint A",
+        range: ">= 0",
+        scope: Scope::All,
+        is_group: false,
+        sign: Sign::NonNegative,
+        stage: 2,
+        get: |m| m.column.c2_nms_per_rad,
+        set: |m, v| m.column.c2_nms_per_rad = v,
+    },
+    KeySpec {
+        key: "P",
+        unit: "N",
+        description: "magnitude of the tip force",
+        range: ">= 0",
+        scope: Scope::Force,
+        is_group: false,
+        sign: Sign::NonNegative,
+        stage: 5,
+        get: Model::follower_force_n,
+        set: |m, v| {
+            if let Load::Follower { force_n } | Load::Dead { force_n } = &mut m.load {
+                *force_n = v;
+            }
+        },
+    },
+    KeySpec {
+        key: "m3",
+        unit: "kg",
+        description: "mass of the roller (0: massless, the ideal follower force)",
+        range: ">= 0",
+        scope: Scope::Roller,
+        is_group: false,
+        sign: Sign::NonNegative,
+        stage: 2,
+        get: |m| roller_value(m, |r| r.mass_kg),
+        set: |m, v| {
+            if let Some(roller) = roller_mut(m) {
+                roller.mass_kg = v;
+            }
+        },
+    },
+    KeySpec {
+        key: "r",
+        unit: "m",
+        description: "radius of the roller",
+        range: "in (0, l2]",
+        scope: Scope::Roller,
+        is_group: false,
+        sign: Sign::Positive,
+        stage: 2,
+        get: |m| roller_value(m, |r| r.radius_m),
+        set: |m, v| {
+            if let Some(roller) = roller_mut(m) {
+                roller.radius_m = v;
+            }
+        },
+    },
+    KeySpec {
+        key: "R",
+        unit: "N",
+        description: "normal force of the roller on the band",
+        range: ">= 0",
+        scope: Scope::Roller,
+        is_group: false,
+        sign: Sign::NonNegative,
+        stage: 5,
+        get: |m| roller_value(m, |r| r.normal_force_n),
+        set: |m, v| {
+            if let Some(roller) = roller_mut(m) {
+                roller.normal_force_n = v;
+            }
+        },
+    },
+];

@@ -1,0 +1,49 @@
+//! The Ziegler column and its loads: parameters, presets, nonlinear equations
+//! of motion and their linearization. Pure f64 physics (no UI, no clock, no rapier).
+
+mod dynamics;
+mod keys;
+mod linear;
+mod params;
+mod presets;
+
+pub use dynamics::{
+    Friction, SLIP_REGULARIZATION_M_PER_S, StateVec, energy_j, friction, state_derivative,
+};
+pub use keys::{Assignment, KEYS, KeySpec, apply_assignments, parse_assignment};
+pub use linear::{LinearModel, linearize};
+pub use params::{Column, Inertia, Load, Model, Rod, Roller, SpinInertia};
+pub use presets::{PRESETS, Preset, preset};
+
+/// A parameter value that makes no model, named so the user can fix it.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ModelError {
+    #[error("{key} = {value}: {allowed}")]
+    Invalid {
+        key: String,
+        value: f64,
+        allowed: String,
+    },
+    #[error("unknown preset '{name}'; the presets are: {known}")]
+    UnknownPreset { name: String, known: String },
+    #[error("unknown key '{key}' for preset {preset}; the keys are: {known}")]
+    UnknownKey {
+        key: String,
+        preset: String,
+        known: String,
+    },
+    #[error("'{text}' is not key=value with a number (e.g. load=2.5): {reason}")]
+    Malformed { text: String, reason: String },
+    #[error("{first} and {second} both set the same quantity; give only one")]
+    Conflict { first: String, second: String },
+}
+
+impl ModelError {
+    pub(crate) fn invalid(key: &str, value: f64, allowed: &str) -> Self {
+        Self::Invalid {
+            key: key.to_owned(),
+            value,
+            allowed: allowed.to_owned(),
+        }
+    }
+}

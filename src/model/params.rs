@@ -1,0 +1,364 @@
+//! The column's physical parameters in SI units, and the checks that make them a valid model.
+
+use serde::{Deserialize, Serialize};
+
+use super::ModelError;
+
+/// One rigid rod of the column: its own mass distribution, reduced to what the
+/// kinetic energy needs (mass, centre of mass, moment of inertia).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Rod {
+    /// Length between the rod's inner joint and its outer end.
+    pub length_m: f64,
+    /// Total mass of the rod, point masses riding on it included.
+    pub mass_kg: f64,
+    /// Distance of the centre of mass from the rod's inner joint.
+    pub com_m: f64,
+    /// Moment of inertia about the centre of mass, for rotation in the plane.
+    pub inertia_kg_m2: f64,
+}
+
+impl Rod {
+    /// A uniform slender rod (Fig. 1a): centre of mass at the middle, `I = m l^2 / 12`.
+    #[must_use]
+    pub fn uniform(length_m: f64, mass_kg: f64) -> Self {
+        Self {
+            length_m,
+            mass_kg,
+            com_m: length_m / 2.0,
+            inertia_kg_m2: mass_kg * length_m * length_m / 12.0,
+        }
+    }
+
+    /// A massless rod carrying a point mass at distance `at_m` from its inner joint.
+    #[must_use]
+    pub fn point_mass(length_m: f64, mass_kg: f64, at_m: f64) -> Self {
+        Self {
+            length_m,
+            mass_kg,
+            com_m: at_m,
+            inertia_kg_m2: 0.0,
+        }
+    }
+
+    /// Moment of inertia about the inner joint.
+    #[must_use]
+    pub fn inertia_about_joint_kg_m2(&self) -> f64 {
+        self.inertia_kg_m2 + self.mass_kg * self.com_m * self.com_m
+    }
+}
+
+/// The two-rod column without its load: rods, tip mass, springs, dampers.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Column {
+    pub rod1: Rod,
+    pub rod2: Rod,
+    /// Point mass at the free end B (the roller's mass is not included here).
+    pub tip_mass_kg: f64,
+    /// Rotary spring at the clamp O, acting on `phi1`.
+    pub k1_nm_per_rad: f64,
+    /// Rotary spring at the joint A, acting on `phi2 - phi1`.
+    pub k2_nm_per_rad: f64,
+    /// Viscous damper at O on `phi1` (not in the paper; needed for the Ziegler paradox).
+    pub c1_nms_per_rad: f64,
+    /// Viscous damper at A on `phi2 - phi1`.
+    pub c2_nms_per_rad: f64,
+}
+
+/// The roller at the tip, dragged by the moving band (Fig. 1c, Fig. 7).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Roller {
+    /// Mass of the roller, a disc at the tip B (m3).
+    pub mass_kg: f64,
+    /// Radius of the roller (r).
+    pub radius_m: f64,
+    /// Coulomb friction coefficient between roller and band.
+    pub mu: f64,
+    /// Constant normal force pressing the roller on the band (R).
+    pub normal_force_n: f64,
+    /// Speed of the band, moving in the -x direction (V).
+    pub band_speed_m_per_s: f64,
+    /// Which spin inertia: the consistent one or the paper's printed eq. (39).
+    pub spin: SpinInertia,
+}
+
+/// The roller's spin inertia: physics.md's erratum to eqs (28)-(30).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum SpinInertia {
+    /// `m3 r^2 / 2`, from the virtual-power derivation.
+    Consistent,
+    /// `(r / l2) m3 r^2 / 2`: what the paper's linear system (35)-(39) amounts to.
+    AsPrinted,
+}
+
+impl Roller {
+    /// Magnitude of the friction force, `P = mu R`: the follower-force equivalent.
+    #[must_use]
+    pub fn friction_force_n(&self) -> f64 {
+        self.mu * self.normal_force_n
+    }
+
+    /// Factor on the disc's spin inertia: 1, or `r / l2` as printed.
+    #[must_use]
+    pub fn spin_inertia_factor(&self, rod2_length_m: f64) -> f64 {
+        match self.spin {
+            SpinInertia::Consistent => 1.0,
+            SpinInertia::AsPrinted => self.radius_m / rod2_length_m,
+        }
+    }
+
+    /// Moment of inertia about the spin axis (along rod 2), with the model's factor.
+    #[must_use]
+    pub fn spin_inertia_kg_m2(&self, rod2_length_m: f64) -> f64 {
+        self.spin_inertia_factor(rod2_length_m) * 0.5 * self.mass_kg * self.radius_m * self.radius_m
+    }
+
+    /// Moment of inertia of the disc about the vertical axis through its centre.
+    #[must_use]
+    pub fn yaw_inertia_kg_m2(&self) -> f64 {
+        0.25 * self.mass_kg * self.radius_m * self.radius_m
+    }
+}
+
+/// What pushes on the tip.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub enum Load {
+    /// Ideal follower force of magnitude P along rod 2, toward A.
+    Follower { force_n: f64 },
+    /// Dead force of magnitude P in the fixed direction -x (conservative).
+    Dead { force_n: f64 },
+    /// Coulomb friction of the moving band on the roller.
+    Roller(Roller),
+}
+
+/// A complete model: the column and its load.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Model {
+    pub column: Column,
+    pub load: Load,
+}
+
+/// The three inertia coefficients of the kinetic energy,
+/// `T = A phi1'^2/2 + B cos(phi2 - phi1) phi1' phi2' + C phi2'^2/2 + J psi'^2/2` (eq. 13).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Inertia {
+    pub a_kg_m2: f64,
+    pub b_kg_m2: f64,
+    pub c_kg_m2: f64,
+    /// Spin inertia of the roller (0 without a roller).
+    pub spin_kg_m2: f64,
+}
+
+impl Model {
+    /// Degrees of freedom: 3 with the roller (its spin), 2 otherwise.
+    #[must_use]
+    pub fn dof(&self) -> usize {
+        match self.load {
+            Load::Roller(_) => 3,
+            Load::Follower { .. } | Load::Dead { .. } => 2,
+        }
+    }
+
+    /// The roller, if the load is one.
+    #[must_use]
+    pub fn roller(&self) -> Option<&Roller> {
+        match &self.load {
+            Load::Roller(roller) => Some(roller),
+            Load::Follower { .. } | Load::Dead { .. } => None,
+        }
+    }
+
+    /// Reference length `l` of the dimensionless groups: rod 1's length.
+    #[must_use]
+    pub fn reference_length_m(&self) -> f64 {
+        self.column.rod1.length_m
+    }
+
+    /// Reference stiffness `k` of the dimensionless groups: the clamp spring k1.
+    #[must_use]
+    pub fn reference_stiffness_nm_per_rad(&self) -> f64 {
+        self.column.k1_nm_per_rad
+    }
+
+    /// Reference mass `m` of the dimensionless groups: what rod 2 carries
+    /// (its mass plus the tip mass, the roller excluded). This is the paper's
+    /// `m` in every preset: the tip mass of Ziegler's column, the midpoint
+    /// mass, the uniform rod's mass.
+    #[must_use]
+    pub fn reference_mass_kg(&self) -> f64 {
+        self.column.rod2.mass_kg + self.column.tip_mass_kg
+    }
+
+    /// Magnitude of the follower-equivalent force at the tip: P, or `mu R` for the roller.
+    #[must_use]
+    pub fn follower_force_n(&self) -> f64 {
+        match self.load {
+            Load::Follower { force_n } | Load::Dead { force_n } => force_n,
+            Load::Roller(roller) => roller.friction_force_n(),
+        }
+    }
+
+    /// The load on the product's common axis, `p = P l / k` (physics.md section 5).
+    #[must_use]
+    pub fn load_p(&self) -> f64 {
+        self.follower_force_n() * self.reference_length_m() / self.reference_stiffness_nm_per_rad()
+    }
+
+    /// Sets the load on the common axis `p = P l / k`; for the roller this sets
+    /// the normal force `R = p k / (mu l)` and keeps `mu`.
+    pub fn set_load_p(&mut self, p: f64) {
+        let force_n = p * self.reference_stiffness_nm_per_rad() / self.reference_length_m();
+        match &mut self.load {
+            Load::Follower { force_n: f } | Load::Dead { force_n: f } => *f = force_n,
+            Load::Roller(roller) => roller.normal_force_n = force_n / roller.mu,
+        }
+    }
+
+    /// This model at another load `p`.
+    #[must_use]
+    pub fn at_load(&self, p: f64) -> Self {
+        let mut model = *self;
+        model.set_load_p(p);
+        model
+    }
+
+    /// Inertia coefficients of the kinetic energy (13), for any mass model.
+    #[must_use]
+    pub fn inertia(&self) -> Inertia {
+        let Column {
+            rod1,
+            rod2,
+            tip_mass_kg,
+            ..
+        } = self.column;
+        let (roller_mass_kg, yaw_kg_m2, spin_kg_m2) = self.roller().map_or((0.0, 0.0, 0.0), |r| {
+            (
+                r.mass_kg,
+                r.yaw_inertia_kg_m2(),
+                r.spin_inertia_kg_m2(rod2.length_m),
+            )
+        });
+        let outer_mass_kg = tip_mass_kg + roller_mass_kg;
+        let (l1, l2) = (rod1.length_m, rod2.length_m);
+        Inertia {
+            a_kg_m2: rod1.inertia_about_joint_kg_m2() + (rod2.mass_kg + outer_mass_kg) * l1 * l1,
+            b_kg_m2: (rod2.mass_kg * rod2.com_m + outer_mass_kg * l2) * l1,
+            c_kg_m2: rod2.inertia_about_joint_kg_m2() + outer_mass_kg * l2 * l2 + yaw_kg_m2,
+            spin_kg_m2,
+        }
+    }
+
+    /// Checks every parameter and the mass matrix; the error names the parameter.
+    ///
+    /// # Errors
+    /// [`ModelError::Invalid`] for the first parameter out of its range.
+    pub fn validate(&self) -> Result<(), ModelError> {
+        let Column {
+            rod1,
+            rod2,
+            tip_mass_kg,
+            k1_nm_per_rad,
+            k2_nm_per_rad,
+            c1_nms_per_rad,
+            c2_nms_per_rad,
+        } = self.column;
+        for (i, rod) in [(1, rod1), (2, rod2)] {
+            positive(&format!("l{i}"), rod.length_m)?;
+            non_negative(&format!("m{i}"), rod.mass_kg)?;
+            non_negative(&format!("I{i}"), rod.inertia_kg_m2)?;
+            within(&format!("s{i}"), rod.com_m, 0.0, rod.length_m, "l{i}", i)?;
+        }
+        non_negative("m_tip", tip_mass_kg)?;
+        positive("k1", k1_nm_per_rad)?;
+        positive("k2", k2_nm_per_rad)?;
+        non_negative("c1", c1_nms_per_rad)?;
+        non_negative("c2", c2_nms_per_rad)?;
+        match self.load {
+            Load::Follower { force_n } | Load::Dead { force_n } => non_negative("P", force_n)?,
+            Load::Roller(roller) => {
+                let Roller {
+                    mass_kg,
+                    radius_m,
+                    mu,
+                    normal_force_n,
+                    band_speed_m_per_s,
+                    spin: _,
+                } = roller;
+                non_negative("m3", mass_kg)?;
+                positive("r", radius_m)?;
+                within("r", radius_m, 0.0, rod2.length_m, "l2", 2)?;
+                if mu == 0.0 {
+                    return Err(ModelError::invalid(
+                        "mu",
+                        mu,
+                        "must be > 0: without friction the band exerts no load at all (use load=0 for an unloaded column)",
+                    ));
+                }
+                positive("mu", mu)?;
+                non_negative("R", normal_force_n)?;
+                non_negative("V", band_speed_m_per_s)?;
+            }
+        }
+        let inertia = self.inertia();
+        let det = inertia.a_kg_m2 * inertia.c_kg_m2 - inertia.b_kg_m2 * inertia.b_kg_m2;
+        if !(inertia.a_kg_m2 > 0.0
+            && inertia.c_kg_m2 > 0.0
+            && det > 1e-12 * inertia.a_kg_m2 * inertia.c_kg_m2)
+        {
+            return Err(ModelError::invalid(
+                "mass matrix",
+                det,
+                "the column needs mass beyond the joint A (rod 2, tip or roller) and mass or inertia that moves with rod 1 on its own; the mass matrix is singular",
+            ));
+        }
+        Ok(())
+    }
+}
+
+fn finite(key: &str, value: f64) -> Result<(), ModelError> {
+    if value.is_finite() {
+        Ok(())
+    } else {
+        Err(ModelError::invalid(key, value, "must be a finite number"))
+    }
+}
+
+fn positive(key: &str, value: f64) -> Result<(), ModelError> {
+    finite(key, value)?;
+    if value > 0.0 {
+        Ok(())
+    } else {
+        Err(ModelError::invalid(key, value, "must be > 0"))
+    }
+}
+
+fn non_negative(key: &str, value: f64) -> Result<(), ModelError> {
+    finite(key, value)?;
+    if value >= 0.0 {
+        Ok(())
+    } else {
+        Err(ModelError::invalid(key, value, "must be >= 0"))
+    }
+}
+
+/// `min <= value <= max`, where `max` is another parameter named by `max_key`.
+fn within(
+    key: &str,
+    value: f64,
+    min: f64,
+    max: f64,
+    max_key: &str,
+    index: usize,
+) -> Result<(), ModelError> {
+    finite(key, value)?;
+    if (min..=max).contains(&value) {
+        Ok(())
+    } else {
+        let max_key = max_key.replace("{i}", &index.to_string());
+        Err(ModelError::invalid(
+            key,
+            value,
+            &format!("must lie between {min} and {max_key} = {max}"),
+        ))
+    }
+}

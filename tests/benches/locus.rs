@@ -1,0 +1,37 @@
+//! Speed of the analysis core: the tracked, refined root locus over 1000
+//! loads (the app recomputes it whenever a slider moves), the critical loads,
+//! and one eigenvalue solve on the robust Schur path for comparison.
+
+use std::hint::black_box;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use zieglerlab::analysis::{AffinePencil, critical_loads, locus};
+use zieglerlab::model::preset;
+
+const LOADS: usize = 1000;
+
+fn pencil(name: &str) -> AffinePencil {
+    let model = preset(name)
+        .map(|p| p.model())
+        .unwrap_or_else(|e| panic!("{e}"));
+    AffinePencil::new(&model).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn benches(c: &mut Criterion) {
+    for name in ["roller", "midpoint-masses"] {
+        let pencil = pencil(name);
+        c.bench_function(&format!("locus {name} 1000 loads p in [0, 10]"), |b| {
+            b.iter(|| locus(black_box(&pencil), 0.0, 10.0, LOADS));
+        });
+    }
+    let roller = pencil("roller");
+    c.bench_function("critical loads roller p in [0, 10]", |b| {
+        b.iter(|| critical_loads(black_box(&roller), 0.0, 10.0));
+    });
+    c.bench_function("schur spectrum roller (one load)", |b| {
+        b.iter(|| roller.spectrum(black_box(2.0)));
+    });
+}
+
+criterion_group!(locus_benches, benches);
+criterion_main!(locus_benches);

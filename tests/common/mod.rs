@@ -1,0 +1,54 @@
+//! Helpers shared by the physics tests: building models and reading spectra.
+
+#![allow(dead_code, reason = "each test file uses a different subset")]
+#![expect(clippy::unwrap_used, reason = "test fixtures: a bad one should panic")]
+
+use zieglerlab::analysis::{AffinePencil, C64, Transition, critical_loads};
+use zieglerlab::model::{Model, apply_assignments, parse_assignment, preset};
+
+/// The preset `name` with `key=value` overrides.
+pub fn model(name: &str, sets: &[&str]) -> Model {
+    let preset = preset(name).unwrap();
+    let mut model = preset.model();
+    let assignments: Vec<_> = sets.iter().map(|s| parse_assignment(s).unwrap()).collect();
+    apply_assignments(&mut model, name, &assignments).unwrap();
+    model
+}
+
+/// Every stability change of `model` for p in `[0, load_max]`.
+pub fn transitions(model: &Model, load_max: f64) -> Vec<Transition> {
+    critical_loads(&AffinePencil::new(model).unwrap(), 0.0, load_max).unwrap()
+}
+
+/// The moving eigenvalues of `model` at its own load (Schur path).
+pub fn eigenvalues(model: &Model) -> Vec<C64> {
+    AffinePencil::new(model)
+        .unwrap()
+        .spectrum(model.load_p())
+        .unwrap()
+        .eigenvalues
+}
+
+/// Largest distance from each of `a` to the nearest of `b`, and back.
+pub fn set_distance(a: &[C64], b: &[C64]) -> f64 {
+    let one_way = |x: &[C64], y: &[C64]| {
+        x.iter()
+            .map(|p| {
+                y.iter()
+                    .map(|q| (p - q).norm())
+                    .fold(f64::INFINITY, f64::min)
+            })
+            .fold(0.0, f64::max)
+    };
+    one_way(a, b).max(one_way(b, a))
+}
+
+/// Asserts `actual` is within `relative` of `expected`.
+#[track_caller]
+pub fn assert_close(actual: f64, expected: f64, relative: f64) {
+    let error = (actual - expected).abs() / expected.abs();
+    assert!(
+        error <= relative,
+        "{actual} vs {expected}: relative error {error:e} > {relative:e}"
+    );
+}
