@@ -55,10 +55,10 @@ enum Command {
         #[command(flatten)]
         model: ModelArgs,
         /// Lower end of the load range searched.
-        #[arg(long, default_value_t = 0.0)]
+        #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
         load_min: f64,
         /// Upper end of the load range searched.
-        #[arg(long, default_value_t = DEFAULT_LOAD_MAX)]
+        #[arg(long, default_value_t = DEFAULT_LOAD_MAX, allow_negative_numbers = true)]
         load_max: f64,
         #[arg(long)]
         json: bool,
@@ -67,9 +67,9 @@ enum Command {
     Locus {
         #[command(flatten)]
         model: ModelArgs,
-        #[arg(long)]
+        #[arg(long, allow_negative_numbers = true)]
         load_min: f64,
-        #[arg(long)]
+        #[arg(long, allow_negative_numbers = true)]
         load_max: f64,
         #[arg(long)]
         samples: usize,

@@ -74,3 +74,26 @@ fn general_two_dof_formula_unequal_rods() {
         assert!(z.re.abs() < 1e-6 * omega, "{z}");
     }
 }
+
+/// Whatever the search range (and so wherever the samples fall relative to
+/// the double root), the flutter load is found, to the same precision.
+#[test]
+fn found_for_every_search_range() {
+    use zieglerlab::analysis::{AffinePencil, critical_loads};
+    for (name, flutter) in [
+        ("midpoint-masses", 3.0),
+        ("ziegler-1952", 3.5 - 2f64.sqrt()),
+    ] {
+        let pencil = AffinePencil::new(&model(name, &[])).unwrap();
+        for i in 0..40 {
+            let load_max = 3.2 + 0.137 * f64::from(i);
+            let t = critical_loads(&pencil, 0.0, load_max).unwrap();
+            assert_eq!(
+                (t[0].from, t[0].to),
+                (State::Stable, State::Flutter),
+                "{name} {load_max}"
+            );
+            assert_close(t[0].load, flutter, 1e-9);
+        }
+    }
+}

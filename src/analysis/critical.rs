@@ -221,26 +221,42 @@ pub fn critical_loads(
         1
     };
     let locus = locus(pencil, load_min, load_max, samples)?;
+    let tracked: Vec<State> = (0..locus.loads.len())
+        .map(|i| classify(&locus.moving_at(i), pencil.scale_per_s(locus.loads[i])).state)
+        .collect();
+    // Whether the Schur path agrees with the tracked roots at sample j, and its state.
+    let schur = |j: usize| state_at(pencil, locus.loads[j]).map(|s| (s == tracked[j], s));
     let mut transitions = Vec::new();
-    let mut previous: Option<(f64, State)> = None;
-    for (i, &p) in locus.loads.iter().enumerate() {
-        let state = classify(&locus.moving_at(i), pencil.scale_per_s(p)).state;
-        if let Some((p0, s0)) = previous
-            && s0 != state
-        {
-            // Confirm on the Schur path: the tracked roots are bracketing only.
-            let (sa, sb) = (state_at(pencil, p0)?, state_at(pencil, p)?);
-            if sa != sb {
-                refine(
-                    pencil,
-                    (p0, sa),
-                    (p, sb),
-                    (load_min, load_max),
-                    &mut transitions,
-                )?;
-            }
+    let mut done_until = 0;
+    for i in 1..locus.loads.len() {
+        if tracked[i] == tracked[i - 1] || i <= done_until {
+            continue;
         }
-        previous = Some((p, state));
+        // The tracked roots only bracket. Widen the bracket to the nearest
+        // samples where the Schur path agrees with them: right at a double
+        // root the two read rounding differently (Schur sees Re ~ sqrt(eps)).
+        let (mut left, mut left_state) = (i - 1, schur(i - 1)?);
+        while !left_state.0 && left > 0 {
+            left -= 1;
+            left_state = schur(left)?;
+        }
+        let (mut right, mut right_state) = (i, schur(i)?);
+        while !right_state.0 && right + 1 < locus.loads.len() {
+            right += 1;
+            right_state = schur(right)?;
+        }
+        done_until = right;
+        let (sa, sb) = (left_state.1, right_state.1);
+        if sa != sb {
+            let (a, b) = (locus.loads[left], locus.loads[right]);
+            refine(
+                pencil,
+                (a, sa),
+                (b, sb),
+                (load_min, load_max),
+                &mut transitions,
+            )?;
+        }
     }
     Ok(transitions)
 }

@@ -9,10 +9,15 @@ use super::{AnalysisError, C64};
 /// Largest number of evenly spaced loads a locus accepts.
 pub const MAX_SAMPLES: usize = 1_000_000;
 
-/// A prediction is good when it misses by less than this fraction of the
-/// eigenvalue's size (plus a floor of this fraction of the frequency scale):
-/// the straight segments of a plot then stay within about 1% of the curve.
-const STEP_TOLERANCE: f64 = 0.02;
+/// A step is accepted when the linear prediction misses each eigenvalue by
+/// less than this fraction of the step's own length: the polyline then turns
+/// by less than about 6 degrees per sample, also along the square-root
+/// curves into a branch point, where a fixed tolerance would cut the corner.
+const TURN_TOLERANCE: f64 = 0.1;
+
+/// ... or by less than this fraction of the eigenvalue's size plus the
+/// frequency scale: below that the miss is invisible in any plot.
+const FLOOR_TOLERANCE: f64 = 1e-3;
 
 /// Steps are never halved below this fraction of the load range.
 const MIN_STEP_FRACTION: f64 = 1e-6;
@@ -175,7 +180,8 @@ fn sign_with_tolerance(x: f64, tolerance: f64) -> i8 {
 
 /// The eigenvalue branches of `pencil` over the evenly spaced loads from
 /// `min` to `max`, with samples added by adaptive halving of the step where
-/// the linear prediction of a branch misses (branches meeting, turning) or a
+/// the linear prediction of a branch misses (branches meeting, turning; see
+/// [`TURN_TOLERANCE`]) or a
 /// branch's real or imaginary part changes sign (crossing Re = 0, landing on
 /// the real axis).
 ///
@@ -235,8 +241,9 @@ pub fn locus(
                 let next = eigenvalues_near(pencil, next_p, &guess)?;
                 let scale = pencil.scale_per_s(next_p);
                 let tolerance = RELATIVE_TOLERANCE * scale;
-                let smooth = next.iter().zip(&guess).all(|(z, g)| {
-                    (z - g).norm() <= STEP_TOLERANCE * (z.norm() + STEP_TOLERANCE * scale)
+                let smooth = next.iter().zip(&guess).zip(&current).all(|((z, g), w)| {
+                    (z - g).norm()
+                        <= TURN_TOLERANCE * (g - w).norm() + FLOOR_TOLERANCE * (z.norm() + scale)
                 });
                 let crosses = next.iter().zip(&current).any(|(z, w)| {
                     sign_with_tolerance(z.re, tolerance) != sign_with_tolerance(w.re, tolerance)

@@ -3,6 +3,7 @@
 
 use nalgebra::{DMatrix, linalg::Schur};
 
+use super::roots::{aberth, char_poly};
 use super::{AnalysisError, C64};
 use crate::model::{LinearModel, Model, linearize};
 
@@ -107,12 +108,25 @@ fn balance(a: &mut DMatrix<f64>) {
     }
 }
 
+/// Eigenvalues of a real matrix by Schur decomposition, `None` if the QR
+/// iteration does not converge.
+fn schur_eigenvalues(a: DMatrix<f64>) -> Option<Vec<C64>> {
+    let schur = Schur::try_new(a, f64::EPSILON, 10_000)?;
+    let eigenvalues: Vec<C64> = schur.complex_eigenvalues().iter().copied().collect();
+    eigenvalues
+        .iter()
+        .all(|z| z.re.is_finite() && z.im.is_finite())
+        .then_some(eigenvalues)
+}
+
 /// All eigenvalues of the pencil by a balanced real Schur decomposition of its
-/// companion matrix: the general, robust path (any n).
+/// companion matrix: the general, robust path (any n). nalgebra's QR
+/// iteration has no exceptional shifts and can stall (seen on a balanced
+/// matrix next to a double eigenvalue); the unbalanced matrix is tried then.
 ///
 /// # Errors
 /// Non-finite entries, a mass matrix that is not positive definite, or a
-/// Schur iteration that does not converge.
+/// QR iteration that converges for neither matrix.
 pub fn spectrum(lin: &LinearModel, load: f64) -> Result<Spectrum, AnalysisError> {
     let finite = [&lin.mass, &lin.damping, &lin.stiffness]
         .iter()
@@ -122,16 +136,12 @@ pub fn spectrum(lin: &LinearModel, load: f64) -> Result<Spectrum, AnalysisError>
         return Err(not_converged);
     }
     let cyclic = cyclic_coordinates(&lin.stiffness);
-    let mut a = companion(lin, &cyclic).ok_or(not_converged.clone())?;
-    balance(&mut a);
-    let schur = Schur::try_new(a, f64::EPSILON, 100_000).ok_or(not_converged.clone())?;
-    let eigenvalues: Vec<C64> = schur.complex_eigenvalues().iter().copied().collect();
-    if eigenvalues
-        .iter()
-        .any(|z| !(z.re.is_finite() && z.im.is_finite()))
-    {
-        return Err(not_converged);
-    }
+    let a = companion(lin, &cyclic).ok_or(not_converged.clone())?;
+    let mut balanced = a.clone();
+    balance(&mut balanced);
+    let eigenvalues = schur_eigenvalues(balanced)
+        .or_else(|| schur_eigenvalues(a))
+        .ok_or(not_converged)?;
     Ok(Spectrum {
         eigenvalues,
         structural_zeros: cyclic.len() + lin.extra_zero_roots,
@@ -222,7 +232,10 @@ impl AffinePencil {
     /// See [`spectrum`].
     pub fn spectrum(&self, p: f64) -> Result<Spectrum, AnalysisError> {
         let lin = self.at(p);
-        let mut spectrum = spectrum(&lin, p)?;
+        let mut spectrum = match spectrum(&lin, p) {
+            Ok(spectrum) => spectrum,
+            Err(error) => self.polynomial_spectrum(p, &lin).ok_or(error)?,
+        };
         // A coordinate that is cyclic only at this load (the roller at p = 0)
         // is not structural: report its zero among the moving eigenvalues.
         let structural = self.structural_zeros();
@@ -232,6 +245,29 @@ impl AffinePencil {
             .extend(std::iter::repeat_n(C64::new(0.0, 0.0), extra));
         spectrum.structural_zeros = structural;
         Ok(spectrum)
+    }
+
+    /// The last resort when Schur fails: the characteristic polynomial's roots
+    /// by Aberth iteration from points on a circle of the pencil's frequency
+    /// scale (globally convergent in practice).
+    fn polynomial_spectrum(&self, p: f64, lin: &LinearModel) -> Option<Spectrum> {
+        let poly = char_poly(self, p)?;
+        let radius = frequency_scale(lin).max(f64::MIN_POSITIVE);
+        #[expect(clippy::cast_precision_loss, reason = "degree <= 6")]
+        let step = std::f64::consts::TAU / poly.degree as f64;
+        // Off the real axis and not symmetric about it, so no two starts coincide.
+        let mut roots: Vec<C64> = (0..poly.degree)
+            .map(|k| {
+                #[expect(clippy::cast_precision_loss, reason = "k < 6")]
+                let angle = 0.4 + step * k as f64;
+                C64::from_polar(radius, angle)
+            })
+            .collect();
+        aberth(&poly, &mut roots, 500).then(|| Spectrum {
+            eigenvalues: roots,
+            structural_zeros: self.cyclic + lin.extra_zero_roots,
+            scale_per_s: frequency_scale(lin),
+        })
     }
 
     /// The frequency scale at load p (see [`Spectrum::scale_per_s`]). Allocation-free.

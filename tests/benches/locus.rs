@@ -2,6 +2,11 @@
 //! loads (the app recomputes it whenever a slider moves), the critical loads,
 //! and one eigenvalue solve on the robust Schur path for comparison.
 
+#![expect(
+    clippy::unwrap_used,
+    reason = "benchmark fixtures: a bad preset should panic"
+)]
+
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
@@ -11,10 +16,7 @@ use zieglerlab::model::preset;
 const LOADS: usize = 1000;
 
 fn pencil(name: &str) -> AffinePencil {
-    let model = preset(name)
-        .map(|p| p.model())
-        .unwrap_or_else(|e| panic!("{e}"));
-    AffinePencil::new(&model).unwrap_or_else(|e| panic!("{e}"))
+    AffinePencil::new(&preset(name).unwrap().model()).unwrap()
 }
 
 fn benches(c: &mut Criterion) {

@@ -15,6 +15,11 @@ pub fn model(name: &str, sets: &[&str]) -> Model {
     model
 }
 
+/// The affine pencil of the preset `name` with overrides.
+pub fn pencil(name: &str, sets: &[&str]) -> AffinePencil {
+    AffinePencil::new(&model(name, sets)).unwrap()
+}
+
 /// Every stability change of `model` for p in `[0, load_max]`.
 pub fn transitions(model: &Model, load_max: f64) -> Vec<Transition> {
     critical_loads(&AffinePencil::new(model).unwrap(), 0.0, load_max).unwrap()

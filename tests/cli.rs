@@ -1,0 +1,280 @@
+//! The command line as a user runs it: output formats (the JSON and CSV
+//! layouts other tools read), the numbers in them, and bad input answered by
+//! status 2 and one line naming the problem, never a panic.
+
+#![expect(clippy::expect_used, reason = "test helpers: a failure should panic")]
+
+use std::process::{Command, Output};
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn stdout(args: &[&str]) -> String {
+    let out = run(args);
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).expect("utf-8")
+}
+
+#[test]
+fn critical_json_layout_and_values() {
+    let text = stdout(&["critical", "--preset", "ziegler-1952", "--json"]);
+    let json: serde_json::Value = serde_json::from_str(&text).expect("json");
+    assert_eq!(json["preset"], "ziegler-1952");
+    assert_eq!(json["load_axis"], "p = P l/k");
+    let t = json["transitions"].as_array().expect("array");
+    assert_eq!(t.len(), 2);
+    assert_eq!(
+        (t[0]["from"].as_str(), t[0]["to"].as_str()),
+        (Some("stable"), Some("flutter"))
+    );
+    assert_eq!(
+        (t[1]["from"].as_str(), t[1]["to"].as_str()),
+        (Some("flutter"), Some("divergence"))
+    );
+    let flutter = t[0]["load"].as_f64().expect("number");
+    assert!((flutter - (3.5 - 2f64.sqrt())).abs() < 1e-9 * flutter);
+}
+
+#[test]
+fn critical_respects_set_and_load_max() {
+    // With the springs' ratio and a lower search limit.
+    let text = stdout(&[
+        "critical",
+        "--preset",
+        "midpoint-masses",
+        "--load-max",
+        "4",
+        "--json",
+    ]);
+    let json: serde_json::Value = serde_json::from_str(&text).expect("json");
+    assert_eq!(
+        json["transitions"].as_array().expect("array").len(),
+        1,
+        "divergence at 13/3 is beyond 4"
+    );
+    let text = stdout(&[
+        "critical",
+        "--preset",
+        "ziegler-1952",
+        "--set",
+        "c1=0.0316227766",
+        "--set",
+        "c2=0.0316227766",
+        "--json",
+    ]);
+    let json: serde_json::Value = serde_json::from_str(&text).expect("json");
+    let flutter = json["transitions"][0]["load"].as_f64().expect("number");
+    assert!(flutter < 2.0, "damping lowers the flutter load: {flutter}");
+}
+
+#[test]
+fn locus_csv_has_every_eigenvalue_at_evenly_spaced_loads() {
+    let text = stdout(&[
+        "locus",
+        "--preset",
+        "roller",
+        "--load-min",
+        "0",
+        "--load-max",
+        "5",
+        "--samples",
+        "11",
+    ]);
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("load,branch,re,im"));
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().expect("number")).collect())
+        .collect();
+    assert_eq!(
+        rows.len(),
+        11 * 6,
+        "six eigenvalues per load, the zero root included"
+    );
+    for (i, chunk) in rows.chunks(6).enumerate() {
+        let expected = 0.5 * f64::from(u8::try_from(i).expect("small"));
+        assert!(chunk.iter().all(|r| (r[0] - expected).abs() < 1e-12));
+        assert_eq!(
+            chunk.iter().map(|r| r[1]).collect::<Vec<_>>(),
+            vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0]
+        );
+        assert!(
+            chunk.iter().any(|r| r[2] == 0.0 && r[3] == 0.0),
+            "the structural zero root"
+        );
+    }
+}
+
+#[test]
+fn one_sample_gives_the_spectrum_at_that_load() {
+    let text = stdout(&[
+        "locus",
+        "--preset",
+        "uniform-rods",
+        "--load-min",
+        "3",
+        "--load-max",
+        "3",
+        "--samples",
+        "1",
+        "--format",
+        "json",
+    ]);
+    let json: serde_json::Value = serde_json::from_str(&text).expect("json");
+    let rows = json["rows"].as_array().expect("rows");
+    assert_eq!(rows.len(), 4);
+    // p = 3 is in the flutter range of uniform rods: a pair with Re > 0.
+    assert!(rows.iter().any(|r| r["re"].as_f64().expect("re") > 1e-3));
+}
+
+#[test]
+fn presets_lists_every_preset_with_units() {
+    let text = stdout(&["presets"]);
+    for name in [
+        "ziegler-1952",
+        "uniform-rods",
+        "midpoint-masses",
+        "roller",
+        "roller-as-printed",
+    ] {
+        assert!(text.contains(name), "{name}");
+    }
+    for unit in ["N m/rad", "kg m^2", "m/s", "1/s^2"] {
+        assert!(text.contains(unit), "{unit}");
+    }
+    let json: serde_json::Value =
+        serde_json::from_str(&stdout(&["presets", "--json"])).expect("json");
+    assert_eq!(json.as_array().expect("array").len(), 5);
+}
+
+/// Bad input and a fragment of the one line it must get.
+const BAD_INPUT: &[(&[&str], &str)] = &[
+    (&["critical", "--preset", "nope"], "unknown preset 'nope'"),
+    (
+        &["critical", "--preset", "roller", "--set", "colour=3"],
+        "unknown key 'colour'",
+    ),
+    (
+        &["critical", "--preset", "uniform-rods", "--set", "R=3"],
+        "unknown key 'R'",
+    ),
+    (
+        &["critical", "--preset", "roller", "--set", "nu=NaN"],
+        "nu = NaN",
+    ),
+    (
+        &["critical", "--preset", "roller", "--set", "mu=-0.1"],
+        "mu = -0.1",
+    ),
+    (
+        &["critical", "--preset", "roller", "--set", "mu=0"],
+        "mu = 0",
+    ),
+    (&["critical", "--preset", "roller", "--set", "V=0"], "V = 0"),
+    (&["critical", "--preset", "roller", "--set", "r=3"], "r = 3"),
+    (
+        &["critical", "--preset", "roller", "--set", "l1=inf"],
+        "l1 = inf",
+    ),
+    (
+        &["critical", "--preset", "uniform-rods", "--set", "k1=0"],
+        "k1 = 0",
+    ),
+    (
+        &[
+            "critical",
+            "--preset",
+            "uniform-rods",
+            "--set",
+            "m1=0",
+            "--set",
+            "m2=0",
+        ],
+        "mass matrix",
+    ),
+    (
+        &["critical", "--preset", "uniform-rods", "--set", "load=abc"],
+        "'abc' is not a number",
+    ),
+    (
+        &["critical", "--preset", "uniform-rods", "--set", "load"],
+        "no '='",
+    ),
+    (
+        &[
+            "critical", "--preset", "roller", "--set", "m3=1", "--set", "nu=1",
+        ],
+        "m3 and nu",
+    ),
+    (
+        &["critical", "--preset", "uniform-rods", "--load-max", "-1"],
+        "load-max",
+    ),
+    (
+        &[
+            "locus",
+            "--preset",
+            "roller",
+            "--load-min",
+            "0",
+            "--load-max",
+            "1",
+            "--samples",
+            "1",
+        ],
+        "samples",
+    ),
+    (
+        &[
+            "locus",
+            "--preset",
+            "roller",
+            "--load-min",
+            "0",
+            "--load-max",
+            "1",
+            "--samples",
+            "0",
+        ],
+        "samples",
+    ),
+    (
+        &[
+            "locus",
+            "--preset",
+            "roller",
+            "--load-min",
+            "0",
+            "--load-max",
+            "x",
+            "--samples",
+            "3",
+        ],
+        "invalid value 'x'",
+    ),
+    (
+        &["critical", "--preset", "roller", "--bogus"],
+        "unexpected argument '--bogus'",
+    ),
+    (&["frobnicate"], "unrecognized subcommand 'frobnicate'"),
+];
+
+#[test]
+fn bad_input_is_one_line_and_status_2() {
+    for (args, message) in BAD_INPUT {
+        let out = run(args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+        assert!(stderr.contains(message), "{args:?}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+    }
+}
