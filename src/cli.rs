@@ -142,14 +142,14 @@ fn execute(command: Command) -> Result<()> {
                 if transitions.is_empty() {
                     writeln!(out, "  none")?;
                 }
+                // The roller's own load q = R l/k = p / mu, beside p.
+                let mu = model.roller().map(|roller| roller.mu);
                 for t in &transitions {
-                    writeln!(
-                        out,
-                        "  p = {:<22} {} -> {}",
-                        t.load,
-                        t.from.name(),
-                        t.to.name()
-                    )?;
+                    let (from, to) = (t.from.name(), t.to.name());
+                    let q = mu
+                        .map(|mu| format!("  (q = R l/k = {:.9})", t.load / mu))
+                        .unwrap_or_default();
+                    writeln!(out, "  p = {:<22} {from} -> {to}{q}", t.load)?;
                 }
             }
             Ok(())
