@@ -10,6 +10,9 @@ use serde_json::json;
 
 use zieglerlab::analysis::{AffinePencil, DEFAULT_LOAD_MAX, critical_loads, locus};
 use zieglerlab::model::{KEYS, Model, PRESETS, apply_assignments, parse_assignment, preset};
+use zieglerlab::sim::{
+    DEFAULT_STEP_SECS, EngineKind, Observables, Simulation, Status, initial_state,
+};
 
 /// The load axis, as printed in every output.
 const LOAD_AXIS: &str = "p = P l/k";
@@ -43,6 +46,27 @@ enum LocusFormat {
     Json,
 }
 
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum EngineArg {
+    Reference,
+}
+
+impl From<EngineArg> for EngineKind {
+    fn from(engine: EngineArg) -> Self {
+        match engine {
+            EngineArg::Reference => Self::Reference,
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum TableFormat {
+    Csv,
+}
+
+/// Most rows a simulation prints (duration / dt).
+const MAX_ROWS: f64 = 1.0e7;
+
 #[derive(Subcommand, Debug)]
 enum Command {
     /// List the presets with every parameter, its unit and its range.
@@ -75,6 +99,24 @@ enum Command {
         samples: usize,
         #[arg(long, value_enum, default_value_t = LocusFormat::Csv)]
         format: LocusFormat,
+    },
+    /// Time simulation from phi1 = phi2 = perturb, at rest; one CSV row per step.
+    Simulate {
+        #[command(flatten)]
+        model: ModelArgs,
+        /// Simulated time in seconds.
+        #[arg(long, allow_negative_numbers = true)]
+        duration: f64,
+        #[arg(long, value_enum, default_value_t = EngineArg::Reference)]
+        engine: EngineArg,
+        /// Initial angle of both rods, in rad.
+        #[arg(long, default_value_t = 0.001, allow_negative_numbers = true)]
+        perturb: f64,
+        /// Time step (and output interval), in s.
+        #[arg(long, default_value_t = DEFAULT_STEP_SECS, allow_negative_numbers = true)]
+        dt: f64,
+        #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
+        format: TableFormat,
     },
 }
 
@@ -154,6 +196,14 @@ fn execute(command: Command) -> Result<()> {
             }
             Ok(())
         }
+        Command::Simulate {
+            model,
+            duration,
+            engine,
+            perturb,
+            dt,
+            format: TableFormat::Csv,
+        } => simulate(&mut out, &model, duration, engine.into(), perturb, dt),
         Command::Locus {
             model,
             load_min,
@@ -196,6 +246,63 @@ fn execute(command: Command) -> Result<()> {
             Ok(())
         }
     }
+}
+
+fn simulate(
+    out: &mut impl Write,
+    args: &ModelArgs,
+    duration: f64,
+    engine: EngineKind,
+    perturb: f64,
+    dt: f64,
+) -> Result<()> {
+    let (_, model) = build_model(args)?;
+    if !(duration.is_finite() && duration > 0.0) {
+        anyhow::bail!("duration = {duration}: must be a positive number of seconds");
+    }
+    if !(perturb.is_finite() && perturb.abs() <= 1.0) {
+        anyhow::bail!("perturb = {perturb}: must be an angle in [-1, 1] rad");
+    }
+    if dt.is_finite() && dt > 0.0 && duration / dt > MAX_ROWS {
+        anyhow::bail!(
+            "duration / dt = {}: at most {MAX_ROWS} rows; raise dt",
+            duration / dt
+        );
+    }
+    let mut simulation = Simulation::new(model, engine, initial_state(&model, perturb), dt)?;
+    let mut out = std::io::BufWriter::new(out);
+    writeln!(
+        out,
+        "t,phi1,phi2,psi,phi1_dot,phi2_dot,psi_dot,delta,energy"
+    )?;
+    let mut row = |o: &Observables| {
+        writeln!(
+            out,
+            "{},{},{},{},{},{},{},{},{}",
+            o.t_secs,
+            o.phi1_rad,
+            o.phi2_rad,
+            o.psi_rad,
+            o.phi1_dot_rad_per_s,
+            o.phi2_dot_rad_per_s,
+            o.psi_dot_rad_per_s,
+            o.delta_rad,
+            o.energy_j()
+        )
+    };
+    row(&simulation.observe())?;
+    let mut written = Ok(());
+    let status = simulation.run(duration, |o| {
+        if written.is_ok() {
+            written = row(o);
+        }
+    });
+    written?;
+    out.flush()?;
+    if let Status::Diverged { .. } = status {
+        eprintln!("run stopped: {status}");
+    }
+    Ok(())
 }
 
 /// The preset with the `--set` overrides applied and validated.

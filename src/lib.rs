@@ -1,7 +1,12 @@
 //! zieglerlab: flutter and divergence of the Ziegler column, with the ideal
 //! follower force and with the real mechanism (a roller dragged by a moving band).
 //!
-//! `model` holds the physics, `analysis` the linear stability; both are pure f64.
+//! `model` holds the physics, `analysis` the linear stability (both pure f64,
+//! no UI, no clock), `sim` the time simulation.
+
+// App code answers bad input with an error, never a panic (tests may unwrap).
+#![deny(clippy::unwrap_used, clippy::expect_used)]
 
 pub mod analysis;
 pub mod model;
+pub mod sim;

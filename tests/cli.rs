@@ -2,8 +2,6 @@
 //! layouts other tools read), the numbers in them, and bad input answered by
 //! status 2 and one line naming the problem, never a panic.
 
-#![expect(clippy::expect_used, reason = "test helpers: a failure should panic")]
-
 use std::process::{Command, Output};
 
 fn run(args: &[&str]) -> Output {
@@ -264,6 +262,46 @@ const BAD_INPUT: &[(&[&str], &str)] = &[
         "unexpected argument '--bogus'",
     ),
     (&["frobnicate"], "unrecognized subcommand 'frobnicate'"),
+    (
+        &["simulate", "--preset", "roller", "--duration", "-1"],
+        "duration = -1",
+    ),
+    (
+        &[
+            "simulate",
+            "--preset",
+            "roller",
+            "--duration",
+            "1",
+            "--dt",
+            "0",
+        ],
+        "dt = 0",
+    ),
+    (
+        &[
+            "simulate",
+            "--preset",
+            "roller",
+            "--duration",
+            "1",
+            "--perturb",
+            "nan",
+        ],
+        "perturb = NaN",
+    ),
+    (
+        &[
+            "simulate",
+            "--preset",
+            "roller",
+            "--duration",
+            "1e9",
+            "--dt",
+            "0.001",
+        ],
+        "at most",
+    ),
 ];
 
 #[test]
@@ -276,5 +314,48 @@ fn bad_input_is_one_line_and_status_2() {
         assert!(stderr.contains(message), "{args:?}: {stderr}");
         assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
         assert!(out.stdout.is_empty(), "{args:?}");
+    }
+}
+
+#[test]
+fn simulate_csv_layout() {
+    let text = stdout(&[
+        "simulate",
+        "--preset",
+        "roller",
+        "--duration",
+        "1",
+        "--dt",
+        "0.01",
+        "--engine",
+        "reference",
+    ]);
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next(),
+        Some("t,phi1,phi2,psi,phi1_dot,phi2_dot,psi_dot,delta,energy")
+    );
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().expect("number")).collect())
+        .collect();
+    assert_eq!(rows.len(), 101, "t = 0 and 100 steps");
+    assert_eq!(rows[0][..3], [0.0, 0.001, 0.001]);
+    assert!((rows[100][0] - 1.0).abs() < 1e-12);
+    // A 2-DOF preset has no spin: its psi columns are zero.
+    let text = stdout(&[
+        "simulate",
+        "--preset",
+        "ziegler-1952",
+        "--duration",
+        "0.1",
+        "--dt",
+        "0.05",
+    ]);
+    for line in text.lines().skip(1) {
+        let v: Vec<f64> = line
+            .split(',')
+            .map(|x| x.parse().expect("number"))
+            .collect();
+        assert_eq!((v[3], v[6]), (0.0, 0.0));
     }
 }

@@ -5,8 +5,6 @@
 //! uniform-rods collision where nalgebra's balanced Schur iteration stalls
 //! (regression: the solver must fall back, not fail).
 
-#![expect(clippy::unwrap_used, reason = "test helpers: a failure should panic")]
-
 mod common;
 
 use common::{model, pencil, set_distance};

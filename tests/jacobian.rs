@@ -4,8 +4,6 @@
 //! joint dampers. The simulation integrates the nonlinear function and the
 //! root locus uses the matrices: this is what ties the two together.
 
-#![expect(clippy::unwrap_used, reason = "test helpers: a failure should panic")]
-
 mod common;
 
 use nalgebra::DMatrix;

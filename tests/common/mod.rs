@@ -1,10 +1,9 @@
 //! Helpers shared by the physics tests: building models and reading spectra.
 
 #![allow(dead_code, reason = "each test file uses a different subset")]
-#![expect(clippy::unwrap_used, reason = "test fixtures: a bad one should panic")]
-
 use zieglerlab::analysis::{AffinePencil, C64, Transition, critical_loads};
 use zieglerlab::model::{Model, apply_assignments, parse_assignment, preset};
+use zieglerlab::sim::{EngineKind, Simulation, identify, initial_state};
 
 /// The preset `name` with `key=value` overrides.
 pub fn model(name: &str, sets: &[&str]) -> Model {
@@ -56,4 +55,37 @@ pub fn assert_close(actual: f64, expected: f64, relative: f64) {
         error <= relative,
         "{actual} vs {expected}: relative error {error:e} > {relative:e}"
     );
+}
+
+/// Runs `model` from the standard 1e-3 rad kick for `duration_secs` and
+/// identifies `order` eigenvalues from about 600 samples of phi1 and phi2.
+pub fn identified(
+    model: &Model,
+    engine: EngineKind,
+    step_secs: f64,
+    duration_secs: f64,
+    order: usize,
+) -> Vec<C64> {
+    let mut sim = Simulation::new(*model, engine, initial_state(model, 1e-3), step_secs).unwrap();
+    let (mut phi1, mut phi2) = (vec![sim.observe().phi1_rad], vec![sim.observe().phi2_rad]);
+    let every = ((duration_secs / step_secs) / 600.0).ceil().max(1.0);
+    let mut count = 0.0;
+    sim.run(duration_secs, |o| {
+        count += 1.0;
+        if count % every == 0.0 {
+            phi1.push(o.phi1_rad);
+            phi2.push(o.phi2_rad);
+        }
+    });
+    identify(&[&phi1, &phi2], every * step_secs, order).unwrap()
+}
+
+/// The predicted eigenvalues of `model` at its load, without the structural
+/// zeros and without real eigenvalues faster than `fastest_per_s` (the
+/// roller's spin relaxation, gone before the first samples).
+pub fn predicted(model: &Model, fastest_per_s: f64) -> Vec<C64> {
+    eigenvalues(model)
+        .into_iter()
+        .filter(|z| z.im != 0.0 || z.re.abs() < fastest_per_s)
+        .collect()
 }

@@ -1,0 +1,220 @@
+//! Time simulation of the nonlinear column: two engines behind one interface,
+//! the observables of each step, and identification of eigenvalues from a run.
+
+mod identify;
+mod observe;
+mod reference;
+
+pub use identify::identify;
+pub use observe::{Observables, observe};
+pub use reference::Reference;
+
+use crate::model::{Model, ModelError, StateVec, state_derivative};
+
+/// The app's simulation step: small against the fastest column period of
+/// the presets (about 5 s) and the roller's spin time constant at p = 1.
+pub const DEFAULT_STEP_SECS: f64 = 1.0 / 240.0;
+
+/// A run stops when an angle of the column leaves this range (about 160
+/// turns: a column spinning round under a huge load)...
+pub const MAX_ANGLE_RAD: f64 = 1.0e3;
+/// ... or a rate leaves this one.
+pub const MAX_RATE_RAD_PER_S: f64 = 1.0e6;
+
+/// Which engine advances the state.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum EngineKind {
+    /// Adaptive Dormand-Prince 5(4) on the exact equations (f64).
+    Reference,
+}
+
+/// Whether a run goes on.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Status {
+    Running,
+    /// The state left finite bounds; the run stopped at this time.
+    Diverged {
+        t_secs: f64,
+    },
+}
+
+impl std::fmt::Display for Status {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Running => write!(f, "running"),
+            Self::Diverged { t_secs } => write!(f, "diverged at t = {t_secs:.3} s"),
+        }
+    }
+}
+
+#[derive(Clone, Debug)]
+enum Engine {
+    Reference(Reference),
+}
+
+/// A run of the nonlinear column. The model can change between steps (the
+/// next step uses it); the same inputs give a bit-identical run.
+#[derive(Clone, Debug)]
+pub struct Simulation {
+    model: Model,
+    engine: Engine,
+    step_secs: f64,
+    /// Steps taken: the time is `steps * step_secs`, free of accumulated rounding.
+    steps: u64,
+    status: Status,
+}
+
+/// Why a simulation cannot start.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SimError {
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    #[error("{what} = {value}: {allowed}")]
+    Bad {
+        what: &'static str,
+        value: f64,
+        allowed: &'static str,
+    },
+}
+
+/// The standard start: `phi1 = phi2 = perturb_rad`, at rest (a massless
+/// roller spins at its slaved rate, so the state is consistent).
+#[must_use]
+pub fn initial_state(model: &Model, perturb_rad: f64) -> StateVec {
+    let mut x = StateVec::zeros();
+    x[0] = perturb_rad;
+    x[1] = perturb_rad;
+    if model.roller().is_some_and(|roller| roller.mass_kg == 0.0) {
+        // psi' is slaved: state_derivative returns it as d(psi)/dt.
+        x[5] = state_derivative(model, &x)[2];
+    }
+    x
+}
+
+#[expect(
+    clippy::cast_precision_loss,
+    reason = "step counts stay far below 2^52"
+)]
+fn time_of(steps: u64, step_secs: f64) -> f64 {
+    steps as f64 * step_secs
+}
+
+fn within_bounds(x: &StateVec) -> bool {
+    x.iter().all(|v| v.is_finite())
+        && x[0].abs() <= MAX_ANGLE_RAD
+        && x[1].abs() <= MAX_ANGLE_RAD
+        && [x[3], x[4], x[5]]
+            .iter()
+            .all(|v| v.abs() <= MAX_RATE_RAD_PER_S)
+}
+
+impl Simulation {
+    /// A run of `model` from state `x0`, advancing `step_secs` per step.
+    ///
+    /// # Errors
+    /// An invalid model, or a step that is not a positive finite time.
+    pub fn new(
+        model: Model,
+        kind: EngineKind,
+        x0: StateVec,
+        step_secs: f64,
+    ) -> Result<Self, SimError> {
+        model.validate()?;
+        if !(step_secs.is_finite() && step_secs > 0.0 && step_secs <= 1.0) {
+            return Err(SimError::Bad {
+                what: "dt",
+                value: step_secs,
+                allowed: "must be a time step in (0, 1] s",
+            });
+        }
+        let engine = match kind {
+            EngineKind::Reference => Engine::Reference(Reference::new(x0)),
+        };
+        Ok(Self {
+            model,
+            engine,
+            step_secs,
+            steps: 0,
+            status: Status::Running,
+        })
+    }
+
+    /// The model the next step uses.
+    #[must_use]
+    pub fn model(&self) -> &Model {
+        &self.model
+    }
+
+    /// Replaces the model for the next steps, without a reset.
+    ///
+    /// # Errors
+    /// An invalid model (the run keeps its previous one).
+    pub fn set_model(&mut self, model: Model) -> Result<(), ModelError> {
+        model.validate()?;
+        self.model = model;
+        Ok(())
+    }
+
+    #[must_use]
+    pub fn status(&self) -> Status {
+        self.status
+    }
+
+    #[must_use]
+    pub fn step_secs(&self) -> f64 {
+        self.step_secs
+    }
+
+    /// The current state `(phi1, phi2, psi, phi1', phi2', psi')`.
+    #[must_use]
+    pub fn state(&self) -> StateVec {
+        match &self.engine {
+            Engine::Reference(engine) => engine.x,
+        }
+    }
+
+    /// Simulated time.
+    #[must_use]
+    pub fn time_secs(&self) -> f64 {
+        time_of(self.steps, self.step_secs)
+    }
+
+    /// The observables now.
+    #[must_use]
+    pub fn observe(&self) -> Observables {
+        observe(&self.model, self.time_secs(), &self.state())
+    }
+
+    /// Advances one step; nothing happens once the run has diverged.
+    pub fn step(&mut self) -> Status {
+        if self.status != Status::Running {
+            return self.status;
+        }
+        let end = time_of(self.steps + 1, self.step_secs);
+        let advanced = match &mut self.engine {
+            Engine::Reference(engine) => engine.advance_to(&self.model, end),
+        };
+        if advanced {
+            self.steps += 1;
+        }
+        if !advanced || !within_bounds(&self.state()) {
+            self.status = Status::Diverged {
+                t_secs: self.time_secs(),
+            };
+        }
+        self.status
+    }
+
+    /// Advances whole steps until `duration_secs` more have passed (or the
+    /// run diverges), calling `each` with the observables after every step.
+    pub fn run(&mut self, duration_secs: f64, mut each: impl FnMut(&Observables)) -> Status {
+        let end = self.time_secs() + duration_secs;
+        while self.time_secs() < end - 0.5 * self.step_secs {
+            if self.step() != Status::Running {
+                break;
+            }
+            each(&self.observe());
+        }
+        self.status
+    }
+}

@@ -1,0 +1,85 @@
+//! What a run shows at one instant, computed from the model and the state
+//! alone (the same for every engine).
+
+use nalgebra::Vector2;
+use serde::Serialize;
+
+use crate::model::{Load, Model, StateVec, energy_j, friction};
+
+/// The observables of one state.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Observables {
+    pub t_secs: f64,
+    pub phi1_rad: f64,
+    pub phi2_rad: f64,
+    /// The roller's spin angle (0 without a roller).
+    pub psi_rad: f64,
+    pub phi1_dot_rad_per_s: f64,
+    pub phi2_dot_rad_per_s: f64,
+    pub psi_dot_rad_per_s: f64,
+    /// Angle of the friction force from the ideal follower direction, eq. (23)
+    /// (0 for the ideal loads).
+    pub delta_rad: f64,
+    /// Force of the band on the roller, or the tip force, in N.
+    pub tip_force_n: [f64; 2],
+    pub kinetic_j: f64,
+    pub spring_j: f64,
+    /// Power the tip force delivers into the column and roller,
+    /// `F . v_K = sum Q_j q_j'` (for the roller: what the band feeds in).
+    pub band_power_w: f64,
+    /// Position of the tip B.
+    pub tip_m: [f64; 2],
+    /// True when the slip speed fell below the regularization scale
+    /// (stick-slip: outside the model's validity).
+    pub stick_slip: bool,
+}
+
+impl Observables {
+    /// Kinetic plus spring energy.
+    #[must_use]
+    pub fn energy_j(&self) -> f64 {
+        self.kinetic_j + self.spring_j
+    }
+}
+
+/// The observables of `model` in state `x` at time `t_secs`.
+#[must_use]
+pub fn observe(model: &Model, t_secs: f64, x: &StateVec) -> Observables {
+    let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
+    let (phi1, phi2) = (x[0], x[1]);
+    let e2 = Vector2::new(phi2.cos(), phi2.sin());
+    let tip = l1 * Vector2::new(phi1.cos(), phi1.sin()) + l2 * e2;
+    let (kinetic_j, spring_j) = energy_j(model, x);
+    let rates = [x[3], x[4], x[5]];
+    let (force, delta_rad, generalized, stick_slip) = match model.load {
+        Load::Follower { force_n } => {
+            let q1 = -force_n * l1 * (phi2 - phi1).sin();
+            (-force_n * e2, 0.0, [q1, 0.0, 0.0], false)
+        }
+        Load::Dead { force_n } => {
+            let q = [force_n * l1 * phi1.sin(), force_n * l2 * phi2.sin(), 0.0];
+            (Vector2::new(-force_n, 0.0), 0.0, q, false)
+        }
+        Load::Roller(roller) => {
+            let f = friction(&model.column, &roller, x);
+            (f.force_n, f.delta_rad, f.generalized_n_m, f.regularized)
+        }
+    };
+    let band_power_w = generalized.iter().zip(rates).map(|(q, v)| q * v).sum();
+    Observables {
+        t_secs,
+        phi1_rad: phi1,
+        phi2_rad: phi2,
+        psi_rad: x[2],
+        phi1_dot_rad_per_s: x[3],
+        phi2_dot_rad_per_s: x[4],
+        psi_dot_rad_per_s: x[5],
+        delta_rad,
+        tip_force_n: [force.x, force.y],
+        kinetic_j,
+        spring_j,
+        band_power_w,
+        tip_m: [tip.x, tip.y],
+        stick_slip,
+    }
+}

@@ -1,0 +1,140 @@
+//! The reference engine: adaptive Dormand-Prince 5(4) on the core's exact
+//! nonlinear equations of motion, in f64.
+
+use crate::model::{Model, StateVec, state_derivative};
+
+/// Relative tolerance of the local error per step.
+pub const RELATIVE_TOLERANCE: f64 = 1e-11;
+/// Absolute tolerance, in rad and rad/s: 1e-9 of the standard 1e-3 rad kick.
+pub const ABSOLUTE_TOLERANCE: f64 = 1e-12;
+
+// Dormand and Prince (1980), RK5(4)7FM; the system is autonomous, so the
+// nodes c_i are not needed.
+const A: [[f64; 6]; 7] = [
+    [0.0; 6],
+    [1.0 / 5.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [3.0 / 40.0, 9.0 / 40.0, 0.0, 0.0, 0.0, 0.0],
+    [44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0, 0.0, 0.0, 0.0],
+    [
+        19372.0 / 6561.0,
+        -25360.0 / 2187.0,
+        64448.0 / 6561.0,
+        -212.0 / 729.0,
+        0.0,
+        0.0,
+    ],
+    [
+        9017.0 / 3168.0,
+        -355.0 / 33.0,
+        46732.0 / 5247.0,
+        49.0 / 176.0,
+        -5103.0 / 18656.0,
+        0.0,
+    ],
+    [
+        35.0 / 384.0,
+        0.0,
+        500.0 / 1113.0,
+        125.0 / 192.0,
+        -2187.0 / 6784.0,
+        11.0 / 84.0,
+    ],
+];
+/// Fifth-order weights (the last row of A: first same as last).
+const B5: [f64; 7] = [
+    35.0 / 384.0,
+    0.0,
+    500.0 / 1113.0,
+    125.0 / 192.0,
+    -2187.0 / 6784.0,
+    11.0 / 84.0,
+    0.0,
+];
+/// Fourth-order weights of the embedded error estimate.
+const B4: [f64; 7] = [
+    5179.0 / 57600.0,
+    0.0,
+    7571.0 / 16695.0,
+    393.0 / 640.0,
+    -92097.0 / 339_200.0,
+    187.0 / 2100.0,
+    1.0 / 40.0,
+];
+
+/// Adaptive integrator state: time, state, and the next step size to try.
+#[derive(Clone, Debug)]
+pub struct Reference {
+    pub(crate) t_secs: f64,
+    pub(crate) x: StateVec,
+    next_step_secs: f64,
+    /// Steps taken (accepted and rejected), for benchmarks.
+    pub steps: u64,
+}
+
+impl Reference {
+    #[must_use]
+    pub fn new(x: StateVec) -> Self {
+        Self {
+            t_secs: 0.0,
+            x,
+            next_step_secs: 1e-3,
+            steps: 0,
+        }
+    }
+
+    /// Integrates up to time `end` exactly. Returns false if the step size
+    /// collapsed (the state is then the last accepted one).
+    pub fn advance_to(&mut self, model: &Model, end: f64) -> bool {
+        while self.t_secs < end {
+            let remaining = end - self.t_secs;
+            let h = self.next_step_secs.min(remaining);
+            if h <= 1e-14 * end.abs().max(1.0) {
+                return false;
+            }
+            let (x_new, error) = dormand_prince_step(model, &self.x, h);
+            self.steps += 1;
+            let factor = if error.is_finite() {
+                (0.9 * error.powf(-0.2)).clamp(0.2, 5.0)
+            } else {
+                0.2
+            };
+            if error <= 1.0 {
+                self.x = x_new;
+                self.t_secs = if h == remaining { end } else { self.t_secs + h };
+                // A step shortened to land on `end` says little about the
+                // size the solution allows: keep the longer proposal.
+                if h == self.next_step_secs || factor < 1.0 {
+                    self.next_step_secs = h * factor;
+                }
+            } else {
+                self.next_step_secs = h * factor.min(1.0);
+            }
+        }
+        true
+    }
+}
+
+/// One Dormand-Prince step: the fifth-order solution and the scaled error norm.
+fn dormand_prince_step(model: &Model, x: &StateVec, h: f64) -> (StateVec, f64) {
+    let mut k = [StateVec::zeros(); 7];
+    k[0] = state_derivative(model, x);
+    for stage in 1..7 {
+        let mut y = *x;
+        for (j, kj) in k.iter().enumerate().take(stage) {
+            y += h * A[stage][j] * kj;
+        }
+        k[stage] = state_derivative(model, &y);
+    }
+    let mut x5 = *x;
+    let mut err = StateVec::zeros();
+    for (i, ki) in k.iter().enumerate() {
+        x5 += h * B5[i] * ki;
+        err += h * (B5[i] - B4[i]) * ki;
+    }
+    let mut sum = 0.0;
+    for i in 0..6 {
+        let scale = ABSOLUTE_TOLERANCE + RELATIVE_TOLERANCE * x[i].abs().max(x5[i].abs());
+        sum += (err[i] / scale).powi(2);
+    }
+    (x5, (sum / 6.0).sqrt())
+}

@@ -1,0 +1,86 @@
+//! A run at small amplitude is the linear column: the growth rate and the
+//! frequency measured from each engine's trajectory (matrix pencil method)
+//! agree with the eigenvalues of the linearization, in the stable, flutter
+//! and divergence ranges. This is what makes the animation honest: the
+//! column flutters at the load the root locus predicts.
+
+mod common;
+
+use common::{identified, model, predicted};
+use zieglerlab::analysis::{C64, classify};
+use zieglerlab::model::Model;
+use zieglerlab::sim::{DEFAULT_STEP_SECS, EngineKind};
+
+/// The window: long enough for the slowest mode, short enough that the
+/// fastest-growing one stays small (below about 0.01 rad from 0.001 rad).
+fn window_secs(predicted: &[C64]) -> f64 {
+    let growth = predicted.iter().map(|z| z.re).fold(0.0, f64::max);
+    let slowest = predicted
+        .iter()
+        .filter(|z| z.im.abs() > 0.0)
+        .map(|z| z.im.abs())
+        .fold(f64::INFINITY, f64::min);
+    let periods = if slowest.is_finite() {
+        12.0 * std::f64::consts::TAU / slowest
+    } else {
+        10.0
+    };
+    if growth > 0.0 {
+        periods.min(10f64.ln() / growth)
+    } else {
+        periods
+    }
+}
+
+/// Each predicted mode is found; the dominant one's growth rate, and every
+/// mode's frequency, within `tolerance` (relative).
+fn check(model: &Model, engine: EngineKind, tolerance: f64) {
+    let predicted = predicted(model, 5.0);
+    let window = window_secs(&predicted);
+    let found = identified(model, engine, DEFAULT_STEP_SECS, window, predicted.len());
+    let scale = predicted.iter().map(|z| z.norm()).fold(0.0, f64::max);
+    for p in &predicted {
+        let m = found
+            .iter()
+            .min_by(|a, b| (*a - p).norm().total_cmp(&(*b - p).norm()))
+            .unwrap();
+        let label = format!(
+            "p={} {engine:?}: predicted {p}, measured {m}",
+            model.load_p()
+        );
+        assert!(
+            (m.im - p.im).abs() <= tolerance * p.im.abs().max(0.01 * scale),
+            "frequency {label}"
+        );
+    }
+    let dominant = classify(&predicted, scale).dominant;
+    let measured = found
+        .iter()
+        .min_by(|a, b| (*a - dominant).norm().total_cmp(&(*b - dominant).norm()))
+        .unwrap();
+    // A zero growth rate (undamped, stable) is matched to the same fraction of |lambda|.
+    let allowed = tolerance * dominant.re.abs().max(0.01 * dominant.norm());
+    assert!(
+        (measured.re - dominant.re).abs() <= allowed,
+        "growth p={}: predicted {dominant}, measured {measured}",
+        model.load_p()
+    );
+}
+
+#[test]
+fn reference_midpoint_masses_stable_flutter_divergence() {
+    for p in ["load=1.5", "load=3.6", "load=5"] {
+        check(
+            &model("midpoint-masses", &[p]),
+            EngineKind::Reference,
+            0.005,
+        );
+    }
+}
+
+#[test]
+fn reference_roller_stable_weak_flutter_flutter_divergence() {
+    for p in ["load=0.012", "load=1", "load=3", "load=5"] {
+        check(&model("roller", &[p]), EngineKind::Reference, 0.005);
+    }
+}
