@@ -48,12 +48,14 @@ enum LocusFormat {
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 enum EngineArg {
+    Rapier,
     Reference,
 }
 
 impl From<EngineArg> for EngineKind {
     fn from(engine: EngineArg) -> Self {
         match engine {
+            EngineArg::Rapier => Self::Rapier,
             EngineArg::Reference => Self::Reference,
         }
     }
@@ -107,7 +109,7 @@ enum Command {
         /// Simulated time in seconds.
         #[arg(long, allow_negative_numbers = true)]
         duration: f64,
-        #[arg(long, value_enum, default_value_t = EngineArg::Reference)]
+        #[arg(long, value_enum, default_value_t = EngineArg::Rapier)]
         engine: EngineArg,
         /// Initial angle of both rods, in rad.
         #[arg(long, default_value_t = 0.001, allow_negative_numbers = true)]

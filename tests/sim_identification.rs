@@ -84,3 +84,17 @@ fn reference_roller_stable_weak_flutter_flutter_divergence() {
         check(&model("roller", &[p]), EngineKind::Reference, 0.005);
     }
 }
+
+#[test]
+fn rapier_midpoint_masses_stable_flutter_divergence() {
+    for p in ["load=1.5", "load=3.6", "load=5"] {
+        check(&model("midpoint-masses", &[p]), EngineKind::Rapier, 0.03);
+    }
+}
+
+#[test]
+fn rapier_roller_stable_weak_flutter_flutter_divergence() {
+    for p in ["load=0.012", "load=1", "load=3", "load=5"] {
+        check(&model("roller", &[p]), EngineKind::Rapier, 0.03);
+    }
+}

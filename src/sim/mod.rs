@@ -3,11 +3,12 @@
 
 mod identify;
 mod observe;
+mod rapier;
 mod reference;
 
 pub use identify::identify;
 pub use observe::{Observables, observe};
-pub use reference::Reference;
+pub use reference::{Advance, MAX_STEPS_PER_ADVANCE, Reference};
 
 use crate::model::{Model, ModelError, StateVec, state_derivative};
 
@@ -24,6 +25,8 @@ pub const MAX_RATE_RAD_PER_S: f64 = 1.0e6;
 /// Which engine advances the state.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum EngineKind {
+    /// rapier2d multibody with explicit forces and an implicit spin (the app's).
+    Rapier,
     /// Adaptive Dormand-Prince 5(4) on the exact equations (f64).
     Reference,
 }
@@ -36,6 +39,11 @@ pub enum Status {
     Diverged {
         t_secs: f64,
     },
+    /// The reference integrator needed more than its budget of steps for one
+    /// step of the run (a stiff case); the run stopped at this time.
+    TooStiff {
+        t_secs: f64,
+    },
 }
 
 impl std::fmt::Display for Status {
@@ -43,18 +51,23 @@ impl std::fmt::Display for Status {
         match self {
             Self::Running => write!(f, "running"),
             Self::Diverged { t_secs } => write!(f, "diverged at t = {t_secs:.3} s"),
+            Self::TooStiff { t_secs } => write!(
+                f,
+                "stopped at t = {t_secs:.3} s: too stiff for the reference integrator (a very light roller, a stopped band or a huge load); the rapier engine handles it"
+            ),
         }
     }
 }
 
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 enum Engine {
+    Rapier(Box<rapier::RapierEngine>),
     Reference(Reference),
 }
 
 /// A run of the nonlinear column. The model can change between steps (the
 /// next step uses it); the same inputs give a bit-identical run.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct Simulation {
     model: Model,
     engine: Engine,
@@ -128,6 +141,13 @@ impl Simulation {
             });
         }
         let engine = match kind {
+            EngineKind::Rapier => Engine::Rapier(Box::new(
+                rapier::RapierEngine::new(&model, &x0, step_secs).ok_or(SimError::Bad {
+                    what: "rapier",
+                    value: f64::NAN,
+                    allowed: "the rapier2d world could not be built for this column",
+                })?,
+            )),
             EngineKind::Reference => Engine::Reference(Reference::new(x0)),
         };
         Ok(Self {
@@ -169,6 +189,7 @@ impl Simulation {
     #[must_use]
     pub fn state(&self) -> StateVec {
         match &self.engine {
+            Engine::Rapier(engine) => engine.state(),
             Engine::Reference(engine) => engine.x,
         }
     }
@@ -191,17 +212,25 @@ impl Simulation {
             return self.status;
         }
         let end = time_of(self.steps + 1, self.step_secs);
-        let advanced = match &mut self.engine {
+        let advance = match &mut self.engine {
+            Engine::Rapier(engine) => {
+                if engine.step(&self.model).is_some() {
+                    Advance::Reached
+                } else {
+                    Advance::Collapsed
+                }
+            }
             Engine::Reference(engine) => engine.advance_to(&self.model, end),
         };
-        if advanced {
+        if advance == Advance::Reached {
             self.steps += 1;
         }
-        if !advanced || !within_bounds(&self.state()) {
-            self.status = Status::Diverged {
-                t_secs: self.time_secs(),
-            };
-        }
+        let t_secs = self.time_secs();
+        self.status = match advance {
+            Advance::Reached if within_bounds(&self.state()) => Status::Running,
+            Advance::Reached | Advance::Collapsed => Status::Diverged { t_secs },
+            Advance::TooStiff => Status::TooStiff { t_secs },
+        };
         self.status
     }
 

@@ -61,6 +61,22 @@ const B4: [f64; 7] = [
     1.0 / 40.0,
 ];
 
+/// Most internal steps for one call of [`Reference::advance_to`]: an explicit
+/// integrator that needs more is facing a stiff problem (a very light roller,
+/// a stopped band, a huge load) and would freeze its caller.
+pub const MAX_STEPS_PER_ADVANCE: u64 = 20_000;
+
+/// How a call of [`Reference::advance_to`] ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Advance {
+    /// The end time was reached.
+    Reached,
+    /// The step size collapsed (the solution left finite values).
+    Collapsed,
+    /// [`MAX_STEPS_PER_ADVANCE`] steps did not reach the end: too stiff.
+    TooStiff,
+}
+
 /// Adaptive integrator state: time, state, and the next step size to try.
 #[derive(Clone, Debug)]
 pub struct Reference {
@@ -82,14 +98,18 @@ impl Reference {
         }
     }
 
-    /// Integrates up to time `end` exactly. Returns false if the step size
-    /// collapsed (the state is then the last accepted one).
-    pub fn advance_to(&mut self, model: &Model, end: f64) -> bool {
+    /// Integrates up to time `end` exactly. On `Collapsed` or `TooStiff` the
+    /// state is the last accepted one (finite).
+    pub fn advance_to(&mut self, model: &Model, end: f64) -> Advance {
+        let budget_end = self.steps + MAX_STEPS_PER_ADVANCE;
         while self.t_secs < end {
             let remaining = end - self.t_secs;
             let h = self.next_step_secs.min(remaining);
             if h <= 1e-14 * end.abs().max(1.0) {
-                return false;
+                return Advance::Collapsed;
+            }
+            if self.steps >= budget_end {
+                return Advance::TooStiff;
             }
             let (x_new, error) = dormand_prince_step(model, &self.x, h);
             self.steps += 1;
@@ -110,7 +130,7 @@ impl Reference {
                 self.next_step_secs = h * factor.min(1.0);
             }
         }
-        true
+        Advance::Reached
     }
 }
 
