@@ -10,24 +10,21 @@ use common::model;
 use zieglerlab::model::{Model, StateVec};
 use zieglerlab::sim::{DEFAULT_STEP_SECS, EngineKind, Simulation, Status, initial_state};
 
+/// The states of a run, step by step; checks on the way that `run` takes
+/// the same steps as repeated `step`.
 fn trajectory(model: &Model, engine: EngineKind, duration_secs: f64) -> Vec<StateVec> {
-    let mut sim = Simulation::new(
-        *model,
-        engine,
-        initial_state(model, 1e-3),
-        DEFAULT_STEP_SECS,
-    )
-    .unwrap();
-    let mut out = vec![sim.state()];
-    sim.run(duration_secs, |_| ());
-    out.push(sim.state());
-    let mut sim = Simulation::new(
-        *model,
-        engine,
-        initial_state(model, 1e-3),
-        DEFAULT_STEP_SECS,
-    )
-    .unwrap();
+    let start = || {
+        Simulation::new(
+            *model,
+            engine,
+            initial_state(model, 1e-3),
+            DEFAULT_STEP_SECS,
+        )
+        .unwrap()
+    };
+    let mut whole = start();
+    whole.run(duration_secs, |_| ());
+    let mut sim = start();
     let mut states = vec![sim.state()];
     while sim.time_secs() < duration_secs - 0.5 * DEFAULT_STEP_SECS {
         sim.step();
@@ -35,7 +32,7 @@ fn trajectory(model: &Model, engine: EngineKind, duration_secs: f64) -> Vec<Stat
     }
     assert_eq!(
         states.last(),
-        out.last(),
+        Some(&whole.state()),
         "run() and step() take the same steps"
     );
     states

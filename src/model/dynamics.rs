@@ -84,14 +84,63 @@ pub fn friction(column: &Column, roller: &Roller, x: &StateVec) -> Friction {
     }
 }
 
-/// Generalized load on `(phi1, phi2, psi)` in state `x`, section 2.
-fn generalized_load(model: &Model, x: &StateVec) -> [f64; 3] {
+/// The load at the tip in one state, whatever its kind.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TipLoad {
+    /// Force on the tip (for the roller: of the band on the roller), in N.
+    pub force_n: Vector2<f64>,
+    /// Generalized forces on `(phi1, phi2, psi)`.
+    pub generalized_n_m: [f64; 3],
+    /// Angle from the ideal follower direction, eq. (23) (0 for ideal loads).
+    pub delta_rad: f64,
+    /// The roller's slip was regularized (stick-slip).
+    pub regularized: bool,
+}
+
+/// The tip load of `model` in state `x` (section 2).
+#[must_use]
+pub fn tip_load(model: &Model, x: &StateVec) -> TipLoad {
     let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
+    let ideal = |force_n: Vector2<f64>| TipLoad {
+        force_n,
+        generalized_n_m: [
+            force_n.dot(&(l1 * normal(x[0]))),
+            force_n.dot(&(l2 * normal(x[1]))),
+            0.0,
+        ],
+        delta_rad: 0.0,
+        regularized: false,
+    };
     match model.load {
-        Load::Follower { force_n } => [-force_n * l1 * (x[1] - x[0]).sin(), 0.0, 0.0],
-        Load::Dead { force_n } => [force_n * l1 * x[0].sin(), force_n * l2 * x[1].sin(), 0.0],
-        Load::Roller(roller) => friction(&model.column, &roller, x).generalized_n_m,
+        Load::Follower { force_n } => ideal(-force_n * unit(x[1])),
+        Load::Dead { force_n } => ideal(Vector2::new(-force_n, 0.0)),
+        Load::Roller(roller) => {
+            let f = friction(&model.column, &roller, x);
+            TipLoad {
+                force_n: f.force_n,
+                generalized_n_m: f.generalized_n_m,
+                delta_rad: f.delta_rad,
+                regularized: f.regularized,
+            }
+        }
     }
+}
+
+/// Torques of the joints' springs and dampers `(at O on phi1, at A on
+/// phi2 - phi1)`, in N m.
+#[must_use]
+pub fn joint_torques_nm(column: &Column, x: &StateVec) -> [f64; 2] {
+    let Column {
+        k1_nm_per_rad: k1,
+        k2_nm_per_rad: k2,
+        c1_nms_per_rad: c1,
+        c2_nms_per_rad: c2,
+        ..
+    } = *column;
+    [
+        -k1 * x[0] - c1 * x[3],
+        -k2 * (x[1] - x[0]) - c2 * (x[4] - x[3]),
+    ]
 }
 
 /// The state derivative of the nonlinear equations of motion (section 3,
@@ -100,24 +149,16 @@ fn generalized_load(model: &Model, x: &StateVec) -> [f64; 3] {
 /// state that starts consistent stays so.
 #[must_use]
 pub fn state_derivative(model: &Model, x: &StateVec) -> StateVec {
-    let Column {
-        k1_nm_per_rad: k1,
-        k2_nm_per_rad: k2,
-        c1_nms_per_rad: c1,
-        c2_nms_per_rad: c2,
-        ..
-    } = model.column;
     let inertia = model.inertia();
     let (phi1, phi2, phi1_dot, phi2_dot) = (x[0], x[1], x[3], x[4]);
     let d = phi2 - phi1;
     let (sin_d, cos_d) = d.sin_cos();
-    let [q1, q2, q3] = generalized_load(model, x);
+    let [q1, q2, q3] = tip_load(model, x).generalized_n_m;
+    // The torque at A acts on rod 2, and back on rod 1.
+    let [torque_o, torque_a] = joint_torques_nm(&model.column, x);
     let b = inertia.b_kg_m2;
-    let rhs1 = q1 + b * sin_d * phi2_dot * phi2_dot - (k1 + k2) * phi1 + k2 * phi2
-        - (c1 + c2) * phi1_dot
-        + c2 * phi2_dot;
-    let rhs2 =
-        q2 - b * sin_d * phi1_dot * phi1_dot + k2 * (phi1 - phi2) + c2 * (phi1_dot - phi2_dot);
+    let rhs1 = q1 + b * sin_d * phi2_dot * phi2_dot + torque_o - torque_a;
+    let rhs2 = q2 - b * sin_d * phi1_dot * phi1_dot + torque_a;
     // 2x2 mass matrix [[A, B cos d], [B cos d, C]]; its determinant is at
     // least A C - B^2 > 0, which `Model::validate` guarantees.
     let (a, c, b_cos) = (inertia.a_kg_m2, inertia.c_kg_m2, b * cos_d);

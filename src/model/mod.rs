@@ -8,7 +8,8 @@ mod params;
 mod presets;
 
 pub use dynamics::{
-    Friction, SLIP_REGULARIZATION_M_PER_S, StateVec, energy_j, friction, state_derivative,
+    Friction, SLIP_REGULARIZATION_M_PER_S, StateVec, TipLoad, energy_j, friction, joint_torques_nm,
+    state_derivative, tip_load,
 };
 pub use keys::{Assignment, KEYS, KeySpec, apply_assignments, parse_assignment};
 pub use linear::{LinearModel, linearize};

@@ -4,7 +4,7 @@
 use nalgebra::Vector2;
 use serde::Serialize;
 
-use crate::model::{Load, Model, StateVec, energy_j, friction};
+use crate::model::{Model, StateVec, energy_j, tip_load};
 
 /// The observables of one state.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -47,25 +47,15 @@ impl Observables {
 pub fn observe(model: &Model, t_secs: f64, x: &StateVec) -> Observables {
     let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
     let (phi1, phi2) = (x[0], x[1]);
-    let e2 = Vector2::new(phi2.cos(), phi2.sin());
-    let tip = l1 * Vector2::new(phi1.cos(), phi1.sin()) + l2 * e2;
+    let tip = l1 * Vector2::new(phi1.cos(), phi1.sin()) + l2 * Vector2::new(phi2.cos(), phi2.sin());
     let (kinetic_j, spring_j) = energy_j(model, x);
-    let rates = [x[3], x[4], x[5]];
-    let (force, delta_rad, generalized, stick_slip) = match model.load {
-        Load::Follower { force_n } => {
-            let q1 = -force_n * l1 * (phi2 - phi1).sin();
-            (-force_n * e2, 0.0, [q1, 0.0, 0.0], false)
-        }
-        Load::Dead { force_n } => {
-            let q = [force_n * l1 * phi1.sin(), force_n * l2 * phi2.sin(), 0.0];
-            (Vector2::new(-force_n, 0.0), 0.0, q, false)
-        }
-        Load::Roller(roller) => {
-            let f = friction(&model.column, &roller, x);
-            (f.force_n, f.delta_rad, f.generalized_n_m, f.regularized)
-        }
-    };
-    let band_power_w = generalized.iter().zip(rates).map(|(q, v)| q * v).sum();
+    let load = tip_load(model, x);
+    let band_power_w = load
+        .generalized_n_m
+        .iter()
+        .zip([x[3], x[4], x[5]])
+        .map(|(q, v)| q * v)
+        .sum();
     Observables {
         t_secs,
         phi1_rad: phi1,
@@ -74,12 +64,12 @@ pub fn observe(model: &Model, t_secs: f64, x: &StateVec) -> Observables {
         phi1_dot_rad_per_s: x[3],
         phi2_dot_rad_per_s: x[4],
         psi_dot_rad_per_s: x[5],
-        delta_rad,
-        tip_force_n: [force.x, force.y],
+        delta_rad: load.delta_rad,
+        tip_force_n: [load.force_n.x, load.force_n.y],
         kinetic_j,
         spring_j,
         band_power_w,
         tip_m: [tip.x, tip.y],
-        stick_slip,
+        stick_slip: load.regularized,
     }
 }

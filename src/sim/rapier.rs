@@ -5,7 +5,9 @@
 
 use rapier2d::prelude::*;
 
-use crate::model::{Column, Load, Model, Roller, SLIP_REGULARIZATION_M_PER_S, StateVec};
+use crate::model::{
+    Column, Load, Model, Roller, SLIP_REGULARIZATION_M_PER_S, StateVec, joint_torques_nm, tip_load,
+};
 
 /// The rapier world of one column, and the roller's spin (f64, ours).
 pub struct RapierEngine {
@@ -185,23 +187,17 @@ impl RapierEngine {
         }
         self.previous_rates = Some([now[3], now[4]]);
         let dt = f64::from(self.world.integration_parameters.dt);
-        let Column {
-            k1_nm_per_rad: k1,
-            k2_nm_per_rad: k2,
-            c1_nms_per_rad: c1,
-            c2_nms_per_rad: c2,
-            ..
-        } = model.column;
-        let torque_o = -k1 * x[0] - c1 * x[3];
-        let torque_a = -k2 * (x[1] - x[0]) - c2 * (x[4] - x[3]);
+        let [torque_o, torque_a] = joint_torques_nm(&model.column, &x);
         let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
         let tip = vec2(
             l1 * x[0].cos() + l2 * x[1].cos(),
             l1 * x[0].sin() + l2 * x[1].sin(),
         );
         let force_n = match model.load {
-            Load::Follower { force_n } => vec2(-force_n * x[1].cos(), -force_n * x[1].sin()),
-            Load::Dead { force_n } => vec2(-force_n, 0.0),
+            Load::Follower { .. } | Load::Dead { .. } => {
+                let f = tip_load(model, &x).force_n;
+                vec2(f.x, f.y)
+            }
             Load::Roller(roller) => {
                 let (force, psi_dot) = roller_step(&model.column, &roller, &x, dt);
                 self.psi_dot_rad_per_s = psi_dot;
