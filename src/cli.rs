@@ -142,9 +142,14 @@ pub fn run() -> ExitCode {
         }
     };
     let Some(command) = cli.command else {
-        // No subcommand: the help, until the app is what runs here.
-        let _ = <Cli as clap::CommandFactory>::command().print_help();
-        return ExitCode::SUCCESS;
+        // No subcommand: the app.
+        return match zieglerlab::app::run() {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(error) => {
+                eprintln!("error: the app could not start: {error}");
+                ExitCode::from(2)
+            }
+        };
     };
     match execute(command) {
         Ok(()) => ExitCode::SUCCESS,

@@ -8,5 +8,6 @@
 #![deny(clippy::unwrap_used, clippy::expect_used)]
 
 pub mod analysis;
+pub mod app;
 pub mod model;
 pub mod sim;

@@ -122,6 +122,31 @@ fn within_bounds(x: &StateVec) -> bool {
 }
 
 impl Simulation {
+    /// The engine that advances this run.
+    #[must_use]
+    pub fn engine(&self) -> EngineKind {
+        match self.engine {
+            Engine::Rapier(_) => EngineKind::Rapier,
+            Engine::Reference(_) => EngineKind::Reference,
+        }
+    }
+
+    /// Goes on from state `x` with engine `kind` (a kick, a change of
+    /// engine): the time and the model are kept, a stopped run runs again.
+    ///
+    /// # Errors
+    /// As [`Simulation::new`]; the run is then unchanged.
+    pub fn restart_from(&mut self, kind: EngineKind, x: StateVec) -> Result<(), SimError> {
+        let fresh = Self::new(self.model, kind, x, self.step_secs)?;
+        let t_secs = self.time_secs();
+        self.engine = fresh.engine;
+        if let Engine::Reference(engine) = &mut self.engine {
+            engine.t_secs = t_secs;
+        }
+        self.status = Status::Running;
+        Ok(())
+    }
+
     /// A run of `model` from state `x0`, advancing `step_secs` per step.
     ///
     /// # Errors

@@ -1,0 +1,605 @@
+//! The interactive visualiser: the animated column, the load slider with its
+//! stability ranges, time controls and live root-locus plots. Reads the
+//! model, the analysis and the simulation; owns only what it shows.
+
+mod plots;
+mod scene;
+mod theme;
+
+use std::collections::VecDeque;
+
+use eframe::egui::{self, Color32, RichText, Sense, Stroke, pos2, vec2};
+
+use crate::analysis::{
+    AffinePencil, C64, Locus, State, Transition, classify, critical_loads, locus,
+};
+use crate::model::{Model, PRESETS, preset};
+use crate::sim::{DEFAULT_STEP_SECS, EngineKind, Simulation, Status, initial_state};
+use theme::Theme;
+
+/// The load slider's range and the locus's, on the common axis p.
+pub const LOAD_MAX_P: f64 = 8.0;
+/// Evenly spaced loads of the plotted locus (plus the refinement).
+const LOCUS_SAMPLES: usize = 400;
+/// The simulation never advances more than this much wall time per frame,
+/// so a slow frame cannot make the run jump.
+const MAX_FRAME_SECS: f64 = 0.1;
+/// The size of a kick, in rad on both angles.
+const KICK_RAD: f64 = 0.01;
+/// The key the settings are stored under.
+const SETTINGS_KEY: &str = "zieglerlab-settings";
+
+/// What persists between runs of the app.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(default)]
+pub struct Settings {
+    pub preset: String,
+    pub model: Model,
+    pub engine: EngineKind,
+    /// Simulated seconds per wall second.
+    pub speed: f64,
+    pub projector: bool,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        let roller = &PRESETS[3];
+        Self {
+            preset: roller.name.to_owned(),
+            model: roller.model(),
+            engine: EngineKind::Rapier,
+            speed: 1.0,
+            projector: false,
+        }
+    }
+}
+
+/// The linear analysis of the current parameters, over the slider's range.
+struct Analysis {
+    /// The model at p = 0: the locus depends on everything but the load.
+    key: Model,
+    pencil: AffinePencil,
+    locus: Locus,
+    transitions: Vec<Transition>,
+    /// The state at p = 0, where the first range starts.
+    first: State,
+}
+
+impl Analysis {
+    fn new(model: &Model) -> Result<Self, String> {
+        let key = model.at_load(0.0);
+        let pencil = AffinePencil::new(&key).map_err(|e| e.to_string())?;
+        let locus = locus(&pencil, 0.0, LOAD_MAX_P, LOCUS_SAMPLES).map_err(|e| e.to_string())?;
+        let transitions = critical_loads(&pencil, 0.0, LOAD_MAX_P).map_err(|e| e.to_string())?;
+        let at_zero = pencil.spectrum(0.0).map_err(|e| e.to_string())?;
+        let first = classify(&at_zero.eigenvalues, at_zero.scale_per_s).state;
+        Ok(Self {
+            key,
+            pencil,
+            locus,
+            transitions,
+            first,
+        })
+    }
+}
+
+/// The app.
+pub struct ZieglerApp {
+    settings: Settings,
+    sim: Simulation,
+    running: bool,
+    trail: VecDeque<(f64, [f64; 2])>,
+    analysis: Option<Analysis>,
+    /// Simulated time owed to the run by the wall clock, in s.
+    owed_secs: f64,
+    /// The last problem to tell the user about.
+    message: Option<String>,
+    /// The theme applied to the context (None: not yet).
+    applied_projector: Option<bool>,
+}
+
+impl ZieglerApp {
+    /// The app with `settings`, its run started from the standard kick.
+    ///
+    /// # Errors
+    /// Settings that make no valid model or simulation.
+    pub fn new(settings: Settings) -> Result<Self, String> {
+        let model = settings.model;
+        let sim = Simulation::new(
+            model,
+            settings.engine,
+            initial_state(&model, 1e-3),
+            DEFAULT_STEP_SECS,
+        )
+        .map_err(|e| e.to_string())?;
+        let mut app = Self {
+            settings,
+            sim,
+            running: true,
+            trail: VecDeque::new(),
+            analysis: None,
+            owed_secs: 0.0,
+            message: None,
+            applied_projector: None,
+        };
+        app.refresh_analysis();
+        Ok(app)
+    }
+
+    /// The app from eframe's stored settings, or the defaults (saying what
+    /// was ignored).
+    #[must_use]
+    pub fn from_storage(storage: Option<&dyn eframe::Storage>) -> Self {
+        let text = storage.and_then(|s| s.get_string(SETTINGS_KEY));
+        Self::from_stored_text(text.as_deref())
+    }
+
+    /// The app from settings stored as text (RON, as eframe writes them), or
+    /// the defaults with a message saying what was ignored.
+    #[must_use]
+    pub fn from_stored_text(text: Option<&str>) -> Self {
+        let mut note = None;
+        let stored = text.and_then(|text| match ron::from_str::<Settings>(text) {
+            Ok(settings) => Some(settings),
+            Err(error) => {
+                note = Some(format!(
+                    "stored settings could not be read ({error}); starting from the defaults"
+                ));
+                None
+            }
+        });
+        let app = stored.map_or_else(|| Self::new(Settings::default()), Self::new);
+        let mut app = match app {
+            Ok(app) => app,
+            Err(error) => {
+                note = Some(format!(
+                    "stored settings ignored ({error}); starting from the defaults"
+                ));
+                Self::defaults()
+            }
+        };
+        app.message = note;
+        app
+    }
+
+    fn defaults() -> Self {
+        // The roller preset is valid by construction; this cannot fail.
+        match Self::new(Settings::default()) {
+            Ok(app) => app,
+            Err(error) => unreachable!("the default settings are valid: {error}"),
+        }
+    }
+
+    /// The settings in use.
+    #[must_use]
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// The running simulation.
+    #[must_use]
+    pub fn simulation(&self) -> &Simulation {
+        &self.sim
+    }
+
+    /// Advances the run by `wall_secs` of wall-clock time at the chosen speed.
+    pub fn advance(&mut self, wall_secs: f64) {
+        if !self.running {
+            return;
+        }
+        self.owed_secs += wall_secs.min(MAX_FRAME_SECS) * self.settings.speed;
+        let step = self.sim.step_secs();
+        while self.owed_secs >= step {
+            self.owed_secs -= step;
+            if self.sim.step() != Status::Running {
+                self.running = false;
+                self.owed_secs = 0.0;
+                break;
+            }
+            scene::push_trail(&mut self.trail, &self.sim.observe());
+        }
+    }
+
+    /// Recomputes the locus and the critical loads when the parameters
+    /// (anything but the load) changed; keeps them otherwise.
+    fn refresh_analysis(&mut self) {
+        let key = self.settings.model.at_load(0.0);
+        if self.analysis.as_ref().is_some_and(|a| a.key == key) {
+            return;
+        }
+        match Analysis::new(&self.settings.model) {
+            Ok(analysis) => self.analysis = Some(analysis),
+            Err(error) => self.message = Some(format!("analysis unavailable: {error}")),
+        }
+    }
+
+    /// Applies a changed model to the running simulation.
+    fn set_model(&mut self, model: Model) {
+        match self.sim.set_model(model) {
+            Ok(()) => {
+                self.settings.model = model;
+                self.refresh_analysis();
+            }
+            Err(error) => self.message = Some(error.to_string()),
+        }
+    }
+
+    fn reset(&mut self) {
+        let model = self.settings.model;
+        match Simulation::new(
+            model,
+            self.settings.engine,
+            initial_state(&model, 1e-3),
+            DEFAULT_STEP_SECS,
+        ) {
+            Ok(sim) => {
+                self.sim = sim;
+                self.trail.clear();
+                self.owed_secs = 0.0;
+                self.running = true;
+            }
+            Err(error) => self.message = Some(error.to_string()),
+        }
+    }
+
+    fn kick(&mut self) {
+        let mut x = self.sim.state();
+        x[0] += KICK_RAD;
+        x[1] += KICK_RAD;
+        if let Err(error) = self.sim.restart_from(self.sim.engine(), x) {
+            self.message = Some(error.to_string());
+        }
+        self.running = true;
+    }
+
+    fn set_load(&mut self, p: f64) {
+        let p = p.clamp(0.0, LOAD_MAX_P);
+        self.set_model(self.settings.model.at_load(p));
+    }
+
+    fn keyboard(&mut self, ctx: &egui::Context) {
+        let step = 0.01 * LOAD_MAX_P;
+        let (space, up, down, kick, reset, projector) = ctx.input(|i| {
+            (
+                i.key_pressed(egui::Key::Space),
+                i.key_pressed(egui::Key::ArrowRight) || i.key_pressed(egui::Key::ArrowUp),
+                i.key_pressed(egui::Key::ArrowLeft) || i.key_pressed(egui::Key::ArrowDown),
+                i.key_pressed(egui::Key::K),
+                i.key_pressed(egui::Key::R),
+                i.key_pressed(egui::Key::P),
+            )
+        });
+        if ctx.egui_wants_keyboard_input() {
+            return;
+        }
+        if space {
+            self.running = !self.running;
+        }
+        let p = self.settings.model.load_p();
+        if up {
+            self.set_load(p + step);
+        }
+        if down {
+            self.set_load(p - step);
+        }
+        if kick {
+            self.kick();
+        }
+        if reset {
+            self.reset();
+        }
+        if projector {
+            self.settings.projector = !self.settings.projector;
+        }
+    }
+
+    fn theme(&self) -> Theme {
+        if self.settings.projector {
+            Theme::PROJECTOR
+        } else {
+            Theme::NORMAL
+        }
+    }
+
+    /// The whole window's contents.
+    pub fn contents_ui(&mut self, ui: &mut egui::Ui) {
+        let theme = self.theme();
+        egui::Panel::left("controls")
+            .resizable(false)
+            .exact_size(320.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| self.controls_ui(ui, &theme));
+            });
+        egui::CentralPanel::default().show(ui, |ui| {
+            let height = ui.available_height();
+            let now = self.sim.observe();
+            ui.allocate_ui(vec2(ui.available_width(), 0.55 * height), |ui| {
+                scene::scene_ui(
+                    ui,
+                    &scene::SceneInput {
+                        model: &self.settings.model,
+                        now: &now,
+                        trail: &self.trail,
+                        status: self.sim.status(),
+                        theme: &theme,
+                    },
+                );
+            });
+            self.plots_ui(ui, &theme);
+        });
+    }
+
+    fn current_eigenvalues(&self) -> Vec<C64> {
+        self.analysis
+            .as_ref()
+            .and_then(|a| a.pencil.spectrum(self.settings.model.load_p()).ok())
+            .map(|s| s.all().collect())
+            .unwrap_or_default()
+    }
+
+    fn plots_ui(&self, ui: &mut egui::Ui, theme: &Theme) {
+        let Some(analysis) = &self.analysis else {
+            ui.label("No root locus for these parameters.");
+            return;
+        };
+        let load = self.settings.model.load_p();
+        let ranges = plots::ranges(&analysis.transitions, analysis.first, LOAD_MAX_P);
+        let current = self.current_eigenvalues();
+        let width = ui.available_width();
+        let height = ui.available_height();
+        ui.horizontal(|ui| {
+            ui.allocate_ui(vec2(0.42 * width, height), |ui| {
+                plots::root_locus_ui(ui, &analysis.locus, &current, theme);
+            });
+            ui.vertical(|ui| {
+                ui.allocate_ui(vec2(ui.available_width(), 0.5 * height - 4.0), |ui| {
+                    plots::versus_load_ui(ui, &analysis.locus, &ranges, load, false, theme);
+                });
+                ui.allocate_ui(vec2(ui.available_width(), 0.5 * height - 4.0), |ui| {
+                    plots::versus_load_ui(ui, &analysis.locus, &ranges, load, true, theme);
+                });
+            });
+        });
+    }
+
+    fn controls_ui(&mut self, ui: &mut egui::Ui, theme: &Theme) {
+        ui.heading("zieglerlab");
+        if let Some(message) = self.message.clone() {
+            ui.horizontal_wrapped(|ui| {
+                ui.colored_label(theme.divergence, message);
+                if ui.small_button("dismiss").clicked() {
+                    self.message = None;
+                }
+            });
+        }
+        ui.separator();
+        // The model.
+        let mut chosen = self.settings.preset.clone();
+        egui::ComboBox::from_label("model")
+            .selected_text(chosen.clone())
+            .show_ui(ui, |ui| {
+                for p in &PRESETS {
+                    ui.selectable_value(&mut chosen, p.name.to_owned(), p.name)
+                        .on_hover_text(p.description);
+                }
+            });
+        if chosen != self.settings.preset
+            && let Ok(preset) = preset(&chosen)
+        {
+            self.settings.preset = chosen;
+            self.settings.model = preset.model().at_load(self.settings.model.load_p());
+            self.refresh_analysis();
+            self.reset();
+        }
+        if let Ok(p) = preset(&self.settings.preset) {
+            ui.label(RichText::new(p.description).small());
+        }
+        let mut engine = self.settings.engine;
+        egui::ComboBox::from_label("engine")
+            .selected_text(format!("{engine:?}").to_lowercase())
+            .show_ui(ui, |ui| {
+                ui.selectable_value(&mut engine, EngineKind::Rapier, "rapier")
+                    .on_hover_text("rapier2d multibody, the roller's spin implicit");
+                ui.selectable_value(&mut engine, EngineKind::Reference, "reference")
+                    .on_hover_text("adaptive Dormand-Prince 5(4) on the exact equations");
+            });
+        if engine != self.settings.engine {
+            self.settings.engine = engine;
+            if let Err(error) = self.sim.restart_from(engine, self.sim.state()) {
+                self.message = Some(error.to_string());
+            }
+        }
+        ui.separator();
+        self.load_ui(ui, theme);
+        ui.separator();
+        self.time_ui(ui);
+        ui.separator();
+        self.status_ui(ui, theme);
+        ui.separator();
+        ui.checkbox(&mut self.settings.projector, "projector mode (P)");
+        egui::CollapsingHeader::new("keys").show(ui, |ui| {
+            for (key, what) in [
+                ("space", "play / pause"),
+                ("← →", "load down / up by 0.08"),
+                ("K", "kick (0.01 rad)"),
+                ("R", "reset"),
+                ("P", "projector mode"),
+            ] {
+                ui.horizontal(|ui| {
+                    ui.monospace(format!("{key:>5}"));
+                    ui.label(what);
+                });
+            }
+        });
+    }
+
+    /// The load slider with the stability ranges drawn under it.
+    fn load_ui(&mut self, ui: &mut egui::Ui, theme: &Theme) {
+        let mut p = self.settings.model.load_p();
+        let response = ui.add(egui::Slider::new(&mut p, 0.0..=LOAD_MAX_P).text("load p = P l/k"));
+        if response.changed() {
+            self.set_load(p);
+        }
+        if let Some(roller) = self.settings.model.roller() {
+            ui.label(format!(
+                "roller: q = R l/k = p/μ = {:.3}   (μ = {})",
+                p / roller.mu,
+                roller.mu
+            ));
+        }
+        let Some(analysis) = &self.analysis else {
+            return;
+        };
+        let ranges = plots::ranges(&analysis.transitions, analysis.first, LOAD_MAX_P);
+        let (rect, _) = ui.allocate_exact_size(vec2(ui.available_width(), 14.0), Sense::hover());
+        let painter = ui.painter_at(rect);
+        #[expect(clippy::cast_possible_truncation, reason = "pixels")]
+        let x_of = |load: f64| rect.left() + rect.width() * (load / LOAD_MAX_P) as f32;
+        for &(start, end, state) in &ranges {
+            let r = egui::Rect::from_min_max(
+                pos2(x_of(start), rect.top()),
+                pos2(x_of(end), rect.bottom()),
+            );
+            painter.rect_filled(r, 0.0, theme.state_color(state));
+        }
+        let x = x_of(self.settings.model.load_p());
+        painter.line_segment(
+            [pos2(x, rect.top() - 2.0), pos2(x, rect.bottom() + 2.0)],
+            Stroke::new(3.0, Color32::WHITE),
+        );
+        for t in &analysis.transitions {
+            ui.label(
+                RichText::new(format!(
+                    "p = {:.4}: {} → {}",
+                    t.load,
+                    t.from.name(),
+                    t.to.name()
+                ))
+                .color(theme.state_color(t.to)),
+            );
+        }
+    }
+
+    fn time_ui(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal(|ui| {
+            if ui
+                .button(if self.running { "pause" } else { "play" })
+                .clicked()
+            {
+                self.running = !self.running;
+            }
+            if ui.button("step").clicked() {
+                self.running = false;
+                self.sim.step();
+                scene::push_trail(&mut self.trail, &self.sim.observe());
+            }
+            if ui.button("kick").clicked() {
+                self.kick();
+            }
+            if ui.button("reset").clicked() {
+                self.reset();
+            }
+        });
+        ui.add(
+            egui::Slider::new(&mut self.settings.speed, 0.1..=10.0)
+                .logarithmic(true)
+                .text("× speed"),
+        );
+        ui.label(format!(
+            "t = {:.2} s   ({})",
+            self.sim.time_secs(),
+            self.sim.status()
+        ));
+    }
+
+    /// The stability of the current load in words and numbers.
+    fn status_ui(&self, ui: &mut egui::Ui, theme: &Theme) {
+        let Some(analysis) = &self.analysis else {
+            return;
+        };
+        let Ok(spectrum) = analysis.pencil.spectrum(self.settings.model.load_p()) else {
+            return;
+        };
+        let s = classify(&spectrum.eigenvalues, spectrum.scale_per_s);
+        let growth = s.growth_rate_per_s();
+        let frequency = s.frequency_rad_per_s();
+        let weak = s.state == State::Flutter && growth < 0.01 * frequency;
+        let title = match (s.state, weak) {
+            (State::Flutter, true) => "weak flutter".to_owned(),
+            (state, _) => state.name().to_owned(),
+        };
+        ui.label(
+            RichText::new(title)
+                .heading()
+                .color(theme.state_color(s.state)),
+        );
+        ui.label(format!("growth rate  {growth:+.5} 1/s"));
+        match s.e_folding_secs() {
+            Some(secs) => ui.label(format!("e-folding time  {secs:.1} s")),
+            None if growth < 0.0 => ui.label(format!("decay time  {:.1} s", -1.0 / growth)),
+            None => ui.label("neutral: no growth, no decay"),
+        };
+        if frequency > s.tolerance_per_s {
+            let period = std::f64::consts::TAU / frequency;
+            ui.label(format!(
+                "frequency  {frequency:.4} rad/s  (period {period:.1} s)"
+            ));
+        } else {
+            ui.label("non-oscillatory: the dominant eigenvalue is real");
+        }
+        if weak {
+            ui.label(
+                RichText::new(format!(
+                    "grows by {:.2}% per period: watch for minutes, not seconds",
+                    100.0 * (growth * std::f64::consts::TAU / frequency).exp_m1()
+                ))
+                .small(),
+            );
+        }
+    }
+}
+
+impl eframe::App for ZieglerApp {
+    fn logic(&mut self, ctx: &egui::Context, _frame: &mut eframe::Frame) {
+        if self.applied_projector != Some(self.settings.projector) {
+            self.theme().apply(ctx);
+            self.applied_projector = Some(self.settings.projector);
+        }
+        self.keyboard(ctx);
+        let wall_secs = f64::from(ctx.input(|i| i.unstable_dt));
+        self.advance(wall_secs);
+        if self.running {
+            ctx.request_repaint();
+        }
+    }
+
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        self.contents_ui(ui);
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        match ron::to_string(&self.settings) {
+            Ok(text) => storage.set_string(SETTINGS_KEY, text),
+            Err(error) => self.message = Some(format!("settings not saved: {error}")),
+        }
+    }
+}
+
+/// Opens the app window.
+///
+/// # Errors
+/// When no window or graphics context can be created.
+pub fn run() -> eframe::Result {
+    let options = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default()
+            .with_title("zieglerlab")
+            .with_inner_size([1280.0, 800.0])
+            .with_min_inner_size([1024.0, 700.0]),
+        ..Default::default()
+    };
+    eframe::run_native(
+        "zieglerlab",
+        options,
+        Box::new(|cc| Ok(Box::new(ZieglerApp::from_storage(cc.storage)))),
+    )
+}

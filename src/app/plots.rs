@@ -1,0 +1,141 @@
+//! The live plots: the root locus in the complex plane, and Re, Im of the
+//! eigenvalues against the load with the current load and the stability
+//! ranges marked (the paper's Figs 3 and 8).
+
+use eframe::egui::{self, Color32};
+use egui_plot::{Line, Plot, PlotPoints, Points, Span, VLine};
+
+use super::theme::{Theme, load_color};
+use crate::analysis::{C64, Locus, State, Transition};
+
+/// Branch segments are drawn in this many colour bands along the load.
+const COLOR_BANDS: usize = 24;
+
+/// The loads where each stability range starts, with its state.
+pub fn ranges(transitions: &[Transition], first: State, max: f64) -> Vec<(f64, f64, State)> {
+    let mut out = Vec::new();
+    let (mut start, mut state) = (0.0, first);
+    for t in transitions {
+        out.push((start, t.load, state));
+        (start, state) = (t.load, t.to);
+    }
+    out.push((start, max, state));
+    out
+}
+
+/// The root locus: every branch as a curve coloured by load, the current
+/// eigenvalues as large markers, the imaginary axis emphasised.
+pub fn root_locus_ui(ui: &mut egui::Ui, locus: &Locus, current: &[C64], theme: &Theme) {
+    let (min, max) = (
+        locus.loads.first().copied().unwrap_or(0.0),
+        locus.loads.last().copied().unwrap_or(1.0),
+    );
+    // Frame the column's modes: the roller's spin relaxation runs far out on
+    // the negative real axis and would squeeze everything else to a point.
+    let extent = locus
+        .branches
+        .iter()
+        .flatten()
+        .map(|z| z.im.abs())
+        .fold(0.0, f64::max)
+        .max(1e-3);
+    Plot::new("root locus")
+        .data_aspect(1.0)
+        .default_x_bounds(-1.3 * extent, 1.3 * extent)
+        .default_y_bounds(-1.15 * extent, 1.15 * extent)
+        .x_axis_label("Re λ (1/s)")
+        .y_axis_label("Im λ (rad/s)")
+        .show(ui, |plot_ui| {
+            plot_ui.vline(
+                VLine::new("Re λ = 0", 0.0)
+                    .color(theme.axis)
+                    .width(2.0 * theme.stroke_scale),
+            );
+            let n = locus.loads.len();
+            for branch in &locus.branches {
+                for band in 0..COLOR_BANDS {
+                    let (i0, i1) = (
+                        band * (n - 1) / COLOR_BANDS,
+                        ((band + 1) * (n - 1) / COLOR_BANDS).min(n - 1),
+                    );
+                    if i1 <= i0 {
+                        continue;
+                    }
+                    let points: PlotPoints<'_> =
+                        (i0..=i1).map(|i| [branch[i].re, branch[i].im]).collect();
+                    let mid = 0.5 * (locus.loads[i0] + locus.loads[i1]);
+                    plot_ui.line(
+                        Line::new("", points)
+                            .color(load_color(mid, min, max))
+                            .width(2.0 * theme.stroke_scale),
+                    );
+                }
+            }
+            let now: PlotPoints<'_> = current.iter().map(|z| [z.re, z.im]).collect();
+            plot_ui.points(
+                Points::new("now", now)
+                    .radius(6.0 * theme.stroke_scale)
+                    .color(Color32::WHITE)
+                    .filled(true),
+            );
+        });
+}
+
+/// Re(lambda) or Im(lambda) of every branch against the load, with the
+/// stability ranges shaded and a cursor at the current load.
+pub fn versus_load_ui(
+    ui: &mut egui::Ui,
+    locus: &Locus,
+    ranges: &[(f64, f64, State)],
+    load: f64,
+    imaginary: bool,
+    theme: &Theme,
+) {
+    let label = if imaginary {
+        "Im λ (rad/s)"
+    } else {
+        "Re λ (1/s)"
+    };
+    let extent = locus
+        .branches
+        .iter()
+        .flatten()
+        .filter(|z| z.im.abs() > 0.0 || !imaginary)
+        .map(|z| {
+            if imaginary {
+                z.im.abs()
+            } else {
+                z.im.abs().max(z.re.abs().min(2.0 * z.im.abs().max(0.5)))
+            }
+        })
+        .fold(0.0, f64::max)
+        .max(1e-3);
+    Plot::new(label)
+        .x_axis_label("p = P l/k")
+        .y_axis_label(label)
+        .default_y_bounds(-1.1 * extent, 1.1 * extent)
+        .show(ui, |plot_ui| {
+            for &(start, end, state) in ranges {
+                let color = theme.state_color(state).gamma_multiply(0.18);
+                plot_ui.span(Span::new(state.name(), start..=end).fill(color));
+            }
+            for branch in &locus.branches {
+                let points: PlotPoints<'_> = locus
+                    .loads
+                    .iter()
+                    .zip(branch)
+                    .map(|(&p, z)| [p, if imaginary { z.im } else { z.re }])
+                    .collect();
+                plot_ui.line(
+                    Line::new("", points)
+                        .color(theme.text)
+                        .width(1.5 * theme.stroke_scale),
+                );
+            }
+            plot_ui.vline(
+                VLine::new("load", load)
+                    .color(theme.friction)
+                    .width(2.0 * theme.stroke_scale),
+            );
+        });
+}

@@ -1,0 +1,372 @@
+//! The animated column seen from above: clamp, rods, joint springs, the
+//! roller spinning with psi over the band moving at V, force arrows, the
+//! angle delta and a fading trail of the tip.
+
+use std::collections::VecDeque;
+use std::f64::consts::TAU;
+
+use eframe::egui::{
+    self, Align2, Color32, FontId, Pos2, Rect, Sense, Shape, Stroke, Vec2, emath::RectTransform,
+    pos2,
+};
+
+use super::theme::Theme;
+use crate::model::Model;
+use crate::sim::{Observables, Status};
+
+/// How long the tip's trail lasts, in simulated seconds.
+pub const TRAIL_SECS: f64 = 6.0;
+
+/// What the scene draws besides the column itself.
+pub struct SceneInput<'a> {
+    pub model: &'a Model,
+    pub now: &'a Observables,
+    pub trail: &'a VecDeque<(f64, [f64; 2])>,
+    pub status: Status,
+    pub theme: &'a Theme,
+}
+
+fn p(x: f64, y: f64) -> Pos2 {
+    #[expect(clippy::cast_possible_truncation, reason = "screen coordinates")]
+    pos2(x as f32, y as f32)
+}
+
+/// World (m, y up) to screen (pixels, y down): the only y flip.
+struct View {
+    screen_from_world: RectTransform,
+    pixels_per_m: f64,
+}
+
+impl View {
+    fn to(&self, x: f64, y: f64) -> Pos2 {
+        self.screen_from_world.transform_pos(p(x, y))
+    }
+
+    #[expect(clippy::cast_possible_truncation, reason = "pixels")]
+    fn px(&self, meters: f64) -> f32 {
+        (meters * self.pixels_per_m) as f32
+    }
+}
+
+/// Draws the scene in the space left in `ui`.
+pub fn scene_ui(ui: &mut egui::Ui, input: &SceneInput<'_>) {
+    let SceneInput {
+        model,
+        now,
+        trail,
+        status,
+        theme,
+    } = *input;
+    let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::hover());
+    let rect = response.rect;
+    painter.rect_filled(rect, 0.0, theme.background);
+    let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
+    let reach = l1 + l2;
+    // The whole disc the tip can reach, plus a margin, with equal scales on
+    // both axes: the column stays in view in any configuration.
+    let margin = 0.12 * reach;
+    let (world_w, world_h) = (1.25 * reach + 2.0 * margin, 2.0 * (reach + margin));
+    let pixels_per_m = (f64::from(rect.width()) / world_w).min(f64::from(rect.height()) / world_h);
+    let half_w = 0.5 * f64::from(rect.width()) / pixels_per_m;
+    let half_h = 0.5 * f64::from(rect.height()) / pixels_per_m;
+    let center_x = 0.5 * reach;
+    let world = Rect::from_min_max(p(center_x - half_w, half_h), p(center_x + half_w, -half_h));
+    let view = View {
+        screen_from_world: RectTransform::from_to(world, rect),
+        pixels_per_m,
+    };
+    let s = theme.stroke_scale;
+    if let Some(roller) = model.roller() {
+        band(
+            &painter,
+            theme,
+            &view,
+            (reach, margin),
+            roller.band_speed_m_per_s,
+            now.t_secs,
+        );
+    }
+    clamp(&painter, theme, &view, reach);
+    trail_ui(&painter, theme, &view, trail);
+    let (phi1, phi2) = (now.phi1_rad, now.phi2_rad);
+    let a = [l1 * phi1.cos(), l1 * phi1.sin()];
+    let b = now.tip_m;
+    let spring_stroke = Stroke::new(1.5 * s, theme.spring);
+    spring(
+        &painter,
+        view.to(0.0, 0.0),
+        view.px(0.06 * reach),
+        phi1,
+        spring_stroke,
+    );
+    spring(
+        &painter,
+        view.to(a[0], a[1]),
+        view.px(0.06 * reach),
+        phi2 - phi1,
+        spring_stroke,
+    );
+    let rod = Stroke::new(5.0 * s, theme.rod);
+    painter.line_segment([view.to(0.0, 0.0), view.to(a[0], a[1])], rod);
+    painter.line_segment([view.to(a[0], a[1]), view.to(b[0], b[1])], rod);
+    for joint in [view.to(0.0, 0.0), view.to(a[0], a[1])] {
+        painter.circle_filled(joint, 6.0 * s, theme.joint);
+    }
+    forces(&painter, theme, &view, model, now, 0.35 * reach);
+    if let Some(roller) = model.roller() {
+        roller_ui(
+            &painter,
+            theme,
+            &view,
+            now,
+            roller.radius_m.max(0.02 * reach),
+        );
+    }
+    notes(&painter, theme, rect, status, now.stick_slip);
+}
+
+/// The clamp at O: a wall with hatching on the far side.
+fn clamp(painter: &egui::Painter, theme: &Theme, view: &View, reach: f64) {
+    let s = theme.stroke_scale;
+    let wall = 0.08 * reach;
+    painter.line_segment(
+        [view.to(0.0, -wall), view.to(0.0, wall)],
+        Stroke::new(3.0 * s, theme.rod),
+    );
+    for k in 0..6 {
+        let y = -wall + 2.0 * wall * f64::from(k) / 5.0;
+        let hatch = [view.to(0.0, y), view.to(-0.04 * reach, y - 0.04 * reach)];
+        painter.line_segment(hatch, Stroke::new(1.5 * s, theme.rod));
+    }
+}
+
+/// The tip's trail, fading with age.
+fn trail_ui(
+    painter: &egui::Painter,
+    theme: &Theme,
+    view: &View,
+    trail: &VecDeque<(f64, [f64; 2])>,
+) {
+    let newest = trail.back().map_or(0.0, |(t, _)| *t);
+    for (older, newer) in trail.iter().zip(trail.iter().skip(1)) {
+        let age = (newest - newer.0) / TRAIL_SECS;
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "alpha in [0, 255]"
+        )]
+        let alpha = ((1.0 - age).clamp(0.0, 1.0) * 220.0) as u8;
+        let color = Color32::from_rgba_unmultiplied(
+            theme.trail.r(),
+            theme.trail.g(),
+            theme.trail.b(),
+            alpha,
+        );
+        let segment = [
+            view.to(older.1[0], older.1[1]),
+            view.to(newer.1[0], newer.1[1]),
+        ];
+        painter.line_segment(segment, Stroke::new(2.0 * theme.stroke_scale, color));
+    }
+}
+
+/// Forces at the tip: the ideal follower direction along rod 2 (dashed) and
+/// the actual force (the band's friction for the roller), at one length, and
+/// the angle delta between them (eq. 23).
+fn forces(
+    painter: &egui::Painter,
+    theme: &Theme,
+    view: &View,
+    model: &Model,
+    now: &Observables,
+    length_m: f64,
+) {
+    let s = theme.stroke_scale;
+    let (b, phi2) = (now.tip_m, now.phi2_rad);
+    let follower = [-phi2.cos(), -phi2.sin()];
+    let force = now.tip_force_n;
+    let magnitude = force[0].hypot(force[1]);
+    if magnitude == 0.0 {
+        return;
+    }
+    let tip = view.to(b[0], b[1]);
+    let along = |d: [f64; 2]| view.to(b[0] + length_m * d[0], b[1] + length_m * d[1]) - tip;
+    dashed_arrow(
+        painter,
+        tip,
+        along(follower),
+        Stroke::new(2.0 * s, theme.follower),
+    );
+    let unit = [force[0] / magnitude, force[1] / magnitude];
+    painter.arrow(tip, along(unit), Stroke::new(3.0 * s, theme.friction));
+    if model.roller().is_some() {
+        // Beside the arrows' far ends, off to the side rod 2's normal points to.
+        let normal = [-phi2.sin(), phi2.cos()];
+        let label_at = view.to(
+            b[0] + length_m * (follower[0] + 0.35 * normal[0]),
+            b[1] + length_m * (follower[1] + 0.35 * normal[1]),
+        );
+        // Rounded first, then -0 turned into 0: no "-0.00" on screen.
+        let degrees = (now.delta_rad.to_degrees() * 100.0).round() / 100.0 + 0.0;
+        let text = format!("δ = {degrees:+.2}°");
+        painter.text(
+            label_at,
+            Align2::CENTER_CENTER,
+            text,
+            FontId::proportional(theme.text_size),
+            theme.friction,
+        );
+    }
+}
+
+/// The roller: a disc standing across rod 2, seen from above as a
+/// rectangle; marks on its rim turn with psi.
+fn roller_ui(
+    painter: &egui::Painter,
+    theme: &Theme,
+    view: &View,
+    now: &Observables,
+    radius_m: f64,
+) {
+    let s = theme.stroke_scale;
+    let (b, phi2, psi) = (now.tip_m, now.phi2_rad, now.psi_rad);
+    let t2 = [-phi2.sin(), phi2.cos()];
+    let e2 = [phi2.cos(), phi2.sin()];
+    let half_thick = 0.25 * radius_m;
+    let corner =
+        |u: f64, v: f64| view.to(b[0] + u * t2[0] + v * e2[0], b[1] + u * t2[1] + v * e2[1]);
+    let outline = vec![
+        corner(-radius_m, -half_thick),
+        corner(radius_m, -half_thick),
+        corner(radius_m, half_thick),
+        corner(-radius_m, half_thick),
+    ];
+    painter.add(Shape::convex_polygon(
+        outline,
+        theme.roller,
+        Stroke::new(1.5 * s, theme.roller_mark),
+    ));
+    for k in 0..8 {
+        let angle = psi + TAU * f64::from(k) / 8.0;
+        // Only the marks on the upper half of the rim are seen from above.
+        if angle.cos() > 0.0 {
+            let u = radius_m * angle.sin();
+            painter.line_segment(
+                [corner(u, -half_thick), corner(u, half_thick)],
+                Stroke::new(2.0 * s, theme.roller_mark),
+            );
+        }
+    }
+}
+
+/// What the picture cannot show by itself, in words.
+fn notes(painter: &egui::Painter, theme: &Theme, rect: Rect, status: Status, stick_slip: bool) {
+    let mut lines = Vec::new();
+    if status != Status::Running {
+        lines.push((status.to_string(), theme.divergence));
+    }
+    if stick_slip {
+        lines.push((
+            "stick-slip: the slip speed is below 1e-4 m/s; Coulomb friction is regularized here, outside the model's validity".to_owned(),
+            theme.flutter,
+        ));
+    }
+    for (i, (text, color)) in lines.into_iter().enumerate() {
+        #[expect(clippy::cast_precision_loss, reason = "a handful of lines")]
+        let y = rect.top() + 10.0 + i as f32 * (theme.text_size + 6.0);
+        painter.text(
+            pos2(rect.left() + 10.0, y),
+            Align2::LEFT_TOP,
+            text,
+            FontId::proportional(theme.text_size),
+            color,
+        );
+    }
+}
+
+/// The band: a strip under the tip's reach with marks moving toward -x at V,
+/// and an arrow saying which way it goes.
+fn band(
+    painter: &egui::Painter,
+    theme: &Theme,
+    view: &View,
+    (reach, margin): (f64, f64),
+    speed_m_per_s: f64,
+    t_secs: f64,
+) {
+    let s = theme.stroke_scale;
+    let to = |x, y| view.to(x, y);
+    let (x0, x1) = (0.15 * reach, reach + margin);
+    let (y0, y1) = (-reach - 0.5 * margin, reach + 0.5 * margin);
+    painter.rect_filled(Rect::from_two_pos(to(x0, y0), to(x1, y1)), 4.0, theme.band);
+    let spacing = 0.08 * reach;
+    let offset = (-speed_m_per_s * t_secs).rem_euclid(spacing);
+    let mut x = x0 + offset;
+    while x < x1 {
+        painter.line_segment(
+            [to(x, y0), to(x, y1)],
+            Stroke::new(1.0 * s, theme.band_mark),
+        );
+        x += spacing;
+    }
+    let label = format!("band  V = {speed_m_per_s:.3} m/s");
+    let start = to(x1 - 0.05 * reach, y1 - 0.06 * reach);
+    painter.arrow(
+        start,
+        to(x1 - 0.3 * reach, y1 - 0.06 * reach) - start,
+        Stroke::new(2.5 * s, theme.band_mark),
+    );
+    painter.text(
+        to(x1 - 0.05 * reach, y1 - 0.12 * reach),
+        Align2::RIGHT_TOP,
+        label,
+        FontId::proportional(theme.text_size),
+        theme.text,
+    );
+}
+
+/// A torsion spring at `center`: a spiral whose winding follows the joint's
+/// relative angle, so it visibly tightens and loosens.
+fn spring(painter: &egui::Painter, center: Pos2, radius: f32, angle_rad: f64, stroke: Stroke) {
+    let turns = 2.5;
+    let n = 60;
+    let points: Vec<Pos2> = (0..=n)
+        .map(|i| {
+            let t = f64::from(i) / f64::from(n);
+            let theta = angle_rad + t * (TAU * turns - angle_rad);
+            #[expect(clippy::cast_possible_truncation, reason = "pixels")]
+            let r = radius * (0.35 + 0.65 * t as f32);
+            #[expect(clippy::cast_possible_truncation, reason = "pixels")]
+            let (sin, cos) = (theta.sin() as f32, theta.cos() as f32);
+            center + Vec2::new(r * cos, -r * sin)
+        })
+        .collect();
+    painter.add(Shape::line(points, stroke));
+}
+
+fn dashed_arrow(painter: &egui::Painter, origin: Pos2, vector: Vec2, stroke: Stroke) {
+    painter.extend(Shape::dashed_line(
+        &[origin, origin + vector],
+        stroke,
+        8.0,
+        6.0,
+    ));
+    let head = 10.0 * stroke.width.max(1.0) / 2.0;
+    let dir = vector.normalized();
+    let tip = origin + vector;
+    let left = tip - head * dir + 0.6 * head * dir.rot90();
+    let right = tip - head * dir - 0.6 * head * dir.rot90();
+    painter.line_segment([tip, left], stroke);
+    painter.line_segment([tip, right], stroke);
+}
+
+/// Keeps the trail to its duration.
+pub fn push_trail(trail: &mut VecDeque<(f64, [f64; 2])>, now: &Observables) {
+    trail.push_back((now.t_secs, now.tip_m));
+    while trail
+        .front()
+        .is_some_and(|(t, _)| now.t_secs - t > TRAIL_SECS)
+    {
+        trail.pop_front();
+    }
+}

@@ -1,0 +1,56 @@
+//! The app's logic without a window: the simulation follows the wall clock
+//! at the chosen speed with a cap per frame, and stored settings that are
+//! partial, from another version or garbage start the app anyway, saying
+//! what was ignored.
+
+use zieglerlab::app::{Settings, ZieglerApp};
+use zieglerlab::sim::DEFAULT_STEP_SECS;
+
+#[test]
+fn simulation_follows_the_clock_at_the_chosen_speed() {
+    let mut app = ZieglerApp::new(Settings {
+        speed: 4.0,
+        ..Settings::default()
+    })
+    .unwrap();
+    for _ in 0..60 {
+        app.advance(1.0 / 60.0);
+    }
+    let t = app.simulation().time_secs();
+    assert!((t - 4.0).abs() <= 2.0 * DEFAULT_STEP_SECS, "{t}");
+}
+
+#[test]
+fn a_slow_frame_advances_at_most_the_cap() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.advance(5.0);
+    let t = app.simulation().time_secs();
+    assert!(
+        (0.1 - 2.0 * DEFAULT_STEP_SECS..=0.1 + DEFAULT_STEP_SECS).contains(&t),
+        "{t}"
+    );
+}
+
+#[test]
+fn stored_settings_round_trip() {
+    let settings = Settings {
+        speed: 2.5,
+        projector: true,
+        ..Settings::default()
+    };
+    let text = ron::to_string(&settings).unwrap();
+    let app = ZieglerApp::from_stored_text(Some(&text));
+    assert_eq!(app.settings(), &settings);
+}
+
+#[test]
+fn partial_or_broken_settings_fall_back_to_defaults() {
+    // An older version that knew only the speed: the rest is defaulted.
+    let app = ZieglerApp::from_stored_text(Some("(speed: 3.0)"));
+    assert_eq!(app.settings().speed, 3.0);
+    assert_eq!(app.settings().preset, "roller");
+    for garbage in ["not ron at all", "(speed: \"fast\")", "(model: 42)"] {
+        let app = ZieglerApp::from_stored_text(Some(garbage));
+        assert_eq!(app.settings(), &Settings::default(), "{garbage}");
+    }
+}
