@@ -13,7 +13,7 @@ use eframe::egui::{self, Color32, RichText, Sense, Stroke, pos2, vec2};
 use crate::analysis::{
     AffinePencil, C64, Locus, State, Transition, classify, critical_loads, locus,
 };
-use crate::model::{Model, PRESETS, preset};
+use crate::model::{Assignment, KEYS, KeySpec, Model, PRESETS, apply_assignments, preset};
 use crate::sim::{DEFAULT_STEP_SECS, EngineKind, Simulation, Status, initial_state};
 use theme::Theme;
 
@@ -96,6 +96,8 @@ pub struct ZieglerApp {
     message: Option<String>,
     /// The theme applied to the context (None: not yet).
     applied_projector: Option<bool>,
+    /// The last refused parameter value: its key and why.
+    refused: Option<(&'static str, String)>,
 }
 
 impl ZieglerApp {
@@ -121,6 +123,7 @@ impl ZieglerApp {
             owed_secs: 0.0,
             message: None,
             applied_projector: None,
+            refused: None,
         };
         app.refresh_analysis();
         Ok(app)
@@ -412,6 +415,8 @@ impl ZieglerApp {
         ui.separator();
         self.load_ui(ui, theme);
         ui.separator();
+        self.parameters_ui(ui, theme);
+        ui.separator();
         self.time_ui(ui);
         ui.separator();
         self.status_ui(ui, theme);
@@ -431,6 +436,70 @@ impl ZieglerApp {
                 });
             }
         });
+    }
+
+    /// A field for every parameter of the current model: the paper's groups
+    /// first, the SI values below. Values go through the same validation as
+    /// `--set`: a refused value leaves the model as it was and says why.
+    fn parameters_ui(&mut self, ui: &mut egui::Ui, theme: &Theme) {
+        let model = self.settings.model;
+        let applicable: Vec<&'static KeySpec> = KEYS
+            .iter()
+            .filter(|k| k.applies_to(&model) && k.key != "load")
+            .collect();
+        let (groups, si): (Vec<_>, Vec<_>) = applicable.into_iter().partition(|k| k.is_group);
+        ui.label("dimensionless groups");
+        for spec in groups {
+            self.parameter_field(ui, theme, spec);
+        }
+        egui::CollapsingHeader::new("SI parameters").show(ui, |ui| {
+            for spec in si {
+                self.parameter_field(ui, theme, spec);
+            }
+        });
+    }
+
+    fn parameter_field(&mut self, ui: &mut egui::Ui, theme: &Theme, spec: &'static KeySpec) {
+        let mut value = spec.get(&self.settings.model);
+        let response = ui
+            .horizontal(|ui| {
+                let speed = (value.abs() * 0.01).max(1e-4);
+                let r = ui.add(
+                    egui::DragValue::new(&mut value)
+                        .speed(speed)
+                        .max_decimals(6),
+                );
+                // Only mu R enters the equations (physics.md section 5): the
+                // mu field keeps R and so moves the load, and says so.
+                let note = if spec.key == "mu" {
+                    "  (R held: moves p)"
+                } else {
+                    ""
+                };
+                ui.label(format!("{} {}{note}", spec.key, spec.unit));
+                r
+            })
+            .inner
+            .on_hover_text(format!("{} (allowed: {})", spec.description, spec.range));
+        if response.changed() {
+            let mut candidate = self.settings.model;
+            let assignment = Assignment {
+                key: spec.key.to_owned(),
+                value,
+            };
+            match apply_assignments(&mut candidate, &self.settings.preset, &[assignment]) {
+                Ok(()) => {
+                    self.refused = None;
+                    self.set_model(candidate);
+                }
+                Err(error) => self.refused = Some((spec.key, error.to_string())),
+            }
+        }
+        if let Some((key, why)) = &self.refused
+            && *key == spec.key
+        {
+            ui.colored_label(theme.divergence, format!("refused: {why}"));
+        }
     }
 
     /// The load slider with the stability ranges drawn under it.
