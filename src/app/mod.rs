@@ -2,6 +2,7 @@
 //! stability ranges, time controls and live root-locus plots. Reads the
 //! model, the analysis and the simulation; owns only what it shows.
 
+mod history;
 mod plots;
 mod scene;
 mod theme;
@@ -98,6 +99,20 @@ pub struct ZieglerApp {
     applied_projector: Option<bool>,
     /// The last refused parameter value: its key and why.
     refused: Option<(&'static str, String)>,
+    history: history::History,
+    /// The column's eigenvalues measured from the run, refreshed about once a
+    /// simulated second.
+    measured: Option<Vec<C64>>,
+    measured_at_secs: f64,
+    /// What the lower half shows.
+    lower: Lower,
+}
+
+/// The choice of plots in the lower half of the window.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Lower {
+    Locus,
+    Histories,
 }
 
 impl ZieglerApp {
@@ -124,6 +139,10 @@ impl ZieglerApp {
             message: None,
             applied_projector: None,
             refused: None,
+            history: history::History::default(),
+            measured: None,
+            measured_at_secs: f64::NEG_INFINITY,
+            lower: Lower::Locus,
         };
         app.refresh_analysis();
         Ok(app)
@@ -199,7 +218,15 @@ impl ZieglerApp {
                 self.owed_secs = 0.0;
                 break;
             }
-            scene::push_trail(&mut self.trail, &self.sim.observe());
+            let now = self.sim.observe();
+            scene::push_trail(&mut self.trail, &now);
+            self.history.push(now);
+        }
+        let t = self.sim.time_secs();
+        if t - self.measured_at_secs >= 1.0 {
+            // Two exponentials per oscillating mode of the column.
+            self.measured = self.history.measured(4);
+            self.measured_at_secs = t;
         }
     }
 
@@ -238,6 +265,8 @@ impl ZieglerApp {
             Ok(sim) => {
                 self.sim = sim;
                 self.trail.clear();
+                self.history.clear();
+                self.measured = None;
                 self.owed_secs = 0.0;
                 self.running = true;
             }
@@ -340,7 +369,15 @@ impl ZieglerApp {
             .unwrap_or_default()
     }
 
-    fn plots_ui(&self, ui: &mut egui::Ui, theme: &Theme) {
+    fn plots_ui(&mut self, ui: &mut egui::Ui, theme: &Theme) {
+        ui.horizontal(|ui| {
+            ui.selectable_value(&mut self.lower, Lower::Locus, "root locus");
+            ui.selectable_value(&mut self.lower, Lower::Histories, "time histories");
+        });
+        if self.lower == Lower::Histories {
+            plots::histories_ui(ui, &self.history, theme);
+            return;
+        }
         let Some(analysis) = &self.analysis else {
             ui.label("No root locus for these parameters.");
             return;
@@ -352,7 +389,13 @@ impl ZieglerApp {
         let height = ui.available_height();
         ui.horizontal(|ui| {
             ui.allocate_ui(vec2(0.42 * width, height), |ui| {
-                plots::root_locus_ui(ui, &analysis.locus, &current, theme);
+                plots::root_locus_ui(
+                    ui,
+                    &analysis.locus,
+                    &current,
+                    self.measured.as_deref(),
+                    theme,
+                );
             });
             ui.vertical(|ui| {
                 ui.allocate_ui(vec2(ui.available_width(), 0.5 * height - 4.0), |ui| {

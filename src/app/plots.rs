@@ -2,9 +2,10 @@
 //! eigenvalues against the load with the current load and the stability
 //! ranges marked (the paper's Figs 3 and 8).
 
-use eframe::egui::{self, Color32};
-use egui_plot::{Line, Plot, PlotPoints, Points, Span, VLine};
+use eframe::egui::{self, Color32, vec2};
+use egui_plot::{Legend, Line, Plot, PlotPoints, Points, Span, VLine};
 
+use super::history::History;
 use super::theme::{Theme, load_color};
 use crate::analysis::{C64, Locus, State, Transition};
 
@@ -25,7 +26,13 @@ pub fn ranges(transitions: &[Transition], first: State, max: f64) -> Vec<(f64, f
 
 /// The root locus: every branch as a curve coloured by load, the current
 /// eigenvalues as large markers, the imaginary axis emphasised.
-pub fn root_locus_ui(ui: &mut egui::Ui, locus: &Locus, current: &[C64], theme: &Theme) {
+pub fn root_locus_ui(
+    ui: &mut egui::Ui,
+    locus: &Locus,
+    current: &[C64],
+    measured: Option<&[C64]>,
+    theme: &Theme,
+) {
     let (min, max) = (
         locus.loads.first().copied().unwrap_or(0.0),
         locus.loads.last().copied().unwrap_or(1.0),
@@ -73,11 +80,20 @@ pub fn root_locus_ui(ui: &mut egui::Ui, locus: &Locus, current: &[C64], theme: &
             }
             let now: PlotPoints<'_> = current.iter().map(|z| [z.re, z.im]).collect();
             plot_ui.points(
-                Points::new("now", now)
+                Points::new("predicted now", now)
                     .radius(6.0 * theme.stroke_scale)
                     .color(Color32::WHITE)
                     .filled(true),
             );
+            if let Some(measured) = measured {
+                let points: PlotPoints<'_> = measured.iter().map(|z| [z.re, z.im]).collect();
+                plot_ui.points(
+                    Points::new("measured from the run", points)
+                        .radius(9.0 * theme.stroke_scale)
+                        .color(theme.friction)
+                        .filled(false),
+                );
+            }
         });
 }
 
@@ -138,4 +154,58 @@ pub fn versus_load_ui(
                     .width(2.0 * theme.stroke_scale),
             );
         });
+}
+
+/// The run's recent past: the angles and delta against time, the energies,
+/// and a phase portrait of rod 2.
+pub fn histories_ui(ui: &mut egui::Ui, history: &History, theme: &Theme) {
+    let samples: Vec<_> = history.thinned(1500).collect();
+    let series = |f: &dyn Fn(&crate::sim::Observables) -> f64| -> PlotPoints<'_> {
+        samples.iter().map(|o| [o.t_secs, f(o)]).collect()
+    };
+    let (width, height) = (ui.available_width(), ui.available_height());
+    ui.horizontal(|ui| {
+        ui.vertical(|ui| {
+            ui.allocate_ui(vec2(0.62 * width, 0.5 * height - 4.0), |ui| {
+                Plot::new("angles")
+                    .x_axis_label("t (s)")
+                    .y_axis_label("rad")
+                    .legend(Legend::default())
+                    .show(ui, |plot_ui| {
+                        plot_ui.line(Line::new("φ1", series(&|o| o.phi1_rad)).color(theme.spring));
+                        plot_ui.line(Line::new("φ2", series(&|o| o.phi2_rad)).color(theme.rod));
+                        plot_ui
+                            .line(Line::new("δ", series(&|o| o.delta_rad)).color(theme.friction));
+                    });
+            });
+            ui.allocate_ui(vec2(0.62 * width, 0.5 * height - 4.0), |ui| {
+                Plot::new("energy")
+                    .x_axis_label("t (s)")
+                    .y_axis_label("J, W")
+                    .legend(Legend::default())
+                    .show(ui, |plot_ui| {
+                        plot_ui.line(
+                            Line::new("kinetic + spring energy", series(&|o| o.energy_j()))
+                                .color(theme.follower),
+                        );
+                        plot_ui.line(
+                            Line::new("power from the band", series(&|o| o.band_power_w))
+                                .color(theme.flutter),
+                        );
+                    });
+            });
+        });
+        ui.allocate_ui(vec2(ui.available_width(), height), |ui| {
+            Plot::new("phase portrait")
+                .x_axis_label("φ2 (rad)")
+                .y_axis_label("φ2' (rad/s)")
+                .show(ui, |plot_ui| {
+                    let points: PlotPoints<'_> = samples
+                        .iter()
+                        .map(|o| [o.phi2_rad, o.phi2_dot_rad_per_s])
+                        .collect();
+                    plot_ui.line(Line::new("rod 2", points).color(theme.trail));
+                });
+        });
+    });
 }

@@ -1,0 +1,71 @@
+//! The recent past of the run: its observables over a sliding window, and
+//! the eigenvalues measured from it (matrix pencil), to set beside the
+//! predicted ones.
+
+use std::collections::VecDeque;
+
+use crate::analysis::C64;
+use crate::sim::{Observables, identify};
+
+/// How far back the history reaches, in simulated seconds.
+pub const HISTORY_SECS: f64 = 60.0;
+/// The measurement needs at least this much history...
+const MIN_WINDOW_SECS: f64 = 20.0;
+/// ... with angles this small, where the run is linear and comparable with
+/// the linearization.
+const LINEAR_AMPLITUDE_RAD: f64 = 0.05;
+/// Samples the measurement uses (decimated from the steps).
+const MEASURE_SAMPLES: usize = 400;
+
+/// The observables over the last [`HISTORY_SECS`].
+#[derive(Default)]
+pub struct History {
+    samples: VecDeque<Observables>,
+}
+
+impl History {
+    pub fn clear(&mut self) {
+        self.samples.clear();
+    }
+
+    pub fn push(&mut self, now: Observables) {
+        self.samples.push_back(now);
+        while self
+            .samples
+            .front()
+            .is_some_and(|o| now.t_secs - o.t_secs > HISTORY_SECS)
+        {
+            self.samples.pop_front();
+        }
+    }
+
+    /// At most `count` evenly picked samples, oldest first, for drawing.
+    pub fn thinned(&self, count: usize) -> impl Iterator<Item = &Observables> {
+        let every = self.samples.len().div_ceil(count.max(1)).max(1);
+        self.samples.iter().step_by(every)
+    }
+
+    /// The eigenvalues of the column's modes measured from the history, when
+    /// it is long enough and small enough to be linear; `order` counts the
+    /// exponentials to fit (two per oscillating mode).
+    #[must_use]
+    pub fn measured(&self, order: usize) -> Option<Vec<C64>> {
+        let (first, last) = (self.samples.front()?, self.samples.back()?);
+        if last.t_secs - first.t_secs < MIN_WINDOW_SECS {
+            return None;
+        }
+        let amplitude = self
+            .samples
+            .iter()
+            .map(|o| o.phi1_rad.abs().max(o.phi2_rad.abs()))
+            .fold(0.0, f64::max);
+        if !(amplitude < LINEAR_AMPLITUDE_RAD && amplitude > 0.0) {
+            return None;
+        }
+        let picked: Vec<&Observables> = self.thinned(MEASURE_SAMPLES).collect();
+        let dt_secs = picked.get(1)?.t_secs - picked.first()?.t_secs;
+        let phi1: Vec<f64> = picked.iter().map(|o| o.phi1_rad).collect();
+        let phi2: Vec<f64> = picked.iter().map(|o| o.phi2_rad).collect();
+        identify(&[&phi1, &phi2], dt_secs, order)
+    }
+}
