@@ -54,3 +54,37 @@ fn partial_or_broken_settings_fall_back_to_defaults() {
         assert_eq!(app.settings(), &Settings::default(), "{garbage}");
     }
 }
+
+#[test]
+fn pasted_garbage_changes_nothing_and_says_so() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.advance(0.05);
+    let before = (app.settings().clone(), app.simulation().time_secs());
+    app.paste_settings("{{ this is not a setup }}");
+    assert_eq!(
+        (app.settings().clone(), app.simulation().time_secs()),
+        before
+    );
+    assert!(
+        app.message()
+            .unwrap()
+            .starts_with("pasted settings not understood")
+    );
+    // Well-formed text with an invalid model is refused too.
+    let mut bad = Settings::default();
+    bad.model.column.k1_nm_per_rad = -1.0;
+    app.paste_settings(&ron::to_string(&bad).unwrap());
+    assert_eq!(app.settings(), &before.0);
+    assert!(
+        app.message().unwrap().contains("k1 = -1"),
+        "{:?}",
+        app.message()
+    );
+    // A good setup is taken whole.
+    let good = Settings {
+        speed: 0.5,
+        ..Settings::default()
+    };
+    app.paste_settings(&ron::to_string(&good).unwrap());
+    assert_eq!(app.settings(), &good);
+}

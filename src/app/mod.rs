@@ -106,6 +106,18 @@ pub struct ZieglerApp {
     measured_at_secs: f64,
     /// What the lower half shows.
     lower: Lower,
+    /// A second model's locus drawn behind the current one (Fig. 8).
+    overlay: Option<Overlay>,
+    /// The text box for sharing settings.
+    shared_text: String,
+}
+
+/// Another preset's root locus, at the current model's `a`.
+struct Overlay {
+    preset: &'static str,
+    /// The group `a` the locus was computed with.
+    a: f64,
+    locus: Locus,
 }
 
 /// The choice of plots in the lower half of the window.
@@ -143,6 +155,8 @@ impl ZieglerApp {
             measured: None,
             measured_at_secs: f64::NEG_INFINITY,
             lower: Lower::Locus,
+            overlay: None,
+            shared_text: String::new(),
         };
         app.refresh_analysis();
         Ok(app)
@@ -198,6 +212,12 @@ impl ZieglerApp {
         &self.settings
     }
 
+    /// The last message for the user, if any.
+    #[must_use]
+    pub fn message(&self) -> Option<&str> {
+        self.message.as_deref()
+    }
+
     /// The running simulation.
     #[must_use]
     pub fn simulation(&self) -> &Simulation {
@@ -243,12 +263,53 @@ impl ZieglerApp {
         }
     }
 
+    /// The current model's `a = k/(m l^2)`.
+    fn group_a(&self) -> f64 {
+        KEYS.iter()
+            .find(|k| k.key == "a")
+            .map_or(f64::NAN, |k| k.get(&self.settings.model))
+    }
+
+    /// Shows `name`'s locus behind the current one, at the current `a`.
+    fn set_overlay(&mut self, name: Option<&'static str>) {
+        let Some(name) = name else {
+            self.overlay = None;
+            return;
+        };
+        let a = self.group_a();
+        let build = || -> Result<Locus, String> {
+            let mut model = preset(name).map_err(|e| e.to_string())?.model();
+            let set_a = Assignment {
+                key: "a".to_owned(),
+                value: a,
+            };
+            apply_assignments(&mut model, name, &[set_a]).map_err(|e| e.to_string())?;
+            let pencil = AffinePencil::new(&model).map_err(|e| e.to_string())?;
+            locus(&pencil, 0.0, LOAD_MAX_P, LOCUS_SAMPLES).map_err(|e| e.to_string())
+        };
+        match build() {
+            Ok(locus) => {
+                self.overlay = Some(Overlay {
+                    preset: name,
+                    a,
+                    locus,
+                });
+            }
+            Err(error) => self.message = Some(format!("overlay unavailable: {error}")),
+        }
+    }
+
     /// Applies a changed model to the running simulation.
     fn set_model(&mut self, model: Model) {
         match self.sim.set_model(model) {
             Ok(()) => {
                 self.settings.model = model;
                 self.refresh_analysis();
+                if let Some(overlay) = &self.overlay
+                    && overlay.a != self.group_a()
+                {
+                    self.set_overlay(Some(overlay.preset));
+                }
             }
             Err(error) => self.message = Some(error.to_string()),
         }
@@ -385,6 +446,7 @@ impl ZieglerApp {
         let load = self.settings.model.load_p();
         let ranges = plots::ranges(&analysis.transitions, analysis.first, LOAD_MAX_P);
         let current = self.current_eigenvalues();
+        let overlay = self.overlay.as_ref().map(|o| &o.locus);
         let width = ui.available_width();
         let height = ui.available_height();
         ui.horizontal(|ui| {
@@ -392,6 +454,7 @@ impl ZieglerApp {
                 plots::root_locus_ui(
                     ui,
                     &analysis.locus,
+                    overlay,
                     &current,
                     self.measured.as_deref(),
                     theme,
@@ -399,10 +462,18 @@ impl ZieglerApp {
             });
             ui.vertical(|ui| {
                 ui.allocate_ui(vec2(ui.available_width(), 0.5 * height - 4.0), |ui| {
-                    plots::versus_load_ui(ui, &analysis.locus, &ranges, load, false, theme);
+                    plots::versus_load_ui(
+                        ui,
+                        &analysis.locus,
+                        overlay,
+                        &ranges,
+                        load,
+                        false,
+                        theme,
+                    );
                 });
                 ui.allocate_ui(vec2(ui.available_width(), 0.5 * height - 4.0), |ui| {
-                    plots::versus_load_ui(ui, &analysis.locus, &ranges, load, true, theme);
+                    plots::versus_load_ui(ui, &analysis.locus, overlay, &ranges, load, true, theme);
                 });
             });
         });
@@ -464,7 +535,9 @@ impl ZieglerApp {
         ui.separator();
         self.status_ui(ui, theme);
         ui.separator();
+        self.overlay_ui(ui);
         ui.checkbox(&mut self.settings.projector, "projector mode (P)");
+        self.share_ui(ui);
         egui::CollapsingHeader::new("keys").show(ui, |ui| {
             for (key, what) in [
                 ("space", "play / pause"),
@@ -479,6 +552,76 @@ impl ZieglerApp {
                 });
             }
         });
+    }
+
+    fn overlay_ui(&mut self, ui: &mut egui::Ui) {
+        let current = self.overlay.as_ref().map(|o| o.preset);
+        let mut chosen = current;
+        egui::ComboBox::from_label("overlay")
+            .selected_text(chosen.unwrap_or("none"))
+            .show_ui(ui, |ui| {
+                ui.selectable_value(&mut chosen, None, "none");
+                for p in &PRESETS {
+                    ui.selectable_value(&mut chosen, Some(p.name), p.name);
+                }
+            })
+            .response
+            .on_hover_text("another model's locus in grey, at the same a (as Fig. 8 sets the ideal column beside the roller)");
+        if chosen != current {
+            self.set_overlay(chosen);
+        }
+    }
+
+    /// Copy the settings as text to share a setup; paste text to load one.
+    fn share_ui(&mut self, ui: &mut egui::Ui) {
+        egui::CollapsingHeader::new("share settings").show(ui, |ui| {
+            ui.horizontal(|ui| {
+                if ui.button("copy settings").clicked() {
+                    match ron::to_string(&self.settings) {
+                        Ok(text) => {
+                            ui.ctx().copy_text(text.clone());
+                            self.shared_text = text;
+                        }
+                        Err(error) => self.message = Some(format!("settings not copied: {error}")),
+                    }
+                }
+                if ui
+                    .button("paste settings")
+                    .on_hover_text("paste the text below first")
+                    .clicked()
+                {
+                    self.paste_settings(&self.shared_text.clone());
+                }
+            });
+            ui.add(
+                egui::TextEdit::multiline(&mut self.shared_text)
+                    .desired_rows(3)
+                    .hint_text("paste settings text here"),
+            );
+        });
+    }
+
+    /// Loads settings from shared text; garbage leaves everything as it was
+    /// and says why.
+    pub fn paste_settings(&mut self, text: &str) {
+        let settings = match ron::from_str::<Settings>(text) {
+            Ok(settings) => settings,
+            Err(error) => {
+                self.message = Some(format!(
+                    "pasted settings not understood, nothing changed: {error}"
+                ));
+                return;
+            }
+        };
+        match Self::new(settings) {
+            Ok(app) => {
+                let message = Some("settings pasted".to_owned());
+                *self = Self { message, ..app };
+            }
+            Err(error) => {
+                self.message = Some(format!("pasted settings refused, nothing changed: {error}"));
+            }
+        }
     }
 
     /// A field for every parameter of the current model: the paper's groups

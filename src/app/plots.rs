@@ -9,6 +9,9 @@ use super::history::History;
 use super::theme::{Theme, load_color};
 use crate::analysis::{C64, Locus, State, Transition};
 
+/// The overlaid model's branches: grey, behind the current ones.
+const OVERLAY: Color32 = Color32::from_rgb(120, 120, 120);
+
 /// Branch segments are drawn in this many colour bands along the load.
 const COLOR_BANDS: usize = 24;
 
@@ -29,6 +32,7 @@ pub fn ranges(transitions: &[Transition], first: State, max: f64) -> Vec<(f64, f
 pub fn root_locus_ui(
     ui: &mut egui::Ui,
     locus: &Locus,
+    overlay: Option<&Locus>,
     current: &[C64],
     measured: Option<&[C64]>,
     theme: &Theme,
@@ -58,6 +62,16 @@ pub fn root_locus_ui(
                     .color(theme.axis)
                     .width(2.0 * theme.stroke_scale),
             );
+            if let Some(other) = overlay {
+                for branch in &other.branches {
+                    let points: PlotPoints<'_> = branch.iter().map(|z| [z.re, z.im]).collect();
+                    plot_ui.line(
+                        Line::new("overlay", points)
+                            .color(OVERLAY)
+                            .width(1.5 * theme.stroke_scale),
+                    );
+                }
+            }
             let n = locus.loads.len();
             for branch in &locus.branches {
                 for band in 0..COLOR_BANDS {
@@ -102,6 +116,7 @@ pub fn root_locus_ui(
 pub fn versus_load_ui(
     ui: &mut egui::Ui,
     locus: &Locus,
+    overlay: Option<&Locus>,
     ranges: &[(f64, f64, State)],
     load: f64,
     imaginary: bool,
@@ -134,6 +149,21 @@ pub fn versus_load_ui(
             for &(start, end, state) in ranges {
                 let color = theme.state_color(state).gamma_multiply(0.18);
                 plot_ui.span(Span::new(state.name(), start..=end).fill(color));
+            }
+            if let Some(other) = overlay {
+                for branch in &other.branches {
+                    let points: PlotPoints<'_> = other
+                        .loads
+                        .iter()
+                        .zip(branch)
+                        .map(|(&p, z)| [p, if imaginary { z.im } else { z.re }])
+                        .collect();
+                    plot_ui.line(
+                        Line::new("overlay", points)
+                            .color(OVERLAY)
+                            .width(1.5 * theme.stroke_scale),
+                    );
+                }
             }
             for branch in &locus.branches {
                 let points: PlotPoints<'_> = locus
