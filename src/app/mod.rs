@@ -212,6 +212,24 @@ impl ZieglerApp {
         &self.settings
     }
 
+    /// Sets one parameter by its key (as `--set` does): the model changes for
+    /// the running simulation and the analysis follows; a refused value
+    /// changes nothing and the error says why.
+    ///
+    /// # Errors
+    /// The key's or the model's validation message.
+    pub fn set_parameter(&mut self, key: &str, value: f64) -> Result<(), String> {
+        let mut candidate = self.settings.model;
+        let assignment = Assignment {
+            key: key.to_owned(),
+            value,
+        };
+        apply_assignments(&mut candidate, &self.settings.preset, &[assignment])
+            .map_err(|e| e.to_string())?;
+        self.set_model(candidate);
+        Ok(())
+    }
+
     /// The last message for the user, if any.
     #[must_use]
     pub fn message(&self) -> Option<&str> {
@@ -668,18 +686,10 @@ impl ZieglerApp {
             .inner
             .on_hover_text(format!("{} (allowed: {})", spec.description, spec.range));
         if response.changed() {
-            let mut candidate = self.settings.model;
-            let assignment = Assignment {
-                key: spec.key.to_owned(),
-                value,
-            };
-            match apply_assignments(&mut candidate, &self.settings.preset, &[assignment]) {
-                Ok(()) => {
-                    self.refused = None;
-                    self.set_model(candidate);
-                }
-                Err(error) => self.refused = Some((spec.key, error.to_string())),
-            }
+            self.refused = self
+                .set_parameter(spec.key, value)
+                .err()
+                .map(|why| (spec.key, why));
         }
         if let Some((key, why)) = &self.refused
             && *key == spec.key
