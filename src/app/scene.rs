@@ -200,6 +200,17 @@ fn forces(
     let unit = [force[0] / magnitude, force[1] / magnitude];
     painter.arrow(tip, along(unit), Stroke::new(3.0 * s, theme.friction));
     if model.roller().is_some() {
+        // The angle delta drawn between the two directions, from the
+        // follower direction to the force.
+        let start = follower[1].atan2(follower[0]);
+        let arc: Vec<Pos2> = (0..=24)
+            .map(|i| {
+                let angle = start + now.delta_rad * f64::from(i) / 24.0;
+                let r = 0.6 * length_m;
+                view.to(b[0] + r * angle.cos(), b[1] + r * angle.sin())
+            })
+            .collect();
+        painter.add(Shape::line(arc, Stroke::new(1.5 * s, theme.friction)));
         // Beside the arrows' far ends, off to the side rod 2's normal points to.
         let normal = [-phi2.sin(), phi2.cos()];
         let label_at = view.to(
