@@ -812,6 +812,17 @@ impl ZieglerApp {
         } else {
             ui.label("non-oscillatory: the dominant eigenvalue is real");
         }
+        match self.measured.as_ref().and_then(|m| m.first()) {
+            Some(z) => ui.label(format!(
+                "measured from the run  {:+.5} ± {:.4}i 1/s",
+                z.re,
+                z.im.abs()
+            )),
+            None => ui.label(
+                RichText::new("measured: after 20 s of small-amplitude motion (|φ| < 0.05 rad)")
+                    .small(),
+            ),
+        };
         if weak {
             ui.label(
                 RichText::new(format!(
