@@ -150,33 +150,25 @@ pub fn versus_load_ui(
                 let color = theme.state_color(state).gamma_multiply(0.18);
                 plot_ui.span(Span::new(state.name(), start..=end).fill(color));
             }
-            if let Some(other) = overlay {
-                for branch in &other.branches {
-                    let points: PlotPoints<'_> = other
+            // The overlay behind, the current model in front.
+            let layers = overlay
+                .map(|o| (o, OVERLAY))
+                .into_iter()
+                .chain([(locus, theme.text)]);
+            for (shown, color) in layers {
+                for branch in &shown.branches {
+                    let points: PlotPoints<'_> = shown
                         .loads
                         .iter()
                         .zip(branch)
                         .map(|(&p, z)| [p, if imaginary { z.im } else { z.re }])
                         .collect();
                     plot_ui.line(
-                        Line::new("overlay", points)
-                            .color(OVERLAY)
+                        Line::new("", points)
+                            .color(color)
                             .width(1.5 * theme.stroke_scale),
                     );
                 }
-            }
-            for branch in &locus.branches {
-                let points: PlotPoints<'_> = locus
-                    .loads
-                    .iter()
-                    .zip(branch)
-                    .map(|(&p, z)| [p, if imaginary { z.im } else { z.re }])
-                    .collect();
-                plot_ui.line(
-                    Line::new("", points)
-                        .color(theme.text)
-                        .width(1.5 * theme.stroke_scale),
-                );
             }
             plot_ui.vline(
                 VLine::new("load", load)
