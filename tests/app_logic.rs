@@ -88,3 +88,21 @@ fn pasted_garbage_changes_nothing_and_says_so() {
     app.paste_settings(&ron::to_string(&good).unwrap());
     assert_eq!(app.settings(), &good);
 }
+
+#[test]
+fn a_model_without_analysis_shows_no_stale_locus() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    assert!(app.has_analysis());
+    // The band stops: the simulation goes on, the linear analysis cannot.
+    app.set_parameter("V", 0.0).unwrap();
+    assert!(!app.has_analysis());
+    assert!(
+        app.message().unwrap().contains("V = 0"),
+        "{:?}",
+        app.message()
+    );
+    app.advance(0.05);
+    assert!(app.simulation().time_secs() > 0.0);
+    app.set_parameter("V", 0.1).unwrap();
+    assert!(app.has_analysis());
+}

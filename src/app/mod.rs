@@ -44,7 +44,10 @@ pub struct Settings {
 
 impl Default for Settings {
     fn default() -> Self {
-        let roller = &PRESETS[3];
+        let roller = PRESETS
+            .iter()
+            .find(|p| p.name == "roller")
+            .unwrap_or(&PRESETS[0]);
         Self {
             preset: roller.name.to_owned(),
             model: roller.model(),
@@ -230,6 +233,12 @@ impl ZieglerApp {
         Ok(())
     }
 
+    /// Whether a root locus and critical loads exist for the current parameters.
+    #[must_use]
+    pub fn has_analysis(&self) -> bool {
+        self.analysis.is_some()
+    }
+
     /// The last message for the user, if any.
     #[must_use]
     pub fn message(&self) -> Option<&str> {
@@ -277,7 +286,11 @@ impl ZieglerApp {
         }
         match Analysis::new(&self.settings.model) {
             Ok(analysis) => self.analysis = Some(analysis),
-            Err(error) => self.message = Some(format!("analysis unavailable: {error}")),
+            Err(error) => {
+                // No stale plots: the old locus belongs to other parameters.
+                self.analysis = None;
+                self.message = Some(format!("analysis unavailable: {error}"));
+            }
         }
     }
 
