@@ -345,7 +345,7 @@ fn presets(out: &mut impl Write, json: bool) -> Result<()> {
                         })
                     })
                     .collect();
-                json!({"name": preset.name, "description": preset.description, "parameters": parameters})
+                json!({"name": preset.name, "source": preset.source, "description": preset.description, "parameters": parameters})
             })
             .collect();
         writeln!(out, "{}", serde_json::to_string_pretty(&presets)?)?;
@@ -353,7 +353,11 @@ fn presets(out: &mut impl Write, json: bool) -> Result<()> {
     }
     for preset in &PRESETS {
         let model = preset.model();
-        writeln!(out, "{}\n  {}", preset.name, preset.description)?;
+        writeln!(
+            out,
+            "{} ({})\n  {}",
+            preset.name, preset.source, preset.description
+        )?;
         for key in KEYS.iter().filter(|key| key.applies_to(&model)) {
             let unit = if key.unit.is_empty() { "-" } else { key.unit };
             writeln!(

@@ -523,11 +523,17 @@ impl ZieglerApp {
         ui.separator();
         // The model.
         let mut chosen = self.settings.preset.clone();
+        let shown = |name: &str| {
+            preset(name).map_or_else(
+                |_| name.to_owned(),
+                |p| format!("{} ({})", p.name, p.source),
+            )
+        };
         egui::ComboBox::from_label("model")
-            .selected_text(chosen.clone())
+            .selected_text(shown(&chosen))
             .show_ui(ui, |ui| {
                 for p in &PRESETS {
-                    ui.selectable_value(&mut chosen, p.name.to_owned(), p.name)
+                    ui.selectable_value(&mut chosen, p.name.to_owned(), shown(p.name))
                         .on_hover_text(p.description);
                 }
             });

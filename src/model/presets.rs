@@ -7,6 +7,8 @@ use super::params::{Column, Load, Model, Rod, Roller, SpinInertia};
 #[derive(Clone, Copy, Debug)]
 pub struct Preset {
     pub name: &'static str,
+    /// Where in the paper the model is: a figure or equations.
+    pub source: &'static str,
     pub description: &'static str,
     build: fn() -> Model,
 }
@@ -23,26 +25,31 @@ impl Preset {
 pub const PRESETS: [Preset; 5] = [
     Preset {
         name: "ziegler-1952",
+        source: "Ziegler 1952",
         description: "Ziegler's column: massless rods, point mass 2m at the joint A and m at the tip, ideal follower force",
         build: ziegler_1952,
     },
     Preset {
         name: "uniform-rods",
+        source: "Fig. 1a",
         description: "Uniform rigid rods of mass m (Fig. 1a), ideal follower force",
         build: uniform_rods,
     },
     Preset {
         name: "midpoint-masses",
+        source: "Fig. 1b, eqs 1-7",
         description: "Massless rods with a point mass m at each midpoint (Fig. 1b, eqs 1-7), ideal follower force",
         build: midpoint_masses,
     },
     Preset {
         name: "roller",
+        source: "Fig. 7, eqs 8-38",
         description: "Uniform rods with a roller dragged by a moving band (Fig. 7, eqs 8-38), consistent spin inertia; Fig. 8 parameters",
         build: roller,
     },
     Preset {
         name: "roller-as-printed",
+        source: "eq. 39, Fig. 8",
         description: "The roller model as printed in eq. (39): spin inertia multiplied by r/l2 (physics.md erratum); Fig. 8 parameters",
         build: roller_as_printed,
     },
