@@ -425,9 +425,14 @@ impl ZieglerApp {
         }
     }
 
-    /// The whole window's contents.
+    /// The whole window's contents. Reads the state; the simulation advances
+    /// only in [`ZieglerApp::advance`], so a picture depends on the state alone.
     pub fn contents_ui(&mut self, ui: &mut egui::Ui) {
         let theme = self.theme();
+        if self.applied_projector != Some(self.settings.projector) {
+            theme.apply(ui.ctx());
+            self.applied_projector = Some(self.settings.projector);
+        }
         egui::Panel::left("controls")
             .resizable(false)
             .exact_size(320.0)
@@ -450,6 +455,32 @@ impl ZieglerApp {
                 );
             });
             self.plots_ui(ui, &theme);
+        });
+    }
+
+    /// The root-locus panel alone (for snapshots and figures).
+    pub fn locus_panel_ui(&mut self, ui: &mut egui::Ui) {
+        let theme = self.theme();
+        if self.applied_projector != Some(self.settings.projector) {
+            theme.apply(ui.ctx());
+            self.applied_projector = Some(self.settings.projector);
+        }
+        let current = self.current_eigenvalues();
+        egui::CentralPanel::default().show(ui, |ui| match &self.analysis {
+            Some(analysis) => {
+                let overlay = self.overlay.as_ref().map(|o| &o.locus);
+                plots::root_locus_ui(
+                    ui,
+                    &analysis.locus,
+                    overlay,
+                    &current,
+                    self.measured.as_deref(),
+                    &theme,
+                );
+            }
+            None => {
+                ui.label("No root locus for these parameters.");
+            }
         });
     }
 
@@ -578,7 +609,7 @@ impl ZieglerApp {
         egui::CollapsingHeader::new("keys").show(ui, |ui| {
             for (key, what) in [
                 ("space", "play / pause"),
-                ("← →", "load down / up by 0.08"),
+                ("left, right", "load down / up by 0.08"),
                 ("K", "kick (0.01 rad)"),
                 ("R", "reset"),
                 ("P", "projector mode"),
@@ -754,7 +785,7 @@ impl ZieglerApp {
         for t in &analysis.transitions {
             ui.label(
                 RichText::new(format!(
-                    "p = {:.4}: {} → {}",
+                    "p = {:.4}: {} -> {}",
                     t.load,
                     t.from.name(),
                     t.to.name()
@@ -856,10 +887,6 @@ impl ZieglerApp {
 
 impl eframe::App for ZieglerApp {
     fn logic(&mut self, ctx: &egui::Context, _frame: &mut eframe::Frame) {
-        if self.applied_projector != Some(self.settings.projector) {
-            self.theme().apply(ctx);
-            self.applied_projector = Some(self.settings.projector);
-        }
         self.keyboard(ctx);
         let wall_secs = f64::from(ctx.input(|i| i.unstable_dt));
         self.advance(wall_secs);

@@ -1,0 +1,85 @@
+//! What the app shows, as images: the whole window (1280x800) in fixed,
+//! deterministic states, and the root-locus panel alone for each preset.
+//! The simulation advances a fixed number of steps (rapier is
+//! deterministic), no wall clock is read. Update with `UPDATE_SNAPSHOTS=1` and
+//! look at every new image before committing it.
+
+use egui_kittest::{Harness, SnapshotResults};
+use zieglerlab::app::{Settings, ZieglerApp};
+use zieglerlab::model::{PRESETS, preset};
+
+/// The app in `settings`, at `load`, after `secs` whole seconds simulated
+/// from the standard kick, in 1/60 s frames.
+fn app_at(settings: Settings, load: f64, secs: u32) -> ZieglerApp {
+    let mut app = ZieglerApp::new(settings).unwrap();
+    app.set_parameter("load", load).unwrap();
+    for _ in 0..secs * 60 {
+        app.advance(1.0 / 60.0);
+    }
+    app
+}
+
+fn window_snapshot(name: &str, mut app: ZieglerApp) {
+    let mut harness = Harness::builder()
+        .wgpu()
+        .with_size([1280.0, 800.0])
+        .build_ui(|ui| app.contents_ui(ui));
+    harness.run_steps(4);
+    harness.snapshot(name);
+}
+
+fn preset_settings(name: &str) -> Settings {
+    Settings {
+        preset: name.to_owned(),
+        model: preset(name).unwrap().model(),
+        ..Settings::default()
+    }
+}
+
+#[test]
+fn default_launch() {
+    window_snapshot("default_launch", app_at(Settings::default(), 1.0, 2));
+}
+
+#[test]
+fn roller_in_flutter() {
+    window_snapshot("roller_flutter", app_at(Settings::default(), 3.0, 25));
+}
+
+#[test]
+fn roller_in_divergence() {
+    window_snapshot("roller_divergence", app_at(Settings::default(), 5.4, 12));
+}
+
+#[test]
+fn midpoint_masses_stable() {
+    window_snapshot(
+        "midpoint_masses_stable",
+        app_at(preset_settings("midpoint-masses"), 1.5, 10),
+    );
+}
+
+#[test]
+fn projector_mode() {
+    let settings = Settings {
+        projector: true,
+        ..Settings::default()
+    };
+    window_snapshot("projector", app_at(settings, 3.0, 25));
+}
+
+#[test]
+fn root_locus_panel_of_each_preset() {
+    let mut results = SnapshotResults::default();
+    for p in &PRESETS {
+        let mut app = app_at(preset_settings(p.name), 1.0, 0);
+        let mut harness = Harness::builder()
+            .wgpu()
+            .with_size([640.0, 520.0])
+            .build_ui(|ui| app.locus_panel_ui(ui));
+        harness.run_steps(4);
+        harness.snapshot(format!("locus_{}", p.name));
+        results.extend(harness.take_snapshot_results());
+    }
+    results.unwrap();
+}
