@@ -9,6 +9,7 @@ use clap::{Parser, Subcommand, ValueEnum};
 use serde_json::json;
 
 use zieglerlab::analysis::{AffinePencil, DEFAULT_LOAD_MAX, critical_loads, locus};
+use zieglerlab::app::{Panel, Settings, ZieglerApp};
 use zieglerlab::model::{KEYS, Model, PRESETS, apply_assignments, parse_assignment, preset};
 use zieglerlab::sim::{
     DEFAULT_STEP_SECS, EngineKind, Observables, Simulation, Status, initial_state,
@@ -69,6 +70,25 @@ enum TableFormat {
 /// Most rows a simulation prints (duration / dt).
 const MAX_ROWS: f64 = 1.0e7;
 
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum PanelArg {
+    Window,
+    Locus,
+    Scene,
+    Histories,
+}
+
+impl From<PanelArg> for Panel {
+    fn from(panel: PanelArg) -> Self {
+        match panel {
+            PanelArg::Window => Self::Window,
+            PanelArg::Locus => Self::Locus,
+            PanelArg::Scene => Self::Scene,
+            PanelArg::Histories => Self::Histories,
+        }
+    }
+}
+
 #[derive(Subcommand, Debug)]
 enum Command {
     /// List the presets with every parameter, its unit and its range.
@@ -120,6 +140,26 @@ enum Command {
         #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
         format: TableFormat,
     },
+    /// Render the app (or one panel) headlessly to a PNG after simulating
+    /// `--time` seconds from the standard perturbation.
+    Snapshot {
+        #[command(flatten)]
+        model: ModelArgs,
+        /// Simulated time before the picture, in s.
+        #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+        time: f64,
+        #[arg(long, value_enum, default_value_t = EngineArg::Rapier)]
+        engine: EngineArg,
+        /// Image size in pixels, `WIDTHxHEIGHT`.
+        #[arg(long, default_value = "1280x800")]
+        size: String,
+        #[arg(long)]
+        projector: bool,
+        #[arg(long, value_enum, default_value_t = PanelArg::Window)]
+        panel: PanelArg,
+        #[arg(long)]
+        out: std::path::PathBuf,
+    },
 }
 
 /// Runs the command line; status 0 on success, 2 with one line on any error.
@@ -170,39 +210,7 @@ fn execute(command: Command) -> Result<()> {
             load_min,
             load_max,
             json,
-        } => {
-            let (name, model) = build_model(&model)?;
-            let pencil = AffinePencil::new(&model)?;
-            let transitions = critical_loads(&pencil, load_min, load_max)?;
-            if json {
-                let value = json!({
-                    "preset": name,
-                    "load_axis": LOAD_AXIS,
-                    "load_min": load_min,
-                    "load_max": load_max,
-                    "transitions": transitions,
-                });
-                writeln!(out, "{}", serde_json::to_string_pretty(&value)?)?;
-            } else {
-                writeln!(
-                    out,
-                    "{name}: stability changes for {LOAD_AXIS} in [{load_min}, {load_max}]"
-                )?;
-                if transitions.is_empty() {
-                    writeln!(out, "  none")?;
-                }
-                // The roller's own load q = R l/k = p / mu, beside p.
-                let mu = model.roller().map(|roller| roller.mu);
-                for t in &transitions {
-                    let (from, to) = (t.from.name(), t.to.name());
-                    let q = mu
-                        .map(|mu| format!("  (q = R l/k = {:.9})", t.load / mu))
-                        .unwrap_or_default();
-                    writeln!(out, "  p = {:<22} {from} -> {to}{q}", t.load)?;
-                }
-            }
-            Ok(())
-        }
+        } => critical(&mut out, &model, (load_min, load_max), json),
         Command::Simulate {
             model,
             duration,
@@ -211,48 +219,112 @@ fn execute(command: Command) -> Result<()> {
             dt,
             format: TableFormat::Csv,
         } => simulate(&mut out, &model, duration, engine.into(), perturb, dt),
+        Command::Snapshot {
+            model,
+            time,
+            engine,
+            size,
+            projector,
+            panel,
+            out,
+        } => snapshot(
+            &model,
+            time,
+            engine.into(),
+            &size,
+            projector,
+            panel.into(),
+            &out,
+        ),
         Command::Locus {
             model,
             load_min,
             load_max,
             samples,
             format,
-        } => {
-            let (name, model) = build_model(&model)?;
-            let pencil = AffinePencil::new(&model)?;
-            let locus = locus(&pencil, load_min, load_max, samples)?;
-            let locus = &locus;
-            let rows = (0..locus.loads.len())
-                .filter(|&i| locus.on_grid[i])
-                .flat_map(|i| {
-                    locus
-                        .at(i)
-                        .enumerate()
-                        .map(move |(b, z)| (locus.loads[i], b, z))
-                });
-            match format {
-                LocusFormat::Csv => {
-                    writeln!(out, "load,branch,re,im")?;
-                    for (load, branch, z) in rows {
-                        writeln!(out, "{load},{branch},{},{}", z.re, z.im)?;
-                    }
-                }
-                LocusFormat::Json => {
-                    let rows: Vec<_> = rows
-                        .map(|(load, branch, z)| json!({"load": load, "branch": branch, "re": z.re, "im": z.im}))
-                        .collect();
-                    let value = json!({
-                        "preset": name,
-                        "load_axis": LOAD_AXIS,
-                        "structural_zero_branches": locus.structural_zeros,
-                        "rows": rows,
-                    });
-                    writeln!(out, "{}", serde_json::to_string(&value)?)?;
-                }
-            }
-            Ok(())
+        } => locus_table(&mut out, &model, (load_min, load_max), samples, format),
+    }
+}
+
+fn critical(
+    out: &mut impl Write,
+    args: &ModelArgs,
+    (load_min, load_max): (f64, f64),
+    json: bool,
+) -> Result<()> {
+    let (name, model) = build_model(args)?;
+    let pencil = AffinePencil::new(&model)?;
+    let transitions = critical_loads(&pencil, load_min, load_max)?;
+    if json {
+        let value = json!({
+            "preset": name,
+            "load_axis": LOAD_AXIS,
+            "load_min": load_min,
+            "load_max": load_max,
+            "transitions": transitions,
+        });
+        writeln!(out, "{}", serde_json::to_string_pretty(&value)?)?;
+    } else {
+        writeln!(
+            out,
+            "{name}: stability changes for {LOAD_AXIS} in [{load_min}, {load_max}]"
+        )?;
+        if transitions.is_empty() {
+            writeln!(out, "  none")?;
+        }
+        // The roller's own load q = R l/k = p / mu, beside p.
+        let mu = model.roller().map(|roller| roller.mu);
+        for t in &transitions {
+            let (from, to) = (t.from.name(), t.to.name());
+            let q = mu
+                .map(|mu| format!("  (q = R l/k = {:.9})", t.load / mu))
+                .unwrap_or_default();
+            writeln!(out, "  p = {:<22} {from} -> {to}{q}", t.load)?;
         }
     }
+    Ok(())
+}
+
+fn locus_table(
+    out: &mut impl Write,
+    args: &ModelArgs,
+    (load_min, load_max): (f64, f64),
+    samples: usize,
+    format: LocusFormat,
+) -> Result<()> {
+    let (name, model) = build_model(args)?;
+    let pencil = AffinePencil::new(&model)?;
+    let locus = locus(&pencil, load_min, load_max, samples)?;
+    let locus = &locus;
+    let rows = (0..locus.loads.len())
+        .filter(|&i| locus.on_grid[i])
+        .flat_map(|i| {
+            locus
+                .at(i)
+                .enumerate()
+                .map(move |(b, z)| (locus.loads[i], b, z))
+        });
+    match format {
+        LocusFormat::Csv => {
+            writeln!(out, "load,branch,re,im")?;
+            for (load, branch, z) in rows {
+                writeln!(out, "{load},{branch},{},{}", z.re, z.im)?;
+            }
+        }
+        LocusFormat::Json => {
+            let rows: Vec<_> = rows
+                .map(|(load, branch, z)| json!({"load": load, "branch": branch, "re": z.re, "im": z.im}))
+                .collect();
+            let value = json!({
+                "preset": name,
+                "load_axis": LOAD_AXIS,
+                "structural_zero_branches": locus.structural_zeros,
+                "rows": rows,
+            });
+            writeln!(out, "{}", serde_json::to_string(&value)?)?;
+        }
+    }
+    Ok(())
 }
 
 fn simulate(
@@ -310,6 +382,77 @@ fn simulate(
         eprintln!("run stopped: {status}");
     }
     Ok(())
+}
+
+/// Renders the app headlessly and writes a PNG.
+fn snapshot(
+    args: &ModelArgs,
+    time: f64,
+    engine: EngineKind,
+    size: &str,
+    projector: bool,
+    panel: Panel,
+    out: &std::path::Path,
+) -> Result<()> {
+    let (name, model) = build_model(args)?;
+    if !(time.is_finite() && (0.0..=1.0e5).contains(&time)) {
+        anyhow::bail!("time = {time}: must be a number of seconds in [0, 100000]");
+    }
+    let (width, height) = size
+        .split_once('x')
+        .and_then(|(w, h)| Some((w.trim().parse::<u16>().ok()?, h.trim().parse::<u16>().ok()?)))
+        .filter(|&(w, h)| (64..=8192).contains(&w) && (64..=8192).contains(&h))
+        .ok_or_else(|| {
+            anyhow::anyhow!(
+                "size = {size}: must be WIDTHxHEIGHT in pixels, each 64 to 8192 (e.g. 1280x800)"
+            )
+        })?;
+    let settings = Settings {
+        preset: name,
+        model,
+        engine,
+        speed: 1.0,
+        projector,
+    };
+    let mut app = ZieglerApp::new(settings).map_err(anyhow::Error::msg)?;
+    // Whole 1/60 s frames, as the app advances: the same picture every time.
+    let frames = (time * 60.0).round();
+    let mut frame = 0.0;
+    while frame < frames {
+        app.advance(1.0 / 60.0);
+        frame += 1.0;
+    }
+    let image = render(&mut app, panel, (f32::from(width), f32::from(height)))?;
+    image
+        .save(out)
+        .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", out.display()))?;
+    Ok(())
+}
+
+/// The picture of `panel` by wgpu, headless. A missing renderer (no Mesa, no
+/// GPU) panics inside the renderer's setup: that becomes one clear error.
+fn render(
+    app: &mut ZieglerApp,
+    panel: Panel,
+    (width, height): (f32, f32),
+) -> Result<image::RgbaImage> {
+    let previous_hook = std::panic::take_hook();
+    std::panic::set_hook(Box::new(|_| {}));
+    let rendered = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        let mut harness = egui_kittest::Harness::builder()
+            .wgpu()
+            .with_size([width, height])
+            .build_ui(|ui| app.panel_ui(ui, panel));
+        harness.run_steps(4);
+        harness.render()
+    }));
+    std::panic::set_hook(previous_hook);
+    let help = "no renderer could be created (a GPU, or Mesa's CPU GL: Debian packages libegl1 libegl-mesa0 libgl1-mesa-dri)";
+    match rendered {
+        Ok(Ok(image)) => Ok(image),
+        Ok(Err(error)) => anyhow::bail!("{help}: {error}"),
+        Err(_) => anyhow::bail!("{help}"),
+    }
 }
 
 /// The preset with the `--set` overrides applied and validated.

@@ -263,6 +263,40 @@ const BAD_INPUT: &[(&[&str], &str)] = &[
     ),
     (&["frobnicate"], "unrecognized subcommand 'frobnicate'"),
     (
+        &[
+            "snapshot",
+            "--preset",
+            "roller",
+            "--size",
+            "10x10",
+            "--out",
+            "/tmp/zl-never.png",
+        ],
+        "size = 10x10",
+    ),
+    (
+        &[
+            "snapshot",
+            "--preset",
+            "roller",
+            "--time",
+            "-3",
+            "--out",
+            "/tmp/zl-never.png",
+        ],
+        "time = -3",
+    ),
+    (
+        &[
+            "snapshot",
+            "--preset",
+            "roller",
+            "--out",
+            "/nonexistent-dir/x.png",
+        ],
+        "cannot write /nonexistent-dir/x.png",
+    ),
+    (
         &["simulate", "--preset", "roller", "--duration", "-1"],
         "duration = -1",
     ),
@@ -358,4 +392,40 @@ fn simulate_csv_layout() {
             .collect();
         assert_eq!((v[3], v[6]), (0.0, 0.0));
     }
+}
+
+/// Width and height from a PNG's IHDR chunk.
+fn png_size(path: &std::path::Path) -> (u32, u32) {
+    let bytes = std::fs::read(path).expect("png written");
+    assert_eq!(&bytes[1..4], b"PNG");
+    let word =
+        |at: usize| u32::from_be_bytes([bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]]);
+    (word(16), word(20))
+}
+
+#[test]
+fn snapshot_writes_a_png_of_the_asked_size() {
+    let dir = std::env::temp_dir().join(format!("zieglerlab-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let window = dir.join("window.png");
+    let out = window.to_str().expect("utf-8 path");
+    stdout(&[
+        "snapshot", "--preset", "roller", "--time", "1", "--size", "1024x700", "--out", out,
+    ]);
+    assert_eq!(png_size(&window), (1024, 700));
+    let panel = dir.join("locus.png");
+    let out = panel.to_str().expect("utf-8 path");
+    stdout(&[
+        "snapshot",
+        "--preset",
+        "midpoint-masses",
+        "--panel",
+        "locus",
+        "--size",
+        "400x300",
+        "--out",
+        out,
+    ]);
+    assert_eq!(png_size(&panel), (400, 300));
+    std::fs::remove_dir_all(&dir).expect("cleanup");
 }

@@ -5,7 +5,7 @@
 //! look at every new image before committing it.
 
 use egui_kittest::{Harness, SnapshotResults};
-use zieglerlab::app::{Settings, ZieglerApp};
+use zieglerlab::app::{Panel, Settings, ZieglerApp};
 use zieglerlab::model::{PRESETS, preset};
 
 /// The app in `settings`, at `load`, after `secs` whole seconds simulated
@@ -76,7 +76,7 @@ fn root_locus_panel_of_each_preset() {
         let mut harness = Harness::builder()
             .wgpu()
             .with_size([640.0, 520.0])
-            .build_ui(|ui| app.locus_panel_ui(ui));
+            .build_ui(|ui| app.panel_ui(ui, Panel::Locus));
         harness.run_steps(4);
         harness.snapshot(format!("locus_{}", p.name));
         results.extend(harness.take_snapshot_results());

@@ -123,6 +123,15 @@ struct Overlay {
     locus: Locus,
 }
 
+/// What a headless picture shows: the whole window or one panel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Panel {
+    Window,
+    Locus,
+    Scene,
+    Histories,
+}
+
 /// The choice of plots in the lower half of the window.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Lower {
@@ -458,13 +467,36 @@ impl ZieglerApp {
         });
     }
 
-    /// The root-locus panel alone (for snapshots and figures).
-    pub fn locus_panel_ui(&mut self, ui: &mut egui::Ui) {
+    /// One panel alone (for snapshots and figures).
+    pub fn panel_ui(&mut self, ui: &mut egui::Ui, panel: Panel) {
         let theme = self.theme();
         if self.applied_projector != Some(self.settings.projector) {
             theme.apply(ui.ctx());
             self.applied_projector = Some(self.settings.projector);
         }
+        match panel {
+            Panel::Window => self.contents_ui(ui),
+            Panel::Locus => self.locus_panel_ui(ui, &theme),
+            Panel::Scene => {
+                let now = self.sim.observe();
+                let input = scene::SceneInput {
+                    model: &self.settings.model,
+                    now: &now,
+                    trail: &self.trail,
+                    status: self.sim.status(),
+                    theme: &theme,
+                };
+                egui::CentralPanel::default().show(ui, |ui| scene::scene_ui(ui, &input));
+            }
+            Panel::Histories => {
+                egui::CentralPanel::default()
+                    .show(ui, |ui| plots::histories_ui(ui, &self.history, &theme));
+            }
+        }
+    }
+
+    fn locus_panel_ui(&self, ui: &mut egui::Ui, theme: &Theme) {
+        let theme = *theme;
         let current = self.current_eigenvalues();
         egui::CentralPanel::default().show(ui, |ui| match &self.analysis {
             Some(analysis) => {
