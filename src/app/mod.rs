@@ -426,6 +426,16 @@ impl ZieglerApp {
         }
     }
 
+    /// The current theme, applied to the context when it changed.
+    fn applied_theme(&mut self, ctx: &egui::Context) -> Theme {
+        let theme = self.theme();
+        if self.applied_projector != Some(self.settings.projector) {
+            theme.apply(ctx);
+            self.applied_projector = Some(self.settings.projector);
+        }
+        theme
+    }
+
     fn theme(&self) -> Theme {
         if self.settings.projector {
             Theme::PROJECTOR
@@ -437,11 +447,7 @@ impl ZieglerApp {
     /// The whole window's contents. Reads the state; the simulation advances
     /// only in [`ZieglerApp::advance`], so a picture depends on the state alone.
     pub fn contents_ui(&mut self, ui: &mut egui::Ui) {
-        let theme = self.theme();
-        if self.applied_projector != Some(self.settings.projector) {
-            theme.apply(ui.ctx());
-            self.applied_projector = Some(self.settings.projector);
-        }
+        let theme = self.applied_theme(ui.ctx());
         egui::Panel::left("controls")
             .resizable(false)
             .exact_size(320.0)
@@ -469,11 +475,7 @@ impl ZieglerApp {
 
     /// One panel alone (for snapshots and figures).
     pub fn panel_ui(&mut self, ui: &mut egui::Ui, panel: Panel) {
-        let theme = self.theme();
-        if self.applied_projector != Some(self.settings.projector) {
-            theme.apply(ui.ctx());
-            self.applied_projector = Some(self.settings.projector);
-        }
+        let theme = self.applied_theme(ui.ctx());
         match panel {
             Panel::Window => self.contents_ui(ui),
             Panel::Locus => self.locus_panel_ui(ui, &theme),
@@ -495,21 +497,24 @@ impl ZieglerApp {
         }
     }
 
-    fn locus_panel_ui(&self, ui: &mut egui::Ui, theme: &Theme) {
-        let theme = *theme;
+    /// The root locus of the current analysis with the current, overlaid
+    /// and measured eigenvalues.
+    fn root_locus_ui(&self, ui: &mut egui::Ui, analysis: &Analysis, theme: &Theme) {
+        let overlay = self.overlay.as_ref().map(|o| &o.locus);
         let current = self.current_eigenvalues();
+        plots::root_locus_ui(
+            ui,
+            &analysis.locus,
+            overlay,
+            &current,
+            self.measured.as_deref(),
+            theme,
+        );
+    }
+
+    fn locus_panel_ui(&self, ui: &mut egui::Ui, theme: &Theme) {
         egui::CentralPanel::default().show(ui, |ui| match &self.analysis {
-            Some(analysis) => {
-                let overlay = self.overlay.as_ref().map(|o| &o.locus);
-                plots::root_locus_ui(
-                    ui,
-                    &analysis.locus,
-                    overlay,
-                    &current,
-                    self.measured.as_deref(),
-                    &theme,
-                );
-            }
+            Some(analysis) => self.root_locus_ui(ui, analysis, theme),
             None => {
                 ui.label("No root locus for these parameters.");
             }
@@ -539,20 +544,12 @@ impl ZieglerApp {
         };
         let load = self.settings.model.load_p();
         let ranges = plots::ranges(&analysis.transitions, analysis.first, LOAD_MAX_P);
-        let current = self.current_eigenvalues();
         let overlay = self.overlay.as_ref().map(|o| &o.locus);
         let width = ui.available_width();
         let height = ui.available_height();
         ui.horizontal(|ui| {
             ui.allocate_ui(vec2(0.42 * width, height), |ui| {
-                plots::root_locus_ui(
-                    ui,
-                    &analysis.locus,
-                    overlay,
-                    &current,
-                    self.measured.as_deref(),
-                    theme,
-                );
+                self.root_locus_ui(ui, analysis, theme);
             });
             ui.vertical(|ui| {
                 ui.allocate_ui(vec2(ui.available_width(), 0.5 * height - 4.0), |ui| {
