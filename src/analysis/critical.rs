@@ -6,7 +6,7 @@ use serde::Serialize;
 use super::AnalysisError;
 use super::locus::locus;
 use super::pencil::AffinePencil;
-use super::stability::{State, classify};
+use super::stability::{Stability, State, classify};
 
 /// Default upper end of the load range searched, `p = 10` (twice the ideal
 /// columns' divergence loads).
@@ -27,16 +27,19 @@ pub struct Transition {
     pub to: State,
 }
 
-fn state_at(pencil: &AffinePencil, p: f64) -> Result<State, AnalysisError> {
+/// The classification at load p, on the Schur path.
+fn stability_at(pencil: &AffinePencil, p: f64) -> Result<Stability, AnalysisError> {
     let spectrum = pencil.spectrum(p)?;
-    Ok(classify(&spectrum.eigenvalues, spectrum.scale_per_s).state)
+    Ok(classify(&spectrum.eigenvalues, spectrum.scale_per_s))
+}
+
+fn state_at(pencil: &AffinePencil, p: f64) -> Result<State, AnalysisError> {
+    stability_at(pencil, p).map(|s| s.state)
 }
 
 /// Largest real part of the moving eigenvalues at p, with the tolerance there.
 fn max_real_part(pencil: &AffinePencil, p: f64) -> Result<(f64, f64), AnalysisError> {
-    let spectrum = pencil.spectrum(p)?;
-    let s = classify(&spectrum.eigenvalues, spectrum.scale_per_s);
-    Ok((s.dominant.re, s.tolerance_per_s))
+    stability_at(pencil, p).map(|s| (s.dominant.re, s.tolerance_per_s))
 }
 
 fn width_tolerance(a: f64, b: f64) -> f64 {

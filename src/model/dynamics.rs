@@ -97,6 +97,12 @@ pub struct TipLoad {
     pub regularized: bool,
 }
 
+/// Position of the tip B in state `x`, in m.
+#[must_use]
+pub fn tip_m(column: &Column, x: &StateVec) -> Vector2<f64> {
+    column.rod1.length_m * unit(x[0]) + column.rod2.length_m * unit(x[1])
+}
+
 /// The tip load of `model` in state `x` (section 2).
 #[must_use]
 pub fn tip_load(model: &Model, x: &StateVec) -> TipLoad {

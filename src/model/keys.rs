@@ -2,7 +2,7 @@
 //! every SI parameter and the paper's dimensionless groups, with units and ranges.
 
 use super::ModelError;
-use super::params::{Load, Model};
+use super::params::{Load, Model, Rod};
 
 /// Which loads a key exists for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -165,13 +165,18 @@ fn check_sign(spec: &KeySpec, value: f64) -> Result<(), ModelError> {
     }
 }
 
-fn set_length(model: &mut Model, rod: usize, length_m: f64) {
-    // The rod keeps its shape: centre of mass and radius of gyration scale with it.
-    let rod = if rod == 1 {
+/// Rod 1 or rod 2 of the model.
+fn rod_mut(model: &mut Model, rod: usize) -> &mut Rod {
+    if rod == 1 {
         &mut model.column.rod1
     } else {
         &mut model.column.rod2
-    };
+    }
+}
+
+fn set_length(model: &mut Model, rod: usize, length_m: f64) {
+    // The rod keeps its shape: centre of mass and radius of gyration scale with it.
+    let rod = rod_mut(model, rod);
     let ratio = length_m / rod.length_m;
     rod.com_m *= ratio;
     rod.inertia_kg_m2 *= ratio * ratio;
@@ -180,11 +185,7 @@ fn set_length(model: &mut Model, rod: usize, length_m: f64) {
 
 fn set_mass(model: &mut Model, rod: usize, mass_kg: f64) {
     // The rod keeps its mass distribution (its radius of gyration).
-    let rod = if rod == 1 {
-        &mut model.column.rod1
-    } else {
-        &mut model.column.rod2
-    };
+    let rod = rod_mut(model, rod);
     rod.inertia_kg_m2 = if rod.mass_kg > 0.0 {
         rod.inertia_kg_m2 * mass_kg / rod.mass_kg
     } else {

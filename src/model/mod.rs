@@ -9,7 +9,7 @@ mod presets;
 
 pub use dynamics::{
     Friction, SLIP_REGULARIZATION_M_PER_S, StateVec, TipLoad, energy_j, friction, joint_torques_nm,
-    state_derivative, tip_load,
+    state_derivative, tip_load, tip_m,
 };
 pub use keys::{Assignment, KEYS, KeySpec, apply_assignments, parse_assignment};
 pub use linear::{LinearModel, linearize};

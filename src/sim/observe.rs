@@ -1,10 +1,9 @@
 //! What a run shows at one instant, computed from the model and the state
 //! alone (the same for every engine).
 
-use nalgebra::Vector2;
 use serde::Serialize;
 
-use crate::model::{Model, StateVec, energy_j, tip_load};
+use crate::model::{Model, StateVec, energy_j, tip_load, tip_m};
 
 /// The observables of one state.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -45,9 +44,8 @@ impl Observables {
 /// The observables of `model` in state `x` at time `t_secs`.
 #[must_use]
 pub fn observe(model: &Model, t_secs: f64, x: &StateVec) -> Observables {
-    let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
     let (phi1, phi2) = (x[0], x[1]);
-    let tip = l1 * Vector2::new(phi1.cos(), phi1.sin()) + l2 * Vector2::new(phi2.cos(), phi2.sin());
+    let tip = tip_m(&model.column, x);
     let (kinetic_j, spring_j) = energy_j(model, x);
     let load = tip_load(model, x);
     let band_power_w = load

@@ -7,6 +7,7 @@ use rapier2d::prelude::*;
 
 use crate::model::{
     Column, Load, Model, Roller, SLIP_REGULARIZATION_M_PER_S, StateVec, joint_torques_nm, tip_load,
+    tip_m,
 };
 
 /// The rapier world of one column, and the roller's spin (f64, ours).
@@ -188,11 +189,8 @@ impl RapierEngine {
         self.previous_rates = Some([now[3], now[4]]);
         let dt = f64::from(self.world.integration_parameters.dt);
         let [torque_o, torque_a] = joint_torques_nm(&model.column, &x);
-        let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
-        let tip = vec2(
-            l1 * x[0].cos() + l2 * x[1].cos(),
-            l1 * x[0].sin() + l2 * x[1].sin(),
-        );
+        let tip = tip_m(&model.column, &x);
+        let tip = vec2(tip.x, tip.y);
         let force_n = match model.load {
             Load::Follower { .. } | Load::Dead { .. } => {
                 let f = tip_load(model, &x).force_n;
