@@ -140,6 +140,15 @@ enum Command {
         #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
         format: TableFormat,
     },
+    /// Speed: the root locus, the eigenvalues, the critical loads, both
+    /// engines and the app's frame time, measured in this process.
+    Bench {
+        #[arg(long)]
+        json: bool,
+        /// Frames timed for the frame-time quantiles.
+        #[arg(long, default_value_t = zieglerlab::bench::FRAMES)]
+        frames: usize,
+    },
     /// Render the app (or one panel) headlessly to a PNG after simulating
     /// `--time` seconds from the standard perturbation.
     Snapshot {
@@ -219,6 +228,7 @@ fn execute(command: Command) -> Result<()> {
             dt,
             format: TableFormat::Csv,
         } => simulate(&mut out, &model, duration, engine.into(), perturb, dt),
+        Command::Bench { json, frames } => bench(&mut out, json, frames),
         Command::Snapshot {
             model,
             time,
@@ -516,6 +526,87 @@ fn presets(out: &mut impl Write, json: bool) -> Result<()> {
             )?;
         }
         writeln!(out)?;
+    }
+    Ok(())
+}
+
+/// The targets `bench` compares with on a 2-core machine: each key, the
+/// bound and whether it is an upper bound.
+const BENCH_TARGETS: [(&str, f64, bool); 4] = [
+    ("locus_us_per_load", 1.5, true),
+    ("frame_ms_p99", 8.0, true),
+    ("sim_reference_x_realtime", 1000.0, false),
+    ("sim_rapier_x_realtime", 200.0, false),
+];
+
+fn bench(out: &mut impl Write, json: bool, frames: usize) -> Result<()> {
+    if frames == 0 {
+        anyhow::bail!("--frames must be at least 1");
+    }
+    if cfg!(debug_assertions) {
+        eprintln!(
+            "note: this is a debug build; for representative numbers run `cargo run --release -- bench`"
+        );
+    }
+    let report = zieglerlab::bench::run(frames)?;
+    if json {
+        writeln!(out, "{}", serde_json::to_string_pretty(&report)?)?;
+        return Ok(());
+    }
+    let value = serde_json::to_value(report)?;
+    let rows = [
+        (
+            "locus_us_per_load",
+            "us per load",
+            "tracked locus, roller, 1000 loads",
+        ),
+        (
+            "locus2_us_per_load",
+            "us per load",
+            "tracked locus, midpoint-masses, 1000 loads",
+        ),
+        (
+            "eig_us_per_pencil",
+            "us per pencil",
+            "eigenvalues alone, 100000 roller pencils",
+        ),
+        ("critical_ms", "ms", "critical loads, roller, p in [0, 10]"),
+        (
+            "sim_reference_x_realtime",
+            "x real time",
+            "reference engine, roller p = 1, dt = 1/240 s",
+        ),
+        (
+            "sim_rapier_x_realtime",
+            "x real time",
+            "rapier engine, roller p = 1, dt = 1/240 s",
+        ),
+        (
+            "frame_ms_p50",
+            "ms",
+            "app frame at 1280x800, nu moving every frame: median",
+        ),
+        ("frame_ms_p99", "ms", "the same, 99th percentile"),
+    ];
+    for (key, unit, what) in rows {
+        let figure = value[key].as_f64().unwrap_or(f64::NAN);
+        let target = BENCH_TARGETS
+            .iter()
+            .find(|(k, _, _)| *k == key)
+            .map(|&(_, bound, upper)| {
+                let met = if upper {
+                    figure <= bound
+                } else {
+                    figure >= bound
+                };
+                let sign = if upper { "<=" } else { ">=" };
+                format!(
+                    "  (target {sign} {bound}: {})",
+                    if met { "met" } else { "MISSED" }
+                )
+            })
+            .unwrap_or_default();
+        writeln!(out, "{key:<26} {figure:>10.3} {unit:<14} {what}{target}")?;
     }
     Ok(())
 }

@@ -2,12 +2,14 @@
 //! follower force and with the real mechanism (a roller dragged by a moving band).
 //!
 //! `model` holds the physics, `analysis` the linear stability (both pure f64,
-//! no UI, no clock), `sim` the time simulation.
+//! no UI, no clock), `sim` the time simulation, `app` the window and
+//! `bench` the speed measurements.
 
 // App code answers bad input with an error, never a panic (tests may unwrap).
 #![deny(clippy::unwrap_used, clippy::expect_used)]
 
 pub mod analysis;
 pub mod app;
+pub mod bench;
 pub mod model;
 pub mod sim;

@@ -336,6 +336,8 @@ const BAD_INPUT: &[(&[&str], &str)] = &[
         ],
         "at most",
     ),
+    (&["bench", "--frames", "0"], "--frames must be at least 1"),
+    (&["bench", "--frames", "many"], "invalid value"),
 ];
 
 #[test]
@@ -428,4 +430,41 @@ fn snapshot_writes_a_png_of_the_asked_size() {
     ]);
     assert_eq!(png_size(&panel), (400, 300));
     std::fs::remove_dir_all(&dir).expect("cleanup");
+}
+
+/// `bench --json` (a debug build here, so the figures are slow; only their
+/// layout and sanity are checked): the eight keys in the documented order,
+/// each a positive finite number, with the frame quantiles ordered.
+#[test]
+fn bench_json_has_every_figure() {
+    let out = run(&["bench", "--json", "--frames", "3"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).expect("utf-8");
+    let keys: Vec<&str> = text
+        .lines()
+        .filter_map(|line| line.trim().strip_prefix('"')?.split('"').next())
+        .collect();
+    assert_eq!(
+        keys,
+        [
+            "locus_us_per_load",
+            "locus2_us_per_load",
+            "eig_us_per_pencil",
+            "critical_ms",
+            "sim_reference_x_realtime",
+            "sim_rapier_x_realtime",
+            "frame_ms_p50",
+            "frame_ms_p99",
+        ]
+    );
+    let json: serde_json::Value = serde_json::from_str(&text).expect("json");
+    for key in keys {
+        let figure = json[key].as_f64().expect("a number");
+        assert!(figure.is_finite() && figure > 0.0, "{key} = {figure}");
+    }
+    assert!(json["frame_ms_p50"].as_f64() <= json["frame_ms_p99"].as_f64());
 }

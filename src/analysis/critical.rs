@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use super::AnalysisError;
-use super::locus::locus;
+use super::locus::{Locus, locus};
 use super::pencil::AffinePencil;
 use super::stability::{Stability, State, classify};
 
@@ -13,7 +13,7 @@ use super::stability::{Stability, State, classify};
 pub const DEFAULT_LOAD_MAX: f64 = 10.0;
 
 /// Samples of the locus that brackets the transitions before they are refined.
-const BRACKET_SAMPLES: usize = 1000;
+pub const BRACKET_SAMPLES: usize = 1000;
 
 /// Transitions are located to this relative width of the load bracket.
 const RELATIVE_LOAD_TOLERANCE: f64 = 1e-14;
@@ -207,9 +207,8 @@ fn polish_crossing(
 }
 
 /// Every change of stability for loads in `[load_min, load_max]`, in
-/// increasing load. Brackets come from a tracked, refined root locus
-/// (so changes between its samples are caught where branches cross an axis);
-/// each is confirmed and refined on the robust Schur path.
+/// increasing load: [`critical_loads_along`] a locus of
+/// [`BRACKET_SAMPLES`] loads.
 ///
 /// # Errors
 /// A bad range or a failed eigenvalue computation.
@@ -223,7 +222,26 @@ pub fn critical_loads(
     } else {
         1
     };
-    let locus = locus(pencil, load_min, load_max, samples)?;
+    critical_loads_along(pencil, &locus(pencil, load_min, load_max, samples)?)
+}
+
+/// Every change of stability over the loads of `locus` (a tracked, refined
+/// root locus of `pencil`, e.g. the one a plot shows), in increasing load.
+/// The locus only brackets: where branches cross an axis between its samples
+/// the refinement has caught it. Each change is confirmed and refined on the
+/// robust Schur path, so the loads do not depend on the locus's samples once
+/// they bracket the change.
+///
+/// # Errors
+/// A failed eigenvalue computation.
+pub fn critical_loads_along(
+    pencil: &AffinePencil,
+    locus: &Locus,
+) -> Result<Vec<Transition>, AnalysisError> {
+    let range = match (locus.loads.first(), locus.loads.last()) {
+        (Some(&min), Some(&max)) => (min, max),
+        _ => return Ok(Vec::new()),
+    };
     let tracked: Vec<State> = (0..locus.loads.len())
         .map(|i| classify(&locus.moving_at(i), pencil.scale_per_s(locus.loads[i])).state)
         .collect();
@@ -252,13 +270,7 @@ pub fn critical_loads(
         let (sa, sb) = (left_state.1, right_state.1);
         if sa != sb {
             let (a, b) = (locus.loads[left], locus.loads[right]);
-            refine(
-                pencil,
-                (a, sa),
-                (b, sb),
-                (load_min, load_max),
-                &mut transitions,
-            )?;
+            refine(pencil, (a, sa), (b, sb), range, &mut transitions)?;
         }
     }
     Ok(transitions)

@@ -2,7 +2,7 @@
 //! with samples added where branches meet or cross an axis.
 
 use super::pencil::AffinePencil;
-use super::roots::{aberth, char_poly};
+use super::roots::{aberth, char_poly, modulus};
 use super::stability::RELATIVE_TOLERANCE;
 use super::{AnalysisError, C64};
 
@@ -242,8 +242,8 @@ pub fn locus(
                 let scale = pencil.scale_per_s(next_p);
                 let tolerance = RELATIVE_TOLERANCE * scale;
                 let smooth = next.iter().zip(&guess).zip(&current).all(|((z, g), w)| {
-                    (z - g).norm()
-                        <= TURN_TOLERANCE * (g - w).norm() + FLOOR_TOLERANCE * (z.norm() + scale)
+                    modulus(z - g)
+                        <= TURN_TOLERANCE * modulus(g - w) + FLOOR_TOLERANCE * (modulus(*z) + scale)
                 });
                 let crosses = next.iter().zip(&current).any(|(z, w)| {
                     sign_with_tolerance(z.re, tolerance) != sign_with_tolerance(w.re, tolerance)

@@ -7,8 +7,10 @@ mod pencil;
 mod roots;
 mod stability;
 
-pub use critical::{DEFAULT_LOAD_MAX, Transition, critical_loads};
-pub use locus::{Locus, locus};
+pub use critical::{
+    BRACKET_SAMPLES, DEFAULT_LOAD_MAX, Transition, critical_loads, critical_loads_along,
+};
+pub use locus::{Locus, load_grid, locus};
 pub use pencil::{AffinePencil, Spectrum, spectrum};
 pub use roots::{aberth, char_poly};
 pub use stability::{RELATIVE_TOLERANCE, Stability, State, classify};

@@ -78,16 +78,27 @@ pub fn char_poly(pencil: &AffinePencil, p: f64) -> Option<Poly> {
 }
 
 /// Value, derivative and rounding bound `sum |c_k| |z|^k` of `poly` at z (Horner).
+/// |z|: the square root of |z|^2 where that neither overflows nor
+/// underflows, `hypot` (several times slower) only where it does.
+pub(crate) fn modulus(z: C64) -> f64 {
+    let squared = z.norm_sqr();
+    if squared.is_finite() && squared >= f64::MIN_POSITIVE {
+        squared.sqrt()
+    } else {
+        z.norm()
+    }
+}
+
 fn horner(poly: &Poly, z: C64) -> (C64, C64, f64) {
     let coeffs = &poly.coeffs[..=poly.degree];
     let mut value = C64::new(coeffs[poly.degree], 0.0);
     let mut slope = C64::new(0.0, 0.0);
     let mut bound = coeffs[poly.degree].abs();
-    let modulus = z.norm();
+    let z_abs = modulus(z);
     for &c in coeffs[..poly.degree].iter().rev() {
         slope = slope * z + value;
         value = value * z + c;
-        bound = bound * modulus + c.abs();
+        bound = bound * z_abs + c.abs();
     }
     (value, slope, bound)
 }
@@ -109,7 +120,7 @@ pub fn aberth(poly: &Poly, roots: &mut [C64], max_iterations: usize) -> bool {
         for i in 0..roots.len() {
             let z = roots[i];
             let (value, slope, bound) = horner(poly, z);
-            if value.norm() <= noise * bound {
+            if modulus(value) <= noise * bound {
                 continue;
             }
             done = false;

@@ -12,7 +12,8 @@ use std::collections::VecDeque;
 use eframe::egui::{self, Color32, RichText, Sense, Stroke, pos2, vec2};
 
 use crate::analysis::{
-    AffinePencil, C64, Locus, State, Transition, classify, critical_loads, locus,
+    AffinePencil, BRACKET_SAMPLES, C64, Locus, State, Transition, classify, critical_loads_along,
+    locus,
 };
 use crate::model::{Assignment, KEYS, KeySpec, Model, PRESETS, apply_assignments, preset};
 use crate::sim::{DEFAULT_STEP_SECS, EngineKind, Simulation, Status, initial_state};
@@ -20,8 +21,9 @@ use theme::Theme;
 
 /// The load slider's range and the locus's, on the common axis p.
 pub const LOAD_MAX_P: f64 = 8.0;
-/// Evenly spaced loads of the plotted locus (plus the refinement).
-const LOCUS_SAMPLES: usize = 400;
+/// Evenly spaced loads of the plotted locus (plus the refinement). The same
+/// locus brackets the critical loads, with the sample count `critical` uses.
+const LOCUS_SAMPLES: usize = BRACKET_SAMPLES;
 /// The simulation never advances more than this much wall time per frame,
 /// so a slow frame cannot make the run jump.
 const MAX_FRAME_SECS: f64 = 0.1;
@@ -74,7 +76,7 @@ impl Analysis {
         let key = model.at_load(0.0);
         let pencil = AffinePencil::new(&key).map_err(|e| e.to_string())?;
         let locus = locus(&pencil, 0.0, LOAD_MAX_P, LOCUS_SAMPLES).map_err(|e| e.to_string())?;
-        let transitions = critical_loads(&pencil, 0.0, LOAD_MAX_P).map_err(|e| e.to_string())?;
+        let transitions = critical_loads_along(&pencil, &locus).map_err(|e| e.to_string())?;
         let at_zero = pencil.spectrum(0.0).map_err(|e| e.to_string())?;
         let first = classify(&at_zero.eigenvalues, at_zero.scale_per_s).state;
         Ok(Self {

@@ -1,0 +1,187 @@
+//! Speed, measured in this process: the analysis core, both engines and the
+//! app's frame time, as the numbers `zieglerlab bench` prints.
+//!
+//! Wall times on a shared machine wander; every figure but the frame
+//! quantiles is the median of several repetitions, so one busy moment does
+//! not move it.
+
+#![expect(
+    clippy::cast_precision_loss,
+    clippy::cast_possible_truncation,
+    clippy::cast_sign_loss,
+    reason = "repetition counts and quantile indices are small"
+)]
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use anyhow::{Context as _, Result};
+use eframe::egui::{self, RawInput, Rect, pos2};
+use serde::Serialize;
+
+use crate::analysis::{AffinePencil, critical_loads, load_grid, locus};
+use crate::app::{Settings, ZieglerApp};
+use crate::model::{Model, preset};
+use crate::sim::{DEFAULT_STEP_SECS, EngineKind, Simulation, initial_state};
+
+/// Loads of the benchmarked root loci, over `p` in `[0, LOCUS_LOAD_MAX]`.
+pub const LOCUS_LOADS: usize = 1000;
+const LOCUS_LOAD_MAX: f64 = 10.0;
+/// Pencils solved for the bare eigenvalue throughput.
+pub const EIG_PENCILS: usize = 100_000;
+/// Simulated time per engine run, in s.
+const SIM_SECS: f64 = 10.0;
+/// The default launch: roller in weak flutter at p = 1.
+const SIM_LOAD_P: f64 = 1.0;
+/// Frames timed by default, after [`WARMUP_FRAMES`] untimed ones.
+pub const FRAMES: usize = 300;
+const WARMUP_FRAMES: usize = 10;
+/// The window size of the timed frames, in points.
+const FRAME_SIZE: [f32; 2] = [1280.0, 800.0];
+
+/// What `zieglerlab bench` reports (the JSON keys are the field names).
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct Report {
+    /// Tracked root locus of `roller`, 1000 loads: µs per load.
+    pub locus_us_per_load: f64,
+    /// The same for `midpoint-masses`.
+    pub locus2_us_per_load: f64,
+    /// Eigenvalues alone of 100000 `roller` pencils: µs per pencil.
+    pub eig_us_per_pencil: f64,
+    /// Critical loads of `roller` for p in [0, 10]: ms.
+    pub critical_ms: f64,
+    /// Simulated seconds per wall second, reference engine, app's step.
+    pub sim_reference_x_realtime: f64,
+    /// The same for the rapier engine.
+    pub sim_rapier_x_realtime: f64,
+    /// Headless frame time of the app at 1280x800, nu moving every frame.
+    pub frame_ms_p50: f64,
+    pub frame_ms_p99: f64,
+}
+
+/// Runs every measurement; `frames` frames are timed.
+///
+/// # Errors
+/// A preset or a computation that fails (none should).
+pub fn run(frames: usize) -> Result<Report> {
+    let roller = pencil("roller")?;
+    let midpoint = pencil("midpoint-masses")?;
+    let frame_ms = frame_times_ms(frames)?;
+    Ok(Report {
+        locus_us_per_load: locus_us_per_load(&roller)?,
+        locus2_us_per_load: locus_us_per_load(&midpoint)?,
+        eig_us_per_pencil: eig_us_per_pencil(&roller)?,
+        critical_ms: critical_ms(&roller)?,
+        sim_reference_x_realtime: x_realtime(EngineKind::Reference)?,
+        sim_rapier_x_realtime: x_realtime(EngineKind::Rapier)?,
+        frame_ms_p50: quantile(&frame_ms, 0.5),
+        frame_ms_p99: quantile(&frame_ms, 0.99),
+    })
+}
+
+fn pencil(name: &str) -> Result<AffinePencil> {
+    Ok(AffinePencil::new(&preset(name)?.model())?)
+}
+
+/// The median wall time of `repeats` calls of `f`, in s.
+fn median_secs(repeats: usize, mut f: impl FnMut() -> Result<()>) -> Result<f64> {
+    // One untimed call: caches, lazy statics, page faults.
+    f()?;
+    let mut secs = Vec::with_capacity(repeats);
+    for _ in 0..repeats {
+        let start = Instant::now();
+        f()?;
+        secs.push(start.elapsed().as_secs_f64());
+    }
+    Ok(quantile(&secs, 0.5))
+}
+
+/// The `q` quantile of `values` (nearest rank); NaN for none.
+#[must_use]
+pub fn quantile(values: &[f64], q: f64) -> f64 {
+    let mut sorted = values.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    match sorted.len() {
+        0 => f64::NAN,
+        n => sorted[(q.clamp(0.0, 1.0) * (n - 1) as f64).round() as usize],
+    }
+}
+
+fn locus_us_per_load(pencil: &AffinePencil) -> Result<f64> {
+    let secs = median_secs(31, || {
+        black_box(locus(pencil, 0.0, LOCUS_LOAD_MAX, LOCUS_LOADS)?);
+        Ok(())
+    })?;
+    Ok(secs * 1e6 / LOCUS_LOADS as f64)
+}
+
+fn eig_us_per_pencil(pencil: &AffinePencil) -> Result<f64> {
+    let loads = load_grid(0.0, LOCUS_LOAD_MAX, EIG_PENCILS)?;
+    let secs = median_secs(3, || {
+        for &p in &loads {
+            black_box(pencil.spectrum(black_box(p))?);
+        }
+        Ok(())
+    })?;
+    Ok(secs * 1e6 / EIG_PENCILS as f64)
+}
+
+fn critical_ms(pencil: &AffinePencil) -> Result<f64> {
+    let secs = median_secs(31, || {
+        black_box(critical_loads(pencil, 0.0, LOCUS_LOAD_MAX)?);
+        Ok(())
+    })?;
+    Ok(secs * 1e3)
+}
+
+/// Simulated seconds per wall second of `engine` for the default launch.
+fn x_realtime(engine: EngineKind) -> Result<f64> {
+    let model: Model = preset("roller")?.model().at_load(SIM_LOAD_P);
+    let secs = median_secs(5, || {
+        let x0 = initial_state(&model, 1e-3);
+        let mut sim = Simulation::new(model, engine, x0, DEFAULT_STEP_SECS)?;
+        black_box(sim.run(SIM_SECS, |_| ()));
+        Ok(())
+    })?;
+    Ok(SIM_SECS / secs)
+}
+
+/// The wall time of `frames` headless frames of the whole app at 1280x800,
+/// in ms, with nu swept 0.05 .. 0.35 and back as a dragged slider does (so
+/// the locus and the critical loads are recomputed every frame): the
+/// simulation's advance by 1/60 s, the egui pass and tessellation. The GPU's
+/// share (a few thousand triangles) is not included.
+///
+/// # Errors
+/// The app refusing its defaults or a nu value (neither should happen).
+pub fn frame_times_ms(frames: usize) -> Result<Vec<f64>> {
+    let ctx = egui::Context::default();
+    let mut app = ZieglerApp::new(Settings::default()).map_err(anyhow::Error::msg)?;
+    let mut times_ms = Vec::with_capacity(frames);
+    for frame in 0..frames + WARMUP_FRAMES {
+        let phase = (frame % 120) as f64 / 120.0;
+        let nu = 0.05 + 0.3 * (1.0 - (2.0 * phase - 1.0).abs());
+        let input = RawInput {
+            screen_rect: Some(Rect::from_min_max(
+                pos2(0.0, 0.0),
+                pos2(FRAME_SIZE[0], FRAME_SIZE[1]),
+            )),
+            ..Default::default()
+        };
+        let start = Instant::now();
+        app.set_parameter("nu", nu)
+            .map_err(anyhow::Error::msg)
+            .context("setting nu")?;
+        app.advance(1.0 / 60.0);
+        let mut output = ctx.run_ui(input, |ui| app.contents_ui(ui));
+        // No renderer takes the font atlas here.
+        output.textures_delta.clear();
+        black_box(ctx.tessellate(output.shapes, output.pixels_per_point));
+        let elapsed_ms = start.elapsed().as_secs_f64() * 1e3;
+        // The first frames lay out fonts and fill caches once.
+        if frame >= WARMUP_FRAMES {
+            times_ms.push(elapsed_ms);
+        }
+    }
+    Ok(times_ms)
+}
