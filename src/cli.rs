@@ -8,7 +8,10 @@ use anyhow::Result;
 use clap::{Parser, Subcommand, ValueEnum};
 use serde_json::json;
 
-use zieglerlab::analysis::{AffinePencil, DEFAULT_LOAD_MAX, critical_loads, locus};
+use zieglerlab::analysis::{
+    AffinePencil, DEFAULT_LOAD_MAX, bracketing_locus, critical_loads_along, locus,
+    resolution_warning,
+};
 use zieglerlab::app::{Panel, Settings, ZieglerApp};
 use zieglerlab::model::{KEYS, Model, PRESETS, apply_assignments, parse_assignment, preset};
 use zieglerlab::sim::{
@@ -264,7 +267,12 @@ fn critical(
 ) -> Result<()> {
     let (name, model) = build_model(args)?;
     let pencil = AffinePencil::new(&model)?;
-    let transitions = critical_loads(&pencil, load_min, load_max)?;
+    let bracket = bracketing_locus(&pencil, load_min, load_max)?;
+    let transitions = critical_loads_along(&pencil, &bracket)?;
+    let warning = resolution_warning(&pencil, &bracket, &transitions)?;
+    if let Some(warning) = &warning {
+        eprintln!("warning: {warning}");
+    }
     if json {
         let value = json!({
             "preset": name,
@@ -272,6 +280,8 @@ fn critical(
             "load_min": load_min,
             "load_max": load_max,
             "transitions": transitions,
+            "resolved": warning.is_none(),
+            "warning": warning,
         });
         writeln!(out, "{}", serde_json::to_string_pretty(&value)?)?;
     } else {
@@ -388,7 +398,7 @@ fn simulate(
     });
     written?;
     out.flush()?;
-    if let Status::Diverged { .. } = status {
+    if status != Status::Running {
         eprintln!("run stopped: {status}");
     }
     Ok(())

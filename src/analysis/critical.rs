@@ -6,7 +6,7 @@ use serde::Serialize;
 use super::AnalysisError;
 use super::locus::{Locus, locus};
 use super::pencil::AffinePencil;
-use super::stability::{Stability, State, classify};
+use super::stability::{RELATIVE_TOLERANCE, Stability, State, classify_with};
 
 /// Default upper end of the load range searched, `p = 10` (twice the ideal
 /// columns' divergence loads).
@@ -27,19 +27,33 @@ pub struct Transition {
     pub to: State,
 }
 
-/// The classification at load p, on the Schur path.
-fn stability_at(pencil: &AffinePencil, p: f64) -> Result<Stability, AnalysisError> {
-    let spectrum = pencil.spectrum(p)?;
-    Ok(classify(&spectrum.eigenvalues, spectrum.scale_per_s))
+/// Classification on the Schur path with a given relative tolerance.
+#[derive(Clone, Copy)]
+struct Classifier<'a> {
+    pencil: &'a AffinePencil,
+    relative_tolerance: f64,
 }
 
-fn state_at(pencil: &AffinePencil, p: f64) -> Result<State, AnalysisError> {
-    stability_at(pencil, p).map(|s| s.state)
-}
+impl Classifier<'_> {
+    /// The classification at load p.
+    fn stability_at(&self, p: f64) -> Result<Stability, AnalysisError> {
+        let spectrum = self.pencil.spectrum(p)?;
+        Ok(classify_with(
+            &spectrum.eigenvalues,
+            spectrum.scale_per_s,
+            self.relative_tolerance,
+        ))
+    }
 
-/// Largest real part of the moving eigenvalues at p, with the tolerance there.
-fn max_real_part(pencil: &AffinePencil, p: f64) -> Result<(f64, f64), AnalysisError> {
-    stability_at(pencil, p).map(|s| (s.dominant.re, s.tolerance_per_s))
+    fn state_at(&self, p: f64) -> Result<State, AnalysisError> {
+        self.stability_at(p).map(|s| s.state)
+    }
+
+    /// Largest real part of the moving eigenvalues at p, with the tolerance there.
+    fn max_real_part(&self, p: f64) -> Result<(f64, f64), AnalysisError> {
+        self.stability_at(p)
+            .map(|s| (s.dominant.re, s.tolerance_per_s))
+    }
 }
 
 fn width_tolerance(a: f64, b: f64) -> f64 {
@@ -50,7 +64,7 @@ fn width_tolerance(a: f64, b: f64) -> f64 {
 /// bisection on the state. Exact at square-root branch points (eigenvalues
 /// meeting on an axis), where the state flips with no tolerance band.
 fn bisect(
-    pencil: &AffinePencil,
+    c: &Classifier,
     (a, sa): (f64, State),
     (b, sb): (f64, State),
     out: &mut Vec<Transition>,
@@ -64,12 +78,12 @@ fn bisect(
         return Ok(());
     }
     let m = 0.5 * (a + b);
-    let sm = state_at(pencil, m)?;
+    let sm = c.state_at(m)?;
     if sm != sa {
-        bisect(pencil, (a, sa), (m, sm), out)?;
+        bisect(c, (a, sa), (m, sm), out)?;
     }
     if sm != sb {
-        bisect(pencil, (m, sm), (b, sb), out)?;
+        bisect(c, (m, sm), (b, sb), out)?;
     }
     Ok(())
 }
@@ -135,16 +149,16 @@ fn brent(
 /// Every transition between the bracket's ends: bisection on the state, then
 /// each loss (or gain) of stability polished by [`polish_crossing`].
 fn refine(
-    pencil: &AffinePencil,
+    c: &Classifier,
     (a, sa): (f64, State),
     (b, sb): (f64, State),
     range: (f64, f64),
     out: &mut Vec<Transition>,
 ) -> Result<(), AnalysisError> {
     let mut found = Vec::new();
-    bisect(pencil, (a, sa), (b, sb), &mut found)?;
+    bisect(c, (a, sa), (b, sb), &mut found)?;
     for transition in &mut found {
-        if let Some(root) = polish_crossing(pencil, transition, range)? {
+        if let Some(root) = polish_crossing(c, transition, range)? {
             transition.load = root;
         }
     }
@@ -163,7 +177,7 @@ fn refine(
 /// eigenvalues sit on the axis); the bisection's answer is exact there
 /// (square-root branch point) and is kept.
 fn polish_crossing(
-    pencil: &AffinePencil,
+    c: &Classifier,
     transition: &Transition,
     (load_min, load_max): (f64, f64),
 ) -> Result<Option<f64>, AnalysisError> {
@@ -173,7 +187,7 @@ fn polish_crossing(
         (_, State::Stable) => -1.0,
         _ => return Ok(None),
     };
-    let growth = |p| max_real_part(pencil, p).map(|(re, _)| re);
+    let growth = |p| c.max_real_part(p).map(|(re, _)| re);
     let p = transition.load;
     let unstable_p = (p + toward_unstable * width_tolerance(p, p)).clamp(load_min, load_max);
     let unstable_growth = growth(unstable_p)?;
@@ -186,7 +200,7 @@ fn polish_crossing(
         if !(load_min..=load_max).contains(&stable_p) {
             return Ok(None);
         }
-        let (stable_growth, tolerance) = max_real_part(pencil, stable_p)?;
+        let (stable_growth, tolerance) = c.max_real_part(stable_p)?;
         if stable_growth > 2.0 * tolerance {
             // Clearly unstable again (near the flip itself the growth equals
             // the tolerance up to rounding): not a lone crossing.
@@ -207,8 +221,7 @@ fn polish_crossing(
 }
 
 /// Every change of stability for loads in `[load_min, load_max]`, in
-/// increasing load: [`critical_loads_along`] a locus of
-/// [`BRACKET_SAMPLES`] loads.
+/// increasing load: [`critical_loads_along`] the [`bracketing_locus`].
 ///
 /// # Errors
 /// A bad range or a failed eigenvalue computation.
@@ -217,12 +230,25 @@ pub fn critical_loads(
     load_min: f64,
     load_max: f64,
 ) -> Result<Vec<Transition>, AnalysisError> {
+    critical_loads_along(pencil, &bracketing_locus(pencil, load_min, load_max)?)
+}
+
+/// The tracked locus of [`BRACKET_SAMPLES`] loads over `[load_min, load_max]`
+/// (one load when the range is a point).
+///
+/// # Errors
+/// A bad range or a failed eigenvalue computation.
+pub fn bracketing_locus(
+    pencil: &AffinePencil,
+    load_min: f64,
+    load_max: f64,
+) -> Result<Locus, AnalysisError> {
     let samples = if load_max > load_min {
         BRACKET_SAMPLES
     } else {
         1
     };
-    critical_loads_along(pencil, &locus(pencil, load_min, load_max, samples)?)
+    locus(pencil, load_min, load_max, samples)
 }
 
 /// Every change of stability over the loads of `locus` (a tracked, refined
@@ -238,15 +264,28 @@ pub fn critical_loads_along(
     pencil: &AffinePencil,
     locus: &Locus,
 ) -> Result<Vec<Transition>, AnalysisError> {
+    let classifier = Classifier {
+        pencil,
+        relative_tolerance: RELATIVE_TOLERANCE,
+    };
+    transitions_along(&classifier, locus)
+}
+
+/// [`critical_loads_along`] with the classification of `c`.
+fn transitions_along(c: &Classifier, locus: &Locus) -> Result<Vec<Transition>, AnalysisError> {
+    let pencil = c.pencil;
     let range = match (locus.loads.first(), locus.loads.last()) {
         (Some(&min), Some(&max)) => (min, max),
         _ => return Ok(Vec::new()),
     };
     let tracked: Vec<State> = (0..locus.loads.len())
-        .map(|i| classify(&locus.moving_at(i), pencil.scale_per_s(locus.loads[i])).state)
+        .map(|i| {
+            let scale = pencil.scale_per_s(locus.loads[i]);
+            classify_with(&locus.moving_at(i), scale, c.relative_tolerance).state
+        })
         .collect();
     // Whether the Schur path agrees with the tracked roots at sample j, and its state.
-    let schur = |j: usize| state_at(pencil, locus.loads[j]).map(|s| (s == tracked[j], s));
+    let schur = |j: usize| c.state_at(locus.loads[j]).map(|s| (s == tracked[j], s));
     let mut transitions = Vec::new();
     let mut done_until = 0;
     for i in 1..locus.loads.len() {
@@ -270,8 +309,104 @@ pub fn critical_loads_along(
         let (sa, sb) = (left_state.1, right_state.1);
         if sa != sb {
             let (a, b) = (locus.loads[left], locus.loads[right]);
-            refine(pencil, (a, sa), (b, sb), range, &mut transitions)?;
+            refine(c, (a, sa), (b, sb), range, &mut transitions)?;
         }
     }
     Ok(transitions)
+}
+
+/// The sensitivity check classifies again with a tolerance this much finer.
+const FINER_TOLERANCE_FACTOR: f64 = 1e-2;
+/// Transitions of the two classifications agree to this relative load.
+const LOAD_AGREEMENT: f64 = 1e-6;
+/// The classification's tolerance must stay below this fraction of the
+/// slowest mode's |lambda| for a growth rate of that mode to be told from zero.
+const SLOWEST_MODE_FRACTION: f64 = 1e-3;
+
+/// Whether `transitions` (found along `locus`) can be trusted, and if not, why,
+/// in words for the user. Two checks:
+/// - the tolerance of the classification (1e-10 of the frequency scale, which
+///   a very stiff mode such as the roller's spin relaxation at a tiny band
+///   speed V inflates) must be well below the slowest mode;
+/// - classifying again with a 100 times finer tolerance must find the same
+///   changes at the same loads. They differ when the stability hinges on
+///   growth rates at the resolution of double precision (a roller of tiny
+///   mass nu, whose weak flutter grows in proportion to nu; a very slow band).
+///
+/// # Errors
+/// A failed eigenvalue computation.
+pub fn resolution_warning(
+    pencil: &AffinePencil,
+    locus: &Locus,
+    transitions: &[Transition],
+) -> Result<Option<String>, AnalysisError> {
+    // The stiffest load of the range (for the roller the largest: R = p k/(mu l)).
+    let Some(&stiffest) = locus
+        .loads
+        .iter()
+        .max_by(|&&a, &&b| pencil.scale_per_s(a).total_cmp(&pencil.scale_per_s(b)))
+    else {
+        return Ok(None);
+    };
+    let spectrum = pencil.spectrum(stiffest)?;
+    let tolerance = RELATIVE_TOLERANCE * spectrum.scale_per_s;
+    let slowest = spectrum
+        .eigenvalues
+        .iter()
+        .map(|z| z.norm())
+        .filter(|&r| r > 0.0)
+        .fold(f64::INFINITY, f64::min);
+    if slowest.is_finite() && tolerance > SLOWEST_MODE_FRACTION * slowest {
+        return Ok(Some(format!(
+            "the stability is not resolved: at p = {stiffest:.4} the modes span {:.0e} 1/s to {slowest:.1e} 1/s, so growth rates below {tolerance:.1e} 1/s are lost to rounding (the model is near a singular limit: a very slow band V, or very large damping)",
+            spectrum.scale_per_s
+        )));
+    }
+    let finer = Classifier {
+        pencil,
+        relative_tolerance: RELATIVE_TOLERANCE * FINER_TOLERANCE_FACTOR,
+    };
+    let refined = transitions_along(&finer, locus)?;
+    let agree = refined.len() == transitions.len()
+        && refined.iter().zip(transitions).all(|(a, b)| {
+            (a.from, a.to) == (b.from, b.to)
+                && (a.load - b.load).abs() <= LOAD_AGREEMENT * a.load.abs().max(b.load.abs())
+        });
+    if agree {
+        return Ok(None);
+    }
+    let loads = |ts: &[Transition]| {
+        let named: Vec<String> = ts
+            .iter()
+            .map(|t| {
+                format!(
+                    "{} ({} -> {})",
+                    load_label(t.load),
+                    t.from.name(),
+                    t.to.name()
+                )
+            })
+            .collect();
+        if named.is_empty() {
+            "none".to_owned()
+        } else {
+            named.join(", ")
+        }
+    };
+    Ok(Some(format!(
+        "the stability is not resolved: the growth rates are at the resolution of the analysis ({tolerance:.1e} 1/s), and a 100x finer tolerance moves the changes from p = {} to p = {} (a roller of tiny mass nu, whose weak flutter grows in proportion to nu, or a very slow band V)",
+        loads(transitions),
+        loads(&refined)
+    )))
+}
+
+/// A load for people: four decimals, or three significant digits when it is
+/// below 1e-3 (the roller's first flutter load scales with nu).
+#[must_use]
+pub fn load_label(load: f64) -> String {
+    if load == 0.0 || load.abs() >= 1e-3 {
+        format!("{load:.4}")
+    } else {
+        format!("{load:.2e}")
+    }
 }

@@ -8,7 +8,8 @@ mod roots;
 mod stability;
 
 pub use critical::{
-    BRACKET_SAMPLES, DEFAULT_LOAD_MAX, Transition, critical_loads, critical_loads_along,
+    BRACKET_SAMPLES, DEFAULT_LOAD_MAX, Transition, bracketing_locus, critical_loads,
+    critical_loads_along, load_label, resolution_warning,
 };
 pub use locus::{Locus, load_grid, locus};
 pub use pencil::{AffinePencil, Spectrum, spectrum};
@@ -33,4 +34,16 @@ pub enum AnalysisError {
         value: f64,
         allowed: &'static str,
     },
+}
+
+impl AnalysisError {
+    /// The parameter (or argument) the error is about, when it is about one.
+    #[must_use]
+    pub fn parameter(&self) -> Option<&str> {
+        match self {
+            Self::Model(error) => error.parameter(),
+            Self::BadRange { what, .. } => Some(what),
+            Self::NotConverged { .. } => None,
+        }
+    }
 }

@@ -70,7 +70,14 @@ impl Stability {
 /// is named after the most unstable eigenvalue.
 #[must_use]
 pub fn classify(eigenvalues: &[C64], scale_per_s: f64) -> Stability {
-    let tolerance_per_s = RELATIVE_TOLERANCE * scale_per_s;
+    classify_with(eigenvalues, scale_per_s, RELATIVE_TOLERANCE)
+}
+
+/// [`classify`] with another relative tolerance (the resolution check
+/// compares two).
+#[must_use]
+pub fn classify_with(eigenvalues: &[C64], scale_per_s: f64, relative_tolerance: f64) -> Stability {
+    let tolerance_per_s = relative_tolerance * scale_per_s;
     let dominant = eigenvalues
         .iter()
         .copied()

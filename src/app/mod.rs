@@ -5,6 +5,7 @@
 mod history;
 mod plots;
 mod scene;
+mod stored;
 mod theme;
 
 use std::collections::VecDeque;
@@ -13,10 +14,10 @@ use eframe::egui::{self, Color32, RichText, Sense, Stroke, pos2, vec2};
 
 use crate::analysis::{
     AffinePencil, BRACKET_SAMPLES, C64, Locus, State, Transition, classify, critical_loads_along,
-    locus,
+    load_label, locus, resolution_warning,
 };
 use crate::model::{Assignment, KEYS, KeySpec, Model, PRESETS, apply_assignments, preset};
-use crate::sim::{DEFAULT_STEP_SECS, EngineKind, Simulation, Status, initial_state};
+use crate::sim::{DEFAULT_STEP_SECS, EngineKind, SimError, Simulation, Status, initial_state};
 use theme::Theme;
 
 /// The load slider's range and the locus's, on the common axis p.
@@ -67,6 +68,8 @@ struct Analysis {
     pencil: AffinePencil,
     locus: Locus,
     transitions: Vec<Transition>,
+    /// Why the transitions cannot be trusted, when they cannot.
+    warning: Option<String>,
     /// The state at p = 0, where the first range starts.
     first: State,
 }
@@ -77,6 +80,8 @@ impl Analysis {
         let pencil = AffinePencil::new(&key).map_err(|e| e.to_string())?;
         let locus = locus(&pencil, 0.0, LOAD_MAX_P, LOCUS_SAMPLES).map_err(|e| e.to_string())?;
         let transitions = critical_loads_along(&pencil, &locus).map_err(|e| e.to_string())?;
+        let warning =
+            resolution_warning(&pencil, &locus, &transitions).map_err(|e| e.to_string())?;
         let at_zero = pencil.spectrum(0.0).map_err(|e| e.to_string())?;
         let first = classify(&at_zero.eigenvalues, at_zero.scale_per_s).state;
         Ok(Self {
@@ -84,8 +89,30 @@ impl Analysis {
             pencil,
             locus,
             transitions,
+            warning,
             first,
         })
+    }
+}
+
+/// What the user is told when rapier cannot integrate the column.
+const SWITCHED_TO_REFERENCE: &str = "the column is too stiff for the rapier engine at its 1/240 s step (huge damping or stiffness against little mass); switched to the reference engine";
+
+/// A run of the settings' model from the standard kick. When rapier cannot
+/// integrate it the reference engine runs instead, the settings say so, and
+/// so does the returned message.
+fn start(settings: &mut Settings) -> Result<(Simulation, Option<String>), String> {
+    let model = settings.model;
+    let x0 = initial_state(&model, 1e-3);
+    match Simulation::new(model, settings.engine, x0, DEFAULT_STEP_SECS) {
+        Ok(sim) => Ok((sim, None)),
+        Err(SimError::TooStiffForRapier { .. }) => {
+            settings.engine = EngineKind::Reference;
+            Simulation::new(model, EngineKind::Reference, x0, DEFAULT_STEP_SECS)
+                .map(|sim| (sim, Some(SWITCHED_TO_REFERENCE.to_owned())))
+                .map_err(|e| e.to_string())
+        }
+        Err(error) => Err(error.to_string()),
     }
 }
 
@@ -146,15 +173,8 @@ impl ZieglerApp {
     ///
     /// # Errors
     /// Settings that make no valid model or simulation.
-    pub fn new(settings: Settings) -> Result<Self, String> {
-        let model = settings.model;
-        let sim = Simulation::new(
-            model,
-            settings.engine,
-            initial_state(&model, 1e-3),
-            DEFAULT_STEP_SECS,
-        )
-        .map_err(|e| e.to_string())?;
+    pub fn new(mut settings: Settings) -> Result<Self, String> {
+        let (sim, message) = start(&mut settings)?;
         let mut app = Self {
             settings,
             sim,
@@ -162,7 +182,7 @@ impl ZieglerApp {
             trail: VecDeque::new(),
             analysis: None,
             owed_secs: 0.0,
-            message: None,
+            message,
             applied_projector: None,
             refused: None,
             history: history::History::default(),
@@ -184,31 +204,46 @@ impl ZieglerApp {
         Self::from_stored_text(text.as_deref())
     }
 
-    /// The app from settings stored as text (RON, as eframe writes them), or
-    /// the defaults with a message saying what was ignored.
+    /// The app from settings stored as text (RON, as eframe writes them):
+    /// every field that reads and makes sense is kept, the others take their
+    /// defaults, and a message names them.
     #[must_use]
     pub fn from_stored_text(text: Option<&str>) -> Self {
-        let mut note = None;
-        let stored = text.and_then(|text| match ron::from_str::<Settings>(text) {
-            Ok(settings) => Some(settings),
-            Err(error) => {
-                note = Some(format!(
-                    "stored settings could not be read ({error}); starting from the defaults"
-                ));
-                None
+        let Some(text) = text else {
+            return Self::defaults();
+        };
+        let (read, note) = match stored::read(text) {
+            Ok(read) if read.ignored.is_empty() => (read.settings, None),
+            Ok(read) => {
+                let note = format!(
+                    "stored settings: ignored {}; kept the rest",
+                    read.ignored.join(", ")
+                );
+                (read.settings, Some(note))
             }
-        });
-        let app = stored.map_or_else(|| Self::new(Settings::default()), Self::new);
-        let mut app = match app {
+            Err(error) => (
+                Settings::default(),
+                Some(format!(
+                    "stored settings ignored ({error}); starting from the defaults"
+                )),
+            ),
+        };
+        let mut app = match Self::new(read) {
             Ok(app) => app,
             Err(error) => {
-                note = Some(format!(
+                let mut app = Self::defaults();
+                app.message = Some(format!(
                     "stored settings ignored ({error}); starting from the defaults"
                 ));
-                Self::defaults()
+                return app;
             }
         };
-        app.message = note;
+        if let Some(note) = note {
+            app.message = Some(match app.message.take() {
+                Some(started) => format!("{note}; {started}"),
+                None => note,
+            });
+        }
         app
     }
 
@@ -343,7 +378,23 @@ impl ZieglerApp {
 
     /// Applies a changed model to the running simulation.
     fn set_model(&mut self, model: Model) {
-        match self.sim.set_model(model) {
+        let result = match self.sim.set_model(model) {
+            Err(SimError::TooStiffForRapier { .. }) => {
+                // rapier cannot follow: the reference engine takes over, and says so.
+                let state = self.sim.state();
+                let switched = self
+                    .sim
+                    .restart_from(EngineKind::Reference, state)
+                    .and_then(|()| self.sim.set_model(model));
+                if switched.is_ok() {
+                    self.settings.engine = EngineKind::Reference;
+                    self.message = Some(SWITCHED_TO_REFERENCE.to_owned());
+                }
+                switched
+            }
+            other => other,
+        };
+        match result {
             Ok(()) => {
                 self.settings.model = model;
                 self.refresh_analysis();
@@ -358,14 +409,11 @@ impl ZieglerApp {
     }
 
     fn reset(&mut self) {
-        let model = self.settings.model;
-        match Simulation::new(
-            model,
-            self.settings.engine,
-            initial_state(&model, 1e-3),
-            DEFAULT_STEP_SECS,
-        ) {
-            Ok(sim) => {
+        match start(&mut self.settings) {
+            Ok((sim, message)) => {
+                if message.is_some() {
+                    self.message = message;
+                }
                 self.sim = sim;
                 self.trail.clear();
                 self.history.clear();
@@ -373,7 +421,7 @@ impl ZieglerApp {
                 self.owed_secs = 0.0;
                 self.running = true;
             }
-            Err(error) => self.message = Some(error.to_string()),
+            Err(error) => self.message = Some(error),
         }
     }
 
@@ -620,9 +668,9 @@ impl ZieglerApp {
                     .on_hover_text("adaptive Dormand-Prince 5(4) on the exact equations");
             });
         if engine != self.settings.engine {
-            self.settings.engine = engine;
-            if let Err(error) = self.sim.restart_from(engine, self.sim.state()) {
-                self.message = Some(error.to_string());
+            match self.sim.restart_from(engine, self.sim.state()) {
+                Ok(()) => self.settings.engine = engine,
+                Err(error) => self.message = Some(error.to_string()),
             }
         }
         ui.separator();
@@ -703,8 +751,15 @@ impl ZieglerApp {
     /// Loads settings from shared text; garbage leaves everything as it was
     /// and says why.
     pub fn paste_settings(&mut self, text: &str) {
-        let settings = match ron::from_str::<Settings>(text) {
-            Ok(settings) => settings,
+        let settings = match stored::read(text) {
+            Ok(read) if read.ignored.is_empty() => read.settings,
+            Ok(read) => {
+                self.message = Some(format!(
+                    "pasted settings refused, nothing changed: {} not understood",
+                    read.ignored.join(", ")
+                ));
+                return;
+            }
             Err(error) => {
                 self.message = Some(format!(
                     "pasted settings not understood, nothing changed: {error}"
@@ -816,13 +871,16 @@ impl ZieglerApp {
         for t in &analysis.transitions {
             ui.label(
                 RichText::new(format!(
-                    "p = {:.4}: {} -> {}",
-                    t.load,
+                    "p = {}: {} -> {}",
+                    load_label(t.load),
                     t.from.name(),
                     t.to.name()
                 ))
                 .color(theme.state_color(t.to)),
             );
+        }
+        if let Some(warning) = &analysis.warning {
+            ui.colored_label(theme.flutter, warning);
         }
     }
 
@@ -847,7 +905,7 @@ impl ZieglerApp {
             }
         });
         ui.add(
-            egui::Slider::new(&mut self.settings.speed, 0.1..=10.0)
+            egui::Slider::new(&mut self.settings.speed, stored::SPEED_RANGE)
                 .logarithmic(true)
                 .text("× speed"),
         );

@@ -40,6 +40,16 @@ pub enum ModelError {
 }
 
 impl ModelError {
+    /// The parameter (key) the error is about, when it is about one.
+    #[must_use]
+    pub fn parameter(&self) -> Option<&str> {
+        match self {
+            Self::Invalid { key, .. } | Self::UnknownKey { key, .. } => Some(key),
+            Self::Conflict { first, .. } => Some(first),
+            Self::UnknownPreset { .. } | Self::Malformed { .. } => None,
+        }
+    }
+
     pub(crate) fn invalid(key: &str, value: f64, allowed: &str) -> Self {
         Self::Invalid {
             key: key.to_owned(),

@@ -53,7 +53,7 @@ impl std::fmt::Display for Status {
             Self::Diverged { t_secs } => write!(f, "diverged at t = {t_secs:.3} s"),
             Self::TooStiff { t_secs } => write!(
                 f,
-                "stopped at t = {t_secs:.3} s: too stiff for the reference integrator (a very light roller, a stopped band or a huge load); the rapier engine handles it"
+                "too stiff for the reference integrator at t = {t_secs:.3} s (a very light roller, a stopped band or a huge load); the rapier engine handles it"
             ),
         }
     }
@@ -88,6 +88,67 @@ pub enum SimError {
         value: f64,
         allowed: &'static str,
     },
+    #[error(
+        "the rapier engine cannot integrate this column at dt = {step_secs:.3e} s: its springs and dampers reach rates of {rate_per_s:.3e} 1/s, which need dt < {:.3e} s; use the reference engine",
+        RAPIER_MAX_RATE_STEP / rate_per_s
+    )]
+    TooStiffForRapier { rate_per_s: f64, step_secs: f64 },
+}
+
+impl SimError {
+    /// The parameter (or argument) the error is about, when it is about one.
+    #[must_use]
+    pub fn parameter(&self) -> Option<&str> {
+        match self {
+            Self::Model(error) => error.parameter(),
+            Self::Bad { what, .. } => Some(what),
+            Self::TooStiffForRapier { .. } => Some("dt"),
+        }
+    }
+}
+
+/// The rapier engine applies the joints' springs and dampers explicitly
+/// (symplectic Euler), which is stable while the column's fastest own rate
+/// times the step stays below 2 (oscillation: omega dt < 2; damping:
+/// c dt / I < 2); runs are refused from half that, with the rate bounded
+/// from above.
+pub const RAPIER_MAX_RATE_STEP: f64 = 1.0;
+
+/// An upper bound on the fastest rate of the column's own springs and
+/// dampers about the straight column, in 1/s: `sqrt(|M^-1 K|) + |M^-1 D|`
+/// with Frobenius norms (each bounds the spectral radius). The load is left
+/// out: a load beyond the critical one makes the column diverge in fact, and
+/// the run says so.
+#[must_use]
+pub fn column_rate_bound_per_s(model: &Model) -> f64 {
+    let inertia = model.inertia();
+    let mass = nalgebra::Matrix2::new(
+        inertia.a_kg_m2,
+        inertia.b_kg_m2,
+        inertia.b_kg_m2,
+        inertia.c_kg_m2,
+    );
+    let Some(inverse) = mass.try_inverse() else {
+        return f64::INFINITY;
+    };
+    let c = &model.column;
+    let pair =
+        |first: f64, second: f64| nalgebra::Matrix2::new(first + second, -second, -second, second);
+    let stiffness = pair(c.k1_nm_per_rad, c.k2_nm_per_rad);
+    let damping = pair(c.c1_nms_per_rad, c.c2_nms_per_rad);
+    (inverse * stiffness).norm().sqrt() + (inverse * damping).norm()
+}
+
+/// Refuses a rapier run whose step is too long for the column's own rates.
+fn check_rapier_step(model: &Model, step_secs: f64) -> Result<(), SimError> {
+    let rate_per_s = column_rate_bound_per_s(model);
+    if rate_per_s * step_secs > RAPIER_MAX_RATE_STEP {
+        return Err(SimError::TooStiffForRapier {
+            rate_per_s,
+            step_secs,
+        });
+    }
+    Ok(())
 }
 
 /// The standard start: `phi1 = phi2 = perturb_rad`, at rest (a massless
@@ -166,13 +227,14 @@ impl Simulation {
             });
         }
         let engine = match kind {
-            EngineKind::Rapier => Engine::Rapier(Box::new(
+            EngineKind::Rapier => Engine::Rapier(Box::new({
+                check_rapier_step(&model, step_secs)?;
                 rapier::RapierEngine::new(&model, &x0, step_secs).ok_or(SimError::Bad {
                     what: "rapier",
                     value: f64::NAN,
                     allowed: "the rapier2d world could not be built for this column",
-                })?,
-            )),
+                })?
+            })),
             EngineKind::Reference => Engine::Reference(Reference::new(x0)),
         };
         Ok(Self {
@@ -193,9 +255,13 @@ impl Simulation {
     /// Replaces the model for the next steps, without a reset.
     ///
     /// # Errors
-    /// An invalid model (the run keeps its previous one).
-    pub fn set_model(&mut self, model: Model) -> Result<(), ModelError> {
+    /// An invalid model, or one too stiff for the rapier engine at this step
+    /// (the run keeps its previous one).
+    pub fn set_model(&mut self, model: Model) -> Result<(), SimError> {
         model.validate()?;
+        if self.engine() == EngineKind::Rapier {
+            check_rapier_step(&model, self.step_secs)?;
+        }
         self.model = model;
         Ok(())
     }

@@ -1,0 +1,142 @@
+//! Settings read back from text (eframe's store, or pasted) field by field:
+//! what can be read is kept, what cannot is named with the reason.
+
+use std::collections::BTreeMap;
+
+use ron::value::RawValue;
+use serde::Deserialize;
+use serde::de::{MapAccess, Visitor};
+
+use super::Settings;
+use crate::model::{Model, preset};
+
+/// The simulated seconds per wall second the speed slider offers.
+pub const SPEED_RANGE: std::ops::RangeInclusive<f64> = 0.1..=10.0;
+
+/// The fields of a settings text, each as unparsed RON, by name.
+#[derive(Default)]
+struct Fields(BTreeMap<String, Box<RawValue>>);
+
+impl<'de> Deserialize<'de> for Fields {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct FieldsVisitor;
+        impl<'de> Visitor<'de> for FieldsVisitor {
+            type Value = Fields;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("settings as (name: value, ...)")
+            }
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Fields, A::Error> {
+                let mut fields = Fields::default();
+                while let Some(name) = map.next_key::<String>()? {
+                    let value = map.next_value()?;
+                    fields.0.insert(name, value);
+                }
+                Ok(fields)
+            }
+        }
+        deserializer.deserialize_struct("Settings", KNOWN, FieldsVisitor)
+    }
+}
+
+/// The fields of [`Settings`].
+const KNOWN: &[&str] = &["preset", "model", "engine", "speed", "projector"];
+
+/// Settings read from text, and what was left at its default and why.
+#[derive(Debug)]
+pub struct Read {
+    pub settings: Settings,
+    pub ignored: Vec<String>,
+}
+
+/// One field as a `T`, or its reason for being ignored in `ignored`.
+fn field<T: for<'de> Deserialize<'de>>(
+    raw: Option<&RawValue>,
+    name: &str,
+    ignored: &mut Vec<String>,
+) -> Option<T> {
+    let raw = raw?;
+    match raw.into_rust::<T>() {
+        Ok(value) => Some(value),
+        Err(error) => {
+            ignored.push(format!("{name} ({})", error.code));
+            None
+        }
+    }
+}
+
+/// Reads settings written by the app (RON), keeping every field that reads
+/// and makes sense, and naming the others.
+///
+/// # Errors
+/// Text that is not settings at all.
+pub fn read(text: &str) -> Result<Read, String> {
+    let Fields(mut fields) = ron::from_str(text).map_err(|e| format!("not settings text: {e}"))?;
+    let mut ignored = Vec::new();
+    let mut take = |name: &str| fields.remove(name);
+    let (preset_raw, model_raw, engine_raw, speed_raw, projector_raw) = (
+        take("preset"),
+        take("model"),
+        take("engine"),
+        take("speed"),
+        take("projector"),
+    );
+    // Whatever is left is not a field of this version's settings.
+    ignored.extend(
+        fields
+            .into_keys()
+            .map(|name| format!("{name} (not a setting)")),
+    );
+    let mut settings = Settings::default();
+    let name: Option<String> = field(preset_raw.as_deref(), "preset", &mut ignored);
+    let model: Option<Model> = field(model_raw.as_deref(), "model", &mut ignored);
+    match name.map(|name| preset(&name).map(|p| (name, p))) {
+        Some(Ok((name, known))) => {
+            settings.model = known.model();
+            settings.preset = name;
+            match model {
+                Some(model)
+                    if std::mem::discriminant(&model.load)
+                        != std::mem::discriminant(&settings.model.load) =>
+                {
+                    ignored.push(format!(
+                        "model (its load is not the one of preset {})",
+                        settings.preset
+                    ));
+                }
+                Some(model) => match model.validate() {
+                    Ok(()) => settings.model = model,
+                    Err(error) => ignored.push(format!("model ({error})")),
+                },
+                None => {}
+            }
+        }
+        Some(Err(error)) => {
+            ignored.push(format!("preset ({error})"));
+            if model.is_some() {
+                ignored.push("model (it belongs to that preset)".to_owned());
+            }
+        }
+        None if model.is_some() => {
+            ignored.push("model (no preset says what it is)".to_owned());
+        }
+        None => {}
+    }
+    if let Some(engine) = field(engine_raw.as_deref(), "engine", &mut ignored) {
+        settings.engine = engine;
+    }
+    if let Some(speed) = field::<f64>(speed_raw.as_deref(), "speed", &mut ignored) {
+        if SPEED_RANGE.contains(&speed) {
+            settings.speed = speed;
+        } else {
+            ignored.push(format!(
+                "speed ({speed} is outside {} to {})",
+                SPEED_RANGE.start(),
+                SPEED_RANGE.end()
+            ));
+        }
+    }
+    if let Some(projector) = field(projector_raw.as_deref(), "projector", &mut ignored) {
+        settings.projector = projector;
+    }
+    Ok(Read { settings, ignored })
+}
