@@ -4,7 +4,7 @@
 //! what was ignored.
 
 use zieglerlab::app::{Settings, ZieglerApp};
-use zieglerlab::sim::DEFAULT_STEP_SECS;
+use zieglerlab::sim::{DEFAULT_STEP_SECS, EngineKind, Status};
 
 #[test]
 fn simulation_follows_the_clock_at_the_chosen_speed() {
@@ -43,16 +43,118 @@ fn stored_settings_round_trip() {
     assert_eq!(app.settings(), &settings);
 }
 
+/// Stored settings as a hand-edited, older or corrupted file leaves them:
+/// what reads is kept, the rest is defaulted, and the message names it.
 #[test]
-fn partial_or_broken_settings_fall_back_to_defaults() {
-    // An older version that knew only the speed: the rest is defaulted.
-    let app = ZieglerApp::from_stored_text(Some("(speed: 3.0)"));
-    assert_eq!(app.settings().speed, 3.0);
-    assert_eq!(app.settings().preset, "roller");
-    for garbage in ["not ron at all", "(speed: \"fast\")", "(model: 42)"] {
-        let app = ZieglerApp::from_stored_text(Some(garbage));
-        assert_eq!(app.settings(), &Settings::default(), "{garbage}");
+fn stored_settings_keep_what_reads_and_name_the_rest() {
+    let stiff_roller = {
+        let mut settings = Settings::default();
+        settings.model.column.k1_nm_per_rad = -1.0;
+        ron::to_string(&settings).unwrap()
+    };
+    let dead_load = {
+        let settings = Settings {
+            preset: "ziegler-1952".to_owned(),
+            model: zieglerlab::model::preset("roller").unwrap().model(),
+            ..Settings::default()
+        };
+        ron::to_string(&settings).unwrap()
+    };
+    // (stored text, speed kept, message fragment; None: no message)
+    let cases: &[(&str, f64, Option<&str>)] = &[
+        // An older version that knew only the speed.
+        ("(speed: 3.0)", 3.0, None),
+        // A newer version's field.
+        (
+            "(speed: 3.0, colour: \"blue\")",
+            3.0,
+            Some("ignored colour (not a setting)"),
+        ),
+        // Wrong types, hand-edited.
+        ("(speed: \"fast\")", 1.0, Some("ignored speed (")),
+        (
+            "(speed: 2.0, projector: 7)",
+            2.0,
+            Some("ignored projector ("),
+        ),
+        ("(model: 42)", 1.0, Some("ignored model (")),
+        // Values out of range.
+        (
+            "(speed: 50.0)",
+            1.0,
+            Some("speed (50 is outside 0.1 to 10)"),
+        ),
+        (
+            "(preset: \"nope\", speed: 2.0)",
+            2.0,
+            Some("preset (unknown preset 'nope'"),
+        ),
+        (&stiff_roller, 1.0, Some("ignored model (k1 = -1")),
+        (
+            &dead_load,
+            1.0,
+            Some("model (its load is not the one of preset ziegler-1952)"),
+        ),
+        // Corrupted.
+        (
+            "not ron at all",
+            1.0,
+            Some("stored settings ignored (not settings text"),
+        ),
+        (
+            "(speed: 1.0,",
+            1.0,
+            Some("stored settings ignored (not settings text"),
+        ),
+    ];
+    for &(text, speed, message) in cases {
+        let app = ZieglerApp::from_stored_text(Some(text));
+        assert_eq!(app.settings().speed, speed, "{text}");
+        assert!(app.has_analysis(), "{text}");
+        match message {
+            None => assert_eq!(app.message(), None, "{text}"),
+            Some(fragment) => {
+                let shown = app.message().unwrap_or_default();
+                assert!(shown.contains(fragment), "{text}: {shown}");
+            }
+        }
     }
+}
+
+/// A column too stiff for rapier's step runs on the reference engine, and
+/// the app says so; the model change is not refused.
+#[test]
+fn a_column_too_stiff_for_rapier_switches_engines_and_says_so() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    assert_eq!(app.simulation().engine(), EngineKind::Rapier);
+    app.set_parameter("c1", 1e6).unwrap();
+    assert_eq!(app.simulation().engine(), EngineKind::Reference);
+    assert_eq!(app.settings().engine, EngineKind::Reference);
+    assert_eq!(app.settings().model.column.c1_nms_per_rad, 1e6);
+    assert!(
+        app.message()
+            .unwrap()
+            .contains("switched to the reference engine")
+    );
+    for _ in 0..30 {
+        app.advance(1.0 / 60.0);
+    }
+    assert!(app.simulation().time_secs() > 0.45);
+    assert_eq!(app.simulation().status(), Status::Running);
+}
+
+/// A run that blows up stops with a status and keeps its last finite state.
+#[test]
+fn a_blow_up_stops_with_a_status_and_finite_data() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.set_parameter("load", 1e6).unwrap();
+    for _ in 0..120 {
+        app.advance(1.0 / 60.0);
+    }
+    let sim = app.simulation();
+    assert_ne!(sim.status(), Status::Running);
+    assert!(sim.state().iter().all(|v| v.is_finite()));
+    assert!(sim.time_secs() < 2.0);
 }
 
 #[test]

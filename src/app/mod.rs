@@ -95,6 +95,17 @@ impl Analysis {
     }
 }
 
+/// A time for people: one decimal from 10 s, three significant digits below.
+fn secs_label(secs: f64) -> String {
+    if secs >= 10.0 {
+        format!("{secs:.1}")
+    } else if secs >= 1e-3 {
+        format!("{secs:.3}")
+    } else {
+        format!("{secs:.2e}")
+    }
+}
+
 /// What the user is told when rapier cannot integrate the column.
 const SWITCHED_TO_REFERENCE: &str = "the column is too stiff for the rapier engine at its 1/240 s step (huge damping or stiffness against little mass); switched to the reference engine";
 
@@ -435,9 +446,13 @@ impl ZieglerApp {
         self.running = true;
     }
 
+    /// Sets the load as typed or dragged: any valid p, also beyond the
+    /// slider's range; a refused value (negative, not finite) says why.
     fn set_load(&mut self, p: f64) {
-        let p = p.clamp(0.0, LOAD_MAX_P);
-        self.set_model(self.settings.model.at_load(p));
+        match self.set_parameter("load", p) {
+            Ok(()) => self.refused = None,
+            Err(error) => self.refused = Some(("load", error)),
+        }
     }
 
     fn keyboard(&mut self, ctx: &egui::Context) {
@@ -458,12 +473,13 @@ impl ZieglerApp {
         if space {
             self.running = !self.running;
         }
+        // The arrows move the load within the slider's range.
         let p = self.settings.model.load_p();
         if up {
-            self.set_load(p + step);
+            self.set_load((p + step).min(LOAD_MAX_P.max(p)));
         }
         if down {
-            self.set_load(p - step);
+            self.set_load((p - step).max(0.0));
         }
         if kick {
             self.kick();
@@ -804,11 +820,13 @@ impl ZieglerApp {
         let response = ui
             .horizontal(|ui| {
                 let speed = (value.abs() * 0.01).max(1e-4);
-                let r = ui.add(
-                    egui::DragValue::new(&mut value)
-                        .speed(speed)
-                        .max_decimals(6),
-                );
+                let r = ui
+                    .add(
+                        egui::DragValue::new(&mut value)
+                            .speed(speed)
+                            .max_decimals(6),
+                    )
+                    .accessible_name(spec.key);
                 // Only mu R enters the equations (physics.md section 5): the
                 // mu field keeps R and so moves the load, and says so.
                 let note = if spec.key == "mu" {
@@ -837,16 +855,33 @@ impl ZieglerApp {
     /// The load slider with the stability ranges drawn under it.
     fn load_ui(&mut self, ui: &mut egui::Ui, theme: &Theme) {
         let mut p = self.settings.model.load_p();
-        let response = ui.add(egui::Slider::new(&mut p, 0.0..=LOAD_MAX_P).text("load p = P l/k"));
+        // A typed load beyond the slider's range is taken as typed, not clamped.
+        let response = ui.add(
+            egui::Slider::new(&mut p, 0.0..=LOAD_MAX_P)
+                .clamping(egui::SliderClamping::Never)
+                .text("load p = P l/k"),
+        );
         if response.changed() {
             self.set_load(p);
         }
+        if let Some((key, why)) = &self.refused
+            && *key == "load"
+        {
+            ui.colored_label(theme.divergence, format!("refused: {why}"));
+        }
+        let p = self.settings.model.load_p();
         if let Some(roller) = self.settings.model.roller() {
             ui.label(format!(
                 "roller: q = R l/k = p/μ = {:.3}   (μ = {})",
                 p / roller.mu,
                 roller.mu
             ));
+        }
+        if p > LOAD_MAX_P {
+            ui.colored_label(
+                theme.flutter,
+                format!("p = {p} is beyond the plotted range (0 to {LOAD_MAX_P}); the status below is at p"),
+            );
         }
         let Some(analysis) = &self.analysis else {
             return;
@@ -939,14 +974,17 @@ impl ZieglerApp {
         );
         ui.label(format!("growth rate  {growth:+.5} 1/s"));
         match s.e_folding_secs() {
-            Some(secs) => ui.label(format!("e-folding time  {secs:.1} s")),
-            None if growth < 0.0 => ui.label(format!("decay time  {:.1} s", -1.0 / growth)),
+            Some(secs) => ui.label(format!("e-folding time  {} s", secs_label(secs))),
+            None if growth < 0.0 => {
+                ui.label(format!("decay time  {} s", secs_label(-1.0 / growth)))
+            }
             None => ui.label("neutral: no growth, no decay"),
         };
         if frequency > s.tolerance_per_s {
             let period = std::f64::consts::TAU / frequency;
             ui.label(format!(
-                "frequency  {frequency:.4} rad/s  (period {period:.1} s)"
+                "frequency  {frequency:.4} rad/s  (period {} s)",
+                secs_label(period)
             ));
         } else {
             ui.label("non-oscillatory: the dominant eigenvalue is real");

@@ -141,9 +141,15 @@ pub fn versus_load_ui(
         })
         .fold(0.0, f64::max)
         .max(1e-3);
+    let (min, max) = (
+        locus.loads.first().copied().unwrap_or(0.0),
+        locus.loads.last().copied().unwrap_or(1.0),
+    );
     Plot::new(label)
         .x_axis_label("p = P l/k")
         .y_axis_label(label)
+        // The locus's range, also when the load is beyond it.
+        .default_x_bounds(min, max)
         .default_y_bounds(-1.1 * extent, 1.1 * extent)
         .show(ui, |plot_ui| {
             for &(start, end, state) in ranges {

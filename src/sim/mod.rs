@@ -21,6 +21,9 @@ pub const DEFAULT_STEP_SECS: f64 = 1.0 / 240.0;
 pub const MAX_ANGLE_RAD: f64 = 1.0e3;
 /// ... or a rate leaves this one.
 pub const MAX_RATE_RAD_PER_S: f64 = 1.0e6;
+/// The rapier engine's fixed step resolves a rod turning at most this much
+/// per step; a run turning faster stops with [`Status::TooFast`].
+pub const MAX_TURN_PER_STEP_RAD: f64 = 0.5;
 
 /// Which engine advances the state.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
@@ -44,6 +47,13 @@ pub enum Status {
     TooStiff {
         t_secs: f64,
     },
+    /// The rapier engine's fixed step no longer resolves the motion: the
+    /// column turned faster than [`MAX_TURN_PER_STEP_RAD`] per step (a
+    /// column whirling round under a huge load).
+    TooFast {
+        t_secs: f64,
+        rate_rad_per_s: f64,
+    },
 }
 
 impl std::fmt::Display for Status {
@@ -54,6 +64,13 @@ impl std::fmt::Display for Status {
             Self::TooStiff { t_secs } => write!(
                 f,
                 "too stiff for the reference integrator at t = {t_secs:.3} s (a very light roller, a stopped band or a huge load); the rapier engine handles it"
+            ),
+            Self::TooFast {
+                t_secs,
+                rate_rad_per_s,
+            } => write!(
+                f,
+                "too fast for the rapier engine at t = {t_secs:.3} s: the column turns at {rate_rad_per_s:.0} rad/s, more than its fixed step resolves ({MAX_TURN_PER_STEP_RAD} rad per step); the reference engine follows it"
             ),
         }
     }
@@ -317,8 +334,16 @@ impl Simulation {
             self.steps += 1;
         }
         let t_secs = self.time_secs();
+        let x = self.state();
+        let rate_rad_per_s = x[3].abs().max(x[4].abs());
+        let too_fast = self.engine() == EngineKind::Rapier
+            && rate_rad_per_s * self.step_secs > MAX_TURN_PER_STEP_RAD;
         self.status = match advance {
-            Advance::Reached if within_bounds(&self.state()) => Status::Running,
+            Advance::Reached if too_fast && within_bounds(&x) => Status::TooFast {
+                t_secs,
+                rate_rad_per_s,
+            },
+            Advance::Reached if within_bounds(&x) => Status::Running,
             Advance::Reached | Advance::Collapsed => Status::Diverged { t_secs },
             Advance::TooStiff => Status::TooStiff { t_secs },
         };
