@@ -95,6 +95,40 @@ impl Analysis {
     }
 }
 
+/// A number for people and for editing: plain with up to six significant
+/// digits from 1e-3 to 1e6, in exponent form outside (so 1e-6 is not shown
+/// as 0.0000), "0" for zero.
+pub(crate) fn number_text(value: f64) -> String {
+    let magnitude = value.abs();
+    if value == 0.0 || !value.is_finite() {
+        format!("{value}")
+    } else if (1e-3..1e6).contains(&magnitude) {
+        // Six significant digits, trailing zeros dropped.
+        #[expect(clippy::cast_possible_truncation, reason = "a small exponent")]
+        let decimals = (5 - magnitude.log10().floor() as i32).max(0);
+        let text = format!("{value:.*}", decimals.unsigned_abs() as usize);
+        if text.contains('.') {
+            text.trim_end_matches('0').trim_end_matches('.').to_owned()
+        } else {
+            text
+        }
+    } else {
+        let text = format!("{value:.5e}");
+        let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+        format!("{mantissa}e{exponent}")
+    }
+}
+
+/// A rate for people: five decimals, or four significant digits when small.
+fn rate_text(rate: f64) -> String {
+    if rate == 0.0 || rate.abs() >= 1e-3 {
+        format!("{rate:+.5}")
+    } else {
+        format!("{rate:+.3e}")
+    }
+}
+
 /// A time for people: one decimal from 10 s, three significant digits below.
 fn secs_label(secs: f64) -> String {
     if secs >= 10.0 {
@@ -824,7 +858,7 @@ impl ZieglerApp {
                     .add(
                         egui::DragValue::new(&mut value)
                             .speed(speed)
-                            .max_decimals(6),
+                            .custom_formatter(|v, _| number_text(v)),
                     )
                     .accessible_name(spec.key);
                 // Only mu R enters the equations (physics.md section 5): the
@@ -915,7 +949,11 @@ impl ZieglerApp {
             );
         }
         if let Some(warning) = &analysis.warning {
-            ui.colored_label(theme.flutter, warning);
+            ui.colored_label(
+                theme.flutter,
+                "the stability is not resolved here (hover for why)",
+            )
+            .on_hover_text(warning);
         }
     }
 
@@ -972,7 +1010,13 @@ impl ZieglerApp {
                 .heading()
                 .color(theme.state_color(s.state)),
         );
-        ui.label(format!("growth rate  {growth:+.5} 1/s"));
+        ui.label(format!("growth rate  {} 1/s", rate_text(growth)));
+        if analysis.warning.is_some() {
+            ui.colored_label(
+                theme.flutter,
+                "not resolved at these parameters: see the warning under the load",
+            );
+        }
         match s.e_folding_secs() {
             Some(secs) => ui.label(format!("e-folding time  {} s", secs_label(secs))),
             None if growth < 0.0 => {
@@ -1051,4 +1095,27 @@ pub fn run() -> eframe::Result {
         options,
         Box::new(|cc| Ok(Box::new(ZieglerApp::from_storage(cc.storage)))),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::number_text;
+
+    #[test]
+    fn numbers_keep_their_significant_digits() {
+        for (value, text) in [
+            (0.0, "0"),
+            (0.1, "0.1"),
+            (0.123_456_789, "0.123457"),
+            (1234.5, "1234.5"),
+            (-0.001, "-0.001"),
+            (1e-6, "1e-6"),
+            (2.5e6, "2.5e6"),
+            (3.0, "3"),
+        ] {
+            assert_eq!(number_text(value), text, "{value}");
+            let read: f64 = text.parse().unwrap();
+            assert!((read - value).abs() <= 5e-6 * value.abs(), "{value}");
+        }
+    }
 }

@@ -320,7 +320,7 @@ fn band(
         );
         x += spacing;
     }
-    let label = format!("band  V = {speed_m_per_s:.3} m/s");
+    let label = format!("band  V = {} m/s", super::number_text(speed_m_per_s));
     let start = to(x1 - 0.05 * reach, y1 - 0.06 * reach);
     painter.arrow(
         start,
