@@ -8,12 +8,14 @@ use anyhow::Result;
 use clap::{Parser, Subcommand, ValueEnum};
 use serde_json::json;
 
+use std::sync::atomic::{AtomicBool, AtomicUsize};
+
 use zieglerlab::analysis::{
-    AffinePencil, DEFAULT_LOAD_MAX, bracketing_locus, critical_loads_along, locus,
-    resolution_warning,
+    AffinePencil, DEFAULT_LOAD_MAX, MapSpec, RowResult, bracketing_locus, compute_map,
+    critical_loads_along, locus, resolution_warning,
 };
 use zieglerlab::app::{Panel, Settings, ZieglerApp};
-use zieglerlab::model::{KEYS, Model, PRESETS, apply_assignments, parse_assignment, preset};
+use zieglerlab::model::{Axis, KEYS, Model, PRESETS, apply_assignments, parse_assignment, preset};
 use zieglerlab::sim::{
     DEFAULT_STEP_SECS, EngineKind, Observables, Simulation, Status, initial_state,
 };
@@ -73,12 +75,19 @@ enum TableFormat {
 /// Most rows a simulation prints (duration / dt).
 const MAX_ROWS: f64 = 1.0e7;
 
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum MapFormat {
+    Csv,
+    Png,
+}
+
 #[derive(Clone, Copy, Debug, ValueEnum)]
 enum PanelArg {
     Window,
     Locus,
     Scene,
     Histories,
+    Map,
 }
 
 impl From<PanelArg> for Panel {
@@ -88,6 +97,7 @@ impl From<PanelArg> for Panel {
             PanelArg::Locus => Self::Locus,
             PanelArg::Scene => Self::Scene,
             PanelArg::Histories => Self::Histories,
+            PanelArg::Map => Self::Map,
         }
     }
 }
@@ -142,6 +152,22 @@ enum Command {
         dt: f64,
         #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
         format: TableFormat,
+    },
+    /// Stability map: the state and growth rate of every cell of a grid over
+    /// the load and a second parameter (a key, c1/c2 or damping).
+    Map {
+        #[command(flatten)]
+        model: ModelArgs,
+        /// The load axis, load:MIN:MAX:N (N evenly spaced loads, ends included).
+        #[arg(long)]
+        x: String,
+        /// The second axis, KEY:MIN:MAX:N.
+        #[arg(long)]
+        y: String,
+        #[arg(long, value_enum, default_value_t = MapFormat::Csv)]
+        format: MapFormat,
+        #[arg(long)]
+        out: std::path::PathBuf,
     },
     /// Speed: the root locus, the eigenvalues, the critical loads, both
     /// engines and the app's frame time, measured in this process.
@@ -232,6 +258,13 @@ fn execute(command: Command) -> Result<()> {
             format: TableFormat::Csv,
         } => simulate(&mut out, &model, duration, engine.into(), perturb, dt),
         Command::Bench { json, frames } => bench(&mut out, json, frames),
+        Command::Map {
+            model,
+            x,
+            y,
+            format,
+            out,
+        } => map(&model, &x, &y, format, &out),
         Command::Snapshot {
             model,
             time,
@@ -442,6 +475,9 @@ fn snapshot(
         app.advance(1.0 / 60.0);
         frame += 1.0;
     }
+    if panel == Panel::Map {
+        app.complete_map();
+    }
     let image = render(&mut app, panel, (f32::from(width), f32::from(height)))?;
     image
         .save(out)
@@ -471,7 +507,18 @@ fn render(
     match rendered {
         Ok(Ok(image)) => Ok(image),
         Ok(Err(error)) => anyhow::bail!("{help}: {error}"),
-        Err(_) => anyhow::bail!("{help}"),
+        Err(payload) => {
+            let what = payload
+                .downcast_ref::<String>()
+                .map(String::as_str)
+                .or_else(|| payload.downcast_ref::<&str>().copied())
+                .unwrap_or("")
+                .lines()
+                .next()
+                .unwrap_or("")
+                .to_owned();
+            anyhow::bail!("rendering failed ({what}); if {help}")
+        }
     }
 }
 
@@ -617,6 +664,124 @@ fn bench(out: &mut impl Write, json: bool, frames: usize) -> Result<()> {
             })
             .unwrap_or_default();
         writeln!(out, "{key:<26} {figure:>10.3} {unit:<14} {what}{target}")?;
+    }
+    Ok(())
+}
+
+/// The most cells along one axis of `map`.
+const MAP_MAX_CELLS: usize = 2048;
+
+/// `NAME:MIN:MAX:N` of `map --x/--y` (the name may hold '/', as c1/c2).
+fn map_axis(flag: &str, text: &str) -> Result<(String, f64, f64, usize)> {
+    let shape = || anyhow::anyhow!("{flag} {text}: must be NAME:MIN:MAX:N (e.g. nu:0.01:1:256)");
+    let mut parts = text.rsplitn(4, ':');
+    let (Some(n), Some(max), Some(min), Some(name)) =
+        (parts.next(), parts.next(), parts.next(), parts.next())
+    else {
+        return Err(shape());
+    };
+    let number = |s: &str| -> Result<f64> {
+        s.trim()
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite())
+            .ok_or_else(|| anyhow::anyhow!("{flag} {text}: '{s}' is not a finite number"))
+    };
+    let (min, max) = (number(min)?, number(max)?);
+    let n: usize = n
+        .trim()
+        .parse()
+        .map_err(|_| anyhow::anyhow!("{flag} {text}: N = '{n}' is not a count"))?;
+    if !(1..=MAP_MAX_CELLS).contains(&n) {
+        anyhow::bail!("{flag} {text}: N = {n}: must be 1 to {MAP_MAX_CELLS}");
+    }
+    if !(max > min || (n == 1 && max == min)) {
+        anyhow::bail!("{flag} {text}: MAX must be above MIN (or equal with N = 1)");
+    }
+    Ok((name.trim().to_owned(), min, max, n))
+}
+
+fn map(args: &ModelArgs, x: &str, y: &str, format: MapFormat, out: &std::path::Path) -> Result<()> {
+    let (name, model) = build_model(args)?;
+    let (x_name, load_min, load_max, loads) = map_axis("--x", x)?;
+    if x_name != "load" {
+        anyhow::bail!("--x {x}: the map's first axis is the load: load:MIN:MAX:N");
+    }
+    if load_min < 0.0 {
+        anyhow::bail!("--x {x}: loads must be >= 0");
+    }
+    let (y_name, value_min, value_max, values) = map_axis("--y", y)?;
+    let axis = Axis::parse(&y_name, &model, &name)?;
+    if axis == Axis::Key("load") {
+        anyhow::bail!("--y {y}: the second axis cannot be the load again");
+    }
+    let spec = MapSpec {
+        model,
+        preset: name,
+        axis,
+        load_range: (load_min, load_max),
+        loads,
+        axis_range: (value_min, value_max),
+        values,
+    };
+    let rows: std::sync::Mutex<Vec<Option<RowResult>>> = std::sync::Mutex::new(vec![None; values]);
+    let threads = std::thread::available_parallelism().map_or(2, std::num::NonZero::get);
+    let (cancel, done) = (AtomicBool::new(false), AtomicUsize::new(0));
+    compute_map(&spec, threads, &cancel, &done, &|j, row| {
+        if let Ok(mut rows) = rows.lock() {
+            rows[j] = Some(row);
+        }
+    })?;
+    let rows = rows
+        .into_inner()
+        .map_err(|_| anyhow::anyhow!("a map thread failed"))?;
+    let mut complete = Vec::with_capacity(values);
+    for row in &rows {
+        match row {
+            Some(Ok(row)) => complete.push(row),
+            Some(Err(reason)) => anyhow::bail!("--y {y}: no analysis there: {reason}"),
+            None => anyhow::bail!("a map row was not computed"),
+        }
+    }
+    let write_error =
+        |e: &dyn std::fmt::Display| anyhow::anyhow!("cannot write {}: {e}", out.display());
+    match format {
+        MapFormat::Csv => {
+            let file = std::fs::File::create(out).map_err(|e| write_error(&e))?;
+            let mut file = std::io::BufWriter::new(file);
+            let grid = spec.load_grid()?;
+            let mut write = || -> std::io::Result<()> {
+                writeln!(file, "load,{y_name},state,growth_rate")?;
+                for row in &complete {
+                    for (p, cell) in grid.iter().zip(&row.cells) {
+                        writeln!(
+                            file,
+                            "{p},{},{},{}",
+                            row.value,
+                            cell.state.name(),
+                            cell.growth_per_s
+                        )?;
+                    }
+                }
+                file.flush()
+            };
+            write().map_err(|e| write_error(&e))?;
+        }
+        MapFormat::Png => {
+            let scale = (512 / loads.max(values)).max(1);
+            let picture = zieglerlab::app::map_picture(&rows, loads, scale);
+            let [width, height] = picture.size;
+            let bytes: Vec<u8> = picture
+                .pixels
+                .iter()
+                .flat_map(eframe::egui::Color32::to_array)
+                .collect();
+            let width = u32::try_from(width)?;
+            let height = u32::try_from(height)?;
+            let image = image::RgbaImage::from_raw(width, height, bytes)
+                .ok_or_else(|| anyhow::anyhow!("the map picture has the wrong size"))?;
+            image.save(out).map_err(|e| write_error(&e))?;
+        }
     }
     Ok(())
 }

@@ -267,3 +267,95 @@ fn bench_json_has_every_figure() {
     }
     assert!(json["frame_ms_p50"].as_f64() <= json["frame_ms_p99"].as_f64());
 }
+
+/// `map` CSV: the header, one row per cell in rows of the second axis, and
+/// each row's changes of state where `critical` puts them at that value.
+#[test]
+fn map_csv_rows_agree_with_critical() {
+    let path = std::env::temp_dir().join(format!("zl-map-{}.csv", std::process::id()));
+    let path_text = path.to_str().unwrap();
+    let out = run(&[
+        "map",
+        "--preset",
+        "roller",
+        "--x",
+        "load:0:8:161",
+        "--y",
+        "nu:0.05:0.8:4",
+        "--out",
+        path_text,
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&path).unwrap();
+    std::fs::remove_file(&path).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("load,nu,state,growth_rate"));
+    let cells: Vec<(f64, f64, String)> = lines
+        .map(|line| {
+            let f: Vec<&str> = line.split(',').collect();
+            assert_eq!(f.len(), 4, "{line}");
+            let growth: f64 = f[3].parse().unwrap();
+            assert!(growth.is_finite(), "{line}");
+            (
+                f[0].parse().unwrap(),
+                f[1].parse().unwrap(),
+                f[2].to_owned(),
+            )
+        })
+        .collect();
+    assert_eq!(cells.len(), 161 * 4);
+    for row in cells.chunks(161) {
+        let nu = row[0].1;
+        let json = stdout(&[
+            "critical",
+            "--preset",
+            "roller",
+            "--set",
+            &format!("nu={nu}"),
+            "--load-max",
+            "8",
+            "--json",
+        ]);
+        let json: serde_json::Value = serde_json::from_str(&json).unwrap();
+        let transitions = json["transitions"].as_array().unwrap();
+        for (load, _, state) in row {
+            // The state `critical` gives at this load: the last change at or below it.
+            let expected = transitions
+                .iter()
+                .rev()
+                .find(|t| t["load"].as_f64().unwrap() <= *load)
+                .map_or("stable", |t| t["to"].as_str().unwrap());
+            assert_eq!(state, expected, "nu = {nu}, p = {load}");
+        }
+    }
+}
+
+#[test]
+fn map_png_is_written() {
+    let path = std::env::temp_dir().join(format!("zl-map-{}.png", std::process::id()));
+    let out = run(&[
+        "map",
+        "--preset",
+        "ziegler-1952",
+        "--x",
+        "load:0:8:64",
+        "--y",
+        "damping:0:0.3:32",
+        "--format",
+        "png",
+        "--out",
+        path.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // Cells of 8 x 8 pixels (the longer side reaches 512).
+    assert_eq!(png_size(&path), (512, 256));
+    std::fs::remove_file(&path).unwrap();
+}

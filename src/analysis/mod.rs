@@ -3,6 +3,8 @@
 
 mod critical;
 mod locus;
+mod map;
+mod paradox;
 mod pencil;
 mod roots;
 mod stability;
@@ -12,6 +14,8 @@ pub use critical::{
     critical_loads_along, load_label, resolution_warning,
 };
 pub use locus::{Locus, load_grid, locus};
+pub use map::{Cell, MapSpec, Row, RowResult, compute as compute_map};
+pub use paradox::{first_instability, flutter_load_damped};
 pub use pencil::{AffinePencil, Spectrum, spectrum};
 pub use roots::{aberth, char_poly};
 pub use stability::{RELATIVE_TOLERANCE, Stability, State, classify};

@@ -3,6 +3,7 @@
 //! model, the analysis and the simulation; owns only what it shows.
 
 mod history;
+mod map;
 mod plots;
 mod scene;
 mod stored;
@@ -19,6 +20,8 @@ use crate::analysis::{
 use crate::model::{Assignment, KEYS, KeySpec, Model, PRESETS, apply_assignments, preset};
 use crate::sim::{DEFAULT_STEP_SECS, EngineKind, SimError, Simulation, Status, initial_state};
 use theme::Theme;
+
+pub use map::map_picture;
 
 /// The load slider's range and the locus's, on the common axis p.
 pub const LOAD_MAX_P: f64 = 8.0;
@@ -187,6 +190,8 @@ pub struct ZieglerApp {
     overlay: Option<Overlay>,
     /// The text box for sharing settings.
     shared_text: String,
+    /// The stability map (computed while its tab is shown).
+    map: map::MapPanel,
 }
 
 /// Another preset's root locus, at the current model's `a`.
@@ -204,6 +209,7 @@ pub enum Panel {
     Locus,
     Scene,
     Histories,
+    Map,
 }
 
 /// The choice of plots in the lower half of the window.
@@ -211,6 +217,7 @@ pub enum Panel {
 enum Lower {
     Locus,
     Histories,
+    Map,
 }
 
 impl ZieglerApp {
@@ -236,6 +243,7 @@ impl ZieglerApp {
             lower: Lower::Locus,
             overlay: None,
             shared_text: String::new(),
+            map: map::MapPanel::default(),
         };
         app.refresh_analysis();
         Ok(app)
@@ -594,7 +602,32 @@ impl ZieglerApp {
                 egui::CentralPanel::default()
                     .show(ui, |ui| plots::histories_ui(ui, &self.history, &theme));
             }
+            Panel::Map => {
+                egui::CentralPanel::default().show(ui, |ui| self.map_ui(ui, &theme));
+            }
         }
+    }
+
+    /// The stability map of the current parameters; a click on it sets the
+    /// load and the map's second parameter.
+    fn map_ui(&mut self, ui: &mut egui::Ui, theme: &Theme) {
+        let preset = self.settings.preset.clone();
+        self.map.follow(&self.settings.model, &preset, LOAD_MAX_P);
+        let Some(pick) = self.map.ui(ui, &self.settings.model, &preset, theme) else {
+            return;
+        };
+        match pick.axis.apply(&self.settings.model, &preset, pick.value) {
+            Ok(model) => self.set_model(model.at_load(pick.load)),
+            Err(error) => self.message = Some(format!("map: {error}")),
+        }
+    }
+
+    /// Starts the stability map for the current parameters and waits until
+    /// it is complete (for pictures and tests; the window never waits).
+    pub fn complete_map(&mut self) {
+        let preset = self.settings.preset.clone();
+        self.map.follow(&self.settings.model, &preset, LOAD_MAX_P);
+        self.map.wait();
     }
 
     /// The root locus of the current analysis with the current, overlaid
@@ -633,10 +666,18 @@ impl ZieglerApp {
         ui.horizontal(|ui| {
             ui.selectable_value(&mut self.lower, Lower::Locus, "root locus");
             ui.selectable_value(&mut self.lower, Lower::Histories, "time histories");
+            ui.selectable_value(&mut self.lower, Lower::Map, "stability map");
         });
-        if self.lower == Lower::Histories {
-            plots::histories_ui(ui, &self.history, theme);
-            return;
+        match self.lower {
+            Lower::Histories => {
+                plots::histories_ui(ui, &self.history, theme);
+                return;
+            }
+            Lower::Map => {
+                self.map_ui(ui, theme);
+                return;
+            }
+            Lower::Locus => {}
         }
         let Some(analysis) = &self.analysis else {
             ui.label("No root locus for these parameters.");
@@ -1010,7 +1051,15 @@ impl ZieglerApp {
                 .heading()
                 .color(theme.state_color(s.state)),
         );
-        ui.label(format!("growth rate  {} 1/s", rate_text(growth)));
+        if growth.abs() <= s.tolerance_per_s {
+            // Rounding's share of the real part: say zero, and to what accuracy.
+            ui.label(format!(
+                "growth rate  0 (to within {:.0e} 1/s)",
+                s.tolerance_per_s
+            ));
+        } else {
+            ui.label(format!("growth rate  {} 1/s", rate_text(growth)));
+        }
         if analysis.warning.is_some() {
             ui.colored_label(
                 theme.flutter,

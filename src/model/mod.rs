@@ -1,12 +1,14 @@
 //! The Ziegler column and its loads: parameters, presets, nonlinear equations
 //! of motion and their linearization. Pure f64 physics (no UI, no clock, no rapier).
 
+mod axis;
 mod dynamics;
 mod keys;
 mod linear;
 mod params;
 mod presets;
 
+pub use axis::{Axis, DAMPER_RATIO, DAMPING_LEVEL};
 pub use dynamics::{
     Friction, SLIP_REGULARIZATION_M_PER_S, StateVec, TipLoad, energy_j, friction, joint_torques_nm,
     state_derivative, tip_load, tip_m,

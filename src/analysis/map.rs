@@ -1,0 +1,231 @@
+//! Stability maps: the state and growth rate over the load and a second
+//! parameter, one row per value of that parameter, each row with its exact
+//! critical loads; rows computed coarse first, then where the boundaries run,
+//! on every core.
+
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+
+use super::AnalysisError;
+use super::critical::{Transition, bracketing_locus, critical_loads_along};
+use super::locus::{load_grid, locus};
+use super::pencil::AffinePencil;
+use super::stability::{State, classify};
+use crate::model::{Axis, Model};
+
+/// What to map: the model, the second axis and both grids (evenly spaced,
+/// ends included).
+#[derive(Clone, Debug, PartialEq)]
+pub struct MapSpec {
+    pub model: Model,
+    pub preset: String,
+    pub axis: Axis,
+    pub load_range: (f64, f64),
+    pub loads: usize,
+    pub axis_range: (f64, f64),
+    pub values: usize,
+}
+
+/// One cell: the state and the largest real part of the moving eigenvalues.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cell {
+    pub state: State,
+    pub growth_per_s: f64,
+}
+
+/// One row of the map: the cells at the grid loads, and the row's critical
+/// loads over the load range (as `critical` finds them).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row {
+    pub value: f64,
+    pub cells: Vec<Cell>,
+    pub transitions: Vec<Transition>,
+}
+
+/// A row's answer: the row, or why this value makes no analysis.
+pub type RowResult = Result<Row, String>;
+
+impl MapSpec {
+    /// The grid loads.
+    ///
+    /// # Errors
+    /// A bad range or count.
+    pub fn load_grid(&self) -> Result<Vec<f64>, AnalysisError> {
+        load_grid(self.load_range.0, self.load_range.1, self.loads)
+    }
+
+    /// The values of the second axis, one per row.
+    ///
+    /// # Errors
+    /// A bad range or count.
+    pub fn value_grid(&self) -> Result<Vec<f64>, AnalysisError> {
+        load_grid(self.axis_range.0, self.axis_range.1, self.values).map_err(|e| match e {
+            AnalysisError::BadRange { value, allowed, .. } => AnalysisError::BadRange {
+                what: "axis range",
+                value,
+                allowed,
+            },
+            other => other,
+        })
+    }
+
+    /// Row `j`: the model with the axis at its value, its locus over the
+    /// grid loads (the growth rates) and its critical loads (the states).
+    ///
+    /// # Errors
+    /// A value the model or the analysis refuses, in words.
+    pub fn row(&self, value: f64) -> RowResult {
+        let model = self
+            .axis
+            .apply(&self.model, &self.preset, value)
+            .map_err(|e| e.to_string())?;
+        let pencil = AffinePencil::new(&model).map_err(|e| e.to_string())?;
+        let (min, max) = self.load_range;
+        let transitions = critical_loads_along(
+            &pencil,
+            &bracketing_locus(&pencil, min, max).map_err(|e| e.to_string())?,
+        )
+        .map_err(|e| e.to_string())?;
+        let grid = locus(&pencil, min, max, self.loads).map_err(|e| e.to_string())?;
+        let first = pencil.spectrum(min).map_err(|e| e.to_string())?;
+        let mut state = classify(&first.eigenvalues, first.scale_per_s).state;
+        let mut next = transitions.iter().peekable();
+        let cells = (0..grid.loads.len())
+            .filter(|&i| grid.on_grid[i])
+            .map(|i| {
+                let p = grid.loads[i];
+                // The state between critical loads is the one `critical` says.
+                while let Some(t) = next.next_if(|t| t.load <= p) {
+                    state = t.to;
+                }
+                let growth_per_s = grid
+                    .moving_at(i)
+                    .iter()
+                    .map(|z| z.re)
+                    .fold(f64::NEG_INFINITY, f64::max);
+                Cell {
+                    state,
+                    growth_per_s,
+                }
+            })
+            .collect();
+        Ok(Row {
+            value,
+            cells,
+            transitions,
+        })
+    }
+}
+
+/// The order rows are computed in: every `stride`-th row first (coarse), then
+/// level by level the rows halfway between computed ones, those where the
+/// neighbours' critical loads differ (a boundary runs between them) before
+/// the others.
+struct Schedule {
+    rows: usize,
+    done: Vec<Option<Vec<Transition>>>,
+}
+
+impl Schedule {
+    fn coarse(rows: usize) -> (Self, Vec<usize>, usize) {
+        let stride = (rows / 16).next_power_of_two().max(1);
+        let mut first: Vec<usize> = (0..rows).step_by(stride).collect();
+        if first.last() != Some(&(rows - 1)) {
+            first.push(rows - 1);
+        }
+        let schedule = Self {
+            rows,
+            done: vec![None; rows],
+        };
+        (schedule, first, stride)
+    }
+
+    /// The rows of the next level (stride halved), boundary rows first.
+    fn level(&self, stride: usize) -> Vec<usize> {
+        let computed: Vec<usize> = (0..self.rows).filter(|&j| self.done[j].is_some()).collect();
+        let mut boundary = Vec::new();
+        let mut interior = Vec::new();
+        for pair in computed.windows(2) {
+            let (a, b) = (pair[0], pair[1]);
+            let differs = match (&self.done[a], &self.done[b]) {
+                (Some(ta), Some(tb)) => !same_structure(ta, tb),
+                _ => true,
+            };
+            let mut j = a + stride;
+            while j < b {
+                if differs {
+                    boundary.push(j);
+                } else {
+                    interior.push(j);
+                }
+                j += stride;
+            }
+        }
+        boundary.extend(interior);
+        boundary
+    }
+}
+
+/// Whether two rows have the same changes of stability at nearby loads.
+fn same_structure(a: &[Transition], b: &[Transition]) -> bool {
+    a.len() == b.len()
+        && a.iter().zip(b).all(|(x, y)| {
+            (x.from, x.to) == (y.from, y.to)
+                && (x.load - y.load).abs() <= 0.02 * x.load.abs().max(y.load.abs()).max(1e-3)
+        })
+}
+
+/// Computes every row of `spec` on `threads` threads, coarse first, calling
+/// `on_row(j, row)` as each is done (from any of the threads). Stops early
+/// when `cancel` is set; `done` counts finished rows.
+///
+/// # Errors
+/// A bad grid (no row is computed then).
+pub fn compute(
+    spec: &MapSpec,
+    threads: usize,
+    cancel: &AtomicBool,
+    done: &AtomicUsize,
+    on_row: &(dyn Fn(usize, RowResult) + Sync),
+) -> Result<(), AnalysisError> {
+    spec.load_grid()?;
+    let values = spec.value_grid()?;
+    let (schedule, first, mut stride) = Schedule::coarse(values.len());
+    let schedule = Mutex::new(schedule);
+    let mut batch = first;
+    loop {
+        let next = AtomicUsize::new(0);
+        std::thread::scope(|scope| {
+            for _ in 0..threads.max(1) {
+                scope.spawn(|| {
+                    loop {
+                        if cancel.load(Ordering::Relaxed) {
+                            return;
+                        }
+                        let k = next.fetch_add(1, Ordering::Relaxed);
+                        let Some(&j) = batch.get(k) else {
+                            return;
+                        };
+                        let row = spec.row(values[j]);
+                        let transitions = row
+                            .as_ref()
+                            .map_or_else(|_| Vec::new(), |r| r.transitions.clone());
+                        if let Ok(mut s) = schedule.lock() {
+                            s.done[j] = Some(transitions);
+                        }
+                        on_row(j, row);
+                        done.fetch_add(1, Ordering::Relaxed);
+                    }
+                });
+            }
+        });
+        if cancel.load(Ordering::Relaxed) || stride <= 1 {
+            return Ok(());
+        }
+        stride /= 2;
+        batch = match schedule.lock() {
+            Ok(s) => s.level(stride),
+            Err(_) => return Ok(()),
+        };
+    }
+}

@@ -1,0 +1,40 @@
+//! The Ziegler paradox: the load at which a column first loses stability,
+//! with joint dampers of a given ratio as their level goes to zero (or a
+//! roller as its mass goes to zero), next to the undamped value.
+
+use super::AnalysisError;
+use super::critical::critical_loads;
+use super::pencil::AffinePencil;
+use super::stability::State;
+use crate::model::{Axis, Model};
+
+/// The lowest load in `[0, load_max]` at which `model` goes from stable to
+/// unstable, if it does.
+///
+/// # Errors
+/// A model the linear analysis refuses.
+pub fn first_instability(model: &Model, load_max: f64) -> Result<Option<f64>, AnalysisError> {
+    let pencil = AffinePencil::new(model)?;
+    let transitions = critical_loads(&pencil, 0.0, load_max)?;
+    Ok(transitions
+        .iter()
+        .find(|t| t.from == State::Stable)
+        .map(|t| t.load))
+}
+
+/// [`first_instability`] with joint dampers `g1 = ratio level`,
+/// `g2 = level` (`g_i = c_i / sqrt(k m l^2)`, physics.md section 7).
+///
+/// # Errors
+/// A ratio or level the model refuses, or a failed analysis.
+pub fn flutter_load_damped(
+    model: &Model,
+    preset: &str,
+    ratio: f64,
+    level: f64,
+    load_max: f64,
+) -> Result<Option<f64>, AnalysisError> {
+    let damped = Axis::DampingLevel.apply(model, preset, level)?;
+    let damped = Axis::DamperRatio.apply(&damped, preset, ratio)?;
+    first_instability(&damped, load_max)
+}

@@ -1,0 +1,430 @@
+//! The stability-map panel: the load against a second parameter, computed
+//! off the UI thread on every core (coarse first), drawn as coloured cells
+//! with the boundaries as curves; a click sets both parameters.
+
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::mpsc;
+use std::thread::JoinHandle;
+
+use eframe::egui::{self, Color32, ColorImage, TextureHandle, TextureOptions};
+use egui_plot::{Line, Plot, PlotImage, PlotPoint, PlotPoints, Points};
+
+use super::theme::Theme;
+use crate::analysis::{MapSpec, Row, RowResult, State, Transition, compute_map};
+use crate::model::{Axis, Model};
+
+/// Cells along the load and along the second parameter.
+pub const MAP_LOADS: usize = 256;
+pub const MAP_VALUES: usize = 256;
+
+/// A map being computed (or done): its rows as they arrive.
+struct Job {
+    spec: MapSpec,
+    rows: Vec<Option<RowResult>>,
+    receiver: mpsc::Receiver<(usize, RowResult)>,
+    cancel: Arc<AtomicBool>,
+    done: Arc<AtomicUsize>,
+    thread: Option<JoinHandle<()>>,
+    texture: Option<TextureHandle>,
+    /// Rows arrived since the texture was made.
+    stale: bool,
+    /// Why the map could not start, if it could not.
+    error: Option<String>,
+}
+
+impl Job {
+    fn start(spec: MapSpec) -> Self {
+        let (sender, receiver) = mpsc::channel();
+        let grids = spec.load_grid().and_then(|_| spec.value_grid());
+        let cancel = Arc::new(AtomicBool::new(false));
+        let done = Arc::new(AtomicUsize::new(0));
+        let threads = std::thread::available_parallelism().map_or(2, std::num::NonZero::get);
+        let thread = grids.map_err(|e| e.to_string()).and_then(|_| {
+            let (spec, cancel, done) = (spec.clone(), Arc::clone(&cancel), Arc::clone(&done));
+            std::thread::Builder::new()
+                .name("stability map".to_owned())
+                .spawn(move || {
+                    // A closed channel means the panel moved on: nothing to do.
+                    let on_row = |j, row| drop(sender.send((j, row)));
+                    // The grids were checked above.
+                    drop(compute_map(&spec, threads, &cancel, &done, &on_row));
+                })
+                .map_err(|e| format!("no thread for the map: {e}"))
+        });
+        let (thread, error) = match thread {
+            Ok(handle) => (Some(handle), None),
+            Err(error) => (None, Some(error)),
+        };
+        Self {
+            rows: vec![None; spec.values],
+            spec,
+            receiver,
+            cancel,
+            done,
+            thread,
+            texture: None,
+            stale: true,
+            error,
+        }
+    }
+
+    fn drain(&mut self) {
+        while let Ok((j, row)) = self.receiver.try_recv() {
+            if let Some(slot) = self.rows.get_mut(j) {
+                *slot = Some(row);
+                self.stale = true;
+            }
+        }
+    }
+
+    fn finished(&self) -> bool {
+        self.rows.iter().all(Option::is_some) || self.thread.is_none()
+    }
+
+    /// Waits for the computation to end and takes every row.
+    fn wait(&mut self) {
+        if let Some(handle) = self.thread.take() {
+            let _ = handle.join();
+        }
+        self.drain();
+    }
+}
+
+impl Drop for Job {
+    fn drop(&mut self) {
+        self.cancel.store(true, Ordering::Relaxed);
+    }
+}
+
+/// The panel's choices and its current job.
+pub struct MapPanel {
+    axis: Option<Axis>,
+    range: (f64, f64),
+    job: Option<Job>,
+}
+
+impl Default for MapPanel {
+    fn default() -> Self {
+        Self {
+            axis: None,
+            range: (0.0, 1.0),
+            job: None,
+        }
+    }
+}
+
+/// The default second axis and its range for a model: the roller's mass
+/// ratio; for the columns the damping level (the paradox in a picture).
+fn default_axis(model: &Model) -> (Axis, (f64, f64)) {
+    if model.roller().is_some() {
+        (Axis::Key("nu"), (0.005, 1.0))
+    } else {
+        (Axis::DampingLevel, (0.0, 0.5))
+    }
+}
+
+/// What a click on the map asks for: the load and the second parameter.
+pub struct Pick {
+    pub load: f64,
+    pub axis: Axis,
+    pub value: f64,
+}
+
+impl MapPanel {
+    /// The map's spec for `model`: the second parameter is set to the start
+    /// of its range, so moving along it (a click) does not restart the map.
+    fn spec(&self, model: &Model, preset: &str, load_max: f64) -> Option<MapSpec> {
+        let axis = self.axis.clone()?;
+        let base = axis
+            .apply(&model.at_load(0.0), preset, self.range.0)
+            .unwrap_or_else(|_| model.at_load(0.0));
+        Some(MapSpec {
+            model: base,
+            preset: preset.to_owned(),
+            axis,
+            load_range: (0.0, load_max),
+            loads: MAP_LOADS,
+            axis_range: self.range,
+            values: MAP_VALUES,
+        })
+    }
+
+    /// Starts (or restarts) the map for the current model when what it shows changed.
+    pub fn follow(&mut self, model: &Model, preset: &str, load_max: f64) {
+        let fits = self
+            .axis
+            .as_ref()
+            .is_some_and(|axis| Axis::parse(axis.name(), model, preset).is_ok());
+        if !fits {
+            let (axis, range) = default_axis(model);
+            self.axis = Some(axis);
+            self.range = range;
+        }
+        let Some(spec) = self.spec(model, preset, load_max) else {
+            return;
+        };
+        if self.job.as_ref().is_some_and(|job| job.spec == spec) {
+            return;
+        }
+        self.job = Some(Job::start(spec));
+    }
+
+    /// Blocks until the current map is complete (for pictures and tests).
+    pub fn wait(&mut self) {
+        if let Some(job) = &mut self.job {
+            job.wait();
+        }
+    }
+
+    /// The panel: axis choice and range, progress, the map. Returns a click.
+    pub fn ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        model: &Model,
+        preset: &str,
+        theme: &Theme,
+    ) -> Option<Pick> {
+        self.controls_ui(ui, model, preset);
+        let job = self.job.as_mut()?;
+        job.drain();
+        if !job.finished() {
+            ui.ctx().request_repaint();
+        }
+        let done = job.done.load(Ordering::Relaxed);
+        let total = job.spec.values;
+        if let Some(error) = &job.error {
+            ui.colored_label(theme.divergence, error);
+        }
+        if done < total {
+            #[expect(clippy::cast_precision_loss, reason = "row counts")]
+            let fraction = done as f32 / total as f32;
+            ui.add(egui::ProgressBar::new(fraction).text(format!("rows {done} of {total}")));
+        }
+        if let Some(reason) = job.rows.iter().flatten().find_map(|r| r.as_ref().err()) {
+            ui.colored_label(
+                theme.flutter,
+                format!("grey rows have no analysis: {reason}"),
+            );
+        }
+        if job.stale || job.texture.is_none() {
+            let image = map_image(&job.rows, job.spec.loads, theme);
+            match &mut job.texture {
+                Some(texture) => texture.set(image, TextureOptions::NEAREST),
+                None => {
+                    job.texture = Some(ui.ctx().load_texture(
+                        "stability map",
+                        image,
+                        TextureOptions::NEAREST,
+                    ));
+                }
+            }
+            job.stale = false;
+        }
+        let texture = job.texture.as_ref()?;
+        map_plot_ui(ui, job, texture, model, theme)
+    }
+
+    fn controls_ui(&mut self, ui: &mut egui::Ui, model: &Model, preset: &str) {
+        ui.horizontal(|ui| {
+            let label = ui.label("load p against");
+            let current = self.axis.as_ref().map_or("", Axis::name);
+            let mut chosen = current;
+            egui::ComboBox::from_id_salt("map axis")
+                .selected_text(current)
+                .show_ui(ui, |ui| {
+                    for name in Axis::names(model) {
+                        if name != "load" {
+                            ui.selectable_value(&mut chosen, name, name);
+                        }
+                    }
+                })
+                .response
+                .labelled_by(label.id);
+            if chosen != current
+                && let Ok(axis) = Axis::parse(chosen, model, preset)
+            {
+                let now = axis.get(model);
+                self.range = if now.is_finite() && now > 0.0 {
+                    (0.1 * now, 2.0 * now)
+                } else {
+                    (0.0, 1.0)
+                };
+                self.axis = Some(axis);
+            }
+            ui.label("from");
+            let (mut lo, mut hi) = self.range;
+            let speed = 0.01 * (hi - lo).abs().max(1e-6);
+            ui.add(range_field(&mut lo, speed))
+                .accessible_name("map range from");
+            ui.label("to");
+            ui.add(range_field(&mut hi, speed))
+                .accessible_name("map range to");
+            // An empty or reversed range is not taken; the old one stays.
+            if lo.is_finite() && hi.is_finite() && hi > lo {
+                self.range = (lo, hi);
+            }
+        });
+    }
+}
+
+/// A number field for the map's range.
+fn range_field(value: &mut f64, speed: f64) -> egui::DragValue<'_> {
+    egui::DragValue::new(value)
+        .speed(speed)
+        .custom_formatter(|v, _| super::number_text(v))
+}
+
+/// The colour of a cell: its state, brighter the faster it grows or decays
+/// (square root of the rate over the map's largest).
+fn cell_color(state: State, growth_per_s: f64, scale_per_s: f64, theme: &Theme) -> Color32 {
+    let base = theme.state_color(state);
+    let strength = if scale_per_s > 0.0 {
+        (growth_per_s.abs() / scale_per_s).sqrt().clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    #[expect(clippy::cast_possible_truncation, reason = "a fraction in [0, 1]")]
+    base.gamma_multiply(0.3 + 0.7 * strength as f32)
+}
+
+/// The map as an image, one pixel per cell, the first row at the bottom;
+/// rows not computed yet take the nearest computed row's colours, rows
+/// without analysis are grey.
+#[must_use]
+pub fn map_image(rows: &[Option<RowResult>], loads: usize, theme: &Theme) -> ColorImage {
+    let scale = rows
+        .iter()
+        .flatten()
+        .flatten()
+        .flat_map(|row| row.cells.iter().map(|c| c.growth_per_s.abs()))
+        .filter(|g| g.is_finite())
+        .fold(0.0, f64::max);
+    let height = rows.len();
+    let mut image = ColorImage::filled([loads, height], Color32::from_gray(40));
+    let nearest = |j: usize| {
+        (0..height)
+            .flat_map(|d| [j.checked_sub(d), Some(j + d)])
+            .flatten()
+            .find_map(|k| rows.get(k).and_then(Option::as_ref))
+    };
+    for j in 0..height {
+        let Some(Ok(row)) = nearest(j) else {
+            continue;
+        };
+        let y = height - 1 - j;
+        for (i, cell) in row.cells.iter().enumerate().take(loads) {
+            image.pixels[y * loads + i] = cell_color(cell.state, cell.growth_per_s, scale, theme);
+        }
+    }
+    image
+}
+
+/// The boundaries: each row's critical loads joined to the next row's of
+/// the same kind and order.
+fn boundaries(rows: &[Option<RowResult>]) -> Vec<Vec<[f64; 2]>> {
+    // A boundary's kind: the change of state and its order among the row's
+    // changes of that kind.
+    type Kind = (State, State, usize);
+    let mut curves: Vec<(Kind, Vec<[f64; 2]>)> = Vec::new();
+    let mut open: Vec<Kind> = Vec::new();
+    for row in rows {
+        let Some(Ok(Row {
+            value, transitions, ..
+        })) = row
+        else {
+            // A missing row breaks every curve.
+            open.clear();
+            continue;
+        };
+        let mut seen: Vec<Kind> = Vec::new();
+        for Transition { load, from, to } in transitions {
+            let k = seen.iter().filter(|s| (s.0, s.1) == (*from, *to)).count();
+            let kind = (*from, *to, k);
+            seen.push(kind);
+            match curves.iter_mut().rev().find(|(c, _)| *c == kind) {
+                Some((_, points)) if open.contains(&kind) => points.push([*load, *value]),
+                _ => curves.push((kind, vec![[*load, *value]])),
+            }
+        }
+        open = seen;
+    }
+    curves.into_iter().map(|(_, points)| points).collect()
+}
+
+fn map_plot_ui(
+    ui: &mut egui::Ui,
+    job: &Job,
+    texture: &TextureHandle,
+    model: &Model,
+    theme: &Theme,
+) -> Option<Pick> {
+    let spec = &job.spec;
+    let (p0, p1) = spec.load_range;
+    let (y0, y1) = spec.axis_range;
+    #[expect(clippy::cast_precision_loss, reason = "cell counts")]
+    let (cell_x, cell_y) = (
+        (p1 - p0) / (spec.loads.max(2) - 1) as f64,
+        (y1 - y0) / (spec.values.max(2) - 1) as f64,
+    );
+    let axis_name = spec.axis.name();
+    let response = Plot::new("stability map")
+        .x_axis_label("p = P l/k")
+        .y_axis_label(axis_name)
+        .default_x_bounds(p0 - 0.5 * cell_x, p1 + 0.5 * cell_x)
+        .default_y_bounds(y0 - 0.5 * cell_y, y1 + 0.5 * cell_y)
+        .allow_drag(false)
+        .allow_zoom(false)
+        .allow_scroll(false)
+        .show(ui, |plot_ui| {
+            #[expect(clippy::cast_possible_truncation, reason = "plot sizes")]
+            let size = [(p1 - p0 + cell_x) as f32, (y1 - y0 + cell_y) as f32];
+            plot_ui.image(PlotImage::new(
+                "map",
+                texture.id(),
+                PlotPoint::new(0.5 * (p0 + p1), 0.5 * (y0 + y1)),
+                size,
+            ));
+            for curve in boundaries(&job.rows) {
+                if curve.len() > 1 {
+                    plot_ui.line(
+                        Line::new("boundary", PlotPoints::from(curve))
+                            .color(theme.text)
+                            .width(1.5 * theme.stroke_scale),
+                    );
+                }
+            }
+            let here = [model.load_p(), spec.axis.get(model)];
+            plot_ui.points(
+                Points::new("now", vec![here])
+                    .radius(5.0 * theme.stroke_scale)
+                    .color(Color32::WHITE)
+                    .filled(true),
+            );
+            plot_ui.pointer_coordinate()
+        });
+    let clicked = response.response.clicked();
+    let point = response.inner?;
+    (clicked && (y0..=y1).contains(&point.y) && point.x >= 0.0).then(|| Pick {
+        load: point.x,
+        axis: spec.axis.clone(),
+        value: point.y,
+    })
+}
+
+/// The map as a picture for a file (`zieglerlab map --format png`): the
+/// app's colours, each cell a `scale` x `scale` block, the first row at the
+/// bottom.
+#[must_use]
+pub fn map_picture(rows: &[Option<RowResult>], loads: usize, scale: usize) -> ColorImage {
+    let cells = map_image(rows, loads, &Theme::NORMAL);
+    let scale = scale.max(1);
+    let [width, height] = cells.size;
+    let mut picture = ColorImage::filled([width * scale, height * scale], Color32::BLACK);
+    for y in 0..height * scale {
+        for x in 0..width * scale {
+            picture.pixels[y * width * scale + x] = cells.pixels[(y / scale) * width + x / scale];
+        }
+    }
+    picture
+}

@@ -1,0 +1,150 @@
+//! A parameter to sweep (a stability map's second axis, the paradox
+//! explorer's): any key, or the joints' damper ratio c1/c2 or damping level
+//! with the other held.
+
+use super::keys::{Assignment, KEYS, apply_assignments};
+use super::{Model, ModelError};
+
+/// The name of the damper-ratio axis, `c1/c2` (the damping level held).
+pub const DAMPER_RATIO: &str = "c1/c2";
+/// The name of the damping-level axis, `g2 = c2 / sqrt(k m l^2)` (physics.md
+/// section 7; the ratio c1/c2 held, 1 for an undamped column).
+pub const DAMPING_LEVEL: &str = "damping";
+
+/// A swept parameter.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Axis {
+    /// A key as `--set` takes it.
+    Key(&'static str),
+    DamperRatio,
+    DampingLevel,
+}
+
+impl Axis {
+    /// The axis named `name` for `model`: a key that applies to it, `c1/c2`
+    /// or `damping`.
+    ///
+    /// # Errors
+    /// An unknown name, naming the ones there are.
+    pub fn parse(name: &str, model: &Model, preset: &str) -> Result<Self, ModelError> {
+        match name {
+            DAMPER_RATIO => return Ok(Self::DamperRatio),
+            DAMPING_LEVEL => return Ok(Self::DampingLevel),
+            _ => {}
+        }
+        KEYS.iter()
+            .find(|spec| spec.key == name && spec.applies_to(model))
+            .map(|spec| Self::Key(spec.key))
+            .ok_or_else(|| ModelError::UnknownKey {
+                key: name.to_owned(),
+                preset: preset.to_owned(),
+                known: Self::names(model).join(", "),
+            })
+    }
+
+    /// Every axis name for `model`.
+    #[must_use]
+    pub fn names(model: &Model) -> Vec<&'static str> {
+        KEYS.iter()
+            .filter(|spec| spec.applies_to(model))
+            .map(|spec| spec.key)
+            .chain([DAMPER_RATIO, DAMPING_LEVEL])
+            .collect()
+    }
+
+    #[must_use]
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::Key(key) => key,
+            Self::DamperRatio => DAMPER_RATIO,
+            Self::DampingLevel => DAMPING_LEVEL,
+        }
+    }
+
+    /// The axis's value for `model` (a ratio c1/c2 of an undamped column is
+    /// reported as 1, the value a damping level would be given with).
+    #[must_use]
+    pub fn get(&self, model: &Model) -> f64 {
+        let c = &model.column;
+        match self {
+            Self::Key(key) => KEYS
+                .iter()
+                .find(|spec| spec.key == *key)
+                .map_or(f64::NAN, |spec| spec.get(model)),
+            Self::DamperRatio => ratio(model).unwrap_or(1.0),
+            Self::DampingLevel => c.c2_nms_per_rad / damping_scale(model),
+        }
+    }
+
+    /// `model` with this axis at `value`, validated like `--set`.
+    ///
+    /// # Errors
+    /// A value or a resulting model that is refused, naming the axis.
+    pub fn apply(&self, model: &Model, preset: &str, value: f64) -> Result<Model, ModelError> {
+        let mut out = *model;
+        match self {
+            Self::Key(key) => {
+                let set = Assignment {
+                    key: (*key).to_owned(),
+                    value,
+                };
+                apply_assignments(&mut out, preset, &[set])?;
+            }
+            Self::DamperRatio => {
+                if !(value.is_finite() && value >= 0.0) {
+                    return Err(ModelError::invalid(
+                        DAMPER_RATIO,
+                        value,
+                        "must be a finite number >= 0",
+                    ));
+                }
+                let c2 = out.column.c2_nms_per_rad;
+                if c2 <= 0.0 {
+                    return Err(ModelError::invalid(
+                        DAMPER_RATIO,
+                        value,
+                        "needs a damped joint 2: set c2 > 0 (or the damping level) first",
+                    ));
+                }
+                out.column.c1_nms_per_rad = value * c2;
+            }
+            Self::DampingLevel => {
+                if !(value.is_finite() && value >= 0.0) {
+                    return Err(ModelError::invalid(
+                        DAMPING_LEVEL,
+                        value,
+                        "must be a finite number >= 0",
+                    ));
+                }
+                let Some(beta) =
+                    ratio(model).or((model.column.c1_nms_per_rad == 0.0).then_some(1.0))
+                else {
+                    return Err(ModelError::invalid(
+                        DAMPING_LEVEL,
+                        value,
+                        "c2 = 0 with c1 > 0: the ratio c1/c2 to hold is infinite; set c2 > 0 first",
+                    ));
+                };
+                let c2 = value * damping_scale(model);
+                out.column.c2_nms_per_rad = c2;
+                out.column.c1_nms_per_rad = beta * c2;
+            }
+        }
+        out.validate()?;
+        Ok(out)
+    }
+}
+
+/// c1/c2 when c2 > 0.
+fn ratio(model: &Model) -> Option<f64> {
+    let c = &model.column;
+    (c.c2_nms_per_rad > 0.0).then(|| c.c1_nms_per_rad / c.c2_nms_per_rad)
+}
+
+/// `sqrt(k m l^2)`, the damping that makes `g = 1` (physics.md section 7).
+fn damping_scale(model: &Model) -> f64 {
+    (model.reference_stiffness_nm_per_rad()
+        * model.reference_mass_kg()
+        * model.reference_length_m().powi(2))
+    .sqrt()
+}

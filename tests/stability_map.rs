@@ -1,0 +1,165 @@
+//! Stability maps and the paradox explorer against independent answers: a
+//! map's rows against `critical` at the row's value, its columns against a
+//! bisection in the second parameter at a fixed load, its cells against the
+//! Schur path; the vanishing-damping flutter load against Semler's closed
+//! form and its limits (physics.md section 7).
+
+mod common;
+
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, AtomicUsize};
+
+use zieglerlab::analysis::{
+    AffinePencil, MapSpec, Row, State, classify, compute_map, critical_loads, flutter_load_damped,
+};
+use zieglerlab::model::{Axis, preset};
+
+fn roller_map(axis: &str, range: (f64, f64), loads: usize, values: usize) -> MapSpec {
+    let model = preset("roller").unwrap().model();
+    MapSpec {
+        axis: Axis::parse(axis, &model, "roller").unwrap(),
+        model,
+        preset: "roller".to_owned(),
+        load_range: (0.0, 8.0),
+        loads,
+        axis_range: range,
+        values,
+    }
+}
+
+fn rows(spec: &MapSpec) -> Vec<Row> {
+    let out: Mutex<Vec<Option<Row>>> = Mutex::new(vec![None; spec.values]);
+    let (cancel, done) = (AtomicBool::new(false), AtomicUsize::new(0));
+    compute_map(spec, 2, &cancel, &done, &|j, row| {
+        out.lock().unwrap()[j] = Some(row.unwrap());
+    })
+    .unwrap();
+    assert_eq!(done.into_inner(), spec.values);
+    out.into_inner()
+        .unwrap()
+        .into_iter()
+        .map(Option::unwrap)
+        .collect()
+}
+
+fn schur_state(spec: &MapSpec, value: f64, load: f64) -> State {
+    let model = spec.axis.apply(&spec.model, &spec.preset, value).unwrap();
+    let spectrum = AffinePencil::new(&model).unwrap().spectrum(load).unwrap();
+    classify(&spectrum.eigenvalues, spectrum.scale_per_s).state
+}
+
+#[test]
+fn rows_are_critical_at_their_value_and_cells_are_the_schur_state() {
+    let spec = roller_map("nu", (0.02, 0.5), 41, 12);
+    let loads = spec.load_grid().unwrap();
+    for row in rows(&spec) {
+        let model = spec.axis.apply(&spec.model, "roller", row.value).unwrap();
+        let expected = critical_loads(&AffinePencil::new(&model).unwrap(), 0.0, 8.0).unwrap();
+        assert_eq!(row.transitions, expected, "nu = {}", row.value);
+        for (cell, &p) in row.cells.iter().zip(&loads) {
+            // Away from the critical loads, the Schur path's own verdict.
+            let near = row.transitions.iter().any(|t| (t.load - p).abs() < 1e-9);
+            if !near {
+                assert_eq!(
+                    cell.state,
+                    schur_state(&spec, row.value, p),
+                    "nu {} p {p}",
+                    row.value
+                );
+            }
+            assert!(cell.growth_per_s.is_finite());
+        }
+    }
+}
+
+/// Along a column (fixed load), where the state changes between two rows,
+/// bisection in the second parameter finds the value at which `critical`
+/// has a critical load at exactly that load.
+#[test]
+fn columns_cross_the_boundary_where_critical_says() {
+    for (axis, range, loads) in [("nu", (0.05, 5.0), 17), ("V", (0.02, 0.6), 401)] {
+        let spec = roller_map(axis, range, loads, 16);
+        let loads = spec.load_grid().unwrap();
+        let rows = rows(&spec);
+        let mut crossings = 0;
+        for (i, &p) in loads.iter().enumerate().skip(1) {
+            for pair in rows.windows(2) {
+                let (sa, sb) = (pair[0].cells[i].state, pair[1].cells[i].state);
+                if sa == sb {
+                    continue;
+                }
+                let (mut lo, mut hi) = (pair[0].value, pair[1].value);
+                for _ in 0..60 {
+                    let mid = 0.5 * (lo + hi);
+                    if schur_state(&spec, mid, p) == sa {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                let model = spec
+                    .axis
+                    .apply(&spec.model, "roller", 0.5 * (lo + hi))
+                    .unwrap();
+                let t = critical_loads(&AffinePencil::new(&model).unwrap(), 0.0, 8.0).unwrap();
+                let nearest = t
+                    .iter()
+                    .map(|t| (t.load - p).abs())
+                    .fold(f64::INFINITY, f64::min);
+                assert!(nearest < 1e-6 * p.max(1.0), "{axis} p = {p}: {nearest}");
+                crossings += 1;
+            }
+        }
+        assert!(crossings > 0, "{axis}: the map has boundaries to check");
+    }
+}
+
+/// Semler et al.: Ziegler 1952 with g1 = ratio level, g2 = level.
+fn semler(g1: f64, g2: f64) -> f64 {
+    (4.0 * g1 * g1 + 33.0 * g1 * g2 + 4.0 * g2 * g2)
+        / (2.0 * (g1 * g1 + 7.0 * g1 * g2 + 6.0 * g2 * g2))
+        + 0.5 * g1 * g2
+}
+
+#[test]
+fn the_paradox_curve_is_semlers_formula_and_its_limits() {
+    let model = preset("ziegler-1952").unwrap().model();
+    for ratio in [0.01, 0.1, 0.5, 1.0, 2.0, 10.0, 100.0] {
+        for level in [0.3, 0.1, 1e-2, 1e-3] {
+            let p = flutter_load_damped(&model, "ziegler-1952", ratio, level, 10.0)
+                .unwrap()
+                .unwrap();
+            let expected = semler(ratio * level, level);
+            assert!(
+                (p - expected).abs() < 1e-9,
+                "ratio {ratio} level {level}: {p} vs {expected}"
+            );
+        }
+    }
+    // Vanishing damping: 41/28 for equal dampers, far below the undamped
+    // 7/2 - sqrt 2; from 1/3 to 2 over the ratio.
+    let limit = |ratio| {
+        flutter_load_damped(&model, "ziegler-1952", ratio, 1e-4, 10.0)
+            .unwrap()
+            .unwrap()
+    };
+    assert!((limit(1.0) - 41.0 / 28.0).abs() < 1e-6);
+    assert!((limit(1e-4) - 1.0 / 3.0).abs() < 1e-3);
+    assert!((limit(1e4) - 2.0).abs() < 1e-3);
+    let undamped = critical_loads(&AffinePencil::new(&model).unwrap(), 0.0, 10.0).unwrap()[0].load;
+    assert!((undamped - (3.5 - 2f64.sqrt())).abs() < 1e-12);
+}
+
+#[test]
+fn the_other_columns_reach_their_equal_damper_limits() {
+    for (name, limit) in [
+        ("uniform-rods", 74.0 / 45.0),
+        ("midpoint-masses", 39.0 / 22.0),
+    ] {
+        let model = preset(name).unwrap().model();
+        let p = flutter_load_damped(&model, name, 1.0, 1e-4, 10.0)
+            .unwrap()
+            .unwrap();
+        assert!((p - limit).abs() < 1e-6, "{name}: {p} vs {limit}");
+    }
+}
