@@ -88,6 +88,7 @@ enum PanelArg {
     Scene,
     Histories,
     Map,
+    Paradox,
 }
 
 impl From<PanelArg> for Panel {
@@ -98,6 +99,7 @@ impl From<PanelArg> for Panel {
             PanelArg::Scene => Self::Scene,
             PanelArg::Histories => Self::Histories,
             PanelArg::Map => Self::Map,
+            PanelArg::Paradox => Self::Paradox,
         }
     }
 }
@@ -475,8 +477,8 @@ fn snapshot(
         app.advance(1.0 / 60.0);
         frame += 1.0;
     }
-    if panel == Panel::Map {
-        app.complete_map();
+    if matches!(panel, Panel::Map | Panel::Paradox) {
+        app.complete_background_work();
     }
     let image = render(&mut app, panel, (f32::from(width), f32::from(height)))?;
     image

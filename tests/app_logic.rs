@@ -4,6 +4,7 @@
 //! what was ignored.
 
 use zieglerlab::app::{Settings, ZieglerApp};
+use zieglerlab::model::Axis;
 use zieglerlab::sim::{DEFAULT_STEP_SECS, EngineKind, Status};
 
 #[test]
@@ -207,4 +208,19 @@ fn a_model_without_analysis_shows_no_stale_locus() {
     assert!(app.simulation().time_secs() > 0.0);
     app.set_parameter("V", 0.1).unwrap();
     assert!(app.has_analysis());
+}
+
+/// A click on the stability map sets the load and the map's parameter, and
+/// the running simulation follows; a value the model refuses says why.
+#[test]
+fn a_map_point_sets_both_parameters_and_the_run_follows() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.set_map_point(&Axis::Key("nu"), 3.0, 0.4);
+    let model = app.settings().model;
+    assert!((model.load_p() - 3.0).abs() < 1e-12);
+    assert!((Axis::Key("nu").get(&model) - 0.4).abs() < 1e-12);
+    assert_eq!(app.simulation().model(), &model);
+    app.set_map_point(&Axis::Key("nu"), 2.0, -1.0);
+    assert_eq!(app.settings().model, model);
+    assert!(app.message().unwrap().contains("nu = -1"));
 }

@@ -85,18 +85,21 @@ fn root_locus_panel_of_each_preset() {
 }
 
 /// The stability map of the roller (nu against the load) and of the 1952
-/// column (damping level against the load: the paradox), complete.
+/// column (damping level against the load: the paradox), complete; and the
+/// paradox explorer of both.
 #[test]
-fn stability_map_panels() {
+fn stability_map_and_paradox_panels() {
     let mut results = SnapshotResults::new();
     for name in ["roller", "ziegler-1952"] {
-        let mut app = ZieglerApp::new(preset_settings(name)).unwrap();
-        app.complete_map();
-        let mut harness = Harness::builder()
-            .wgpu()
-            .with_size([900.0, 500.0])
-            .build_ui(|ui| app.panel_ui(ui, Panel::Map));
-        harness.run_steps(4);
-        results.add(harness.try_snapshot(format!("map_{name}")));
+        for (panel, label) in [(Panel::Map, "map"), (Panel::Paradox, "paradox")] {
+            let mut app = ZieglerApp::new(preset_settings(name)).unwrap();
+            app.complete_background_work();
+            let mut harness = Harness::builder()
+                .wgpu()
+                .with_size([900.0, 500.0])
+                .build_ui(|ui| app.panel_ui(ui, panel));
+            harness.run_steps(4);
+            results.add(harness.try_snapshot(format!("{label}_{name}")));
+        }
     }
 }

@@ -4,6 +4,7 @@
 
 mod history;
 mod map;
+mod paradox;
 mod plots;
 mod scene;
 mod stored;
@@ -17,7 +18,7 @@ use crate::analysis::{
     AffinePencil, BRACKET_SAMPLES, C64, Locus, State, Transition, classify, critical_loads_along,
     load_label, locus, resolution_warning,
 };
-use crate::model::{Assignment, KEYS, KeySpec, Model, PRESETS, apply_assignments, preset};
+use crate::model::{Assignment, Axis, KEYS, KeySpec, Model, PRESETS, apply_assignments, preset};
 use crate::sim::{DEFAULT_STEP_SECS, EngineKind, SimError, Simulation, Status, initial_state};
 use theme::Theme;
 
@@ -192,6 +193,8 @@ pub struct ZieglerApp {
     shared_text: String,
     /// The stability map (computed while its tab is shown).
     map: map::MapPanel,
+    /// The paradox explorer (computed while its tab is shown).
+    paradox: paradox::ParadoxPanel,
 }
 
 /// Another preset's root locus, at the current model's `a`.
@@ -210,6 +213,7 @@ pub enum Panel {
     Scene,
     Histories,
     Map,
+    Paradox,
 }
 
 /// The choice of plots in the lower half of the window.
@@ -218,6 +222,7 @@ enum Lower {
     Locus,
     Histories,
     Map,
+    Paradox,
 }
 
 impl ZieglerApp {
@@ -244,6 +249,7 @@ impl ZieglerApp {
             overlay: None,
             shared_text: String::new(),
             map: map::MapPanel::default(),
+            paradox: paradox::ParadoxPanel::default(),
         };
         app.refresh_analysis();
         Ok(app)
@@ -605,6 +611,12 @@ impl ZieglerApp {
             Panel::Map => {
                 egui::CentralPanel::default().show(ui, |ui| self.map_ui(ui, &theme));
             }
+            Panel::Paradox => {
+                let preset = self.settings.preset.clone();
+                egui::CentralPanel::default().show(ui, |ui| {
+                    self.paradox.ui(ui, &self.settings.model, &preset, &theme);
+                });
+            }
         }
     }
 
@@ -613,21 +625,28 @@ impl ZieglerApp {
     fn map_ui(&mut self, ui: &mut egui::Ui, theme: &Theme) {
         let preset = self.settings.preset.clone();
         self.map.follow(&self.settings.model, &preset, LOAD_MAX_P);
-        let Some(pick) = self.map.ui(ui, &self.settings.model, &preset, theme) else {
-            return;
-        };
-        match pick.axis.apply(&self.settings.model, &preset, pick.value) {
-            Ok(model) => self.set_model(model.at_load(pick.load)),
+        if let Some(pick) = self.map.ui(ui, &self.settings.model, &preset, theme) {
+            self.set_map_point(&pick.axis, pick.load, pick.value);
+        }
+    }
+
+    /// What a click on the map does: the load and the map's second
+    /// parameter are set (the run goes on with them); a refused value says why.
+    pub fn set_map_point(&mut self, axis: &Axis, load: f64, value: f64) {
+        match axis.apply(&self.settings.model, &self.settings.preset, value) {
+            Ok(model) => self.set_model(model.at_load(load)),
             Err(error) => self.message = Some(format!("map: {error}")),
         }
     }
 
-    /// Starts the stability map for the current parameters and waits until
-    /// it is complete (for pictures and tests; the window never waits).
-    pub fn complete_map(&mut self) {
+    /// Computes the stability map and the paradox curves of the current
+    /// parameters and waits until they are complete (for pictures and tests;
+    /// the window never waits).
+    pub fn complete_background_work(&mut self) {
         let preset = self.settings.preset.clone();
         self.map.follow(&self.settings.model, &preset, LOAD_MAX_P);
         self.map.wait();
+        self.paradox.wait(&self.settings.model, &preset);
     }
 
     /// The root locus of the current analysis with the current, overlaid
@@ -667,6 +686,7 @@ impl ZieglerApp {
             ui.selectable_value(&mut self.lower, Lower::Locus, "root locus");
             ui.selectable_value(&mut self.lower, Lower::Histories, "time histories");
             ui.selectable_value(&mut self.lower, Lower::Map, "stability map");
+            ui.selectable_value(&mut self.lower, Lower::Paradox, "paradox");
         });
         match self.lower {
             Lower::Histories => {
@@ -675,6 +695,11 @@ impl ZieglerApp {
             }
             Lower::Map => {
                 self.map_ui(ui, theme);
+                return;
+            }
+            Lower::Paradox => {
+                let preset = self.settings.preset.clone();
+                self.paradox.ui(ui, &self.settings.model, &preset, theme);
                 return;
             }
             Lower::Locus => {}

@@ -1,0 +1,254 @@
+//! The Ziegler paradox explorer: the load at which the column first loses
+//! stability as the damping vanishes (joint dampers of a given ratio; the
+//! roller's mass at several band speeds), next to the undamped value,
+//! computed off the UI thread.
+
+use std::sync::mpsc;
+
+use eframe::egui::{self, Color32};
+use egui_plot::{HLine, Legend, Line, Plot, PlotPoints, Points};
+
+use super::theme::Theme;
+use crate::analysis::{first_instability, flutter_load_damped};
+use crate::model::{Axis, Load, Model};
+
+/// Loads searched for the first loss of stability.
+const LOAD_MAX: f64 = 10.0;
+/// Points per curve.
+const POINTS: usize = 41;
+/// Joint damping levels g2 of the column curves, down to "vanishing".
+const LEVELS: [f64; 3] = [0.1, 0.01, 1e-4];
+/// log10 of the damper ratio c1/c2 shown.
+const RATIO_DECADES: (f64, f64) = (-2.0, 2.0);
+/// log10 of the roller's mass ratio nu shown.
+const NU_DECADES: (f64, f64) = (-6.0, 1.0);
+
+/// What the explorer draws: curves of the first critical load against
+/// log10 of the swept ratio, and the undamped (or massless) reference.
+#[derive(Clone, Debug, Default)]
+pub struct Curves {
+    pub x_label: &'static str,
+    pub lines: Vec<(String, Vec<[f64; 2]>)>,
+    pub reference: Option<(String, f64)>,
+    /// Why there is nothing to draw, if so.
+    pub note: Option<String>,
+}
+
+/// The points `(log10 x, first critical load)` of `load_at(x)` over
+/// `decades`, leaving out values where the column never loses stability.
+fn curve(decades: (f64, f64), load_at: impl Fn(f64) -> Option<f64>) -> Vec<[f64; 2]> {
+    #[expect(clippy::cast_precision_loss, reason = "point counts")]
+    let step = (decades.1 - decades.0) / (POINTS - 1) as f64;
+    (0..POINTS)
+        .filter_map(|i| {
+            #[expect(clippy::cast_precision_loss, reason = "point counts")]
+            let e = decades.0 + step * i as f64;
+            load_at(10f64.powf(e)).map(|p| [e, p])
+        })
+        .collect()
+}
+
+/// The explorer's curves for `model` (its load and the swept parameters are
+/// set by the curves themselves).
+#[must_use]
+pub fn curves(model: &Model, preset: &str) -> Curves {
+    let first = |m: &Model| first_instability(m, LOAD_MAX).ok().flatten();
+    match model.load {
+        Load::Follower { .. } => {
+            let undamped = Axis::DampingLevel
+                .apply(model, preset, 0.0)
+                .ok()
+                .and_then(|m| first(&m));
+            let lines = LEVELS
+                .iter()
+                .map(|&level| {
+                    let points = curve(RATIO_DECADES, |ratio| {
+                        flutter_load_damped(model, preset, ratio, level, LOAD_MAX)
+                            .ok()
+                            .flatten()
+                    });
+                    (
+                        format!("damping g2 = {}", super::number_text(level)),
+                        points,
+                    )
+                })
+                .collect();
+            Curves {
+                x_label: "c1/c2",
+                lines,
+                reference: undamped.map(|p| ("undamped".to_owned(), p)),
+                note: None,
+            }
+        }
+        Load::Roller(roller) => {
+            let v = roller.band_speed_m_per_s;
+            let massless = Axis::Key("nu")
+                .apply(model, preset, 0.0)
+                .ok()
+                .and_then(|m| first(&m));
+            let lines = [0.1 * v, v, 10.0 * v]
+                .iter()
+                .filter(|&&speed| speed > 0.0)
+                .map(|&speed| {
+                    let points = curve(NU_DECADES, |nu| {
+                        let m = Axis::Key("V").apply(model, preset, speed).ok()?;
+                        let m = Axis::Key("nu").apply(&m, preset, nu).ok()?;
+                        first(&m)
+                    });
+                    (format!("V = {} m/s", super::number_text(speed)), points)
+                })
+                .collect();
+            Curves {
+                x_label: "nu = m3/m",
+                lines,
+                reference: massless.map(|p| ("nu = 0: the ideal follower".to_owned(), p)),
+                note: None,
+            }
+        }
+        Load::Dead { .. } => Curves {
+            note: Some(
+                "A dead load is conservative: it never flutters, so there is no paradox to show."
+                    .to_owned(),
+            ),
+            ..Curves::default()
+        },
+    }
+}
+
+/// The curves of one model, computed or being computed.
+struct Job {
+    key: Model,
+    receiver: mpsc::Receiver<Curves>,
+    curves: Option<Curves>,
+}
+
+/// The panel and its job.
+#[derive(Default)]
+pub struct ParadoxPanel {
+    job: Option<Job>,
+    /// The current model's own point, and the model it is for.
+    current: Option<(Model, Option<[f64; 2]>)>,
+}
+
+/// The model the curves depend on: the swept parameters at a fixed value.
+fn curve_key(model: &Model, preset: &str) -> Model {
+    let zero = match model.load {
+        Load::Roller(_) => Axis::Key("nu").apply(model, preset, 0.0),
+        _ => Axis::DampingLevel.apply(model, preset, 0.0),
+    };
+    zero.unwrap_or(*model).at_load(0.0)
+}
+
+impl ParadoxPanel {
+    /// Starts the curves for `model` when they are not those of its key.
+    fn follow(&mut self, model: &Model, preset: &str) {
+        let key = curve_key(model, preset);
+        if self.job.as_ref().is_some_and(|job| job.key == key) {
+            return;
+        }
+        let (sender, receiver) = mpsc::channel();
+        let (model_copy, preset_copy) = (*model, preset.to_owned());
+        let spawned = std::thread::Builder::new()
+            .name("paradox curves".to_owned())
+            .spawn(move || drop(sender.send(curves(&model_copy, &preset_copy))));
+        let curves = spawned.err().map(|error| Curves {
+            note: Some(format!("no thread for the curves: {error}")),
+            ..Curves::default()
+        });
+        self.job = Some(Job {
+            key,
+            receiver,
+            curves,
+        });
+    }
+
+    /// Blocks until the curves are computed (for pictures and tests).
+    pub fn wait(&mut self, model: &Model, preset: &str) {
+        self.follow(model, preset);
+        if let Some(job) = &mut self.job
+            && job.curves.is_none()
+        {
+            job.curves = job.receiver.recv().ok();
+        }
+    }
+
+    /// The current model's point: its ratio (log10) and first critical load.
+    fn current_point(&mut self, model: &Model) -> Option<[f64; 2]> {
+        let key = model.at_load(0.0);
+        if let Some((cached, point)) = &self.current
+            && *cached == key
+        {
+            return *point;
+        }
+        let x = match model.load {
+            Load::Roller(_) => Axis::Key("nu").get(model),
+            _ if model.column.c2_nms_per_rad > 0.0 => {
+                model.column.c1_nms_per_rad / model.column.c2_nms_per_rad
+            }
+            _ => f64::NAN,
+        };
+        let point = (x > 0.0 && x.is_finite())
+            .then(|| first_instability(&key, LOAD_MAX).ok().flatten())
+            .flatten()
+            .map(|p| [x.log10(), p]);
+        self.current = Some((key, point));
+        point
+    }
+
+    pub fn ui(&mut self, ui: &mut egui::Ui, model: &Model, preset: &str, theme: &Theme) {
+        self.follow(model, preset);
+        let here = self.current_point(model);
+        let Some(job) = &mut self.job else {
+            return;
+        };
+        if job.curves.is_none() {
+            job.curves = job.receiver.try_recv().ok();
+        }
+        let Some(curves) = &job.curves else {
+            ui.ctx().request_repaint();
+            ui.horizontal(|ui| {
+                ui.spinner();
+                ui.label("computing the flutter loads as the damping vanishes ...");
+            });
+            return;
+        };
+        if let Some(note) = &curves.note {
+            ui.label(note);
+            return;
+        }
+        ui.label(match model.load {
+            Load::Roller(_) => "The load at which the roller column first loses stability, against the roller's mass, for three band speeds (the slip damping is mu R / V). As nu -> 0 it goes to zero, not to the massless roller's (ideal follower's) value.",
+            _ => "The flutter load with joint dampers c1 = (c1/c2) c2 as the damping level g2 = c2 / sqrt(k m l^2) goes to zero: the limit depends on the ratio and lies below the undamped load (Ziegler's paradox).",
+        });
+        let palette = [theme.stable, theme.flutter, theme.divergence];
+        Plot::new("paradox")
+            .legend(Legend::default())
+            .x_axis_label(format!("{} (log scale)", curves.x_label))
+            .y_axis_label("first critical load p")
+            .x_axis_formatter(|mark, _| super::number_text(10f64.powf(mark.value)))
+            .show(ui, |plot_ui| {
+                if let Some((label, p)) = &curves.reference {
+                    plot_ui.hline(
+                        HLine::new(label.clone(), *p)
+                            .color(theme.text)
+                            .width(1.5 * theme.stroke_scale),
+                    );
+                }
+                for ((label, points), color) in curves.lines.iter().zip(palette.iter().cycle()) {
+                    plot_ui.line(
+                        Line::new(label.clone(), PlotPoints::from(points.clone()))
+                            .color(*color)
+                            .width(2.0 * theme.stroke_scale),
+                    );
+                }
+                if let Some(point) = here {
+                    plot_ui.points(
+                        Points::new("this model", vec![point])
+                            .radius(5.0 * theme.stroke_scale)
+                            .color(Color32::WHITE)
+                            .filled(true),
+                    );
+                }
+            });
+    }
+}
