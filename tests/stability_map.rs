@@ -163,3 +163,32 @@ fn the_other_columns_reach_their_equal_damper_limits() {
         assert!((p - limit).abs() < 1e-6, "{name}: {p} vs {limit}");
     }
 }
+
+/// The mass-ratio axis on the 1952 column (point masses r m at A and m at
+/// the tip, equal l and k): physics.md section 7's general formula gives
+/// p = (r + 5 -/+ 2 sqrt r) / 2.
+#[test]
+fn the_mass_ratio_axis_moves_the_closed_form_loads() {
+    let model = preset("ziegler-1952").unwrap().model();
+    let axis = Axis::parse("mass_ratio", &model, "ziegler-1952").unwrap();
+    assert!((axis.get(&model) - 2.0).abs() < 1e-12);
+    for r in [0.25, 1.0, 2.0, 4.0] {
+        let m = axis.apply(&model, "ziegler-1952", r).unwrap();
+        let t = critical_loads(&AffinePencil::new(&m).unwrap(), 0.0, 10.0).unwrap();
+        let (flutter, divergence) = (
+            (r + 5.0 - 2.0 * r.sqrt()) / 2.0,
+            (r + 5.0 + 2.0 * r.sqrt()) / 2.0,
+        );
+        assert_eq!(t.len(), 2, "r = {r}");
+        assert!(
+            (t[0].load - flutter).abs() < 1e-9,
+            "r = {r}: {} vs {flutter}",
+            t[0].load
+        );
+        assert!(
+            (t[1].load - divergence).abs() < 1e-9,
+            "r = {r}: {} vs {divergence}",
+            t[1].load
+        );
+    }
+}

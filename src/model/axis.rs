@@ -7,6 +7,9 @@ use super::{Model, ModelError};
 
 /// The name of the damper-ratio axis, `c1/c2` (the damping level held).
 pub const DAMPER_RATIO: &str = "c1/c2";
+/// The name of the mass-ratio axis: rod 1's mass (with what sits at A) over
+/// the mass beyond A (rod 2, tip, roller), which is held.
+pub const MASS_RATIO: &str = "mass_ratio";
 /// The name of the damping-level axis, `g2 = c2 / sqrt(k m l^2)` (physics.md
 /// section 7; the ratio c1/c2 held, 1 for an undamped column).
 pub const DAMPING_LEVEL: &str = "damping";
@@ -18,6 +21,7 @@ pub enum Axis {
     Key(&'static str),
     DamperRatio,
     DampingLevel,
+    MassRatio,
 }
 
 impl Axis {
@@ -30,6 +34,7 @@ impl Axis {
         match name {
             DAMPER_RATIO => return Ok(Self::DamperRatio),
             DAMPING_LEVEL => return Ok(Self::DampingLevel),
+            MASS_RATIO => return Ok(Self::MassRatio),
             _ => {}
         }
         KEYS.iter()
@@ -48,7 +53,7 @@ impl Axis {
         KEYS.iter()
             .filter(|spec| spec.applies_to(model))
             .map(|spec| spec.key)
-            .chain([DAMPER_RATIO, DAMPING_LEVEL])
+            .chain([DAMPER_RATIO, DAMPING_LEVEL, MASS_RATIO])
             .collect()
     }
 
@@ -58,6 +63,7 @@ impl Axis {
             Self::Key(key) => key,
             Self::DamperRatio => DAMPER_RATIO,
             Self::DampingLevel => DAMPING_LEVEL,
+            Self::MassRatio => MASS_RATIO,
         }
     }
 
@@ -73,6 +79,7 @@ impl Axis {
                 .map_or(f64::NAN, |spec| spec.get(model)),
             Self::DamperRatio => ratio(model).unwrap_or(1.0),
             Self::DampingLevel => c.c2_nms_per_rad / damping_scale(model),
+            Self::MassRatio => c.rod1.mass_kg / mass_beyond_joint(model),
         }
     }
 
@@ -83,6 +90,17 @@ impl Axis {
     pub fn apply(&self, model: &Model, preset: &str, value: f64) -> Result<Model, ModelError> {
         let mut out = *model;
         match self {
+            Self::MassRatio => {
+                if !(value.is_finite() && value >= 0.0) {
+                    return Err(ModelError::invalid(
+                        MASS_RATIO,
+                        value,
+                        "must be a finite number >= 0",
+                    ));
+                }
+                let m1 = value * mass_beyond_joint(model);
+                return Self::Key("m1").apply(model, preset, m1);
+            }
             Self::Key(key) => {
                 let set = Assignment {
                     key: (*key).to_owned(),
@@ -147,4 +165,9 @@ fn damping_scale(model: &Model) -> f64 {
         * model.reference_mass_kg()
         * model.reference_length_m().powi(2))
     .sqrt()
+}
+
+/// The mass beyond the joint A: rod 2, the tip mass and the roller.
+fn mass_beyond_joint(model: &Model) -> f64 {
+    model.column.rod2.mass_kg + model.column.tip_mass_kg + model.roller().map_or(0.0, |r| r.mass_kg)
 }

@@ -8,7 +8,7 @@ mod linear;
 mod params;
 mod presets;
 
-pub use axis::{Axis, DAMPER_RATIO, DAMPING_LEVEL};
+pub use axis::{Axis, DAMPER_RATIO, DAMPING_LEVEL, MASS_RATIO};
 pub use dynamics::{
     Friction, SLIP_REGULARIZATION_M_PER_S, StateVec, TipLoad, energy_j, friction, joint_torques_nm,
     state_derivative, tip_load, tip_m,
