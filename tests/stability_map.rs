@@ -192,3 +192,24 @@ fn the_mass_ratio_axis_moves_the_closed_form_loads() {
         );
     }
 }
+
+/// A cancelled map stops at the next row: before it starts, nothing is
+/// computed; cancelled as its first row arrives, it returns long before the
+/// end.
+#[test]
+fn a_cancelled_map_stops() {
+    let spec = roller_map("nu", (0.01, 1.0), 64, 256);
+    let (cancel, done) = (AtomicBool::new(true), AtomicUsize::new(0));
+    compute_map(&spec, 2, &cancel, &done, &|_, _| {
+        panic!("no row after a cancel")
+    })
+    .unwrap();
+    assert_eq!(done.into_inner(), 0);
+    let (cancel, done) = (AtomicBool::new(false), AtomicUsize::new(0));
+    compute_map(&spec, 2, &cancel, &done, &|_, _| {
+        cancel.store(true, std::sync::atomic::Ordering::Relaxed);
+    })
+    .unwrap();
+    let rows = done.into_inner();
+    assert!((1..=4).contains(&rows), "{rows} rows after the cancel");
+}
