@@ -6,17 +6,19 @@ mod locus;
 mod map;
 mod paradox;
 mod pencil;
+mod resolution;
 mod roots;
 mod stability;
 
 pub use critical::{
     BRACKET_SAMPLES, DEFAULT_LOAD_MAX, Transition, bracketing_locus, critical_loads,
-    critical_loads_along, load_label, resolution_warning,
+    critical_loads_along, load_label,
 };
 pub use locus::{Locus, load_grid, locus};
 pub use map::{Cell, MapSpec, Row, RowResult, compute as compute_map};
 pub use paradox::{first_instability, flutter_load_damped};
 pub use pencil::{AffinePencil, Spectrum, spectrum};
+pub use resolution::resolution_warning;
 pub use roots::{aberth, char_poly};
 pub use stability::{RELATIVE_TOLERANCE, Stability, State, classify};
 
