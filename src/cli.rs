@@ -304,7 +304,7 @@ fn critical(
     let pencil = AffinePencil::new(&model)?;
     let bracket = bracketing_locus(&pencil, load_min, load_max)?;
     let transitions = critical_loads_along(&pencil, &bracket)?;
-    let warning = resolution_warning(&pencil, &bracket, &transitions)?;
+    let warning = resolution_warning(&pencil, &bracket)?;
     if let Some(warning) = &warning {
         eprintln!("warning: {warning}");
     }

@@ -622,7 +622,7 @@ fn the_analysis_answers_or_says_why_not() {
                 assert!(transitions.iter().all(|t| t.load.is_finite()));
                 let spectrum = pencil.spectrum(model.load_p()).unwrap();
                 assert!(spectrum.all().all(|z| z.re.is_finite() && z.im.is_finite()));
-                match resolution_warning(&pencil, &locus, &transitions).unwrap() {
+                match resolution_warning(&pencil, &locus).unwrap() {
                     None => Analysis::Answered,
                     Some(_) => Analysis::Unresolved,
                 }

@@ -6,7 +6,7 @@ use serde::Serialize;
 use super::AnalysisError;
 use super::locus::{Locus, locus};
 use super::pencil::AffinePencil;
-use super::stability::{RELATIVE_TOLERANCE, Stability, State, classify_with};
+use super::stability::{Stability, State, classify};
 
 /// Default upper end of the load range searched, `p = 10` (twice the ideal
 /// columns' divergence loads).
@@ -27,33 +27,19 @@ pub struct Transition {
     pub to: State,
 }
 
-/// Classification on the Schur path with a given relative tolerance.
-#[derive(Clone, Copy)]
-pub(super) struct Classifier<'a> {
-    pub(super) pencil: &'a AffinePencil,
-    pub(super) relative_tolerance: f64,
+/// The classification at load p, on the Schur path.
+fn stability_at(pencil: &AffinePencil, p: f64) -> Result<Stability, AnalysisError> {
+    let spectrum = pencil.spectrum(p)?;
+    Ok(classify(&spectrum.eigenvalues, spectrum.scale_per_s))
 }
 
-impl Classifier<'_> {
-    /// The classification at load p.
-    fn stability_at(&self, p: f64) -> Result<Stability, AnalysisError> {
-        let spectrum = self.pencil.spectrum(p)?;
-        Ok(classify_with(
-            &spectrum.eigenvalues,
-            spectrum.scale_per_s,
-            self.relative_tolerance,
-        ))
-    }
+fn state_at(pencil: &AffinePencil, p: f64) -> Result<State, AnalysisError> {
+    stability_at(pencil, p).map(|s| s.state)
+}
 
-    fn state_at(&self, p: f64) -> Result<State, AnalysisError> {
-        self.stability_at(p).map(|s| s.state)
-    }
-
-    /// Largest real part of the moving eigenvalues at p, with the tolerance there.
-    fn max_real_part(&self, p: f64) -> Result<(f64, f64), AnalysisError> {
-        self.stability_at(p)
-            .map(|s| (s.dominant.re, s.tolerance_per_s))
-    }
+/// Largest real part of the moving eigenvalues at p, with the tolerance there.
+fn max_real_part(pencil: &AffinePencil, p: f64) -> Result<(f64, f64), AnalysisError> {
+    stability_at(pencil, p).map(|s| (s.dominant.re, s.tolerance_per_s))
 }
 
 fn width_tolerance(a: f64, b: f64) -> f64 {
@@ -64,7 +50,7 @@ fn width_tolerance(a: f64, b: f64) -> f64 {
 /// bisection on the state. Exact at square-root branch points (eigenvalues
 /// meeting on an axis), where the state flips with no tolerance band.
 fn bisect(
-    c: &Classifier,
+    pencil: &AffinePencil,
     (a, sa): (f64, State),
     (b, sb): (f64, State),
     out: &mut Vec<Transition>,
@@ -78,12 +64,12 @@ fn bisect(
         return Ok(());
     }
     let m = 0.5 * (a + b);
-    let sm = c.state_at(m)?;
+    let sm = state_at(pencil, m)?;
     if sm != sa {
-        bisect(c, (a, sa), (m, sm), out)?;
+        bisect(pencil, (a, sa), (m, sm), out)?;
     }
     if sm != sb {
-        bisect(c, (m, sm), (b, sb), out)?;
+        bisect(pencil, (m, sm), (b, sb), out)?;
     }
     Ok(())
 }
@@ -149,16 +135,16 @@ fn brent(
 /// Every transition between the bracket's ends: bisection on the state, then
 /// each loss (or gain) of stability polished by [`polish_crossing`].
 fn refine(
-    c: &Classifier,
+    pencil: &AffinePencil,
     (a, sa): (f64, State),
     (b, sb): (f64, State),
     range: (f64, f64),
     out: &mut Vec<Transition>,
 ) -> Result<(), AnalysisError> {
     let mut found = Vec::new();
-    bisect(c, (a, sa), (b, sb), &mut found)?;
+    bisect(pencil, (a, sa), (b, sb), &mut found)?;
     for transition in &mut found {
-        if let Some(root) = polish_crossing(c, transition, range)? {
+        if let Some(root) = polish_crossing(pencil, transition, range)? {
             transition.load = root;
         }
     }
@@ -177,7 +163,7 @@ fn refine(
 /// eigenvalues sit on the axis); the bisection's answer is exact there
 /// (square-root branch point) and is kept.
 fn polish_crossing(
-    c: &Classifier,
+    pencil: &AffinePencil,
     transition: &Transition,
     (load_min, load_max): (f64, f64),
 ) -> Result<Option<f64>, AnalysisError> {
@@ -187,7 +173,7 @@ fn polish_crossing(
         (_, State::Stable) => -1.0,
         _ => return Ok(None),
     };
-    let growth = |p| c.max_real_part(p).map(|(re, _)| re);
+    let growth = |p| max_real_part(pencil, p).map(|(re, _)| re);
     let p = transition.load;
     let unstable_p = (p + toward_unstable * width_tolerance(p, p)).clamp(load_min, load_max);
     let unstable_growth = growth(unstable_p)?;
@@ -200,7 +186,7 @@ fn polish_crossing(
         if !(load_min..=load_max).contains(&stable_p) {
             return Ok(None);
         }
-        let (stable_growth, tolerance) = c.max_real_part(stable_p)?;
+        let (stable_growth, tolerance) = max_real_part(pencil, stable_p)?;
         if stable_growth > 2.0 * tolerance {
             // Clearly unstable again (near the flip itself the growth equals
             // the tolerance up to rounding): not a lone crossing.
@@ -264,19 +250,6 @@ pub fn critical_loads_along(
     pencil: &AffinePencil,
     locus: &Locus,
 ) -> Result<Vec<Transition>, AnalysisError> {
-    let classifier = Classifier {
-        pencil,
-        relative_tolerance: RELATIVE_TOLERANCE,
-    };
-    transitions_along(&classifier, locus)
-}
-
-/// [`critical_loads_along`] with the classification of `c`.
-pub(super) fn transitions_along(
-    c: &Classifier,
-    locus: &Locus,
-) -> Result<Vec<Transition>, AnalysisError> {
-    let pencil = c.pencil;
     let range = match (locus.loads.first(), locus.loads.last()) {
         (Some(&min), Some(&max)) => (min, max),
         _ => return Ok(Vec::new()),
@@ -284,11 +257,11 @@ pub(super) fn transitions_along(
     let tracked: Vec<State> = (0..locus.loads.len())
         .map(|i| {
             let scale = pencil.scale_per_s(locus.loads[i]);
-            classify_with(&locus.moving_at(i), scale, c.relative_tolerance).state
+            classify(&locus.moving_at(i), scale).state
         })
         .collect();
     // Whether the Schur path agrees with the tracked roots at sample j, and its state.
-    let schur = |j: usize| c.state_at(locus.loads[j]).map(|s| (s == tracked[j], s));
+    let schur = |j: usize| state_at(pencil, locus.loads[j]).map(|s| (s == tracked[j], s));
     let mut transitions = Vec::new();
     let mut done_until = 0;
     for i in 1..locus.loads.len() {
@@ -312,7 +285,7 @@ pub(super) fn transitions_along(
         let (sa, sb) = (left_state.1, right_state.1);
         if sa != sb {
             let (a, b) = (locus.loads[left], locus.loads[right]);
-            refine(c, (a, sa), (b, sb), range, &mut transitions)?;
+            refine(pencil, (a, sa), (b, sb), range, &mut transitions)?;
         }
     }
     Ok(transitions)

@@ -84,8 +84,7 @@ impl Analysis {
         let pencil = AffinePencil::new(&key).map_err(|e| e.to_string())?;
         let locus = locus(&pencil, 0.0, LOAD_MAX_P, LOCUS_SAMPLES).map_err(|e| e.to_string())?;
         let transitions = critical_loads_along(&pencil, &locus).map_err(|e| e.to_string())?;
-        let warning =
-            resolution_warning(&pencil, &locus, &transitions).map_err(|e| e.to_string())?;
+        let warning = resolution_warning(&pencil, &locus).map_err(|e| e.to_string())?;
         let at_zero = pencil.spectrum(0.0).map_err(|e| e.to_string())?;
         let first = classify(&at_zero.eigenvalues, at_zero.scale_per_s).state;
         Ok(Self {

@@ -29,6 +29,29 @@ pub fn ranges(transitions: &[Transition], first: State, max: f64) -> Vec<(f64, f
 
 /// The root locus: every branch as a curve coloured by load, the current
 /// eigenvalues as large markers, the imaginary axis emphasised.
+/// Evenly spaced samples the plots draw at most (a plot is a few hundred
+/// pixels wide); the refinement's samples are all drawn.
+const DRAWN_GRID_SAMPLES: usize = 500;
+
+/// The indices of the locus samples a plot draws: every k-th evenly spaced
+/// one, so that at most [`DRAWN_GRID_SAMPLES`] are, every sample the
+/// refinement added (branch points, axis crossings) and the last.
+fn drawn_samples(locus: &Locus) -> Vec<usize> {
+    let grid = locus.on_grid.iter().filter(|&&g| g).count();
+    let stride = grid.div_ceil(DRAWN_GRID_SAMPLES).max(1);
+    let last = locus.loads.len().saturating_sub(1);
+    let mut grid_index = 0;
+    (0..locus.loads.len())
+        .filter(|&i| {
+            if !locus.on_grid[i] {
+                return true;
+            }
+            grid_index += 1;
+            (grid_index - 1) % stride == 0 || i == last
+        })
+        .collect()
+}
+
 pub fn root_locus_ui(
     ui: &mut egui::Ui,
     locus: &Locus,
@@ -72,18 +95,22 @@ pub fn root_locus_ui(
                     );
                 }
             }
-            let n = locus.loads.len();
+            let shown = drawn_samples(locus);
+            let n = shown.len();
             for branch in &locus.branches {
                 for band in 0..COLOR_BANDS {
-                    let (i0, i1) = (
+                    let (k0, k1) = (
                         band * (n - 1) / COLOR_BANDS,
                         ((band + 1) * (n - 1) / COLOR_BANDS).min(n - 1),
                     );
-                    if i1 <= i0 {
+                    if k1 <= k0 {
                         continue;
                     }
-                    let points: PlotPoints<'_> =
-                        (i0..=i1).map(|i| [branch[i].re, branch[i].im]).collect();
+                    let (i0, i1) = (shown[k0], shown[k1]);
+                    let points: PlotPoints<'_> = shown[k0..=k1]
+                        .iter()
+                        .map(|&i| [branch[i].re, branch[i].im])
+                        .collect();
                     let mid = 0.5 * (locus.loads[i0] + locus.loads[i1]);
                     plot_ui.line(
                         Line::new("", points)
@@ -162,12 +189,14 @@ pub fn versus_load_ui(
                 .into_iter()
                 .chain([(locus, theme.text)]);
             for (shown, color) in layers {
+                let samples = drawn_samples(shown);
                 for branch in &shown.branches {
-                    let points: PlotPoints<'_> = shown
-                        .loads
+                    let points: PlotPoints<'_> = samples
                         .iter()
-                        .zip(branch)
-                        .map(|(&p, z)| [p, if imaginary { z.im } else { z.re }])
+                        .map(|&i| {
+                            let z = branch[i];
+                            [shown.loads[i], if imaginary { z.im } else { z.re }]
+                        })
                         .collect();
                     plot_ui.line(
                         Line::new("", points)
