@@ -167,7 +167,23 @@ impl MapPanel {
         if self.job.as_ref().is_some_and(|job| job.spec == spec) {
             return;
         }
-        self.job = Some(Job::start(spec));
+        // While a slider is dragged the map restarts every frame: the last
+        // picture stays up (same axes) until the new rows arrive.
+        let same_axes = |old: &MapSpec| {
+            (&old.axis, old.axis_range, old.load_range)
+                == (&spec.axis, spec.axis_range, spec.load_range)
+        };
+        let kept = self
+            .job
+            .take()
+            .filter(|old| same_axes(&old.spec))
+            .and_then(|mut old| old.texture.take());
+        let mut job = Job::start(spec);
+        if kept.is_some() {
+            job.texture = kept;
+            job.stale = false;
+        }
+        self.job = Some(job);
     }
 
     /// Blocks until the current map is complete (for pictures and tests).
