@@ -754,14 +754,23 @@ impl ZieglerApp {
                 |p| format!("{} ({})", p.name, p.source),
             )
         };
-        egui::ComboBox::from_label("model")
-            .selected_text(shown(&chosen))
-            .show_ui(ui, |ui| {
-                for p in &PRESETS {
-                    ui.selectable_value(&mut chosen, p.name.to_owned(), shown(p.name))
-                        .on_hover_text(p.description);
-                }
-            });
+        // The label first and the name cut to the panel's width, so that a
+        // long name in projector mode does not squeeze the label.
+        ui.horizontal(|ui| {
+            let label = ui.label("model");
+            egui::ComboBox::from_id_salt("model")
+                .selected_text(shown(&chosen))
+                .width(ui.available_width() - ui.spacing().icon_width)
+                .truncate()
+                .show_ui(ui, |ui| {
+                    for p in &PRESETS {
+                        ui.selectable_value(&mut chosen, p.name.to_owned(), shown(p.name))
+                            .on_hover_text(p.description);
+                    }
+                })
+                .response
+                .labelled_by(label.id);
+        });
         if chosen != self.settings.preset
             && let Ok(preset) = preset(&chosen)
         {
