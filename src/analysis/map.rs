@@ -69,8 +69,9 @@ impl MapSpec {
         })
     }
 
-    /// Row `j`: the model with the axis at its value, its locus over the
-    /// grid loads (the growth rates) and its critical loads (the states).
+    /// The row at `value` of the second axis: the model with the axis there,
+    /// its locus over the grid loads (the growth rates) and its critical
+    /// loads (the states).
     ///
     /// # Errors
     /// A value the model or the analysis refuses, in words.

@@ -91,13 +91,7 @@ impl Axis {
         let mut out = *model;
         match self {
             Self::MassRatio => {
-                if !(value.is_finite() && value >= 0.0) {
-                    return Err(ModelError::invalid(
-                        MASS_RATIO,
-                        value,
-                        "must be a finite number >= 0",
-                    ));
-                }
+                non_negative(MASS_RATIO, value)?;
                 let m1 = value * mass_beyond_joint(model);
                 return Self::Key("m1").apply(model, preset, m1);
             }
@@ -109,13 +103,7 @@ impl Axis {
                 apply_assignments(&mut out, preset, &[set])?;
             }
             Self::DamperRatio => {
-                if !(value.is_finite() && value >= 0.0) {
-                    return Err(ModelError::invalid(
-                        DAMPER_RATIO,
-                        value,
-                        "must be a finite number >= 0",
-                    ));
-                }
+                non_negative(DAMPER_RATIO, value)?;
                 let c2 = out.column.c2_nms_per_rad;
                 if c2 <= 0.0 {
                     return Err(ModelError::invalid(
@@ -127,13 +115,7 @@ impl Axis {
                 out.column.c1_nms_per_rad = value * c2;
             }
             Self::DampingLevel => {
-                if !(value.is_finite() && value >= 0.0) {
-                    return Err(ModelError::invalid(
-                        DAMPING_LEVEL,
-                        value,
-                        "must be a finite number >= 0",
-                    ));
-                }
+                non_negative(DAMPING_LEVEL, value)?;
                 let Some(beta) =
                     ratio(model).or((model.column.c1_nms_per_rad == 0.0).then_some(1.0))
                 else {
@@ -150,6 +132,19 @@ impl Axis {
         }
         out.validate()?;
         Ok(out)
+    }
+}
+
+/// Refuses a value of a derived axis that is negative or not finite.
+fn non_negative(axis: &str, value: f64) -> Result<(), ModelError> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(())
+    } else {
+        Err(ModelError::invalid(
+            axis,
+            value,
+            "must be a finite number >= 0",
+        ))
     }
 }
 
