@@ -4,7 +4,9 @@
 //! From the library: an error naming the parameter, or a result with its
 //! caveat. The README's table "Bad input and extremes" lists the same cases.
 
-use std::process::Command;
+use std::io::Read as _;
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
 
 use zieglerlab::analysis::{
     AffinePencil, bracketing_locus, critical_loads_along, resolution_warning,
@@ -499,15 +501,107 @@ const CLI: &[Cli] = &[
         ],
         "",
     ),
+    // Degenerate load intervals: a few units in the last place wide. These
+    // once halved the step forever (p + step == p) and grew without bound.
+    refused(
+        &[
+            "critical",
+            "--preset",
+            "ziegler-1952",
+            "--load-min",
+            "1",
+            "--load-max",
+            "1.0000000000000002",
+        ],
+        "load-max = 1.0000000000000002: must exceed load-min by more than the resolution",
+    ),
+    answered(
+        &[
+            "critical",
+            "--preset",
+            "ziegler-1952",
+            "--load-min",
+            "1",
+            "--load-max",
+            "1.00000000000002",
+        ],
+        "",
+    ),
+    refused(
+        &[
+            "locus",
+            "--preset",
+            "roller",
+            "--load-min",
+            "1",
+            "--load-max",
+            "1.0000000000000002",
+            "--samples",
+            "100",
+        ],
+        "samples = 100: too many for so narrow a range",
+    ),
+    refused(
+        &[
+            "map",
+            "--preset",
+            "roller",
+            "--x",
+            "load:1:1.0000000000000002:16",
+            "--y",
+            "nu:0.1:0.2:4",
+            "--out",
+            "/dev/null",
+        ],
+        "too many for so narrow a range",
+    ),
 ];
+
+/// Longest a command line case may run: a hang fails the test instead of
+/// freezing CI.
+const CASE_LIMIT: Duration = Duration::from_mins(1);
+
+/// Runs the binary with `args`, killed after [`CASE_LIMIT`].
+fn run_limited(args: &[&str]) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    // Readers on their own threads, so a full pipe cannot stall the child.
+    let mut stdout = child.stdout.take().unwrap();
+    let mut stderr = child.stderr.take().unwrap();
+    let out_reader = std::thread::spawn(move || {
+        let mut bytes = Vec::new();
+        stdout.read_to_end(&mut bytes).map(|_| bytes)
+    });
+    let err_reader = std::thread::spawn(move || {
+        let mut bytes = Vec::new();
+        stderr.read_to_end(&mut bytes).map(|_| bytes)
+    });
+    let start = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        if start.elapsed() > CASE_LIMIT {
+            child.kill().unwrap();
+            panic!("{args:?}: no answer within {CASE_LIMIT:?}");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    Output {
+        status,
+        stdout: out_reader.join().unwrap().unwrap(),
+        stderr: err_reader.join().unwrap().unwrap(),
+    }
+}
 
 #[test]
 fn every_command_line_case_gets_its_answer() {
     for case in CLI {
-        let out = Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
-            .args(case.args)
-            .output()
-            .expect("the binary runs");
+        let out = run_limited(case.args);
         let stderr = String::from_utf8_lossy(&out.stderr);
         let stdout = String::from_utf8_lossy(&out.stdout);
         let args = case.args;

@@ -213,3 +213,16 @@ fn a_cancelled_map_stops() {
     let rows = done.into_inner();
     assert!((1..=4).contains(&rows), "{rows} rows after the cancel");
 }
+
+#[test]
+fn map_rows_hold_no_subnormal_numbers() {
+    let normal = |x: f64| x == 0.0 || x.is_normal();
+    for row in rows(&roller_map("nu", (0.005, 1.0), 64, 8)) {
+        for cell in &row.cells {
+            assert!(normal(cell.growth_per_s), "nu = {}: {cell:?}", row.value);
+        }
+        for t in &row.transitions {
+            assert!(normal(t.load), "nu = {}: {t:?}", row.value);
+        }
+    }
+}

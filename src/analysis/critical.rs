@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use super::AnalysisError;
-use super::locus::{Locus, locus};
+use super::locus::{Locus, RESOLVED_STEPS, locus};
 use super::pencil::AffinePencil;
 use super::stability::{Stability, State, classify};
 
@@ -220,17 +220,33 @@ pub fn critical_loads(
 }
 
 /// The tracked locus of [`BRACKET_SAMPLES`] loads over `[load_min, load_max]`
-/// (one load when the range is a point).
+/// (fewer when the range holds fewer distinct loads in f64, one when it is a point).
 ///
 /// # Errors
-/// A bad range or a failed eigenvalue computation.
+/// A bad range (also one too narrow to hold two distinct loads) or a failed
+/// eigenvalue computation.
 pub fn bracketing_locus(
     pencil: &AffinePencil,
     load_min: f64,
     load_max: f64,
 ) -> Result<Locus, AnalysisError> {
+    // A range only a few units in the last place wide holds fewer distinct loads.
+    let resolution = RESOLVED_STEPS * f64::EPSILON * load_max.abs();
     let samples = if load_max > load_min {
-        BRACKET_SAMPLES
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "a non-negative count, capped at BRACKET_SAMPLES"
+        )]
+        let distinct = ((load_max - load_min) / resolution).floor().min(1e9) as usize + 1;
+        if distinct < 2 {
+            return Err(AnalysisError::BadRange {
+                what: "load-max",
+                value: load_max,
+                allowed: "must exceed load-min by more than the resolution of double precision there (or equal it, for a single load)",
+            });
+        }
+        distinct.min(BRACKET_SAMPLES)
     } else {
         1
     };

@@ -2,9 +2,13 @@
 //! with samples added where branches meet or cross an axis.
 
 use super::pencil::AffinePencil;
-use super::roots::{aberth, char_poly, modulus};
+use super::roots::{MAX_DEGREE, aberth, modulus};
 use super::stability::RELATIVE_TOLERANCE;
 use super::{AnalysisError, C64};
+
+/// Neighbouring grid loads must differ by at least this many units of
+/// `f64::EPSILON` relative to the range's end, so that every load is distinct.
+pub const RESOLVED_STEPS: f64 = 4.0;
 
 /// Largest number of evenly spaced loads a locus accepts.
 pub const MAX_SAMPLES: usize = 1_000_000;
@@ -19,7 +23,8 @@ const TURN_TOLERANCE: f64 = 0.1;
 /// frequency scale: below that the miss is invisible in any plot.
 const FLOOR_TOLERANCE: f64 = 1e-3;
 
-/// Steps are never halved below this fraction of the load range.
+/// Steps are never halved below this fraction of the load range (nor below
+/// the resolution of f64 at the range's end).
 const MIN_STEP_FRACTION: f64 = 1e-6;
 
 /// Eigenvalue branches over a range of loads.
@@ -55,8 +60,8 @@ impl Locus {
 /// The evenly spaced loads from `min` to `max` inclusive.
 ///
 /// # Errors
-/// Non-finite or negative bounds, `max < min`, no samples or too many, or
-/// one sample over a range.
+/// Non-finite or negative bounds, `max < min`, no samples or too many (also
+/// more than the range can hold distinct in f64), or one sample over a range.
 pub fn load_grid(min: f64, max: f64, samples: usize) -> Result<Vec<f64>, AnalysisError> {
     let bad = |what, value, allowed| {
         Err(AnalysisError::BadRange {
@@ -91,6 +96,14 @@ pub fn load_grid(min: f64, max: f64, samples: usize) -> Result<Vec<f64>, Analysi
         reason = "sample counts are far below 2^52"
     )]
     let step = (max - min) / (samples - 1) as f64;
+    if step < RESOLVED_STEPS * f64::EPSILON * max.abs() {
+        #[expect(clippy::cast_precision_loss, reason = "a count shown in a message")]
+        return bad(
+            "samples",
+            samples as f64,
+            "too many for so narrow a range: neighbouring loads would not be distinct in double precision (use fewer samples or a wider range)",
+        );
+    }
     #[expect(
         clippy::cast_precision_loss,
         reason = "sample counts are far below 2^52"
@@ -149,22 +162,27 @@ fn permute(perm: &mut [usize], k: usize, visit: &mut impl FnMut(&[usize])) {
     }
 }
 
-/// The moving eigenvalues at load p, attached branch by branch to `guess`:
-/// Aberth from the guess when the characteristic polynomial is available,
-/// the Schur path and an assignment otherwise.
-pub(crate) fn eigenvalues_near(
-    pencil: &AffinePencil,
-    p: f64,
-    guess: &[C64],
-) -> Result<Vec<C64>, AnalysisError> {
-    if let Some(poly) = char_poly(pencil, p) {
-        let mut roots = guess.to_vec();
-        if aberth(&poly, &mut roots, 60) {
-            return Ok(roots);
+/// The moving eigenvalues at load p, attached branch by branch to the guess
+/// that `roots` holds on entry: Aberth from the guess when the
+/// characteristic polynomial is available, the Schur path and an assignment
+/// otherwise. Allocation-free on the polynomial path (the locus's hot loop).
+fn eigenvalues_near(pencil: &AffinePencil, p: f64, roots: &mut [C64]) -> Result<(), AnalysisError> {
+    let n = roots.len();
+    if n <= MAX_DEGREE
+        && let Some(poly) = pencil.char_poly(p)
+    {
+        // Refined on a copy: a failed iteration leaves the guess for the Schur path.
+        let mut refined = [C64::new(0.0, 0.0); MAX_DEGREE];
+        refined[..n].copy_from_slice(roots);
+        if aberth(&poly, &mut refined[..n], 60) {
+            roots.copy_from_slice(&refined[..n]);
+            return Ok(());
         }
     }
     let spectrum = pencil.spectrum(p)?;
-    Ok(assign(&spectrum.eigenvalues, guess))
+    let assigned = assign(&spectrum.eigenvalues, roots);
+    roots.copy_from_slice(&assigned);
+    Ok(())
 }
 
 /// -1, 0 or 1 with a dead band of `tolerance` around zero.
@@ -194,7 +212,8 @@ pub fn locus(
     samples: usize,
 ) -> Result<Locus, AnalysisError> {
     let grid = load_grid(min, max, samples)?;
-    let min_step = (max - min) * MIN_STEP_FRACTION;
+    // Never below a few units in the last place: p + step must move p.
+    let min_step = ((max - min) * MIN_STEP_FRACTION).max(RESOLVED_STEPS * f64::EPSILON * max.abs());
     let mut first = pencil.spectrum(grid[0])?.eigenvalues;
     first.sort_by(|a, b| b.im.total_cmp(&a.im).then(b.re.total_cmp(&a.re)));
     let structural_zeros = pencil.structural_zeros();
@@ -218,27 +237,27 @@ pub fn locus(
     let (mut p, mut current) = (grid[0], first);
     let mut previous: Option<(f64, Vec<C64>)> = None;
     let mut step = grid.get(1).map_or(0.0, |g| g - grid[0]);
+    let (mut guess, mut next) = (Vec::new(), Vec::new());
     for &target in &grid[1..] {
         while p < target {
-            let (next_p, next) = loop {
-                let trial = step.min(target - p);
+            let next_p = loop {
+                let trial = step.max(min_step).min(target - p);
                 let next_p = if trial >= target - p {
                     target
                 } else {
                     p + trial
                 };
-                let guess: Vec<C64> = match &previous {
+                // The guess: a linear extrapolation from the last two samples.
+                guess.clear();
+                match &previous {
                     Some((p0, z0)) => {
                         let t = (next_p - p) / (p - p0);
-                        current
-                            .iter()
-                            .zip(z0)
-                            .map(|(&z, &w)| z + (z - w) * t)
-                            .collect()
+                        guess.extend(current.iter().zip(z0).map(|(&z, &w)| z + (z - w) * t));
                     }
-                    None => current.clone(),
-                };
-                let next = eigenvalues_near(pencil, next_p, &guess)?;
+                    None => guess.extend_from_slice(&current),
+                }
+                next.clone_from(&guess);
+                eigenvalues_near(pencil, next_p, &mut next)?;
                 let scale = pencil.scale_per_s(next_p);
                 let tolerance = RELATIVE_TOLERANCE * scale;
                 let smooth = next.iter().zip(&guess).zip(&current).all(|((z, g), w)| {
@@ -252,12 +271,16 @@ pub fn locus(
                 });
                 if (smooth && !crosses) || trial <= min_step {
                     step = if smooth { 2.0 * trial } else { trial };
-                    break (next_p, next);
+                    break next_p;
                 }
                 step = trial / 2.0;
             };
             push(&mut out, next_p, next_p == target, &next);
-            previous = Some((p, std::mem::replace(&mut current, next)));
+            // The samples rotate through three buffers: no allocation per step.
+            let mut older = previous.take().map_or_else(Vec::new, |(_, z)| z);
+            std::mem::swap(&mut older, &mut current);
+            std::mem::swap(&mut current, &mut next);
+            previous = Some((p, older));
             p = next_p;
         }
     }

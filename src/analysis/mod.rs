@@ -19,7 +19,7 @@ pub use map::{Cell, MapSpec, Row, RowResult, compute as compute_map};
 pub use paradox::{first_instability, flutter_load_damped};
 pub use pencil::{AffinePencil, Spectrum, spectrum};
 pub use resolution::resolution_warning;
-pub use roots::{aberth, char_poly};
+pub use roots::{Poly, aberth};
 pub use stability::{RELATIVE_TOLERANCE, Stability, State, classify};
 
 use crate::model::ModelError;

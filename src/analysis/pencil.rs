@@ -3,7 +3,7 @@
 
 use nalgebra::{DMatrix, linalg::Schur};
 
-use super::roots::{aberth, char_poly};
+use super::roots::{MAX_DEGREE, Poly, aberth};
 use super::{AnalysisError, C64};
 use crate::model::{LinearModel, Model, linearize};
 
@@ -157,6 +157,10 @@ pub struct AffinePencil {
     per_unit_load: LinearModel,
     /// Coordinates that are cyclic at every load (zero K column).
     cyclic: usize,
+    norms: NormQuadratics,
+    /// The characteristic polynomial as polynomials in the load, for 2 or 3
+    /// degrees of freedom.
+    characteristic: Option<CharacteristicPolynomial>,
 }
 
 impl AffinePencil {
@@ -177,10 +181,13 @@ impl AffinePencil {
             .into_iter()
             .filter(|j| cyclic_coordinates(&per_unit_load.stiffness).contains(j))
             .count();
+        let characteristic = CharacteristicPolynomial::new(&at_zero, &per_unit_load);
         Ok(Self {
+            norms: NormQuadratics::new(&at_zero, &per_unit_load),
             at_zero,
             per_unit_load,
             cyclic: always_cyclic,
+            characteristic,
         })
     }
 
@@ -199,18 +206,6 @@ impl AffinePencil {
             stiffness: &self.at_zero.stiffness + p * &self.per_unit_load.stiffness,
             extra_zero_roots: self.at_zero.extra_zero_roots,
         }
-    }
-
-    /// Entry `(i, j)` of `lambda^2 M + lambda D + K` at load p, as the
-    /// coefficients `[K, D, M]` of a quadratic in lambda. Allocation-free.
-    #[must_use]
-    pub fn entry(&self, p: f64, i: usize, j: usize) -> [f64; 3] {
-        let (z, u) = (&self.at_zero, &self.per_unit_load);
-        [
-            z.stiffness[(i, j)] + p * u.stiffness[(i, j)],
-            z.damping[(i, j)] + p * u.damping[(i, j)],
-            z.mass[(i, j)],
-        ]
     }
 
     /// Number of exact zero roots at every load (cyclic coordinates and the
@@ -247,11 +242,31 @@ impl AffinePencil {
         Ok(spectrum)
     }
 
+    /// `det(lambda^2 M + lambda D + K)` at load p for 2 or 3 degrees of
+    /// freedom, with the structural zero roots divided out (their
+    /// coefficients are exact zeros: every term carries an entry of a zero
+    /// column). `None` for other sizes or a vanishing leading coefficient.
+    /// Allocation-free: 2n + 1 cubics in p.
+    #[must_use]
+    pub fn char_poly(&self, p: f64) -> Option<Poly> {
+        let characteristic = self.characteristic.as_ref()?;
+        let n = self.dof();
+        let zeros = self.cyclic;
+        let full = characteristic.at(p);
+        let degree = 2 * n - zeros;
+        if full[..zeros].iter().any(|&c| c != 0.0) || full[2 * n] == 0.0 {
+            return None;
+        }
+        let mut coeffs = [0.0; MAX_DEGREE + 1];
+        coeffs[..=degree].copy_from_slice(&full[zeros..=2 * n]);
+        Some(Poly { coeffs, degree })
+    }
+
     /// The last resort when Schur fails: the characteristic polynomial's roots
     /// by Aberth iteration from points on a circle of the pencil's frequency
     /// scale (globally convergent in practice).
     fn polynomial_spectrum(&self, p: f64, lin: &LinearModel) -> Option<Spectrum> {
-        let poly = char_poly(self, p)?;
+        let poly = self.char_poly(p)?;
         let radius = frequency_scale(lin).max(f64::MIN_POSITIVE);
         #[expect(clippy::cast_precision_loss, reason = "degree <= 6")]
         let step = std::f64::consts::TAU / poly.degree as f64;
@@ -270,20 +285,133 @@ impl AffinePencil {
         })
     }
 
-    /// The frequency scale at load p (see [`Spectrum::scale_per_s`]). Allocation-free.
+    /// The frequency scale at load p (see [`Spectrum::scale_per_s`]),
+    /// from the squared norms of `K(p)` and `D(p)` as quadratics in p.
     #[must_use]
     pub fn scale_per_s(&self, p: f64) -> f64 {
-        let n = self.dof();
-        let (mut k, mut d, mut m) = (0.0, 0.0, 0.0);
-        for i in 0..n {
-            for j in 0..n {
-                let [kij, dij, mij] = self.entry(p, i, j);
-                k += kij * kij;
-                d += dij * dij;
-                m += mij * mij;
+        let NormQuadratics {
+            stiffness,
+            damping,
+            mass,
+        } = self.norms;
+        let at = |[c0, c1, c2]: [f64; 3]| ((c2 * p + c1) * p + c0).max(0.0).sqrt();
+        (at(stiffness) / mass).sqrt() + at(damping) / mass
+    }
+}
+
+/// Highest power of the load in a coefficient of the characteristic
+/// polynomial (each entry of the pencil is affine in p; 3 degrees of freedom).
+const LOAD_DEGREE: usize = 3;
+
+/// A polynomial in lambda and p: `c[k][m]` multiplies `lambda^k p^m`.
+type Bivariate = [[f64; LOAD_DEGREE + 1]; MAX_DEGREE + 1];
+
+fn bivariate_mul(a: &Bivariate, b: &Bivariate) -> Bivariate {
+    let mut out = [[0.0; LOAD_DEGREE + 1]; MAX_DEGREE + 1];
+    for (k, row) in a.iter().enumerate() {
+        for (m, &x) in row.iter().enumerate() {
+            if x == 0.0 {
+                continue;
+            }
+            for (l, other) in b.iter().enumerate().take(MAX_DEGREE + 1 - k) {
+                for (q, &y) in other.iter().enumerate().take(LOAD_DEGREE + 1 - m) {
+                    out[k + l][m + q] += x * y;
+                }
             }
         }
-        let (k, d, m) = (k.sqrt(), d.sqrt(), m.sqrt());
-        (k / m).sqrt() + d / m
+    }
+    out
+}
+
+fn bivariate_add(sign: f64, a: &Bivariate, out: &mut Bivariate) {
+    for (row, add) in out.iter_mut().zip(a) {
+        for (c, &x) in row.iter_mut().zip(add) {
+            *c += sign * x;
+        }
+    }
+}
+
+/// `det(lambda^2 M + lambda D(p) + K(p))` expanded once in lambda and p, so
+/// that the hot loop of the locus evaluates 2n + 1 cubics in p per load
+/// instead of the cofactor expansion.
+#[derive(Clone, Debug, PartialEq)]
+struct CharacteristicPolynomial {
+    coefficients: Bivariate,
+}
+
+impl CharacteristicPolynomial {
+    /// By cofactor expansion for 2 or 3 degrees of freedom; `None` otherwise.
+    fn new(at_zero: &LinearModel, per_unit_load: &LinearModel) -> Option<Self> {
+        let entry = |i: usize, j: usize| {
+            let mut e = [[0.0; LOAD_DEGREE + 1]; MAX_DEGREE + 1];
+            e[0] = [
+                at_zero.stiffness[(i, j)],
+                per_unit_load.stiffness[(i, j)],
+                0.0,
+                0.0,
+            ];
+            e[1] = [
+                at_zero.damping[(i, j)],
+                per_unit_load.damping[(i, j)],
+                0.0,
+                0.0,
+            ];
+            e[2][0] = at_zero.mass[(i, j)];
+            e
+        };
+        let minor = |r: [usize; 2], c: [usize; 2]| {
+            let mut m = bivariate_mul(&entry(r[0], c[0]), &entry(r[1], c[1]));
+            bivariate_add(
+                -1.0,
+                &bivariate_mul(&entry(r[0], c[1]), &entry(r[1], c[0])),
+                &mut m,
+            );
+            m
+        };
+        let coefficients = match at_zero.mass.nrows() {
+            2 => minor([0, 1], [0, 1]),
+            3 => {
+                let mut det = [[0.0; LOAD_DEGREE + 1]; MAX_DEGREE + 1];
+                let terms = [
+                    (1.0, entry(0, 0), minor([1, 2], [1, 2])),
+                    (-1.0, entry(0, 1), minor([1, 2], [0, 2])),
+                    (1.0, entry(0, 2), minor([1, 2], [0, 1])),
+                ];
+                for (sign, e, m) in &terms {
+                    bivariate_add(*sign, &bivariate_mul(e, m), &mut det);
+                }
+                det
+            }
+            _ => return None,
+        };
+        Some(Self { coefficients })
+    }
+
+    /// The coefficients in lambda at load p, lowest degree first.
+    fn at(&self, p: f64) -> [f64; MAX_DEGREE + 1] {
+        self.coefficients
+            .map(|[c0, c1, c2, c3]| ((c3 * p + c2) * p + c1) * p + c0)
+    }
+}
+
+/// `|A0 + p A1|^2 = |A0|^2 + 2 p <A0, A1> + p^2 |A1|^2` (Frobenius), lowest
+/// degree first, for the stiffness and the damping; the mass norm.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct NormQuadratics {
+    stiffness: [f64; 3],
+    damping: [f64; 3],
+    mass: f64,
+}
+
+impl NormQuadratics {
+    fn new(at_zero: &LinearModel, per_unit_load: &LinearModel) -> Self {
+        let quadratic = |a: &DMatrix<f64>, b: &DMatrix<f64>| {
+            [a.norm_squared(), 2.0 * a.dot(b), b.norm_squared()]
+        };
+        Self {
+            stiffness: quadratic(&at_zero.stiffness, &per_unit_load.stiffness),
+            damping: quadratic(&at_zero.damping, &per_unit_load.damping),
+            mass: at_zero.mass.norm(),
+        }
     }
 }
