@@ -19,9 +19,13 @@ use anyhow::{Context as _, Result};
 use eframe::egui::{self, RawInput, Rect, pos2};
 use serde::Serialize;
 
-use crate::analysis::{AffinePencil, critical_loads, load_grid, locus};
-use crate::app::{Settings, ZieglerApp};
-use crate::model::{Model, preset};
+use std::sync::atomic::{AtomicBool, AtomicUsize};
+
+use nalgebra::DMatrix;
+
+use crate::analysis::{AffinePencil, MapSpec, compute_map, critical_loads, load_grid, locus};
+use crate::app::{Settings, Tab, ZieglerApp};
+use crate::model::{Axis, Model, preset};
 use crate::sim::{DEFAULT_STEP_SECS, EngineKind, Simulation, initial_state};
 
 /// Loads of the benchmarked root loci, over `p` in `[0, LOCUS_LOAD_MAX]`.
@@ -57,6 +61,18 @@ pub struct Report {
     /// Headless frame time of the app at 1280x800, nu moving every frame.
     pub frame_ms_p50: f64,
     pub frame_ms_p99: f64,
+    /// The same drag with the stability-map tab open: 99th percentile.
+    pub frame_ms_p99_map: f64,
+    /// The same drag with the paradox tab open: 99th percentile.
+    pub frame_ms_p99_paradox: f64,
+    /// The 256x256 roller map (load 0-8 against nu 0.005-1) on every core: ms.
+    pub map_ms: f64,
+    /// numpy's batched `eigvals` on the roller's 6x6 companion matrices at
+    /// the locus's 1000 loads, measured in this run: µs per matrix (null
+    /// without python3 and numpy).
+    pub numpy_eig_us_per_pencil: Option<f64>,
+    /// `numpy_eig_us_per_pencil / locus_us_per_load`.
+    pub locus_speedup_vs_numpy: Option<f64>,
 }
 
 /// Runs every measurement; `frames` frames are timed.
@@ -66,9 +82,13 @@ pub struct Report {
 pub fn run(frames: usize) -> Result<Report> {
     let roller = pencil("roller")?;
     let midpoint = pencil("midpoint-masses")?;
-    let frame_ms = frame_times_ms(frames)?;
+    let frame_ms = frame_times_ms(frames, Tab::Locus)?;
+    let frame_ms_map = frame_times_ms(frames, Tab::Map)?;
+    let frame_ms_paradox = frame_times_ms(frames, Tab::Paradox)?;
+    let locus_us = locus_us_per_load(&roller)?;
+    let numpy_us = numpy_eig_us_per_pencil(&roller)?;
     Ok(Report {
-        locus_us_per_load: locus_us_per_load(&roller)?,
+        locus_us_per_load: locus_us,
         locus2_us_per_load: locus_us_per_load(&midpoint)?,
         eig_us_per_pencil: eig_us_per_pencil(&roller)?,
         critical_ms: critical_ms(&roller)?,
@@ -76,7 +96,89 @@ pub fn run(frames: usize) -> Result<Report> {
         sim_rapier_x_realtime: x_realtime(EngineKind::Rapier)?,
         frame_ms_p50: quantile(&frame_ms, 0.5),
         frame_ms_p99: quantile(&frame_ms, 0.99),
+        frame_ms_p99_map: quantile(&frame_ms_map, 0.99),
+        frame_ms_p99_paradox: quantile(&frame_ms_paradox, 0.99),
+        map_ms: map_ms()?,
+        numpy_eig_us_per_pencil: numpy_us,
+        locus_speedup_vs_numpy: numpy_us.map(|numpy| numpy / locus_us),
     })
+}
+
+/// The roller map of the app's stability-map tab, 256x256, on every core.
+fn map_ms() -> Result<f64> {
+    let model = preset("roller")?.model();
+    let spec = MapSpec {
+        axis: Axis::parse("nu", &model, "roller")?,
+        model,
+        preset: "roller".to_owned(),
+        load_range: (0.0, 8.0),
+        loads: 256,
+        axis_range: (0.005, 1.0),
+        values: 256,
+    };
+    let threads = std::thread::available_parallelism().map_or(2, std::num::NonZero::get);
+    let secs = median_secs(3, || {
+        let (cancel, done) = (AtomicBool::new(false), AtomicUsize::new(0));
+        compute_map(&spec, threads, &cancel, &done, &|_, row| {
+            drop(black_box(row));
+        })?;
+        Ok(())
+    })?;
+    Ok(secs * 1e3)
+}
+
+/// Times numpy's batched `eigvals` in a python3 child process on the first-order
+/// companion matrices `[[0, I], [-M^-1 K, -M^-1 D]]` of `pencil` at the
+/// benchmarked locus's loads. `None` when python3 or numpy is missing.
+fn numpy_eig_us_per_pencil(pencil: &AffinePencil) -> Result<Option<f64>> {
+    const SCRIPT: &str = r"
+import json, sys, time
+try:
+    import numpy as np
+except ImportError:
+    print('null'); sys.exit()
+a = np.array(json.load(sys.stdin))
+np.linalg.eigvals(a)
+times = []
+for _ in range(31):
+    start = time.perf_counter(); np.linalg.eigvals(a); times.append(time.perf_counter() - start)
+times.sort()
+print(times[len(times) // 2] * 1e6 / len(a))
+";
+    let mut matrices = Vec::with_capacity(LOCUS_LOADS);
+    for p in load_grid(0.0, LOCUS_LOAD_MAX, LOCUS_LOADS)? {
+        let lin = pencil.at(p);
+        let n = lin.mass.nrows();
+        let Some(mass_inv) = lin.mass.clone().try_inverse() else {
+            anyhow::bail!("a singular mass matrix at p = {p}");
+        };
+        let mut a = DMatrix::<f64>::zeros(2 * n, 2 * n);
+        a.view_mut((0, n), (n, n)).fill_with_identity();
+        a.view_mut((n, 0), (n, n))
+            .copy_from(&(-&mass_inv * &lin.stiffness));
+        a.view_mut((n, n), (n, n))
+            .copy_from(&(-&mass_inv * &lin.damping));
+        let rows: Vec<Vec<f64>> = a.row_iter().map(|r| r.iter().copied().collect()).collect();
+        matrices.push(rows);
+    }
+    let input = serde_json::to_vec(&matrices)?;
+    let child = std::process::Command::new("python3")
+        .args(["-c", SCRIPT])
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::null())
+        .spawn();
+    let Ok(mut child) = child else {
+        return Ok(None);
+    };
+    if let Some(mut stdin) = child.stdin.take() {
+        use std::io::Write as _;
+        // A child that exits early (no numpy) closes the pipe: not an error here.
+        drop(stdin.write_all(&input));
+    }
+    let output = child.wait_with_output()?;
+    let text = String::from_utf8_lossy(&output.stdout);
+    Ok(text.trim().parse::<f64>().ok().filter(|us| us.is_finite()))
 }
 
 fn pencil(name: &str) -> Result<AffinePencil> {
@@ -146,17 +248,19 @@ fn x_realtime(engine: EngineKind) -> Result<f64> {
     Ok(SIM_SECS / secs)
 }
 
-/// The wall time of `frames` headless frames of the whole app at 1280x800,
-/// in ms, with nu swept 0.05 .. 0.35 and back as a dragged slider does (so
-/// the locus and the critical loads are recomputed every frame): the
-/// simulation's advance by 1/60 s, the egui pass and tessellation. The GPU's
-/// share (a few thousand triangles) is not included.
+/// The wall time of `frames` headless frames of the whole app at 1280x800
+/// with `tab` open below, in ms, with nu swept 0.05 .. 0.35 and back as a
+/// dragged slider does (so the locus and the critical loads are recomputed
+/// every frame, and the map or the paradox curves restart off the UI
+/// thread): the simulation's advance by 1/60 s, the egui pass and
+/// tessellation. The GPU's share (a few thousand triangles) is not included.
 ///
 /// # Errors
 /// The app refusing its defaults or a nu value (neither should happen).
-pub fn frame_times_ms(frames: usize) -> Result<Vec<f64>> {
+pub fn frame_times_ms(frames: usize, tab: Tab) -> Result<Vec<f64>> {
     let ctx = egui::Context::default();
     let mut app = ZieglerApp::new(Settings::default()).map_err(anyhow::Error::msg)?;
+    app.show_tab(tab);
     let mut times_ms = Vec::with_capacity(frames);
     for frame in 0..frames + WARMUP_FRAMES {
         let phase = (frame % 120) as f64 / 120.0;

@@ -591,9 +591,13 @@ fn presets(out: &mut impl Write, json: bool) -> Result<()> {
 
 /// The targets `bench` compares with on a 2-core machine: each key, the
 /// bound and whether it is an upper bound.
-const BENCH_TARGETS: [(&str, f64, bool); 4] = [
-    ("locus_us_per_load", 1.5, true),
+const BENCH_TARGETS: [(&str, f64, bool); 8] = [
+    ("locus_us_per_load", 0.8, true),
+    ("locus_speedup_vs_numpy", 8.0, false),
     ("frame_ms_p99", 8.0, true),
+    ("frame_ms_p99_map", 8.0, true),
+    ("frame_ms_p99_paradox", 8.0, true),
+    ("map_ms", 300.0, true),
     ("sim_reference_x_realtime", 1000.0, false),
     ("sim_rapier_x_realtime", 200.0, false),
 ];
@@ -646,6 +650,31 @@ fn bench(out: &mut impl Write, json: bool, frames: usize) -> Result<()> {
             "app frame at 1280x800, nu moving every frame: median",
         ),
         ("frame_ms_p99", "ms", "the same, 99th percentile"),
+        (
+            "frame_ms_p99_map",
+            "ms",
+            "the same drag with the stability-map tab open: p99",
+        ),
+        (
+            "frame_ms_p99_paradox",
+            "ms",
+            "the same drag with the paradox tab open: p99",
+        ),
+        (
+            "map_ms",
+            "ms",
+            "roller map 256x256 (load, nu) on every core",
+        ),
+        (
+            "numpy_eig_us_per_pencil",
+            "us per pencil",
+            "numpy's batched eigvals, the same 6x6 pencils (NaN: no numpy)",
+        ),
+        (
+            "locus_speedup_vs_numpy",
+            "x",
+            "numpy per pencil over the locus per load",
+        ),
     ];
     for (key, unit, what) in rows {
         let figure = value[key].as_f64().unwrap_or(f64::NAN);

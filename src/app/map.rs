@@ -34,17 +34,27 @@ struct Job {
 }
 
 impl Job {
-    fn start(spec: MapSpec) -> Self {
+    /// Starts computing `spec` once `previous` (a cancelled job's thread,
+    /// which ends within a row) has ended: while a slider is dragged the
+    /// restarts queue up behind each other instead of running side by side.
+    fn start(spec: MapSpec, previous: Option<JoinHandle<()>>) -> Self {
         let (sender, receiver) = mpsc::channel();
         let grids = spec.load_grid().and_then(|_| spec.value_grid());
         let cancel = Arc::new(AtomicBool::new(false));
         let done = Arc::new(AtomicUsize::new(0));
-        let threads = std::thread::available_parallelism().map_or(2, std::num::NonZero::get);
+        // One core is left to the window, so the frame rate holds while the map is computed.
+        let threads = std::thread::available_parallelism()
+            .map_or(1, |n| n.get().saturating_sub(1))
+            .max(1);
         let thread = grids.map_err(|e| e.to_string()).and_then(|_| {
             let (spec, cancel, done) = (spec.clone(), Arc::clone(&cancel), Arc::clone(&done));
             std::thread::Builder::new()
                 .name("stability map".to_owned())
                 .spawn(move || {
+                    if let Some(previous) = previous {
+                        // A panic there was that job's; this one goes on.
+                        drop(previous.join());
+                    }
                     // A closed channel means the panel moved on: nothing to do.
                     let on_row = |j, row| drop(sender.send((j, row)));
                     // The grids were checked above.
@@ -173,12 +183,19 @@ impl MapPanel {
             (&old.axis, old.axis_range, old.load_range)
                 == (&spec.axis, spec.axis_range, spec.load_range)
         };
-        let kept = self
-            .job
-            .take()
-            .filter(|old| same_axes(&old.spec))
-            .and_then(|mut old| old.texture.take());
-        let mut job = Job::start(spec);
+        let (kept, previous) = match self.job.take() {
+            Some(mut old) => {
+                old.cancel.store(true, Ordering::Relaxed);
+                let texture = if same_axes(&old.spec) {
+                    old.texture.take()
+                } else {
+                    None
+                };
+                (texture, old.thread.take())
+            }
+            None => (None, None),
+        };
+        let mut job = Job::start(spec, previous);
         if kept.is_some() {
             job.texture = kept;
             job.stale = false;

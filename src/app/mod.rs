@@ -4,6 +4,7 @@
 
 mod history;
 mod map;
+mod pace;
 mod paradox;
 mod plots;
 mod scene;
@@ -15,23 +16,21 @@ use std::collections::VecDeque;
 use eframe::egui::{self, Color32, RichText, Sense, Stroke, pos2, vec2};
 
 use crate::analysis::{
-    AffinePencil, BRACKET_SAMPLES, C64, Locus, State, Transition, classify, critical_loads_along,
-    load_label, locus, resolution_warning,
+    AffinePencil, BRACKET_SAMPLES, C64, Locus, Spectrum, State, Transition, classify,
+    critical_loads_along, load_label, locus, resolution_warning,
 };
 use crate::model::{Assignment, Axis, KEYS, KeySpec, Model, PRESETS, apply_assignments, preset};
 use crate::sim::{DEFAULT_STEP_SECS, EngineKind, SimError, Simulation, Status, initial_state};
 use theme::Theme;
 
 pub use map::map_picture;
+pub use pace::{MAX_FRAME_SECS, MAX_STEPS_PER_FRAME};
 
 /// The load slider's range and the locus's, on the common axis p.
 pub const LOAD_MAX_P: f64 = 8.0;
 /// Evenly spaced loads of the plotted locus (plus the refinement). The same
 /// locus brackets the critical loads, with the sample count `critical` uses.
 const LOCUS_SAMPLES: usize = BRACKET_SAMPLES;
-/// The simulation never advances more than this much wall time per frame,
-/// so a slow frame cannot make the run jump.
-const MAX_FRAME_SECS: f64 = 0.1;
 /// The size of a kick, in rad on both angles.
 const KICK_RAD: f64 = 0.01;
 /// The key the settings are stored under.
@@ -171,8 +170,13 @@ pub struct ZieglerApp {
     running: bool,
     trail: VecDeque<(f64, [f64; 2])>,
     analysis: Option<Analysis>,
-    /// Simulated time owed to the run by the wall clock, in s.
-    owed_secs: f64,
+    /// Simulated time against wall-clock time.
+    pace: pace::Pace,
+    /// When the window's last frame began (the headless paths never set it:
+    /// their frames advance by fixed, given times).
+    last_frame: Option<std::time::Instant>,
+    /// The spectrum at the current load and the model it is for.
+    current: Option<(Model, Spectrum)>,
     /// The last problem to tell the user about.
     message: Option<String>,
     /// The theme applied to the context (None: not yet).
@@ -185,7 +189,7 @@ pub struct ZieglerApp {
     measured: Option<Vec<C64>>,
     measured_at_secs: f64,
     /// What the lower half shows.
-    lower: Lower,
+    lower: Tab,
     /// A second model's locus drawn behind the current one (Fig. 8).
     overlay: Option<Overlay>,
     /// The text box for sharing settings.
@@ -217,7 +221,7 @@ pub enum Panel {
 
 /// The choice of plots in the lower half of the window.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Lower {
+pub enum Tab {
     Locus,
     Histories,
     Map,
@@ -237,14 +241,16 @@ impl ZieglerApp {
             running: true,
             trail: VecDeque::new(),
             analysis: None,
-            owed_secs: 0.0,
+            pace: pace::Pace::default(),
+            current: None,
+            last_frame: None,
             message,
             applied_projector: None,
             refused: None,
             history: history::History::default(),
             measured: None,
             measured_at_secs: f64::NEG_INFINITY,
-            lower: Lower::Locus,
+            lower: Tab::Locus,
             overlay: None,
             shared_text: String::new(),
             map: map::MapPanel::default(),
@@ -350,23 +356,30 @@ impl ZieglerApp {
     }
 
     /// The running simulation.
+    /// Shows `tab` in the lower half of the window.
+    pub fn show_tab(&mut self, tab: Tab) {
+        self.lower = tab;
+    }
+
     #[must_use]
     pub fn simulation(&self) -> &Simulation {
         &self.sim
     }
 
-    /// Advances the run by `wall_secs` of wall-clock time at the chosen speed.
+    /// Advances the run by `wall_secs` of wall-clock time at the chosen speed
+    /// (whole engine steps, the remainder carried; see [`pace::Pace`]).
     pub fn advance(&mut self, wall_secs: f64) {
         if !self.running {
+            self.pace.restart();
             return;
         }
-        self.owed_secs += wall_secs.min(MAX_FRAME_SECS) * self.settings.speed;
-        let step = self.sim.step_secs();
-        while self.owed_secs >= step {
-            self.owed_secs -= step;
+        let steps = self
+            .pace
+            .steps(wall_secs, self.settings.speed, self.sim.step_secs());
+        for _ in 0..steps {
             if self.sim.step() != Status::Running {
                 self.running = false;
-                self.owed_secs = 0.0;
+                self.pace.restart();
                 break;
             }
             let now = self.sim.observe();
@@ -476,7 +489,7 @@ impl ZieglerApp {
                 self.trail.clear();
                 self.history.clear();
                 self.measured = None;
-                self.owed_secs = 0.0;
+                self.pace.restart();
                 self.running = true;
             }
             Err(error) => self.message = Some(error),
@@ -560,6 +573,7 @@ impl ZieglerApp {
     /// The whole window's contents. Reads the state; the simulation advances
     /// only in [`ZieglerApp::advance`], so a picture depends on the state alone.
     pub fn contents_ui(&mut self, ui: &mut egui::Ui) {
+        self.refresh_current_spectrum();
         let theme = self.applied_theme(ui.ctx());
         egui::Panel::left("controls")
             .resizable(false)
@@ -588,6 +602,7 @@ impl ZieglerApp {
 
     /// One panel alone (for snapshots and figures).
     pub fn panel_ui(&mut self, ui: &mut egui::Ui, panel: Panel) {
+        self.refresh_current_spectrum();
         let theme = self.applied_theme(ui.ctx());
         match panel {
             Panel::Window => self.contents_ui(ui),
@@ -673,35 +688,55 @@ impl ZieglerApp {
     }
 
     fn current_eigenvalues(&self) -> Vec<C64> {
-        self.analysis
-            .as_ref()
-            .and_then(|a| a.pencil.spectrum(self.settings.model.load_p()).ok())
+        self.current_spectrum()
             .map(|s| s.all().collect())
             .unwrap_or_default()
     }
 
+    /// The spectrum at the current load, computed once per change of the
+    /// model (the status card and the plots' markers read it).
+    fn refresh_current_spectrum(&mut self) {
+        let model = self.settings.model;
+        if self.current.as_ref().is_some_and(|(m, _)| *m == model) {
+            return;
+        }
+        self.current = self
+            .analysis
+            .as_ref()
+            .and_then(|a| a.pencil.spectrum(model.load_p()).ok())
+            .map(|spectrum| (model, spectrum));
+    }
+
+    /// The spectrum at the current load, if the current model has one.
+    fn current_spectrum(&self) -> Option<&Spectrum> {
+        self.current
+            .as_ref()
+            .filter(|(m, _)| *m == self.settings.model && self.analysis.is_some())
+            .map(|(_, spectrum)| spectrum)
+    }
+
     fn plots_ui(&mut self, ui: &mut egui::Ui, theme: &Theme) {
         ui.horizontal(|ui| {
-            ui.selectable_value(&mut self.lower, Lower::Locus, "root locus");
-            ui.selectable_value(&mut self.lower, Lower::Histories, "time histories");
-            ui.selectable_value(&mut self.lower, Lower::Map, "stability map");
-            ui.selectable_value(&mut self.lower, Lower::Paradox, "paradox");
+            ui.selectable_value(&mut self.lower, Tab::Locus, "root locus");
+            ui.selectable_value(&mut self.lower, Tab::Histories, "time histories");
+            ui.selectable_value(&mut self.lower, Tab::Map, "stability map");
+            ui.selectable_value(&mut self.lower, Tab::Paradox, "paradox");
         });
         match self.lower {
-            Lower::Histories => {
+            Tab::Histories => {
                 plots::histories_ui(ui, &self.history, theme);
                 return;
             }
-            Lower::Map => {
+            Tab::Map => {
                 self.map_ui(ui, theme);
                 return;
             }
-            Lower::Paradox => {
+            Tab::Paradox => {
                 let preset = self.settings.preset.clone();
                 self.paradox.ui(ui, &self.settings.model, &preset, theme);
                 return;
             }
-            Lower::Locus => {}
+            Tab::Locus => {}
         }
         let Some(analysis) = &self.analysis else {
             ui.label("No root locus for these parameters.");
@@ -802,7 +837,7 @@ impl ZieglerApp {
         ui.separator();
         self.parameters_ui(ui, theme);
         ui.separator();
-        self.time_ui(ui);
+        self.time_ui(ui, theme);
         ui.separator();
         self.status_ui(ui, theme);
         ui.separator();
@@ -1031,7 +1066,7 @@ impl ZieglerApp {
         }
     }
 
-    fn time_ui(&mut self, ui: &mut egui::Ui) {
+    fn time_ui(&mut self, ui: &mut egui::Ui, theme: &Theme) {
         ui.horizontal(|ui| {
             if ui
                 .button(if self.running { "pause" } else { "play" })
@@ -1056,19 +1091,29 @@ impl ZieglerApp {
                 .logarithmic(true)
                 .text("× speed"),
         );
-        ui.label(format!(
-            "t = {:.2} s   ({})",
-            self.sim.time_secs(),
-            self.sim.status()
-        ));
+        let state = if !self.running && self.sim.status() == Status::Running {
+            "paused".to_owned()
+        } else {
+            self.sim.status().to_string()
+        };
+        ui.label(format!("t = {:.2} s   ({state})", self.sim.time_secs()));
+        if self.running
+            && let Some(achieved) = self.pace.lagging(self.settings.speed)
+        {
+            ui.colored_label(
+                theme.flutter,
+                format!(
+                    "running at {}x: this computer cannot keep up at {}x",
+                    number_text(achieved),
+                    number_text(self.settings.speed)
+                ),
+            );
+        }
     }
 
     /// The stability of the current load in words and numbers.
     fn status_ui(&self, ui: &mut egui::Ui, theme: &Theme) {
-        let Some(analysis) = &self.analysis else {
-            return;
-        };
-        let Ok(spectrum) = analysis.pencil.spectrum(self.settings.model.load_p()) else {
+        let (Some(analysis), Some(spectrum)) = (&self.analysis, self.current_spectrum()) else {
             return;
         };
         let s = classify(&spectrum.eigenvalues, spectrum.scale_per_s);
@@ -1141,7 +1186,13 @@ impl ZieglerApp {
 impl eframe::App for ZieglerApp {
     fn logic(&mut self, ctx: &egui::Context, _frame: &mut eframe::Frame) {
         self.keyboard(ctx);
-        let wall_secs = f64::from(ctx.input(|i| i.unstable_dt));
+        // The wall clock, read here and only here: everything below takes the
+        // elapsed time as a number, so tests and pictures can give their own.
+        let now = std::time::Instant::now();
+        let wall_secs = self
+            .last_frame
+            .map_or(0.0, |last| now.duration_since(last).as_secs_f64());
+        self.last_frame = Some(now);
         self.advance(wall_secs);
         if self.running {
             ctx.request_repaint();

@@ -3,7 +3,8 @@
 //! roller's mass at several band speeds), next to the undamped value,
 //! computed off the UI thread.
 
-use std::sync::mpsc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, mpsc};
 
 use eframe::egui::{self, Color32};
 use egui_plot::{HLine, Legend, Line, Plot, PlotPoints, Points};
@@ -36,10 +37,16 @@ pub struct Curves {
 
 /// The points `(log10 x, first critical load)` of `load_at(x)` over
 /// `decades`, leaving out values where the column never loses stability.
-fn curve(decades: (f64, f64), load_at: impl Fn(f64) -> Option<f64>) -> Vec<[f64; 2]> {
+/// Stops computing (the rest left out) once `cancel` is set.
+fn curve(
+    decades: (f64, f64),
+    cancel: &AtomicBool,
+    load_at: impl Fn(f64) -> Option<f64>,
+) -> Vec<[f64; 2]> {
     #[expect(clippy::cast_precision_loss, reason = "point counts")]
     let step = (decades.1 - decades.0) / (POINTS - 1) as f64;
     (0..POINTS)
+        .take_while(|_| !cancel.load(Ordering::Relaxed))
         .filter_map(|i| {
             #[expect(clippy::cast_precision_loss, reason = "point counts")]
             let e = decades.0 + step * i as f64;
@@ -49,9 +56,10 @@ fn curve(decades: (f64, f64), load_at: impl Fn(f64) -> Option<f64>) -> Vec<[f64;
 }
 
 /// The explorer's curves for `model` (its load and the swept parameters are
-/// set by the curves themselves).
+/// set by the curves themselves). Once `cancel` is set the curves end early:
+/// a cancelled result is for no one.
 #[must_use]
-pub fn curves(model: &Model, preset: &str) -> Curves {
+pub fn curves(model: &Model, preset: &str, cancel: &AtomicBool) -> Curves {
     let first = |m: &Model| first_instability(m, LOAD_MAX).ok().flatten();
     match model.load {
         Load::Follower { .. } => {
@@ -62,7 +70,7 @@ pub fn curves(model: &Model, preset: &str) -> Curves {
             let lines = LEVELS
                 .iter()
                 .map(|&level| {
-                    let points = curve(RATIO_DECADES, |ratio| {
+                    let points = curve(RATIO_DECADES, cancel, |ratio| {
                         flutter_load_damped(model, preset, ratio, level, LOAD_MAX)
                             .ok()
                             .flatten()
@@ -90,7 +98,7 @@ pub fn curves(model: &Model, preset: &str) -> Curves {
                 .iter()
                 .filter(|&&speed| speed > 0.0)
                 .map(|&speed| {
-                    let points = curve(NU_DECADES, |nu| {
+                    let points = curve(NU_DECADES, cancel, |nu| {
                         let m = Axis::Key("V").apply(model, preset, speed).ok()?;
                         let m = Axis::Key("nu").apply(&m, preset, nu).ok()?;
                         first(&m)
@@ -115,11 +123,20 @@ pub fn curves(model: &Model, preset: &str) -> Curves {
     }
 }
 
-/// The curves of one model, computed or being computed.
+/// The curves of one model, computed or being computed. Dropping the job
+/// (the parameters moved on) cancels its computation within one point.
 struct Job {
     key: Model,
     receiver: mpsc::Receiver<Curves>,
     curves: Option<Curves>,
+    cancel: Arc<AtomicBool>,
+    thread: Option<std::thread::JoinHandle<()>>,
+}
+
+impl Drop for Job {
+    fn drop(&mut self) {
+        self.cancel.store(true, Ordering::Relaxed);
+    }
 }
 
 /// The panel and its job.
@@ -146,19 +163,37 @@ impl ParadoxPanel {
         if self.job.as_ref().is_some_and(|job| job.key == key) {
             return;
         }
+        // The previous job is cancelled (it ends within one point) and the
+        // new one starts when it has ended: while a slider is dragged the
+        // restarts queue up instead of running side by side.
+        let previous = self.job.take().and_then(|mut job| job.thread.take());
         let (sender, receiver) = mpsc::channel();
-        let (model_copy, preset_copy) = (*model, preset.to_owned());
+        let cancel = Arc::new(AtomicBool::new(false));
+        let (model_copy, preset_copy, flag) = (*model, preset.to_owned(), Arc::clone(&cancel));
         let spawned = std::thread::Builder::new()
             .name("paradox curves".to_owned())
-            .spawn(move || drop(sender.send(curves(&model_copy, &preset_copy))));
-        let curves = spawned.err().map(|error| Curves {
-            note: Some(format!("no thread for the curves: {error}")),
-            ..Curves::default()
-        });
+            .spawn(move || {
+                if let Some(previous) = previous {
+                    drop(previous.join());
+                }
+                drop(sender.send(curves(&model_copy, &preset_copy, &flag)));
+            });
+        let (thread, curves) = match spawned {
+            Ok(handle) => (Some(handle), None),
+            Err(error) => (
+                None,
+                Some(Curves {
+                    note: Some(format!("no thread for the curves: {error}")),
+                    ..Curves::default()
+                }),
+            ),
+        };
         self.job = Some(Job {
             key,
             receiver,
             curves,
+            cancel,
+            thread,
         });
     }
 
