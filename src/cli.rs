@@ -191,7 +191,7 @@ enum Command {
         #[arg(long, value_enum, default_value_t = EngineArg::Rapier)]
         engine: EngineArg,
         /// Image size in pixels, `WIDTHxHEIGHT`.
-        #[arg(long, default_value = "1280x800")]
+        #[arg(long, default_value = "1280x800", allow_hyphen_values = true)]
         size: String,
         #[arg(long)]
         projector: bool,
@@ -215,9 +215,20 @@ pub fn run() -> ExitCode {
                 let _ = error.print();
                 return ExitCode::SUCCESS;
             }
+            // clap's message runs over several lines (the missing arguments
+            // are listed under the first): its first paragraph, on one line.
             let text = error.to_string();
-            let first = text.lines().next().unwrap_or("error: bad arguments");
-            eprintln!("{first} (see zieglerlab --help)");
+            let first: Vec<&str> = text
+                .lines()
+                .take_while(|line| !line.trim().is_empty())
+                .map(str::trim)
+                .collect();
+            let first = if first.is_empty() {
+                "error: bad arguments".to_owned()
+            } else {
+                first.join(" ")
+            };
+            eprintln!("{} (see zieglerlab --help)", printable(&first));
             return ExitCode::from(2);
         }
     };
@@ -234,11 +245,35 @@ pub fn run() -> ExitCode {
     match execute(command) {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
+            // A reader that stopped reading (`| head`) is not an error: end
+            // quietly, as Unix tools do.
+            let broken_pipe = error.chain().any(|cause| {
+                cause
+                    .downcast_ref::<std::io::Error>()
+                    .is_some_and(|e| e.kind() == std::io::ErrorKind::BrokenPipe)
+            });
+            if broken_pipe {
+                return ExitCode::SUCCESS;
+            }
             let chain: Vec<String> = error.chain().map(ToString::to_string).collect();
-            eprintln!("error: {}", chain.join(": "));
+            eprintln!("error: {}", printable(&chain.join(": ")));
             ExitCode::from(2)
         }
     }
+}
+
+/// `text` with control characters (a key typed with a tab or an escape
+/// sequence) shown escaped, so an error message stays one readable line.
+fn printable(text: &str) -> String {
+    text.chars()
+        .map(|c| {
+            if c.is_control() {
+                c.escape_default().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
 }
 
 fn execute(command: Command) -> Result<()> {
@@ -449,6 +484,7 @@ fn snapshot(
     panel: Panel,
     out: &std::path::Path,
 ) -> Result<()> {
+    check_output(out, true)?;
     let (name, model) = build_model(args)?;
     if !(time.is_finite() && (0.0..=1.0e5).contains(&time)) {
         anyhow::bail!("time = {time}: must be a number of seconds in [0, 100000]");
@@ -481,10 +517,87 @@ fn snapshot(
         app.complete_background_work();
     }
     let image = render(&mut app, panel, (f32::from(width), f32::from(height)))?;
-    image
-        .save(out)
-        .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", out.display()))?;
+    write_png(out, &image)
+}
+
+/// Refuses an output path before any work is done: its folder must exist,
+/// and a picture must be named `*.png` (the only format written).
+fn check_output(out: &std::path::Path, png: bool) -> Result<()> {
+    let shown = out.display();
+    if png
+        && !out
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("png"))
+    {
+        anyhow::bail!("out = {shown}: pictures are written as PNG; name the file *.png");
+    }
+    let folder = match out.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => std::path::Path::new("."),
+    };
+    if !folder.is_dir() {
+        anyhow::bail!(
+            "out = {shown}: the folder {} does not exist",
+            folder.display()
+        );
+    }
+    if out.is_dir() {
+        anyhow::bail!("out = {shown}: is a folder, not a file");
+    }
+    if !png && std::fs::metadata(out).is_ok_and(|m| !m.is_file()) {
+        // Text may go to a device or a pipe.
+        return Ok(());
+    }
     Ok(())
+}
+
+/// Writes `out` whole or not at all: into a temporary file in the same
+/// folder, flushed and synced, then renamed over `out`. A failure (a full
+/// disk, a killed process) leaves any existing `out` as it was.
+fn write_atomically(
+    out: &std::path::Path,
+    write: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> std::io::Result<()>,
+) -> Result<()> {
+    let error = |e: &dyn std::fmt::Display| anyhow::anyhow!("cannot write {}: {e}", out.display());
+    if std::fs::metadata(out).is_ok_and(|m| !m.is_file()) {
+        // A device or a pipe (/dev/stdout, /dev/null): nothing to replace.
+        let mut file = std::fs::File::options()
+            .write(true)
+            .open(out)
+            .map_err(|e| error(&e))?;
+        let mut buffered = std::io::BufWriter::new(&mut file);
+        return write(&mut buffered)
+            .and_then(|()| buffered.flush())
+            .map_err(|e| error(&e));
+    }
+    let folder = match out.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => std::path::Path::new("."),
+    };
+    let mut file = tempfile::NamedTempFile::new_in(folder).map_err(|e| error(&e))?;
+    {
+        let mut buffered = std::io::BufWriter::new(file.as_file_mut());
+        write(&mut buffered)
+            .and_then(|()| buffered.flush())
+            .map_err(|e| error(&e))?;
+    }
+    file.as_file().sync_all().map_err(|e| error(&e))?;
+    file.persist(out).map_err(|e| error(&e.error))?;
+    Ok(())
+}
+
+/// `image` as a PNG file at `out`, atomically.
+fn write_png(out: &std::path::Path, image: &image::RgbaImage) -> Result<()> {
+    write_atomically(out, |w| {
+        let mut encoded = Vec::new();
+        image
+            .write_to(
+                &mut std::io::Cursor::new(&mut encoded),
+                image::ImageFormat::Png,
+            )
+            .map_err(std::io::Error::other)?;
+        w.write_all(&encoded)
+    })
 }
 
 /// The picture of `panel` by wgpu, headless. A missing renderer (no Mesa, no
@@ -602,9 +715,12 @@ const BENCH_TARGETS: [(&str, f64, bool); 8] = [
     ("sim_rapier_x_realtime", 200.0, false),
 ];
 
+/// The most frames `bench` times (about a minute of frames).
+const MAX_BENCH_FRAMES: usize = 10_000;
+
 fn bench(out: &mut impl Write, json: bool, frames: usize) -> Result<()> {
-    if frames == 0 {
-        anyhow::bail!("--frames must be at least 1");
+    if !(1..=MAX_BENCH_FRAMES).contains(&frames) {
+        anyhow::bail!("frames = {frames}: must be 1 to {MAX_BENCH_FRAMES}");
     }
     if cfg!(debug_assertions) {
         eprintln!(
@@ -733,6 +849,7 @@ fn map_axis(flag: &str, text: &str) -> Result<(String, f64, f64, usize)> {
 }
 
 fn map(args: &ModelArgs, x: &str, y: &str, format: MapFormat, out: &std::path::Path) -> Result<()> {
+    check_output(out, matches!(format, MapFormat::Png))?;
     let (name, model) = build_model(args)?;
     let (x_name, load_min, load_max, loads) = map_axis("--x", x)?;
     if x_name != "load" {
@@ -774,14 +891,10 @@ fn map(args: &ModelArgs, x: &str, y: &str, format: MapFormat, out: &std::path::P
             None => anyhow::bail!("a map row was not computed"),
         }
     }
-    let write_error =
-        |e: &dyn std::fmt::Display| anyhow::anyhow!("cannot write {}: {e}", out.display());
     match format {
         MapFormat::Csv => {
-            let file = std::fs::File::create(out).map_err(|e| write_error(&e))?;
-            let mut file = std::io::BufWriter::new(file);
             let grid = spec.load_grid()?;
-            let mut write = || -> std::io::Result<()> {
+            write_atomically(out, |file| {
                 writeln!(file, "load,{y_name},state,growth_rate")?;
                 for row in &complete {
                     for (p, cell) in grid.iter().zip(&row.cells) {
@@ -794,9 +907,8 @@ fn map(args: &ModelArgs, x: &str, y: &str, format: MapFormat, out: &std::path::P
                         )?;
                     }
                 }
-                file.flush()
-            };
-            write().map_err(|e| write_error(&e))?;
+                Ok(())
+            })?;
         }
         MapFormat::Png => {
             let scale = (512 / loads.max(values)).max(1);
@@ -811,7 +923,7 @@ fn map(args: &ModelArgs, x: &str, y: &str, format: MapFormat, out: &std::path::P
             let height = u32::try_from(height)?;
             let image = image::RgbaImage::from_raw(width, height, bytes)
                 .ok_or_else(|| anyhow::anyhow!("the map picture has the wrong size"))?;
-            image.save(out).map_err(|e| write_error(&e))?;
+            write_png(out, &image)?;
         }
     }
     Ok(())

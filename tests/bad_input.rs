@@ -216,7 +216,7 @@ const CLI: &[Cli] = &[
             "--out",
             "/nonexistent-dir/x.png",
         ],
-        "cannot write /nonexistent-dir/x.png",
+        "the folder /nonexistent-dir does not exist",
     ),
     refused(
         &[
@@ -421,9 +421,12 @@ const CLI: &[Cli] = &[
             "--out",
             "/nonexistent-dir/m.csv",
         ],
-        "cannot write /nonexistent-dir/m.csv",
+        "the folder /nonexistent-dir does not exist",
     ),
-    refused(&["bench", "--frames", "0"], "--frames must be at least 1"),
+    refused(
+        &["bench", "--frames", "0"],
+        "frames = 0: must be 1 to 10000",
+    ),
     refused(&["bench", "--frames", "many"], "invalid value"),
     // Extremes with an answer.
     answered(&["critical", "--preset", "roller", "--set", "load=1e6"], ""),
@@ -554,6 +557,55 @@ const CLI: &[Cli] = &[
             "/dev/null",
         ],
         "too many for so narrow a range",
+    ),
+    // Messages that name what is wrong, on one readable line.
+    refused(
+        &["critical"],
+        "required arguments were not provided: --preset <PRESET>",
+    ),
+    refused(
+        &[
+            "snapshot", "--preset", "roller", "--size", "-640x480", "--out", "x.png",
+        ],
+        "size = -640x480: must be WIDTHxHEIGHT",
+    ),
+    refused(
+        &["critical", "--preset", "roller", "--set", "n\x1bu\tx=1"],
+        "unknown key",
+    ),
+    refused(
+        &["critical", "--preset", "roller", "--set", "n\u{1b}u=1"],
+        "unknown key 'n\\u{1b}u'",
+    ),
+    // Counts that would exhaust memory.
+    refused(
+        &["bench", "--frames", "18446744073709551615"],
+        "frames = 18446744073709551615: must be 1 to 10000",
+    ),
+    refused(
+        &["bench", "--frames", "1000000000000"],
+        "must be 1 to 10000",
+    ),
+    // Output checked before any work: only PNG pictures, an existing folder.
+    refused(
+        &["snapshot", "--preset", "roller", "--out", "picture.jpg"],
+        "pictures are written as PNG; name the file *.png",
+    ),
+    refused(
+        &[
+            "map",
+            "--preset",
+            "roller",
+            "--x",
+            "load:0:8:8",
+            "--y",
+            "nu:0.1:0.2:2",
+            "--format",
+            "png",
+            "--out",
+            "/no/such/folder/map.png",
+        ],
+        "the folder /no/such/folder does not exist",
     ),
 ];
 
@@ -783,4 +835,77 @@ fn runs_end_with_a_status_and_finite_states() {
             "{name} {sets:?} {engine:?}"
         );
     }
+}
+
+/// A refused or failed write leaves an existing file as it was: the output
+/// is checked before any work and written beside its destination, renamed
+/// into place only when complete.
+#[test]
+fn a_refused_output_leaves_the_existing_file_alone() {
+    let dir = std::env::temp_dir().join(format!("zl-keep-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let jpg = dir.join("existing.jpg");
+    std::fs::write(&jpg, "the user's picture").unwrap();
+    let out = run_limited(&[
+        "snapshot",
+        "--preset",
+        "roller",
+        "--out",
+        jpg.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(std::fs::read_to_string(&jpg).unwrap(), "the user's picture");
+    // A completed map replaces the file whole, leaving no temporary behind.
+    let csv = dir.join("map.csv");
+    std::fs::write(&csv, "old").unwrap();
+    let out = run_limited(&[
+        "map",
+        "--preset",
+        "roller",
+        "--x",
+        "load:0:8:4",
+        "--y",
+        "nu:0.1:0.2:2",
+        "--out",
+        csv.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert!(text.starts_with("load,nu,state,growth_rate\n"), "{text}");
+    assert_eq!(text.lines().count(), 1 + 4 * 2);
+    let names: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names.len(), 2, "{names:?}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A reader that stops early (`simulate | head -1`) ends the command quietly
+/// with status 0, as Unix tools do, instead of "error: Broken pipe".
+#[test]
+fn a_closed_pipe_ends_quietly() {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+        .args(["simulate", "--preset", "roller", "--duration", "200"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = [0u8; 64];
+    child
+        .stdout
+        .as_mut()
+        .unwrap()
+        .read_exact(&mut first)
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(stderr.is_empty(), "{stderr}");
 }
