@@ -577,6 +577,33 @@ const CLI: &[Cli] = &[
         &["critical", "--preset", "roller", "--set", "n\u{1b}u=1"],
         "unknown key 'n\\u{1b}u'",
     ),
+    // Values whose derived quantities the analysis cannot square: refused,
+    // naming the key, numbers in exponent form (never inf, never 300 digits).
+    refused(
+        &[
+            "critical", "--preset", "roller", "--set", "mu=1e308", "--set", "R=1e308",
+        ],
+        "mu = 1e308: makes the load P beyond what the analysis can square",
+    ),
+    refused(
+        &["critical", "--preset", "roller", "--set", "V=1e-300"],
+        "V = 1e-300: makes the slip damping mu R l^2 / V beyond",
+    ),
+    refused(
+        &["critical", "--preset", "ziegler-1952", "--set", "k1=1e300"],
+        "k1 = 1e300: makes the stiffness k1 beyond",
+    ),
+    refused(
+        &["critical", "--preset", "roller", "--set", "r=1e-300"],
+        "r = 1e-300: makes the roller's spin inertia m3 r^2 / 2 beyond",
+    ),
+    refused(
+        &[
+            "snapshot", "--preset", "roller", "--set", "nu=1e-9", "--set", "V=1e-300", "--out",
+            "x.png",
+        ],
+        "V = 1e-300: makes the slip damping",
+    ),
     // Counts that would exhaust memory.
     refused(
         &["bench", "--frames", "18446744073709551615"],

@@ -22,7 +22,7 @@ pub use resolution::resolution_warning;
 pub use roots::{Poly, aberth};
 pub use stability::{RELATIVE_TOLERANCE, Stability, State, classify};
 
-use crate::model::ModelError;
+use crate::model::{ModelError, Shown};
 
 /// Complex eigenvalue, in 1/s.
 pub type C64 = nalgebra::Complex<f64>;
@@ -32,9 +32,9 @@ pub type C64 = nalgebra::Complex<f64>;
 pub enum AnalysisError {
     #[error(transparent)]
     Model(#[from] ModelError),
-    #[error("the eigenvalue iteration did not converge at load p = {load}")]
+    #[error("the eigenvalue iteration did not converge at load p = {}", Shown(*.load))]
     NotConverged { load: f64 },
-    #[error("{what} = {value}: {allowed}")]
+    #[error("{what} = {}: {allowed}", Shown(*.value))]
     BadRange {
         what: &'static str,
         value: f64,

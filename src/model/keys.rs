@@ -2,7 +2,7 @@
 //! every SI parameter and the paper's dimensionless groups, with units and ranges.
 
 use super::ModelError;
-use super::params::{Load, Model, Rod};
+use super::params::{LARGEST_DERIVED, Load, Model, Rod};
 
 /// Which loads a key exists for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -147,6 +147,16 @@ pub fn apply_assignments(
     for (spec, value) in order {
         check_sign(spec, value)?;
         (spec.set)(model, value);
+        if let Some((what, _)) = model.beyond_analysis() {
+            return Err(ModelError::invalid(
+                spec.key,
+                value,
+                &format!(
+                    "makes {what} beyond what the analysis can square (sizes {:e} to {LARGEST_DERIVED:e})",
+                    1.0 / LARGEST_DERIVED
+                ),
+            ));
+        }
     }
     model.validate()
 }

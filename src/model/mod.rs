@@ -18,10 +18,26 @@ pub use linear::{LinearModel, linearize};
 pub use params::{Column, Inertia, Load, Model, Rod, Roller, SpinInertia};
 pub use presets::{PRESETS, Preset, preset};
 
+/// A number in a message: as Rust writes it for everyday magnitudes, in
+/// exponent form beyond them, so no message prints 300 digits.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Shown(pub f64);
+
+impl std::fmt::Display for Shown {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let magnitude = self.0.abs();
+        if magnitude != 0.0 && magnitude.is_finite() && !(1e-4..1e7).contains(&magnitude) {
+            write!(f, "{:e}", self.0)
+        } else {
+            write!(f, "{}", self.0)
+        }
+    }
+}
+
 /// A parameter value that makes no model, named so the user can fix it.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ModelError {
-    #[error("{key} = {value}: {allowed}")]
+    #[error("{key} = {}: {allowed}", Shown(*.value))]
     Invalid {
         key: String,
         value: f64,

@@ -248,6 +248,47 @@ impl Model {
         }
     }
 
+    /// The first derived quantity beyond [`LARGEST_DERIVED`] in size (or not
+    /// finite), if any: the load, the load p, the inertias, the spring
+    /// stiffnesses, the dampers and the roller's slip damping `mu R / V`;
+    /// or a roller's spin inertia below its inverse.
+    /// The analysis squares such numbers (norms, the characteristic
+    /// polynomial), so larger ones would overflow to infinity on screen.
+    #[must_use]
+    pub fn beyond_analysis(&self) -> Option<(&'static str, f64)> {
+        let inertia = self.inertia();
+        let mut quantities = vec![
+            ("the load P", self.follower_force_n()),
+            ("the load p = P l/k", self.load_p()),
+            ("the inertia about O", inertia.a_kg_m2),
+            ("the coupling inertia", inertia.b_kg_m2),
+            ("the inertia about A", inertia.c_kg_m2),
+            ("the stiffness k1", self.column.k1_nm_per_rad),
+            ("the stiffness k2", self.column.k2_nm_per_rad),
+            ("the damper c1", self.column.c1_nms_per_rad),
+            ("the damper c2", self.column.c2_nms_per_rad),
+        ];
+        if let Some(roller) = self.roller()
+            && roller.band_speed_m_per_s > 0.0
+        {
+            let l = self.column.rod1.length_m.max(self.column.rod2.length_m);
+            quantities.push((
+                "the slip damping mu R l^2 / V",
+                roller.friction_force_n() / roller.band_speed_m_per_s * l * l,
+            ));
+        }
+        // A roller with mass spins with inertia: one that underflows leaves
+        // the mass matrix singular.
+        let spin_underflows = self.roller().is_some_and(|r| r.mass_kg > 0.0)
+            && inertia.spin_kg_m2 < 1.0 / LARGEST_DERIVED;
+        if spin_underflows {
+            return Some(("the roller's spin inertia m3 r^2 / 2", inertia.spin_kg_m2));
+        }
+        quantities
+            .into_iter()
+            .find(|&(_, value)| !value.is_finite() || value.abs() > LARGEST_DERIVED)
+    }
+
     /// Checks every parameter and the mass matrix; the error names the parameter.
     ///
     /// # Errors
@@ -299,6 +340,16 @@ impl Model {
                 non_negative("V", band_speed_m_per_s)?;
             }
         }
+        if let Some((what, value)) = self.beyond_analysis() {
+            return Err(ModelError::invalid(
+                what,
+                value,
+                &format!(
+                    "beyond what the analysis can square (sizes {:e} to {LARGEST_DERIVED:e})",
+                    1.0 / LARGEST_DERIVED
+                ),
+            ));
+        }
         let inertia = self.inertia();
         let det = inertia.a_kg_m2 * inertia.c_kg_m2 - inertia.b_kg_m2 * inertia.b_kg_m2;
         if !(inertia.a_kg_m2 > 0.0
@@ -314,6 +365,10 @@ impl Model {
         Ok(())
     }
 }
+
+/// The largest size of a derived quantity the analysis accepts: its square
+/// and products of two such stay far inside double precision.
+pub const LARGEST_DERIVED: f64 = 1e150;
 
 fn finite(key: &str, value: f64) -> Result<(), ModelError> {
     if value.is_finite() {

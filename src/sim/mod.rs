@@ -99,7 +99,7 @@ pub struct Simulation {
 pub enum SimError {
     #[error(transparent)]
     Model(#[from] ModelError),
-    #[error("{what} = {value}: {allowed}")]
+    #[error("{what} = {}: {allowed}", crate::model::Shown(*.value))]
     Bad {
         what: &'static str,
         value: f64,
