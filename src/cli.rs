@@ -385,6 +385,9 @@ fn locus_table(
     let (name, model) = build_model(args)?;
     let pencil = AffinePencil::new(&model)?;
     let locus = locus(&pencil, load_min, load_max, samples)?;
+    if let Some(warning) = resolution_warning(&pencil, &locus)? {
+        eprintln!("warning: {}", printable(&warning));
+    }
     let locus = &locus;
     let rows = (0..locus.loads.len())
         .filter(|&i| locus.on_grid[i])
@@ -889,6 +892,29 @@ fn map(args: &ModelArgs, x: &str, y: &str, format: MapFormat, out: &std::path::P
             Some(Ok(row)) => complete.push(row),
             Some(Err(reason)) => anyhow::bail!("--y {y}: no analysis there: {reason}"),
             None => anyhow::bail!("a map row was not computed"),
+        }
+    }
+    // The rows at both ends of the second axis and in its middle: where a
+    // singular limit (a tiny roller mass, a slow band) leaves the states to
+    // rounding, the map says so as `critical` does.
+    for row in [
+        complete.first(),
+        complete.get(complete.len() / 2),
+        complete.last(),
+    ]
+    .into_iter()
+    .flatten()
+    {
+        let model = spec.axis.apply(&spec.model, &spec.preset, row.value)?;
+        let pencil = AffinePencil::new(&model)?;
+        let bracket = bracketing_locus(&pencil, load_min, load_max)?;
+        if let Some(warning) = resolution_warning(&pencil, &bracket)? {
+            eprintln!(
+                "warning: at {y_name} = {}: {}",
+                zieglerlab::model::Shown(row.value),
+                printable(&warning)
+            );
+            break;
         }
     }
     match format {

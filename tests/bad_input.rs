@@ -604,6 +604,46 @@ const CLI: &[Cli] = &[
         ],
         "V = 1e-300: makes the slip damping",
     ),
+    // A roller of tiny mass: its spin mode is so fast that rounding decides
+    // the slow modes' states; every command that shows states says so.
+    answered(
+        &["critical", "--preset", "roller", "--set", "nu=1e-16"],
+        "the stability is not resolved",
+    ),
+    answered(
+        &["critical", "--preset", "roller", "--set", "nu=1e-100"],
+        "a ratio beyond 1e12",
+    ),
+    answered(
+        &[
+            "locus",
+            "--preset",
+            "roller",
+            "--set",
+            "nu=1e-16",
+            "--load-min",
+            "0",
+            "--load-max",
+            "8",
+            "--samples",
+            "50",
+        ],
+        "the stability is not resolved",
+    ),
+    answered(
+        &[
+            "map",
+            "--preset",
+            "roller",
+            "--x",
+            "load:0:8:8",
+            "--y",
+            "nu:1e-16:2e-16:2",
+            "--out",
+            "/dev/stdout",
+        ],
+        "warning: at nu = 1e-16: the stability is not resolved",
+    ),
     // Counts that would exhaust memory.
     refused(
         &["bench", "--frames", "18446744073709551615"],

@@ -8,6 +8,9 @@ use super::locus::Locus;
 use super::pencil::AffinePencil;
 use super::stability::{RELATIVE_TOLERANCE, classify_with};
 
+/// Beyond this ratio of the fastest to the slowest mode, rounding of the
+/// fast one (about 1e-16 of it) reaches the slow ones' growth rates.
+const LARGEST_MODE_SPAN: f64 = 1e12;
 /// The sensitivity check classifies again with a tolerance this much finer.
 const FINER_TOLERANCE_FACTOR: f64 = 1e-2;
 /// Eigenvalues closer than this (relative to their size) are a double root.
@@ -54,6 +57,17 @@ pub fn resolution_warning(
         .map(|z| z.norm())
         .filter(|&r| r > 0.0)
         .fold(f64::INFINITY, f64::min);
+    let fastest = spectrum
+        .eigenvalues
+        .iter()
+        .map(|z| z.norm())
+        .fold(0.0, f64::max);
+    if slowest.is_finite() && fastest > LARGEST_MODE_SPAN * slowest {
+        return Ok(Some(format!(
+            "the stability is not resolved: at p = {} the modes span {fastest:.1e} 1/s to {slowest:.1e} 1/s, a ratio beyond {LARGEST_MODE_SPAN:.0e}, so the slow modes' growth rates are left to rounding (a mode far faster than the others, such as the spin of a roller of tiny mass nu)",
+            load_label(stiffest)
+        )));
+    }
     if slowest.is_finite() && tolerance > SLOWEST_MODE_FRACTION * slowest {
         return Ok(Some(format!(
             "the stability is not resolved: at p = {} the modes span {:.0e} 1/s to {slowest:.1e} 1/s, so growth rates below {tolerance:.1e} 1/s are lost to rounding (the model is near a singular limit: a very slow band V, or very large damping)",
@@ -76,6 +90,12 @@ pub fn resolution_warning(
             (coarse.state != fine.state && isolated).then_some(p)
         })
         .collect();
+    if let Some(p) = methods_disagree(pencil, locus)? {
+        return Ok(Some(format!(
+            "the stability is not resolved: at p = {} the tracked roots and the Schur decomposition disagree on the state (rounding decides it: a mode far faster than the others, such as the spin of a roller of tiny mass nu); the critical loads shown may be spurious or missing",
+            load_label(p)
+        )));
+    }
     let (Some(low), Some(high)) = (undecided.first(), undecided.last()) else {
         return Ok(None);
     };
@@ -84,4 +104,64 @@ pub fn resolution_warning(
         load_label(*low),
         load_label(*high)
     )))
+}
+
+/// Samples compared between the two eigenvalue paths: evenly spaced ones,
+/// and those next to a change of the tracked state, at most this many.
+const CROSS_CHECKED_SAMPLES: usize = 48;
+
+/// The first load among a few samples of `locus` where the state of the
+/// tracked roots (polynomial continuation) differs from the state of the
+/// Schur path, away from double roots. Two independent methods agreeing is
+/// the evidence that rounding does not decide the state; where they do not,
+/// it does.
+fn methods_disagree(pencil: &AffinePencil, locus: &Locus) -> Result<Option<f64>, AnalysisError> {
+    let n = locus.loads.len();
+    let state = |i: usize| {
+        let moving = locus.moving_at(i);
+        let stability = classify_with(
+            &moving,
+            pencil.scale_per_s(locus.loads[i]),
+            RELATIVE_TOLERANCE,
+        );
+        (stability, moving)
+    };
+    let mut samples: Vec<usize> = Vec::with_capacity(CROSS_CHECKED_SAMPLES);
+    let mut previous = None;
+    for i in 0..n {
+        let now = state(i).0.state;
+        if previous.is_some_and(|p| p != now) {
+            samples.extend([i - 1, i]);
+        }
+        previous = Some(now);
+        if samples.len() >= CROSS_CHECKED_SAMPLES / 2 {
+            break;
+        }
+    }
+    let stride = (n / (CROSS_CHECKED_SAMPLES / 2)).max(1);
+    samples.extend((0..n).step_by(stride));
+    samples.sort_unstable();
+    samples.dedup();
+    for i in samples {
+        let (tracked, moving) = state(i);
+        let d = tracked.dominant;
+        let isolated = moving
+            .iter()
+            .filter(|&&z| z != d)
+            .all(|z| (z - d).norm() > NEAR_DOUBLE_ROOT * z.norm().max(d.norm()));
+        if !isolated {
+            continue;
+        }
+        let p = locus.loads[i];
+        let spectrum = pencil.spectrum(p)?;
+        let schur = classify_with(
+            &spectrum.eigenvalues,
+            spectrum.scale_per_s,
+            RELATIVE_TOLERANCE,
+        );
+        if schur.state != tracked.state {
+            return Ok(Some(p));
+        }
+    }
+    Ok(None)
 }
