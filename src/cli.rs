@@ -405,16 +405,25 @@ fn locus_table(
             }
         }
         LocusFormat::Json => {
-            let rows: Vec<_> = rows
-                .map(|(load, branch, z)| json!({"load": load, "branch": branch, "re": z.re, "im": z.im}))
-                .collect();
-            let value = json!({
-                "preset": name,
-                "load_axis": LOAD_AXIS,
-                "structural_zero_branches": locus.structural_zeros,
-                "rows": rows,
-            });
-            writeln!(out, "{}", serde_json::to_string(&value)?)?;
+            // Streamed row by row, as the CSV is (a million samples would
+            // otherwise be one document in memory); the keys in serde_json's
+            // order, so the text is what one `to_string` of it would be.
+            write!(
+                out,
+                "{{\"load_axis\":{},\"preset\":{},\"rows\":[",
+                serde_json::to_string(LOAD_AXIS)?,
+                serde_json::to_string(&name)?
+            )?;
+            for (k, (load, branch, z)) in rows.enumerate() {
+                let row = json!({"load": load, "branch": branch, "re": z.re, "im": z.im});
+                let separator = if k == 0 { "" } else { "," };
+                write!(out, "{separator}{}", serde_json::to_string(&row)?)?;
+            }
+            writeln!(
+                out,
+                "],\"structural_zero_branches\":{}}}",
+                locus.structural_zeros
+            )?;
         }
     }
     Ok(())
