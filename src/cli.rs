@@ -11,7 +11,7 @@ use serde_json::json;
 use std::sync::atomic::{AtomicBool, AtomicUsize};
 
 use zieglerlab::analysis::{
-    AffinePencil, DEFAULT_LOAD_MAX, MapSpec, RowResult, bracketing_locus, compute_map,
+    AffinePencil, DEFAULT_LOAD_MAX, MapSpec, Row, RowResult, bracketing_locus, compute_map,
     critical_loads_along, locus, resolution_warning,
 };
 use zieglerlab::app::{Panel, Settings, ZieglerApp};
@@ -260,6 +260,20 @@ pub fn run() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// A progress bar of `len` steps on stderr, drawn only when stderr is a
+/// terminal (indicatif's default target hides itself otherwise), so piped
+/// and scripted runs see nothing.
+fn progress_bar(len: u64, what: &str) -> indicatif::ProgressBar {
+    let bar = indicatif::ProgressBar::new(len);
+    if let Ok(style) = indicatif::ProgressStyle::with_template(
+        "{bar:40} {pos}/{len} {msg} ({elapsed}, about {eta} left)",
+    ) {
+        bar.set_style(style);
+    }
+    bar.set_message(what.to_owned());
+    bar
 }
 
 /// `text` with control characters (a key typed with a tab or an escape
@@ -519,12 +533,20 @@ fn snapshot(
     };
     let mut app = ZieglerApp::new(settings).map_err(anyhow::Error::msg)?;
     // Whole 1/60 s frames, as the app advances: the same picture every time.
-    let frames = (time * 60.0).round();
-    let mut frame = 0.0;
-    while frame < frames {
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "time is checked to lie in [0, 100000] s: at most 6e6 frames"
+    )]
+    let frames = (time * 60.0).round() as u64;
+    let progress = progress_bar(frames, "simulated frames");
+    for frame in 0..frames {
         app.advance(1.0 / 60.0);
-        frame += 1.0;
+        if frame % 600 == 0 {
+            progress.set_position(frame);
+        }
     }
+    progress.finish_and_clear();
     if matches!(panel, Panel::Map | Panel::Paradox) {
         app.complete_background_work();
     }
@@ -887,11 +909,14 @@ fn map(args: &ModelArgs, x: &str, y: &str, format: MapFormat, out: &std::path::P
     let rows: std::sync::Mutex<Vec<Option<RowResult>>> = std::sync::Mutex::new(vec![None; values]);
     let threads = std::thread::available_parallelism().map_or(2, std::num::NonZero::get);
     let (cancel, done) = (AtomicBool::new(false), AtomicUsize::new(0));
+    let progress = progress_bar(values as u64, "map rows");
     compute_map(&spec, threads, &cancel, &done, &|j, row| {
         if let Ok(mut rows) = rows.lock() {
             rows[j] = Some(row);
         }
+        progress.inc(1);
     })?;
+    progress.finish_and_clear();
     let rows = rows
         .into_inner()
         .map_err(|_| anyhow::anyhow!("a map thread failed"))?;
@@ -903,29 +928,7 @@ fn map(args: &ModelArgs, x: &str, y: &str, format: MapFormat, out: &std::path::P
             None => anyhow::bail!("a map row was not computed"),
         }
     }
-    // The rows at both ends of the second axis and in its middle: where a
-    // singular limit (a tiny roller mass, a slow band) leaves the states to
-    // rounding, the map says so as `critical` does.
-    for row in [
-        complete.first(),
-        complete.get(complete.len() / 2),
-        complete.last(),
-    ]
-    .into_iter()
-    .flatten()
-    {
-        let model = spec.axis.apply(&spec.model, &spec.preset, row.value)?;
-        let pencil = AffinePencil::new(&model)?;
-        let bracket = bracketing_locus(&pencil, load_min, load_max)?;
-        if let Some(warning) = resolution_warning(&pencil, &bracket)? {
-            eprintln!(
-                "warning: at {y_name} = {}: {}",
-                zieglerlab::model::Shown(row.value),
-                printable(&warning)
-            );
-            break;
-        }
-    }
+    warn_if_unresolved(&spec, &complete, &y_name)?;
     match format {
         MapFormat::Csv => {
             let grid = spec.load_grid()?;
@@ -959,6 +962,30 @@ fn map(args: &ModelArgs, x: &str, y: &str, format: MapFormat, out: &std::path::P
             let image = image::RgbaImage::from_raw(width, height, bytes)
                 .ok_or_else(|| anyhow::anyhow!("the map picture has the wrong size"))?;
             write_png(out, &image)?;
+        }
+    }
+    Ok(())
+}
+
+/// Checks the resolution of the map's rows at both ends of the second axis
+/// and in its middle: where a singular limit (a tiny roller mass, a slow
+/// band) leaves the states to rounding, the map says so as `critical` does.
+fn warn_if_unresolved(spec: &MapSpec, rows: &[&Row], y_name: &str) -> Result<()> {
+    let (load_min, load_max) = spec.load_range;
+    for row in [rows.first(), rows.get(rows.len() / 2), rows.last()]
+        .into_iter()
+        .flatten()
+    {
+        let model = spec.axis.apply(&spec.model, &spec.preset, row.value)?;
+        let pencil = AffinePencil::new(&model)?;
+        let bracket = bracketing_locus(&pencil, load_min, load_max)?;
+        if let Some(warning) = resolution_warning(&pencil, &bracket)? {
+            eprintln!(
+                "warning: at {y_name} = {}: {}",
+                zieglerlab::model::Shown(row.value),
+                printable(&warning)
+            );
+            break;
         }
     }
     Ok(())
