@@ -104,10 +104,14 @@ pub fn run(frames: usize) -> Result<Report> {
     })
 }
 
-/// The roller map of the app's stability-map tab, 256x256, on every core.
-fn map_ms() -> Result<f64> {
+/// The map of the app's stability-map tab for `roller`: 256 loads in
+/// [0, 8] against 256 values of nu in [0.005, 1].
+///
+/// # Errors
+/// None in practice (the preset and its axis exist).
+pub fn roller_map_spec() -> Result<MapSpec> {
     let model = preset("roller")?.model();
-    let spec = MapSpec {
+    Ok(MapSpec {
         axis: Axis::parse("nu", &model, "roller")?,
         model,
         preset: "roller".to_owned(),
@@ -115,7 +119,12 @@ fn map_ms() -> Result<f64> {
         loads: 256,
         axis_range: (0.005, 1.0),
         values: 256,
-    };
+    })
+}
+
+/// [`roller_map_spec`] on every core.
+fn map_ms() -> Result<f64> {
+    let spec = roller_map_spec()?;
     let threads = std::thread::available_parallelism().map_or(2, std::num::NonZero::get);
     let secs = median_secs(3, || {
         let (cancel, done) = (AtomicBool::new(false), AtomicUsize::new(0));

@@ -1,6 +1,7 @@
 //! Speed of a stability map: 256 x 256 cells of `roller` (nu against the
 //! load), every row with its critical loads, on every core, as `zieglerlab
-//! map` and the app's map tab compute it. Target: <= 1 s on 2 cores.
+//! map` and the app's map tab compute it (the spec `zieglerlab bench` times as
+//! `map_ms`). Target: <= 300 ms on 2 cores.
 
 #![expect(
     clippy::unwrap_used,
@@ -10,20 +11,11 @@
 use std::sync::atomic::{AtomicBool, AtomicUsize};
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use zieglerlab::analysis::{MapSpec, compute_map};
-use zieglerlab::model::{Axis, preset};
+use zieglerlab::analysis::compute_map;
+use zieglerlab::bench::roller_map_spec;
 
 fn benches(c: &mut Criterion) {
-    let model = preset("roller").unwrap().model();
-    let spec = MapSpec {
-        axis: Axis::parse("nu", &model, "roller").unwrap(),
-        model,
-        preset: "roller".to_owned(),
-        load_range: (0.0, 8.0),
-        loads: 256,
-        axis_range: (0.005, 1.0),
-        values: 256,
-    };
+    let spec = roller_map_spec().unwrap();
     let threads = std::thread::available_parallelism().map_or(2, std::num::NonZero::get);
     let mut group = c.benchmark_group("map");
     group.sample_size(10);
