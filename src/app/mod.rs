@@ -8,6 +8,7 @@ mod pace;
 mod paradox;
 mod plots;
 mod scene;
+mod store_check;
 mod stored;
 mod theme;
 
@@ -35,6 +36,8 @@ const LOCUS_SAMPLES: usize = BRACKET_SAMPLES;
 const KICK_RAD: f64 = 0.01;
 /// The key the settings are stored under.
 const SETTINGS_KEY: &str = "zieglerlab-settings";
+/// eframe's name for the app (its storage folder).
+const APP_ID: &str = "zieglerlab";
 
 /// What persists between runs of the app.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -356,6 +359,14 @@ impl ZieglerApp {
     }
 
     /// The running simulation.
+    /// Adds `text` to what the message line tells the user.
+    pub fn tell(&mut self, text: String) {
+        self.message = Some(match self.message.take() {
+            Some(earlier) => format!("{earlier}; {text}"),
+            None => text,
+        });
+    }
+
     /// Shows `tab` in the lower half of the window.
     pub fn show_tab(&mut self, tab: Tab) {
         self.lower = tab;
@@ -1216,6 +1227,11 @@ impl eframe::App for ZieglerApp {
 /// # Errors
 /// When no window or graphics context can be created.
 pub fn run() -> eframe::Result {
+    // eframe restores its own entries (zoom, window) before any of ours runs:
+    // they are checked first, so a bad one cannot crash every launch.
+    let notice = eframe::storage_dir(APP_ID)
+        .map(|dir| dir.join("app.ron"))
+        .and_then(|path| store_check::check_stored_file(&path));
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("zieglerlab")
@@ -1224,9 +1240,15 @@ pub fn run() -> eframe::Result {
         ..Default::default()
     };
     eframe::run_native(
-        "zieglerlab",
+        APP_ID,
         options,
-        Box::new(|cc| Ok(Box::new(ZieglerApp::from_storage(cc.storage)))),
+        Box::new(move |cc| {
+            let mut app = ZieglerApp::from_storage(cc.storage);
+            if let Some(notice) = notice {
+                app.tell(notice);
+            }
+            Ok(Box::new(app))
+        }),
     )
 }
 

@@ -1,0 +1,209 @@
+//! Checks eframe's stored file before the window opens: entries that would
+//! crash or cripple the start (a NaN or absurd zoom factor, a window of no
+//! size) are dropped, and a file that cannot be read is copied aside before
+//! eframe's autosave can overwrite it. Says what it did, in words.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use super::SETTINGS_KEY;
+
+/// The zoom factors egui's own settings offer.
+const ZOOM_RANGE: std::ops::RangeInclusive<f64> = 0.2..=5.0;
+/// Window sizes a stored geometry may ask for, in points.
+const WINDOW_POINTS: std::ops::RangeInclusive<f64> = 64.0..=65_536.0;
+
+/// The number written after `key` in a stored entry (`zoom_factor:1.0`),
+/// as Rust reads it (`NaN` and `inf` included); `None` without the key.
+fn number_after(text: &str, key: &str) -> Option<f64> {
+    let start = text.find(key)? + key.len();
+    let rest = &text[start..];
+    let end = rest.find([',', ')']).unwrap_or(rest.len());
+    let number = rest[..end].trim();
+    Some(number.parse::<f64>().unwrap_or(f64::NAN))
+}
+
+/// Why an entry of eframe's store must not reach the window, if it must not.
+fn harmful(key: &str, value: &str) -> Option<String> {
+    match key {
+        "egui" => number_after(value, "zoom_factor:")
+            .filter(|zoom| !ZOOM_RANGE.contains(zoom))
+            .map(|zoom| format!("the zoom factor {zoom} (allowed 0.2 to 5)")),
+        "window" => {
+            let size = value
+                .find("inner_size_points:")
+                .map_or("", |start| &value[start..]);
+            let sizes = [
+                number_after(size, "(x:"),
+                number_after(size, ",y:"),
+                number_after(value, "scale_factor:"),
+            ];
+            let [width, height, scale] = sizes.map(|n| n.unwrap_or(1.0));
+            let sound = WINDOW_POINTS.contains(&width)
+                && WINDOW_POINTS.contains(&height)
+                && scale.is_finite()
+                && scale > 0.0;
+            (!sound)
+                .then(|| format!("the window geometry {width} x {height} points at scale {scale}"))
+        }
+        _ => None,
+    }
+}
+
+/// A copy of `path` beside it, named with the time, that no autosave touches.
+fn keep_copy(path: &Path) -> std::io::Result<PathBuf> {
+    let secs = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    let copy = path.with_extension(format!("ron.unreadable-{secs}"));
+    std::fs::copy(path, &copy)?;
+    Ok(copy)
+}
+
+/// Checks and repairs eframe's store at `path` (`app.ron`) before eframe
+/// reads it. Returns what the user should be told, if anything.
+#[must_use]
+pub fn check_stored_file(path: &Path) -> Option<String> {
+    let text = std::fs::read_to_string(path).ok()?;
+    let mut entries: BTreeMap<String, String> = match ron::from_str(&text) {
+        Ok(entries) => entries,
+        Err(error) => {
+            return Some(match keep_copy(path) {
+                Ok(copy) => format!(
+                    "the stored state could not be read ({error}); a copy is kept at {}; starting from the defaults",
+                    copy.display()
+                ),
+                Err(copy_error) => format!(
+                    "the stored state could not be read ({error}) nor copied aside ({copy_error}); starting from the defaults"
+                ),
+            });
+        }
+    };
+    let dropped: Vec<String> = entries
+        .iter()
+        .filter_map(|(key, value)| {
+            harmful(key, value).map(|why| format!("{why} (eframe's '{key}' entry)"))
+        })
+        .collect();
+    let settings_unreadable = entries
+        .get(SETTINGS_KEY)
+        .is_some_and(|settings| super::stored::read(settings).is_err());
+    if dropped.is_empty() && !settings_unreadable {
+        return None;
+    }
+    let copy = keep_copy(path);
+    entries.retain(|key, value| harmful(key, value).is_none());
+    let mut note = Vec::new();
+    if !dropped.is_empty() {
+        let written = ron::ser::to_string_pretty(&entries, ron::ser::PrettyConfig::default())
+            .map_err(|e| e.to_string())
+            .and_then(|repaired| write_replacing(path, &repaired).map_err(|e| e.to_string()));
+        note.push(match written {
+            Ok(()) => format!("stored state: ignored {}", dropped.join(", ")),
+            Err(error) => format!(
+                "stored state: ignored {} (the file could not be rewritten: {error})",
+                dropped.join(", ")
+            ),
+        });
+    }
+    if settings_unreadable {
+        note.push("the stored settings could not be read".to_owned());
+    }
+    match copy {
+        Ok(copy) => note.push(format!("the original is kept at {}", copy.display())),
+        Err(error) => note.push(format!("no copy of the original could be kept ({error})")),
+    }
+    Some(note.join("; "))
+}
+
+/// Writes `text` to `path` through a temporary file in the same folder.
+fn write_replacing(path: &Path, text: &str) -> std::io::Result<()> {
+    let folder = path.parent().unwrap_or_else(|| Path::new("."));
+    let mut file = tempfile::NamedTempFile::new_in(folder)?;
+    std::io::Write::write_all(&mut file, text.as_bytes())?;
+    file.as_file().sync_all()?;
+    file.persist(path).map_err(|e| e.error)?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn store(dir: &Path, text: &str) -> PathBuf {
+        std::fs::create_dir_all(dir).unwrap();
+        let path = dir.join("app.ron");
+        std::fs::write(&path, text).unwrap();
+        path
+    }
+
+    fn dir(name: &str) -> PathBuf {
+        std::env::temp_dir().join(format!("zl-store-{name}-{}", std::process::id()))
+    }
+
+    const WINDOW: &str = "(normal_geometry:(outer_position_pixels:Some((x:0.0,y:0.0)),scale_factor:1.0,inner_size_points:(x:1280.0,y:800.0)),fullscreen:false,maximized:false)";
+
+    fn file(zoom: &str, window: &str) -> String {
+        let entries = BTreeMap::from([
+            (
+                "egui".to_owned(),
+                format!(
+                    "(options:(theme_preference:System,zoom_factor:{zoom},tessellation_options:(feathering:true)))"
+                ),
+            ),
+            ("window".to_owned(), window.to_owned()),
+        ]);
+        ron::to_string(&entries).unwrap()
+    }
+
+    #[test]
+    fn a_sound_file_is_left_alone() {
+        let dir = dir("sound");
+        let path = store(&dir, &file("1.0", WINDOW));
+        assert_eq!(check_stored_file(&path), None);
+        assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_bad_zoom_or_window_is_dropped_and_the_original_kept() {
+        for (zoom, window) in [
+            ("NaN", WINDOW),
+            ("0.0", WINDOW),
+            ("1e9", WINDOW),
+            ("1.0", &WINDOW.replace("x:1280.0", "x:NaN")),
+            ("1.0", &WINDOW.replace("y:800.0", "y:-5.0")),
+        ] {
+            let dir = dir("bad");
+            let original = file(zoom, window);
+            let path = store(&dir, &original);
+            let note = check_stored_file(&path).unwrap();
+            assert!(note.starts_with("stored state: ignored"), "{note}");
+            let repaired: BTreeMap<String, String> =
+                ron::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+            assert_eq!(repaired.len(), 1, "{zoom} {window}: {repaired:?}");
+            let copies: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
+            assert_eq!(copies.len(), 2);
+            let copy = copies
+                .into_iter()
+                .map(|e| e.unwrap().path())
+                .find(|p| p != &path)
+                .unwrap();
+            assert_eq!(std::fs::read_to_string(copy).unwrap(), original);
+            std::fs::remove_dir_all(&dir).unwrap();
+        }
+    }
+
+    #[test]
+    fn an_unreadable_file_is_copied_aside_and_said_so() {
+        let dir = dir("garbage");
+        let path = store(&dir, "{\"zieglerlab-settings\": \"(preset:");
+        let note = check_stored_file(&path).unwrap();
+        assert!(
+            note.contains("could not be read") && note.contains("a copy is kept at"),
+            "{note}"
+        );
+        assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 2);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
