@@ -655,7 +655,13 @@ fn render(
     let help = "no renderer could be created (a GPU, or Mesa's CPU GL: Debian packages libegl1 libegl-mesa0 libgl1-mesa-dri)";
     match rendered {
         Ok(Ok(image)) => Ok(image),
-        Ok(Err(error)) => anyhow::bail!("{help}: {error}"),
+        // The renderer exists (its creation panics otherwise): this is the
+        // drawing itself failing, e.g. a large picture timing out on a busy
+        // machine's CPU renderer.
+        Ok(Err(error)) if error.to_lowercase().contains("timeout") => anyhow::bail!(
+            "rendering timed out ({error}): Mesa's CPU renderer needs more time for a {width}x{height} picture on this machine; try a smaller --size or run it again when the machine is less busy"
+        ),
+        Ok(Err(error)) => anyhow::bail!("rendering failed: {error}"),
         Err(payload) => {
             let what = payload
                 .downcast_ref::<String>()
