@@ -565,10 +565,7 @@ fn check_output(out: &std::path::Path, png: bool) -> Result<()> {
     {
         anyhow::bail!("out = {shown}: pictures are written as PNG; name the file *.png");
     }
-    let folder = match out.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p,
-        _ => std::path::Path::new("."),
-    };
+    let folder = folder_of(out);
     if !folder.is_dir() {
         anyhow::bail!(
             "out = {shown}: the folder {} does not exist",
@@ -583,6 +580,14 @@ fn check_output(out: &std::path::Path, png: bool) -> Result<()> {
         return Ok(());
     }
     Ok(())
+}
+
+/// The folder `out` is written in (`.` for a bare file name).
+fn folder_of(out: &std::path::Path) -> &std::path::Path {
+    match out.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => std::path::Path::new("."),
+    }
 }
 
 /// Writes `out` whole or not at all: into a temporary file in the same
@@ -604,10 +609,7 @@ fn write_atomically(
             .and_then(|()| buffered.flush())
             .map_err(|e| error(&e));
     }
-    let folder = match out.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p,
-        _ => std::path::Path::new("."),
-    };
+    let folder = folder_of(out);
     let mut file = tempfile::NamedTempFile::new_in(folder).map_err(|e| error(&e))?;
     {
         let mut buffered = std::io::BufWriter::new(file.as_file_mut());
