@@ -466,6 +466,24 @@ const CLI: &[Cli] = &[
         ],
         "run stopped: too stiff for the reference integrator",
     ),
+    // A step size that collapses while the state is bounded is stiffness,
+    // not divergence (this once said "diverged at t = 0.000 s").
+    answered(
+        &[
+            "simulate",
+            "--preset",
+            "ziegler-1952",
+            "--set",
+            "a=1e12",
+            "--set",
+            "load=1e15",
+            "--duration",
+            "1",
+            "--engine",
+            "reference",
+        ],
+        "run stopped: too stiff for the reference integrator at t = 0.000 s: a very light roller or a stopped band (the rapier engine handles those), or a load or stiffness so large",
+    ),
     answered(
         &[
             "simulate",

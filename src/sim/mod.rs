@@ -63,7 +63,7 @@ impl std::fmt::Display for Status {
             Self::Diverged { t_secs } => write!(f, "diverged at t = {t_secs:.3} s"),
             Self::TooStiff { t_secs } => write!(
                 f,
-                "too stiff for the reference integrator at t = {t_secs:.3} s (a very light roller, a stopped band or a huge load); the rapier engine handles it"
+                "too stiff for the reference integrator at t = {t_secs:.3} s: a very light roller or a stopped band (the rapier engine handles those), or a load or stiffness so large that no step resolves the column's rates"
             ),
             Self::TooFast {
                 t_secs,
@@ -344,6 +344,11 @@ impl Simulation {
                 rate_rad_per_s,
             },
             Advance::Reached if within_bounds(&x) => Status::Running,
+            // Diverged means the state grew past its bounds; a step size that
+            // collapsed while the state is bounded is stiffness.
+            Advance::Collapsed if within_bounds(&x) && self.engine() == EngineKind::Reference => {
+                Status::TooStiff { t_secs }
+            }
             Advance::Reached | Advance::Collapsed => Status::Diverged { t_secs },
             Advance::TooStiff => Status::TooStiff { t_secs },
         };
