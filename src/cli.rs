@@ -575,10 +575,6 @@ fn check_output(out: &std::path::Path, png: bool) -> Result<()> {
     if out.is_dir() {
         anyhow::bail!("out = {shown}: is a folder, not a file");
     }
-    if !png && std::fs::metadata(out).is_ok_and(|m| !m.is_file()) {
-        // Text may go to a device or a pipe.
-        return Ok(());
-    }
     Ok(())
 }
 

@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use super::AnalysisError;
-use super::locus::{Locus, RESOLVED_STEPS, locus};
+use super::locus::{Locus, load_resolution, locus};
 use super::pencil::AffinePencil;
 use super::stability::{Stability, State, classify};
 
@@ -231,7 +231,7 @@ pub fn bracketing_locus(
     load_max: f64,
 ) -> Result<Locus, AnalysisError> {
     // A range only a few units in the last place wide holds fewer distinct loads.
-    let resolution = RESOLVED_STEPS * f64::EPSILON * load_max.abs();
+    let resolution = load_resolution(load_max);
     let samples = if load_max > load_min {
         #[expect(
             clippy::cast_possible_truncation,

@@ -8,7 +8,12 @@ use super::{AnalysisError, C64};
 
 /// Neighbouring grid loads must differ by at least this many units of
 /// `f64::EPSILON` relative to the range's end, so that every load is distinct.
-pub const RESOLVED_STEPS: f64 = 4.0;
+const RESOLVED_STEPS: f64 = 4.0;
+
+/// The smallest step between distinct loads of a range ending at `load_max`.
+pub(crate) fn load_resolution(load_max: f64) -> f64 {
+    RESOLVED_STEPS * f64::EPSILON * load_max.abs()
+}
 
 /// Largest number of evenly spaced loads a locus accepts.
 pub const MAX_SAMPLES: usize = 1_000_000;
@@ -96,7 +101,7 @@ pub fn load_grid(min: f64, max: f64, samples: usize) -> Result<Vec<f64>, Analysi
         reason = "sample counts are far below 2^52"
     )]
     let step = (max - min) / (samples - 1) as f64;
-    if step < RESOLVED_STEPS * f64::EPSILON * max.abs() {
+    if step < load_resolution(max) {
         #[expect(clippy::cast_precision_loss, reason = "a count shown in a message")]
         return bad(
             "samples",
@@ -213,7 +218,7 @@ pub fn locus(
 ) -> Result<Locus, AnalysisError> {
     let grid = load_grid(min, max, samples)?;
     // Never below a few units in the last place: p + step must move p.
-    let min_step = ((max - min) * MIN_STEP_FRACTION).max(RESOLVED_STEPS * f64::EPSILON * max.abs());
+    let min_step = ((max - min) * MIN_STEP_FRACTION).max(load_resolution(max));
     let mut first = pencil.spectrum(grid[0])?.eigenvalues;
     first.sort_by(|a, b| b.im.total_cmp(&a.im).then(b.re.total_cmp(&a.re)));
     let structural_zeros = pencil.structural_zeros();

@@ -6,7 +6,7 @@ use super::AnalysisError;
 use super::critical::load_label;
 use super::locus::Locus;
 use super::pencil::AffinePencil;
-use super::stability::{RELATIVE_TOLERANCE, classify_with};
+use super::stability::{RELATIVE_TOLERANCE, State, classify_with};
 
 /// Beyond this ratio of the fastest to the slowest mode, rounding of the
 /// fast one (about 1e-16 of it) reaches the slow ones' growth rates.
@@ -75,10 +75,9 @@ pub fn resolution_warning(
             spectrum.scale_per_s
         )));
     }
-    let undecided: Vec<f64> = (0..locus.loads.len())
-        .filter_map(|i| {
-            let p = locus.loads[i];
-            let scale = pencil.scale_per_s(p);
+    let samples: Vec<Sample> = (0..locus.loads.len())
+        .map(|i| {
+            let scale = pencil.scale_per_s(locus.loads[i]);
             let moving = locus.moving_at(i);
             let coarse = classify_with(&moving, scale, RELATIVE_TOLERANCE);
             let fine = classify_with(&moving, scale, RELATIVE_TOLERANCE * FINER_TOLERANCE_FACTOR);
@@ -87,10 +86,20 @@ pub fn resolution_warning(
                 .iter()
                 .filter(|&&z| z != d)
                 .all(|z| (z - d).norm() > NEAR_DOUBLE_ROOT * z.norm().max(d.norm()));
-            (coarse.state != fine.state && isolated).then_some(p)
+            Sample {
+                state: coarse.state,
+                fine_state: fine.state,
+                isolated,
+            }
         })
         .collect();
-    if let Some(p) = methods_disagree(pencil, locus)? {
+    let undecided: Vec<f64> = samples
+        .iter()
+        .zip(&locus.loads)
+        .filter(|(sample, _)| sample.state != sample.fine_state && sample.isolated)
+        .map(|(_, &p)| p)
+        .collect();
+    if let Some(p) = methods_disagree(pencil, locus, &samples)? {
         return Ok(Some(format!(
             "the stability is not resolved: at p = {} the tracked roots and the Schur decomposition disagree on the state (rounding decides it: a mode far faster than the others, such as the spin of a roller of tiny mass nu); the critical loads shown may be spurious or missing",
             load_label(p)
@@ -115,43 +124,26 @@ const CROSS_CHECKED_SAMPLES: usize = 48;
 /// Schur path, away from double roots. Two independent methods agreeing is
 /// the evidence that rounding does not decide the state; where they do not,
 /// it does.
-fn methods_disagree(pencil: &AffinePencil, locus: &Locus) -> Result<Option<f64>, AnalysisError> {
-    let n = locus.loads.len();
-    let state = |i: usize| {
-        let moving = locus.moving_at(i);
-        let stability = classify_with(
-            &moving,
-            pencil.scale_per_s(locus.loads[i]),
-            RELATIVE_TOLERANCE,
-        );
-        (stability, moving)
-    };
-    let mut samples: Vec<usize> = Vec::with_capacity(CROSS_CHECKED_SAMPLES);
-    let mut previous = None;
-    for i in 0..n {
-        let now = state(i).0.state;
-        if previous.is_some_and(|p| p != now) {
-            samples.extend([i - 1, i]);
+fn methods_disagree(
+    pencil: &AffinePencil,
+    locus: &Locus,
+    samples: &[Sample],
+) -> Result<Option<f64>, AnalysisError> {
+    let n = samples.len();
+    let mut checked: Vec<usize> = Vec::with_capacity(CROSS_CHECKED_SAMPLES);
+    for i in 1..n {
+        if samples[i].state != samples[i - 1].state {
+            checked.extend([i - 1, i]);
         }
-        previous = Some(now);
-        if samples.len() >= CROSS_CHECKED_SAMPLES / 2 {
+        if checked.len() >= CROSS_CHECKED_SAMPLES / 2 {
             break;
         }
     }
     let stride = (n / (CROSS_CHECKED_SAMPLES / 2)).max(1);
-    samples.extend((0..n).step_by(stride));
-    samples.sort_unstable();
-    samples.dedup();
-    for i in samples {
-        let (tracked, moving) = state(i);
-        let d = tracked.dominant;
-        let isolated = moving
-            .iter()
-            .filter(|&&z| z != d)
-            .all(|z| (z - d).norm() > NEAR_DOUBLE_ROOT * z.norm().max(d.norm()));
-        if !isolated {
-            continue;
-        }
+    checked.extend((0..n).step_by(stride));
+    checked.sort_unstable();
+    checked.dedup();
+    for i in checked.into_iter().filter(|&i| samples[i].isolated) {
         let p = locus.loads[i];
         let spectrum = pencil.spectrum(p)?;
         let schur = classify_with(
@@ -159,9 +151,18 @@ fn methods_disagree(pencil: &AffinePencil, locus: &Locus) -> Result<Option<f64>,
             spectrum.scale_per_s,
             RELATIVE_TOLERANCE,
         );
-        if schur.state != tracked.state {
+        if schur.state != samples[i].state {
             return Ok(Some(p));
         }
     }
     Ok(None)
+}
+
+/// One locus sample as the checks see it: its state at the classification's
+/// tolerance and at a 100 times finer one, and whether its dominant
+/// eigenvalue is clear of the others (not at a double root).
+struct Sample {
+    state: State,
+    fine_state: State,
+    isolated: bool,
 }

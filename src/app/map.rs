@@ -184,8 +184,8 @@ impl MapPanel {
                 == (&spec.axis, spec.axis_range, spec.load_range)
         };
         let (kept, previous) = match self.job.take() {
+            // Dropping the old job (at the end of this arm) cancels it.
             Some(mut old) => {
-                old.cancel.store(true, Ordering::Relaxed);
                 let texture = if same_axes(&old.spec) {
                     old.texture.take()
                 } else {

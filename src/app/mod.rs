@@ -358,7 +358,6 @@ impl ZieglerApp {
         self.message.as_deref()
     }
 
-    /// The running simulation.
     /// Adds `text` to what the message line tells the user.
     pub fn tell(&mut self, text: String) {
         self.message = Some(match self.message.take() {
@@ -372,6 +371,7 @@ impl ZieglerApp {
         self.lower = tab;
     }
 
+    /// The running simulation.
     #[must_use]
     pub fn simulation(&self) -> &Simulation {
         &self.sim

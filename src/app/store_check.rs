@@ -79,11 +79,13 @@ pub fn check_stored_file(path: &Path) -> Option<String> {
             });
         }
     };
-    let dropped: Vec<String> = entries
+    let harmful_entries: Vec<(String, String)> = entries
         .iter()
-        .filter_map(|(key, value)| {
-            harmful(key, value).map(|why| format!("{why} (eframe's '{key}' entry)"))
-        })
+        .filter_map(|(key, value)| harmful(key, value).map(|why| (key.clone(), why)))
+        .collect();
+    let dropped: Vec<String> = harmful_entries
+        .iter()
+        .map(|(key, why)| format!("{why} (eframe's '{key}' entry)"))
         .collect();
     let settings_unreadable = entries
         .get(SETTINGS_KEY)
@@ -92,7 +94,9 @@ pub fn check_stored_file(path: &Path) -> Option<String> {
         return None;
     }
     let copy = keep_copy(path);
-    entries.retain(|key, value| harmful(key, value).is_none());
+    for (key, _) in &harmful_entries {
+        entries.remove(key);
+    }
     let mut note = Vec::new();
     if !dropped.is_empty() {
         let written = ron::ser::to_string_pretty(&entries, ron::ser::PrettyConfig::default())

@@ -2,7 +2,7 @@
 //! every SI parameter and the paper's dimensionless groups, with units and ranges.
 
 use super::ModelError;
-use super::params::{LARGEST_DERIVED, Load, Model, Rod};
+use super::params::{Load, Model, Rod, analysis_range_text};
 
 /// Which loads a key exists for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -151,10 +151,7 @@ pub fn apply_assignments(
             return Err(ModelError::invalid(
                 spec.key,
                 value,
-                &format!(
-                    "makes {what} beyond what the analysis can square (sizes {:e} to {LARGEST_DERIVED:e})",
-                    1.0 / LARGEST_DERIVED
-                ),
+                &format!("makes {what} {}", analysis_range_text()),
             ));
         }
     }

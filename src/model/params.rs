@@ -341,14 +341,7 @@ impl Model {
             }
         }
         if let Some((what, value)) = self.beyond_analysis() {
-            return Err(ModelError::invalid(
-                what,
-                value,
-                &format!(
-                    "beyond what the analysis can square (sizes {:e} to {LARGEST_DERIVED:e})",
-                    1.0 / LARGEST_DERIVED
-                ),
-            ));
+            return Err(ModelError::invalid(what, value, &analysis_range_text()));
         }
         let inertia = self.inertia();
         let det = inertia.a_kg_m2 * inertia.c_kg_m2 - inertia.b_kg_m2 * inertia.b_kg_m2;
@@ -369,6 +362,14 @@ impl Model {
 /// The largest size of a derived quantity the analysis accepts: its square
 /// and products of two such stay far inside double precision.
 pub const LARGEST_DERIVED: f64 = 1e150;
+
+/// What [`Model::beyond_analysis`] allows, in words for a refusal.
+pub(crate) fn analysis_range_text() -> String {
+    format!(
+        "beyond what the analysis can square (sizes {:e} to {LARGEST_DERIVED:e})",
+        1.0 / LARGEST_DERIVED
+    )
+}
 
 fn finite(key: &str, value: f64) -> Result<(), ModelError> {
     if value.is_finite() {
