@@ -4,7 +4,8 @@
 use serde::Serialize;
 
 use super::AnalysisError;
-use super::locus::{Locus, load_resolution, locus};
+use super::C64;
+use super::locus::{Locus, eigenvalues_near, load_resolution, locus};
 use super::pencil::AffinePencil;
 use super::stability::{Stability, State, classify};
 
@@ -46,32 +47,97 @@ fn width_tolerance(a: f64, b: f64) -> f64 {
     RELATIVE_LOAD_TOLERANCE * a.abs().max(b.abs()).max(f64::MIN_POSITIVE)
 }
 
-/// Every transition in `[a, b]` whose ends have states `sa != sb`, by
-/// bisection on the state. Exact at square-root branch points (eigenvalues
-/// meeting on an axis), where the state flips with no tolerance band.
+/// The polynomial path bisects to this relative width of the load bracket,
+/// far wider than the band around a double root where rounding decides the
+/// state (about 1e-13 here), so both paths read the bracket's ends alike.
+const RELATIVE_FAST_WIDTH: f64 = 1e-9;
+
+/// A load bracket with different states at its ends.
+#[derive(Clone, Copy, Debug)]
+struct Bracket {
+    a: f64,
+    sa: State,
+    b: f64,
+    sb: State,
+}
+
+/// Every transition in `[a, b]` whose ends have states `sa != sb`, as
+/// brackets no wider than `relative_width` of the loads, by bisection on the
+/// state that `state_at` reads. Exact at square-root branch points
+/// (eigenvalues meeting on an axis), where the state flips with no
+/// tolerance band.
 fn bisect(
-    pencil: &AffinePencil,
+    state_at: &mut impl FnMut(f64) -> Result<State, AnalysisError>,
     (a, sa): (f64, State),
     (b, sb): (f64, State),
-    out: &mut Vec<Transition>,
+    relative_width: f64,
+    out: &mut Vec<Bracket>,
 ) -> Result<(), AnalysisError> {
-    if b - a <= width_tolerance(a, b) {
-        out.push(Transition {
-            load: 0.5 * (a + b),
-            from: sa,
-            to: sb,
-        });
+    if b - a <= relative_width * a.abs().max(b.abs()).max(f64::MIN_POSITIVE) {
+        out.push(Bracket { a, sa, b, sb });
         return Ok(());
     }
     let m = 0.5 * (a + b);
-    let sm = state_at(pencil, m)?;
+    let sm = state_at(m)?;
     if sm != sa {
-        bisect(pencil, (a, sa), (m, sm), out)?;
+        bisect(state_at, (a, sa), (m, sm), relative_width, out)?;
     }
     if sm != sb {
-        bisect(pencil, (m, sm), (b, sb), out)?;
+        bisect(state_at, (m, sm), (b, sb), relative_width, out)?;
     }
     Ok(())
+}
+
+/// Every transition in `[a, b]` (states `sa != sb` on the Schur path), as
+/// brackets of [`RELATIVE_LOAD_TOLERANCE`]. The first halvings, down to
+/// [`RELATIVE_FAST_WIDTH`], read the state on the polynomial path (Aberth
+/// refined from the nearest load's roots, a few times cheaper than a Schur
+/// decomposition); the Schur path confirms both ends of each narrowed
+/// bracket and does the last halvings. Where the paths disagree the whole
+/// bisection is done again on the Schur path, so the answer is always the
+/// Schur path's.
+fn bisect_confirmed(
+    pencil: &AffinePencil,
+    near_a: &[C64],
+    (a, sa): (f64, State),
+    (b, sb): (f64, State),
+) -> Result<Vec<Bracket>, AnalysisError> {
+    let mut roots = near_a.to_vec();
+    let mut fast_state = |p: f64| -> Result<State, AnalysisError> {
+        eigenvalues_near(pencil, p, &mut roots)?;
+        Ok(classify(&roots, pencil.scale_per_s(p)).state)
+    };
+    let mut schur_state = |p: f64| state_at(pencil, p);
+    let mut narrowed = Vec::new();
+    bisect(
+        &mut fast_state,
+        (a, sa),
+        (b, sb),
+        RELATIVE_FAST_WIDTH,
+        &mut narrowed,
+    )?;
+    let mut found = Vec::new();
+    for bracket in narrowed {
+        if schur_state(bracket.a)? != bracket.sa || schur_state(bracket.b)? != bracket.sb {
+            found.clear();
+            bisect(
+                &mut schur_state,
+                (a, sa),
+                (b, sb),
+                RELATIVE_LOAD_TOLERANCE,
+                &mut found,
+            )?;
+            return Ok(found);
+        }
+        bisect(
+            &mut schur_state,
+            (bracket.a, bracket.sa),
+            (bracket.b, bracket.sb),
+            RELATIVE_LOAD_TOLERANCE,
+            &mut found,
+        )?;
+    }
+    Ok(found)
 }
 
 /// The root of `f` in `[a, b]` with `f(a) < 0 < f(b)` by Brent's method.
@@ -132,23 +198,28 @@ fn brent(
     Ok(b)
 }
 
-/// Every transition between the bracket's ends: bisection on the state, then
-/// each loss (or gain) of stability polished by [`polish_crossing`].
+/// Every transition between the bracket's ends ([`bisect_confirmed`]), each
+/// loss (or gain) of stability polished by [`polish_crossing`]. `near_a`:
+/// the moving eigenvalues at a load near `a`.
 fn refine(
     pencil: &AffinePencil,
+    near_a: &[C64],
     (a, sa): (f64, State),
     (b, sb): (f64, State),
     range: (f64, f64),
     out: &mut Vec<Transition>,
 ) -> Result<(), AnalysisError> {
-    let mut found = Vec::new();
-    bisect(pencil, (a, sa), (b, sb), &mut found)?;
-    for transition in &mut found {
-        if let Some(root) = polish_crossing(pencil, transition, range)? {
+    for bracket in bisect_confirmed(pencil, near_a, (a, sa), (b, sb))? {
+        let mut transition = Transition {
+            load: 0.5 * (bracket.a + bracket.b),
+            from: bracket.sa,
+            to: bracket.sb,
+        };
+        if let Some(root) = polish_crossing(pencil, &transition, range)? {
             transition.load = root;
         }
+        out.push(transition);
     }
-    out.extend(found);
     Ok(())
 }
 
@@ -301,7 +372,14 @@ pub fn critical_loads_along(
         let (sa, sb) = (left_state.1, right_state.1);
         if sa != sb {
             let (a, b) = (locus.loads[left], locus.loads[right]);
-            refine(pencil, (a, sa), (b, sb), range, &mut transitions)?;
+            refine(
+                pencil,
+                &locus.moving_at(left),
+                (a, sa),
+                (b, sb),
+                range,
+                &mut transitions,
+            )?;
         }
     }
     Ok(transitions)
@@ -315,5 +393,67 @@ pub fn load_label(load: f64) -> String {
         format!("{load:.4}")
     } else {
         format!("{load:.2e}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{Axis, Model, PRESETS, preset};
+
+    /// Bisects every change of stability that the bracketing locus of
+    /// `model` shows both ways and returns how many there were.
+    fn assert_fast_bisection_matches_schur(name: &str, model: &Model) -> usize {
+        let pencil = AffinePencil::new(model).unwrap();
+        let bracket_locus = bracketing_locus(&pencil, 0.0, DEFAULT_LOAD_MAX).unwrap();
+        let states: Vec<State> = bracket_locus
+            .loads
+            .iter()
+            .map(|&q| state_at(&pencil, q).unwrap())
+            .collect();
+        let mut checked = 0;
+        for i in 1..states.len() {
+            if states[i] == states[i - 1] {
+                continue;
+            }
+            let (a, b) = (bracket_locus.loads[i - 1], bracket_locus.loads[i]);
+            let ends = ((a, states[i - 1]), (b, states[i]));
+            let fast =
+                bisect_confirmed(&pencil, &bracket_locus.moving_at(i - 1), ends.0, ends.1).unwrap();
+            let mut schur = Vec::new();
+            let mut schur_state = |q| state_at(&pencil, q);
+            bisect(
+                &mut schur_state,
+                ends.0,
+                ends.1,
+                RELATIVE_LOAD_TOLERANCE,
+                &mut schur,
+            )
+            .unwrap();
+            let loads = |v: &[Bracket]| v.iter().map(|b| (b.a, b.b)).collect::<Vec<_>>();
+            assert_eq!(loads(&fast), loads(&schur), "{name} near p = {a}");
+            checked += 1;
+        }
+        checked
+    }
+
+    /// The polynomial path only speeds the bisection up: at every change of
+    /// stability of every preset, of a damped column and of a light roller,
+    /// the brackets are those of the bisection on the Schur path alone.
+    #[test]
+    fn the_fast_bisection_gives_the_schur_paths_brackets() {
+        let mut checked = 0;
+        for p in PRESETS {
+            checked += assert_fast_bisection_matches_schur(p.name, &p.model());
+        }
+        assert!(checked >= 2 * PRESETS.len(), "{checked} changes checked");
+        let column = preset("ziegler-1952").unwrap().model();
+        let damped = Axis::DampingLevel
+            .apply(&column, "ziegler-1952", 1e-3)
+            .unwrap();
+        assert!(assert_fast_bisection_matches_schur("damped", &damped) >= 2);
+        let roller = preset("roller").unwrap().model();
+        let light = Axis::Key("nu").apply(&roller, "roller", 0.01).unwrap();
+        assert!(assert_fast_bisection_matches_schur("light roller", &light) >= 2);
     }
 }

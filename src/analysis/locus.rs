@@ -171,7 +171,11 @@ fn permute(perm: &mut [usize], k: usize, visit: &mut impl FnMut(&[usize])) {
 /// that `roots` holds on entry: Aberth from the guess when the
 /// characteristic polynomial is available, the Schur path and an assignment
 /// otherwise. Allocation-free on the polynomial path (the locus's hot loop).
-fn eigenvalues_near(pencil: &AffinePencil, p: f64, roots: &mut [C64]) -> Result<(), AnalysisError> {
+pub(super) fn eigenvalues_near(
+    pencil: &AffinePencil,
+    p: f64,
+    roots: &mut [C64],
+) -> Result<(), AnalysisError> {
     let n = roots.len();
     if n <= MAX_DEGREE
         && let Some(poly) = pencil.char_poly(p)
