@@ -268,7 +268,7 @@ fn x_realtime(engine: EngineKind) -> Result<f64> {
 /// The app refusing its defaults or a nu value (neither should happen).
 pub fn frame_times_ms(frames: usize, tab: Tab) -> Result<Vec<f64>> {
     let ctx = egui::Context::default();
-    let mut app = ZieglerApp::new(Settings::default()).map_err(anyhow::Error::msg)?;
+    let mut app = ZieglerApp::new(Settings::default())?;
     app.show_tab(tab);
     let mut times_ms = Vec::with_capacity(frames);
     for frame in 0..frames + WARMUP_FRAMES {
@@ -282,8 +282,8 @@ pub fn frame_times_ms(frames: usize, tab: Tab) -> Result<Vec<f64>> {
             ..Default::default()
         };
         let start = Instant::now();
-        app.set_parameter("nu", nu)
-            .map_err(anyhow::Error::msg)
+        app.state_mut()
+            .set_parameter("nu", nu)
             .context("setting nu")?;
         app.advance(1.0 / 60.0);
         let mut output = ctx.run_ui(input, |ui| app.contents_ui(ui));

@@ -14,7 +14,7 @@ use zieglerlab::analysis::{
     AffinePencil, DEFAULT_LOAD_MAX, MapSpec, Row, RowResult, bracketing_locus, compute_map,
     critical_loads_along, locus, resolution_warning,
 };
-use zieglerlab::app::{Panel, Settings, ZieglerApp};
+use zieglerlab::app::{Panel, Settings, Tab, ZieglerApp};
 use zieglerlab::model::{Axis, KEYS, Model, PRESETS, apply_assignments, parse_assignment, preset};
 use zieglerlab::sim::{
     DEFAULT_STEP_SECS, EngineKind, Observables, Simulation, Status, initial_state,
@@ -95,11 +95,11 @@ impl From<PanelArg> for Panel {
     fn from(panel: PanelArg) -> Self {
         match panel {
             PanelArg::Window => Self::Window,
-            PanelArg::Locus => Self::Locus,
+            PanelArg::Locus => Self::Tab(Tab::Locus),
             PanelArg::Scene => Self::Scene,
-            PanelArg::Histories => Self::Histories,
-            PanelArg::Map => Self::Map,
-            PanelArg::Paradox => Self::Paradox,
+            PanelArg::Histories => Self::Tab(Tab::Histories),
+            PanelArg::Map => Self::Tab(Tab::Map),
+            PanelArg::Paradox => Self::Tab(Tab::Paradox),
         }
     }
 }
@@ -531,7 +531,7 @@ fn snapshot(
         speed: 1.0,
         projector,
     };
-    let mut app = ZieglerApp::new(settings).map_err(anyhow::Error::msg)?;
+    let mut app = ZieglerApp::new(settings)?;
     // Whole 1/60 s frames, as the app advances: the same picture every time.
     #[expect(
         clippy::cast_possible_truncation,
@@ -547,7 +547,7 @@ fn snapshot(
         }
     }
     progress.finish_and_clear();
-    if matches!(panel, Panel::Map | Panel::Paradox) {
+    if matches!(panel, Panel::Tab(Tab::Map | Tab::Paradox)) {
         app.complete_background_work();
     }
     let image = render(&mut app, panel, (f32::from(width), f32::from(height)))?;

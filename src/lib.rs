@@ -11,5 +11,6 @@
 pub mod analysis;
 pub mod app;
 pub mod bench;
+pub mod format;
 pub mod model;
 pub mod sim;

@@ -130,7 +130,7 @@ fn stored_settings_keep_what_reads_and_name_the_rest() {
     for &(text, speed, message) in cases {
         let app = ZieglerApp::from_stored_text(Some(text));
         assert_eq!(app.settings().speed, speed, "{text}");
-        assert!(app.has_analysis(), "{text}");
+        assert!(app.state().analysis().is_some(), "{text}");
         match message {
             None => assert_eq!(app.message(), None, "{text}"),
             Some(fragment) => {
@@ -147,7 +147,7 @@ fn stored_settings_keep_what_reads_and_name_the_rest() {
 fn a_column_too_stiff_for_rapier_switches_engines_and_says_so() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     assert_eq!(app.simulation().engine(), EngineKind::Rapier);
-    app.set_parameter("c1", 1e6).unwrap();
+    app.state_mut().set_parameter("c1", 1e6).unwrap();
     assert_eq!(app.simulation().engine(), EngineKind::Reference);
     assert_eq!(app.settings().engine, EngineKind::Reference);
     assert_eq!(app.settings().model.column.c1_nms_per_rad, 1e6);
@@ -167,7 +167,7 @@ fn a_column_too_stiff_for_rapier_switches_engines_and_says_so() {
 #[test]
 fn a_blow_up_stops_with_a_status_and_finite_data() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
-    app.set_parameter("load", 1e6).unwrap();
+    app.state_mut().set_parameter("load", 1e6).unwrap();
     for _ in 0..120 {
         app.advance(1.0 / 60.0);
     }
@@ -182,7 +182,7 @@ fn pasted_garbage_changes_nothing_and_says_so() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     app.advance(0.05);
     let before = (app.settings().clone(), app.simulation().time_secs());
-    app.paste_settings("{{ this is not a setup }}");
+    app.state_mut().paste_settings("{{ this is not a setup }}");
     assert_eq!(
         (app.settings().clone(), app.simulation().time_secs()),
         before
@@ -195,7 +195,8 @@ fn pasted_garbage_changes_nothing_and_says_so() {
     // Well-formed text with an invalid model is refused too.
     let mut bad = Settings::default();
     bad.model.column.k1_nm_per_rad = -1.0;
-    app.paste_settings(&ron::to_string(&bad).unwrap());
+    app.state_mut()
+        .paste_settings(&ron::to_string(&bad).unwrap());
     assert_eq!(app.settings(), &before.0);
     assert!(
         app.message().unwrap().contains("k1 = -1"),
@@ -207,17 +208,18 @@ fn pasted_garbage_changes_nothing_and_says_so() {
         speed: 0.5,
         ..Settings::default()
     };
-    app.paste_settings(&ron::to_string(&good).unwrap());
+    app.state_mut()
+        .paste_settings(&ron::to_string(&good).unwrap());
     assert_eq!(app.settings(), &good);
 }
 
 #[test]
 fn a_model_without_analysis_shows_no_stale_locus() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
-    assert!(app.has_analysis());
+    assert!(app.state().analysis().is_some());
     // The band stops: the simulation goes on, the linear analysis cannot.
-    app.set_parameter("V", 0.0).unwrap();
-    assert!(!app.has_analysis());
+    app.state_mut().set_parameter("V", 0.0).unwrap();
+    assert!(app.state().analysis().is_none());
     assert!(
         app.message().unwrap().contains("V = 0"),
         "{:?}",
@@ -225,8 +227,8 @@ fn a_model_without_analysis_shows_no_stale_locus() {
     );
     app.advance(0.05);
     assert!(app.simulation().time_secs() > 0.0);
-    app.set_parameter("V", 0.1).unwrap();
-    assert!(app.has_analysis());
+    app.state_mut().set_parameter("V", 0.1).unwrap();
+    assert!(app.state().analysis().is_some());
 }
 
 /// A click on the stability map sets the load and the map's parameter, and
@@ -234,12 +236,12 @@ fn a_model_without_analysis_shows_no_stale_locus() {
 #[test]
 fn a_map_point_sets_both_parameters_and_the_run_follows() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
-    app.set_map_point(&Axis::Key("nu"), 3.0, 0.4);
+    app.state_mut().set_map_point(&Axis::Key("nu"), 3.0, 0.4);
     let model = app.settings().model;
     assert!((model.load_p() - 3.0).abs() < 1e-12);
     assert!((Axis::Key("nu").get(&model) - 0.4).abs() < 1e-12);
     assert_eq!(app.simulation().model(), &model);
-    app.set_map_point(&Axis::Key("nu"), 2.0, -1.0);
+    app.state_mut().set_map_point(&Axis::Key("nu"), 2.0, -1.0);
     assert_eq!(app.settings().model, model);
     assert!(app.message().unwrap().contains("nu = -1"));
 }

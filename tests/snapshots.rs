@@ -5,14 +5,14 @@
 //! look at every new image before committing it.
 
 use egui_kittest::{Harness, SnapshotResults};
-use zieglerlab::app::{Panel, Settings, ZieglerApp};
+use zieglerlab::app::{Panel, Settings, Tab, ZieglerApp};
 use zieglerlab::model::{PRESETS, preset};
 
 /// The app in `settings`, at `load`, after `secs` whole seconds simulated
 /// from the standard kick, in 1/60 s frames.
 fn app_at(settings: Settings, load: f64, secs: u32) -> ZieglerApp {
     let mut app = ZieglerApp::new(settings).unwrap();
-    app.set_parameter("load", load).unwrap();
+    app.state_mut().set_parameter("load", load).unwrap();
     for _ in 0..secs * 60 {
         app.advance(1.0 / 60.0);
     }
@@ -75,8 +75,8 @@ fn root_locus_panel_of_each_preset() {
         let mut app = app_at(preset_settings(p.name), 1.0, 0);
         let mut harness = Harness::builder()
             .wgpu()
-            .with_size([640.0, 520.0])
-            .build_ui(|ui| app.panel_ui(ui, Panel::Locus));
+            .with_size([960.0, 520.0])
+            .build_ui(|ui| app.panel_ui(ui, Panel::Tab(Tab::Locus)));
         harness.run_steps(4);
         harness.snapshot(format!("locus_{}", p.name));
         results.extend(harness.take_snapshot_results());
@@ -91,7 +91,10 @@ fn root_locus_panel_of_each_preset() {
 fn stability_map_and_paradox_panels() {
     let mut results = SnapshotResults::new();
     for name in ["roller", "ziegler-1952"] {
-        for (panel, label) in [(Panel::Map, "map"), (Panel::Paradox, "paradox")] {
+        for (panel, label) in [
+            (Panel::Tab(Tab::Map), "map"),
+            (Panel::Tab(Tab::Paradox), "paradox"),
+        ] {
             let mut app = ZieglerApp::new(preset_settings(name)).unwrap();
             app.complete_background_work();
             let mut harness = Harness::builder()

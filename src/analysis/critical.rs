@@ -385,17 +385,6 @@ pub fn critical_loads_along(
     Ok(transitions)
 }
 
-/// A load for people: four decimals, or three significant digits when it is
-/// below 1e-3 (the roller's first flutter load scales with nu).
-#[must_use]
-pub fn load_label(load: f64) -> String {
-    if load == 0.0 || load.abs() >= 1e-3 {
-        format!("{load:.4}")
-    } else {
-        format!("{load:.2e}")
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

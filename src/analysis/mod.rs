@@ -12,7 +12,7 @@ mod stability;
 
 pub use critical::{
     BRACKET_SAMPLES, DEFAULT_LOAD_MAX, Transition, bracketing_locus, critical_loads,
-    critical_loads_along, load_label,
+    critical_loads_along,
 };
 pub use locus::{Locus, load_grid, locus};
 pub use map::{Cell, MapSpec, Row, RowResult, compute as compute_map};

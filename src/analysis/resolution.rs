@@ -3,10 +3,10 @@
 //! finer classification.
 
 use super::AnalysisError;
-use super::critical::load_label;
 use super::locus::Locus;
 use super::pencil::AffinePencil;
 use super::stability::{RELATIVE_TOLERANCE, State, classify_with};
+use crate::format::load_text;
 
 /// Beyond this ratio of the fastest to the slowest mode, rounding of the
 /// fast one (about 1e-16 of it) reaches the slow ones' growth rates.
@@ -65,13 +65,13 @@ pub fn resolution_warning(
     if slowest.is_finite() && fastest > LARGEST_MODE_SPAN * slowest {
         return Ok(Some(format!(
             "the stability is not resolved: at p = {} the modes span {fastest:.1e} 1/s to {slowest:.1e} 1/s, a ratio beyond {LARGEST_MODE_SPAN:.0e}, so the slow modes' growth rates are left to rounding (a mode far faster than the others, such as the spin of a roller of tiny mass nu)",
-            load_label(stiffest)
+            load_text(stiffest)
         )));
     }
     if slowest.is_finite() && tolerance > SLOWEST_MODE_FRACTION * slowest {
         return Ok(Some(format!(
             "the stability is not resolved: at p = {} the modes span {:.0e} 1/s to {slowest:.1e} 1/s, so growth rates below {tolerance:.1e} 1/s are lost to rounding (the model is near a singular limit: a very slow band V, or very large damping)",
-            load_label(stiffest),
+            load_text(stiffest),
             spectrum.scale_per_s
         )));
     }
@@ -102,7 +102,7 @@ pub fn resolution_warning(
     if let Some(p) = methods_disagree(pencil, locus, &samples)? {
         return Ok(Some(format!(
             "the stability is not resolved: at p = {} the tracked roots and the Schur decomposition disagree on the state (rounding decides it: a mode far faster than the others, such as the spin of a roller of tiny mass nu); the critical loads shown may be spurious or missing",
-            load_label(p)
+            load_text(p)
         )));
     }
     let (Some(low), Some(high)) = (undecided.first(), undecided.last()) else {
@@ -110,8 +110,8 @@ pub fn resolution_warning(
     };
     Ok(Some(format!(
         "the stability is not resolved: for p from {} to {} the growth rates lie between 1e-12 and 1e-10 of the frequency scale, where rounding decides the state (a roller of tiny mass nu, whose weak flutter grows in proportion to nu, or a very slow band V); the critical loads shown may be misplaced or missing",
-        load_label(*low),
-        load_label(*high)
+        load_text(*low),
+        load_text(*high)
     )))
 }
 

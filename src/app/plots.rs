@@ -7,7 +7,7 @@ use egui_plot::{Legend, Line, Plot, PlotPoints, Points, Span, VLine};
 
 use super::history::History;
 use super::theme::{Theme, load_color};
-use crate::analysis::{C64, Locus, State, Transition};
+use crate::analysis::{C64, Locus, State};
 
 /// The overlaid model's branches: grey, behind the current ones.
 const OVERLAY: Color32 = Color32::from_rgb(120, 120, 120);
@@ -15,20 +15,6 @@ const OVERLAY: Color32 = Color32::from_rgb(120, 120, 120);
 /// Branch segments are drawn in this many colour bands along the load.
 const COLOR_BANDS: usize = 24;
 
-/// The loads where each stability range starts, with its state.
-pub fn ranges(transitions: &[Transition], first: State, max: f64) -> Vec<(f64, f64, State)> {
-    let mut out = Vec::new();
-    let (mut start, mut state) = (0.0, first);
-    for t in transitions {
-        out.push((start, t.load, state));
-        (start, state) = (t.load, t.to);
-    }
-    out.push((start, max, state));
-    out
-}
-
-/// The root locus: every branch as a curve coloured by load, the current
-/// eigenvalues as large markers, the imaginary axis emphasised.
 /// Evenly spaced samples the plots draw at most (a plot is a few hundred
 /// pixels wide); the refinement's samples are all drawn.
 const DRAWN_GRID_SAMPLES: usize = 500;
@@ -52,6 +38,8 @@ fn drawn_samples(locus: &Locus) -> Vec<usize> {
         .collect()
 }
 
+/// The root locus: every branch as a curve coloured by load, the current
+/// eigenvalues as large markers, the imaginary axis emphasised.
 pub fn root_locus_ui(
     ui: &mut egui::Ui,
     locus: &Locus,

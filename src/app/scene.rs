@@ -10,15 +10,13 @@ use eframe::egui::{
     pos2,
 };
 
+use super::state::{AppState, TRAIL_SECS};
 use super::theme::Theme;
 use crate::model::Model;
 use crate::sim::{Observables, Status};
 
-/// How long the tip's trail lasts, in simulated seconds.
-pub const TRAIL_SECS: f64 = 6.0;
-
 /// What the scene draws besides the column itself.
-pub struct SceneInput<'a> {
+struct SceneInput<'a> {
     pub model: &'a Model,
     pub now: &'a Observables,
     pub trail: &'a VecDeque<(f64, [f64; 2])>,
@@ -48,8 +46,23 @@ impl View {
     }
 }
 
-/// Draws the scene in the space left in `ui`.
-pub fn scene_ui(ui: &mut egui::Ui, input: &SceneInput<'_>) {
+/// Draws the scene of the app's state in the space left in `ui`.
+pub fn scene_ui(ui: &mut egui::Ui, state: &AppState, theme: &Theme) {
+    let now = state.simulation().observe();
+    draw(
+        ui,
+        &SceneInput {
+            model: state.model(),
+            now: &now,
+            trail: state.trail(),
+            status: state.simulation().status(),
+            theme,
+        },
+    );
+}
+
+/// Draws `input` in the space left in `ui`.
+fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) {
     let SceneInput {
         model,
         now,
@@ -320,7 +333,10 @@ fn band(
         );
         x += spacing;
     }
-    let label = format!("band  V = {} m/s", super::number_text(speed_m_per_s));
+    let label = format!(
+        "band  V = {} m/s",
+        crate::format::number_text(speed_m_per_s)
+    );
     let start = to(x1 - 0.05 * reach, y1 - 0.06 * reach);
     painter.arrow(
         start,
@@ -369,15 +385,4 @@ fn dashed_arrow(painter: &egui::Painter, origin: Pos2, vector: Vec2, stroke: Str
     let right = tip - head * dir - 0.6 * head * dir.rot90();
     painter.line_segment([tip, left], stroke);
     painter.line_segment([tip, right], stroke);
-}
-
-/// Keeps the trail to its duration.
-pub fn push_trail(trail: &mut VecDeque<(f64, [f64; 2])>, now: &Observables) {
-    trail.push_back((now.t_secs, now.tip_m));
-    while trail
-        .front()
-        .is_some_and(|(t, _)| now.t_secs - t > TRAIL_SECS)
-    {
-        trail.pop_front();
-    }
 }

@@ -7,7 +7,8 @@ use ron::value::RawValue;
 use serde::Deserialize;
 use serde::de::{MapAccess, Visitor};
 
-use super::Settings;
+use super::notice::Notice;
+use super::state::{AppState, Settings};
 use crate::model::{Model, preset};
 
 /// The simulated seconds per wall second the speed slider offers.
@@ -139,4 +140,93 @@ pub fn read(text: &str) -> Result<Read, String> {
         settings.projector = projector;
     }
     Ok(Read { settings, ignored })
+}
+
+impl AppState {
+    /// The state from settings stored as text (RON, as eframe writes them):
+    /// every field that reads and makes sense is kept, the others take their
+    /// defaults, and a notice names them.
+    #[must_use]
+    pub fn from_stored_text(text: Option<&str>) -> Self {
+        let Some(text) = text else {
+            return Self::defaults();
+        };
+        let (settings, note) = match read(text) {
+            Ok(read) if read.ignored.is_empty() => (read.settings, None),
+            Ok(read) => {
+                let note = format!(
+                    "stored settings: ignored {}; kept the rest",
+                    read.ignored.join(", ")
+                );
+                (read.settings, Some(Notice::warning(note)))
+            }
+            Err(error) => (
+                Settings::default(),
+                Some(Notice::warning(format!(
+                    "stored settings ignored ({error}); starting from the defaults"
+                ))),
+            ),
+        };
+        let mut state = match Self::new(settings) {
+            Ok(state) => state,
+            Err(error) => {
+                let mut state = Self::defaults();
+                state.say(Notice::warning(format!(
+                    "stored settings ignored ({error}); starting from the defaults"
+                )));
+                return state;
+            }
+        };
+        if let Some(note) = note {
+            // The note first: what was read comes before what starting did.
+            let started = state.notice().cloned();
+            state.say(note);
+            if let Some(started) = started {
+                state.tell(started);
+            }
+        }
+        state
+    }
+
+    /// The default settings' state.
+    #[must_use]
+    pub fn defaults() -> Self {
+        // The roller preset is valid by construction; this cannot fail.
+        match Self::new(Settings::default()) {
+            Ok(state) => state,
+            Err(error) => unreachable!("the default settings are valid: {error}"),
+        }
+    }
+
+    /// Loads settings from shared text; garbage leaves everything as it was
+    /// and says why.
+    pub fn paste_settings(&mut self, text: &str) {
+        let settings = match read(text) {
+            Ok(read) if read.ignored.is_empty() => read.settings,
+            Ok(read) => {
+                self.say(Notice::error(format!(
+                    "pasted settings refused, nothing changed: {} not understood",
+                    read.ignored.join(", ")
+                )));
+                return;
+            }
+            Err(error) => {
+                self.say(Notice::error(format!(
+                    "pasted settings not understood, nothing changed: {error}"
+                )));
+                return;
+            }
+        };
+        match Self::new(settings) {
+            Ok(mut pasted) => {
+                pasted.say(Notice::info("settings pasted"));
+                *self = pasted;
+            }
+            Err(error) => {
+                self.say(Notice::error(format!(
+                    "pasted settings refused, nothing changed: {error}"
+                )));
+            }
+        }
+    }
 }

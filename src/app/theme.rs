@@ -3,6 +3,7 @@
 
 use eframe::egui::{self, Color32};
 
+use super::notice::Level;
 use crate::analysis::State;
 
 /// The palette of one theme.
@@ -24,6 +25,12 @@ pub struct Theme {
     pub flutter: Color32,
     pub divergence: Color32,
     pub axis: Color32,
+    /// Notices: something refused or failed.
+    pub error: Color32,
+    /// Notices and cautions: done, but not quite as asked, or not resolved.
+    pub warning: Color32,
+    /// Notices: done as asked.
+    pub info: Color32,
     /// Line width multiplier for strokes in the scene.
     pub stroke_scale: f32,
     /// Font size of body text.
@@ -49,6 +56,9 @@ impl Theme {
         flutter: Color32::from_rgb(230, 150, 40),
         divergence: Color32::from_rgb(215, 60, 60),
         axis: Color32::from_rgb(200, 200, 200),
+        error: Color32::from_rgb(215, 60, 60),
+        warning: Color32::from_rgb(230, 150, 40),
+        info: Color32::from_rgb(120, 170, 255),
         stroke_scale: 1.0,
         text_size: 14.0,
     };
@@ -71,6 +81,9 @@ impl Theme {
         flutter: Color32::from_rgb(255, 170, 0),
         divergence: Color32::from_rgb(255, 50, 50),
         axis: Color32::WHITE,
+        error: Color32::from_rgb(255, 50, 50),
+        warning: Color32::from_rgb(255, 170, 0),
+        info: Color32::from_rgb(80, 180, 255),
         stroke_scale: 1.8,
         text_size: 22.0,
     };
@@ -82,6 +95,16 @@ impl Theme {
             State::Stable => self.stable,
             State::Flutter => self.flutter,
             State::Divergence => self.divergence,
+        }
+    }
+
+    /// The colour of a notice of `level`.
+    #[must_use]
+    pub fn notice_color(&self, level: Level) -> Color32 {
+        match level {
+            Level::Info => self.info,
+            Level::Warning => self.warning,
+            Level::Error => self.error,
         }
     }
 

@@ -9,8 +9,11 @@ use std::sync::{Arc, mpsc};
 use eframe::egui::{self, Color32};
 use egui_plot::{HLine, Legend, Line, Plot, PlotPoints, Points};
 
-use super::theme::Theme;
 use crate::analysis::{first_instability, flutter_load_damped};
+use crate::app::View;
+use crate::app::state::AppState;
+use crate::app::theme::Theme;
+use crate::format::number_text;
 use crate::model::{Axis, Load, Model};
 
 /// Loads searched for the first loss of stability.
@@ -75,10 +78,7 @@ pub fn curves(model: &Model, preset: &str, cancel: &AtomicBool) -> Curves {
                             .ok()
                             .flatten()
                     });
-                    (
-                        format!("damping g2 = {}", super::number_text(level)),
-                        points,
-                    )
+                    (format!("damping g2 = {}", number_text(level)), points)
                 })
                 .collect();
             Curves {
@@ -103,7 +103,7 @@ pub fn curves(model: &Model, preset: &str, cancel: &AtomicBool) -> Curves {
                         let m = Axis::Key("nu").apply(&m, preset, nu).ok()?;
                         first(&m)
                     });
-                    (format!("V = {} m/s", super::number_text(speed)), points)
+                    (format!("V = {} m/s", number_text(speed)), points)
                 })
                 .collect();
             Curves {
@@ -207,8 +207,10 @@ impl ParadoxPanel {
         }
     }
 
-    /// The current model's point: its ratio (log10) and first critical load.
-    fn current_point(&mut self, model: &Model) -> Option<[f64; 2]> {
+    /// The current model's point: its ratio (log10) and first critical
+    /// load. `known`: that load when the app's analysis has found it (it
+    /// covers a shorter range), so it is not searched for again.
+    fn current_point(&mut self, model: &Model, known: Option<f64>) -> Option<[f64; 2]> {
         let key = model.at_load(0.0);
         if let Some((cached, point)) = &self.current
             && *cached == key
@@ -223,16 +225,23 @@ impl ParadoxPanel {
             _ => f64::NAN,
         };
         let point = (x > 0.0 && x.is_finite())
-            .then(|| first_instability(&key, LOAD_MAX).ok().flatten())
+            .then(|| known.or_else(|| first_instability(&key, LOAD_MAX).ok().flatten()))
             .flatten()
             .map(|p| [x.log10(), p]);
         self.current = Some((key, point));
         point
     }
 
-    pub fn ui(&mut self, ui: &mut egui::Ui, model: &Model, preset: &str, theme: &Theme) {
+    fn draw(
+        &mut self,
+        ui: &mut egui::Ui,
+        model: &Model,
+        preset: &str,
+        known: Option<f64>,
+        theme: &Theme,
+    ) {
         self.follow(model, preset);
-        let here = self.current_point(model);
+        let here = self.current_point(model, known);
         let Some(job) = &mut self.job else {
             return;
         };
@@ -260,7 +269,7 @@ impl ParadoxPanel {
             .legend(Legend::default())
             .x_axis_label(format!("{} (log scale)", curves.x_label))
             .y_axis_label("first critical load p")
-            .x_axis_formatter(|mark, _| super::number_text(10f64.powf(mark.value)))
+            .x_axis_formatter(|mark, _| number_text(10f64.powf(mark.value)))
             .show(ui, |plot_ui| {
                 if let Some((label, p)) = &curves.reference {
                     plot_ui.hline(
@@ -285,5 +294,15 @@ impl ParadoxPanel {
                     );
                 }
             });
+    }
+}
+
+impl View for ParadoxPanel {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+        let known = state
+            .analysis()
+            .and_then(crate::app::state::Analysis::first_instability);
+        let (model, preset) = (*state.model(), state.settings().preset.clone());
+        self.draw(ui, &model, &preset, known, theme);
     }
 }

@@ -10,8 +10,11 @@ use std::thread::JoinHandle;
 use eframe::egui::{self, Color32, ColorImage, TextureHandle, TextureOptions};
 use egui_plot::{Line, Plot, PlotImage, PlotPoint, PlotPoints, Points};
 
-use super::theme::Theme;
 use crate::analysis::{MapSpec, Row, RowResult, State, Transition, compute_map};
+use crate::app::View;
+use crate::app::state::{AppState, LOAD_MAX_P};
+use crate::app::theme::Theme;
+use crate::format::number_text;
 use crate::model::{Axis, Model};
 
 /// Cells along the load and along the second parameter.
@@ -211,7 +214,7 @@ impl MapPanel {
     }
 
     /// The panel: axis choice and range, progress, the map. Returns a click.
-    pub fn ui(
+    fn draw(
         &mut self,
         ui: &mut egui::Ui,
         model: &Model,
@@ -301,11 +304,23 @@ impl MapPanel {
     }
 }
 
+impl View for MapPanel {
+    /// The stability map of the current parameters; a click on it sets the
+    /// load and the map's second parameter.
+    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+        let (model, preset) = (*state.model(), state.settings().preset.clone());
+        self.follow(&model, &preset, LOAD_MAX_P);
+        if let Some(pick) = self.draw(ui, &model, &preset, theme) {
+            state.set_map_point(&pick.axis, pick.load, pick.value);
+        }
+    }
+}
+
 /// A number field for the map's range.
 fn range_field(value: &mut f64, speed: f64) -> egui::DragValue<'_> {
     egui::DragValue::new(value)
         .speed(speed)
-        .custom_formatter(|v, _| super::number_text(v))
+        .custom_formatter(|v, _| number_text(v))
 }
 
 /// The colour of a cell: its state, brighter the faster it grows or decays

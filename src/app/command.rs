@@ -1,0 +1,153 @@
+//! Every action the user can ask for by button or key, in one list: its
+//! label, its keys, what it does. The buttons, the keyboard and the keys
+//! help all read it.
+
+use eframe::egui;
+
+use super::state::{AppState, LOAD_KEY_STEP_P};
+
+/// An action of the user.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Command {
+    PlayPause,
+    Step,
+    Kick,
+    Reset,
+    LoadUp,
+    LoadDown,
+    Projector,
+}
+
+impl Command {
+    /// Every command, in the order the keys help lists them.
+    pub const ALL: [Self; 7] = [
+        Self::PlayPause,
+        Self::LoadUp,
+        Self::LoadDown,
+        Self::Kick,
+        Self::Reset,
+        Self::Projector,
+        Self::Step,
+    ];
+
+    /// The button's text in `state`.
+    #[must_use]
+    pub fn label(self, state: &AppState) -> &'static str {
+        match self {
+            Self::PlayPause if state.running() => "pause",
+            Self::PlayPause => "play",
+            Self::Step => "step",
+            Self::Kick => "kick",
+            Self::Reset => "reset",
+            Self::LoadUp => "load up",
+            Self::LoadDown => "load down",
+            Self::Projector => "projector mode",
+        }
+    }
+
+    /// What it does, for tooltips and the keys help.
+    #[must_use]
+    pub fn tooltip(self) -> &'static str {
+        match self {
+            Self::PlayPause => "play / pause",
+            Self::Step => "one engine step (1/240 s), then paused",
+            Self::Kick => "kick: both angles by 0.01 rad",
+            Self::Reset => "reset: a fresh run from the standard perturbation",
+            Self::LoadUp => "load up by 0.08",
+            Self::LoadDown => "load down by 0.08",
+            Self::Projector => "projector mode: high contrast, large text",
+        }
+    }
+
+    /// The keys that ask for it (none: a button only).
+    #[must_use]
+    pub fn keys(self) -> &'static [egui::Key] {
+        use egui::Key;
+        match self {
+            Self::PlayPause => &[Key::Space],
+            Self::Step => &[],
+            Self::Kick => &[Key::K],
+            Self::Reset => &[Key::R],
+            Self::LoadUp => &[Key::ArrowRight, Key::ArrowUp],
+            Self::LoadDown => &[Key::ArrowLeft, Key::ArrowDown],
+            Self::Projector => &[Key::P],
+        }
+    }
+
+    /// The keys as the keys help names them.
+    #[must_use]
+    pub fn key_names(self) -> String {
+        self.keys()
+            .iter()
+            .map(|key| match key {
+                egui::Key::Space => "space",
+                egui::Key::ArrowRight => "right",
+                egui::Key::ArrowUp => "up",
+                egui::Key::ArrowLeft => "left",
+                egui::Key::ArrowDown => "down",
+                other => other.name(),
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
+    /// Does it.
+    pub fn execute(self, state: &mut AppState) {
+        match self {
+            Self::PlayPause => state.toggle_running(),
+            Self::Step => state.step(),
+            Self::Kick => state.kick(),
+            Self::Reset => state.reset(),
+            Self::LoadUp => state.nudge_load(LOAD_KEY_STEP_P),
+            Self::LoadDown => state.nudge_load(-LOAD_KEY_STEP_P),
+            Self::Projector => state.set_projector(!state.settings().projector),
+        }
+    }
+
+    /// Its button: the label, the tooltip with the keys; a click does it.
+    pub fn button(self, ui: &mut egui::Ui, state: &mut AppState) {
+        let keys = self.key_names();
+        let tooltip = if keys.is_empty() {
+            self.tooltip().to_owned()
+        } else {
+            format!("{} ({keys})", self.tooltip())
+        };
+        if ui
+            .button(self.label(state))
+            .on_hover_text(tooltip)
+            .clicked()
+        {
+            self.execute(state);
+        }
+    }
+
+    /// The commands whose keys were pressed this frame, unless a text field
+    /// has the keyboard.
+    #[must_use]
+    pub fn pressed(ctx: &egui::Context) -> Vec<Self> {
+        let pressed: Vec<Self> = ctx.input(|input| {
+            Self::ALL
+                .into_iter()
+                .filter(|command| command.keys().iter().any(|&key| input.key_pressed(key)))
+                .collect()
+        });
+        if ctx.egui_wants_keyboard_input() {
+            return Vec::new();
+        }
+        pressed
+    }
+
+    /// The keys help: one row per command that has keys.
+    pub fn keys_help_ui(ui: &mut egui::Ui) {
+        for command in Self::ALL {
+            let keys = command.key_names();
+            if keys.is_empty() {
+                continue;
+            }
+            ui.horizontal(|ui| {
+                ui.monospace(format!("{keys:>11}"));
+                ui.label(command.tooltip());
+            });
+        }
+    }
+}

@@ -1,0 +1,80 @@
+//! The load slider, the stability ranges drawn under it, and the critical
+//! loads in words.
+
+use eframe::egui::{self, Color32, RichText, Sense, Stroke, pos2, vec2};
+
+use crate::app::View;
+use crate::app::state::{AppState, LOAD_MAX_P};
+use crate::app::theme::Theme;
+use crate::format::load_text;
+
+pub struct LoadSection;
+
+impl View for LoadSection {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+        let mut p = state.model().load_p();
+        // A typed load beyond the slider's range is taken as typed, not clamped.
+        let response = ui.add(
+            egui::Slider::new(&mut p, 0.0..=LOAD_MAX_P)
+                .clamping(egui::SliderClamping::Never)
+                .text("load p = P l/k"),
+        );
+        if response.changed() {
+            state.enter_parameter("load", p);
+        }
+        if let Some(why) = state.refusal("load") {
+            ui.colored_label(theme.error, format!("refused: {why}"));
+        }
+        let p = state.model().load_p();
+        if let Some(roller) = state.model().roller() {
+            ui.label(format!(
+                "roller: q = R l/k = p/μ = {:.3}   (μ = {})",
+                p / roller.mu,
+                roller.mu
+            ));
+        }
+        if p > LOAD_MAX_P {
+            ui.colored_label(
+                theme.warning,
+                format!("p = {p} is beyond the plotted range (0 to {LOAD_MAX_P}); the status below is at p"),
+            );
+        }
+        let Some(analysis) = state.analysis() else {
+            return;
+        };
+        let (rect, _) = ui.allocate_exact_size(vec2(ui.available_width(), 14.0), Sense::hover());
+        let painter = ui.painter_at(rect);
+        #[expect(clippy::cast_possible_truncation, reason = "pixels")]
+        let x_of = |load: f64| rect.left() + rect.width() * (load / LOAD_MAX_P) as f32;
+        for &(start, end, range_state) in &analysis.ranges {
+            let r = egui::Rect::from_min_max(
+                pos2(x_of(start), rect.top()),
+                pos2(x_of(end), rect.bottom()),
+            );
+            painter.rect_filled(r, 0.0, theme.state_color(range_state));
+        }
+        let x = x_of(p);
+        painter.line_segment(
+            [pos2(x, rect.top() - 2.0), pos2(x, rect.bottom() + 2.0)],
+            Stroke::new(3.0, Color32::WHITE),
+        );
+        for t in &analysis.transitions {
+            ui.label(
+                RichText::new(format!(
+                    "p = {}: {} -> {}",
+                    load_text(t.load),
+                    t.from.name(),
+                    t.to.name()
+                ))
+                .color(theme.state_color(t.to)),
+            );
+        }
+        if let Some(warning) = &analysis.warning {
+            ui.colored_label(
+                theme.warning,
+                "the stability is not resolved here (hover for why)",
+            )
+            .on_hover_text(warning);
+        }
+    }
+}

@@ -1,0 +1,59 @@
+//! The model picker (the presets, each with its source) and the engine picker.
+
+use eframe::egui::{self, RichText};
+
+use crate::app::View;
+use crate::app::state::AppState;
+use crate::app::theme::Theme;
+use crate::model::{PRESETS, preset};
+use crate::sim::EngineKind;
+
+pub struct ModelSection;
+
+impl View for ModelSection {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, _theme: &Theme) {
+        let current = state.settings().preset.clone();
+        let mut chosen = current.clone();
+        let shown = |name: &str| {
+            preset(name).map_or_else(
+                |_| name.to_owned(),
+                |p| format!("{} ({})", p.name, p.source),
+            )
+        };
+        // The label first and the name cut to the panel's width, so that a
+        // long name in projector mode does not squeeze the label.
+        ui.horizontal(|ui| {
+            let label = ui.label("model");
+            egui::ComboBox::from_id_salt("model")
+                .selected_text(shown(&chosen))
+                .width(ui.available_width() - ui.spacing().icon_width)
+                .truncate()
+                .show_ui(ui, |ui| {
+                    for p in &PRESETS {
+                        ui.selectable_value(&mut chosen, p.name.to_owned(), shown(p.name))
+                            .on_hover_text(p.description);
+                    }
+                })
+                .response
+                .labelled_by(label.id);
+        });
+        if chosen != current {
+            state.set_preset(&chosen);
+        }
+        if let Ok(p) = preset(&state.settings().preset) {
+            ui.label(RichText::new(p.description).small());
+        }
+        let mut engine = state.settings().engine;
+        egui::ComboBox::from_label("engine")
+            .selected_text(format!("{engine:?}").to_lowercase())
+            .show_ui(ui, |ui| {
+                ui.selectable_value(&mut engine, EngineKind::Rapier, "rapier")
+                    .on_hover_text("rapier2d multibody, the roller's spin implicit");
+                ui.selectable_value(&mut engine, EngineKind::Reference, "reference")
+                    .on_hover_text("adaptive Dormand-Prince 5(4) on the exact equations");
+            });
+        if engine != state.settings().engine {
+            state.set_engine(engine);
+        }
+    }
+}

@@ -1,0 +1,46 @@
+//! Settings as text: copy them to share a setup, paste text to load one.
+
+use eframe::egui;
+
+use crate::app::View;
+use crate::app::notice::Notice;
+use crate::app::state::AppState;
+use crate::app::theme::Theme;
+
+/// The text box's contents.
+#[derive(Default)]
+pub struct ShareSection {
+    text: String,
+}
+
+impl View for ShareSection {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, _theme: &Theme) {
+        egui::CollapsingHeader::new("share settings").show(ui, |ui| {
+            ui.horizontal(|ui| {
+                if ui.button("copy settings").clicked() {
+                    match ron::to_string(state.settings()) {
+                        Ok(text) => {
+                            ui.ctx().copy_text(text.clone());
+                            self.text = text;
+                        }
+                        Err(error) => {
+                            state.say(Notice::error(format!("settings not copied: {error}")));
+                        }
+                    }
+                }
+                if ui
+                    .button("paste settings")
+                    .on_hover_text("paste the text below first")
+                    .clicked()
+                {
+                    state.paste_settings(&self.text);
+                }
+            });
+            ui.add(
+                egui::TextEdit::multiline(&mut self.text)
+                    .desired_rows(3)
+                    .hint_text("paste settings text here"),
+            );
+        });
+    }
+}

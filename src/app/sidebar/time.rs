@@ -1,0 +1,54 @@
+//! Time: play, step, kick and reset, the speed, and where the run is.
+
+use eframe::egui;
+
+use crate::app::View;
+use crate::app::command::Command;
+use crate::app::state::AppState;
+use crate::app::stored::SPEED_RANGE;
+use crate::app::theme::Theme;
+use crate::format::number_text;
+use crate::sim::Status;
+
+pub struct TimeSection;
+
+impl View for TimeSection {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+        ui.horizontal(|ui| {
+            for command in [
+                Command::PlayPause,
+                Command::Step,
+                Command::Kick,
+                Command::Reset,
+            ] {
+                command.button(ui, state);
+            }
+        });
+        let mut speed = state.settings().speed;
+        let response = ui.add(
+            egui::Slider::new(&mut speed, SPEED_RANGE)
+                .logarithmic(true)
+                .text("× speed"),
+        );
+        if response.changed() {
+            state.set_speed(speed);
+        }
+        let sim = state.simulation();
+        let shown = if !state.running() && sim.status() == Status::Running {
+            "paused".to_owned()
+        } else {
+            sim.status().to_string()
+        };
+        ui.label(format!("t = {:.2} s   ({shown})", sim.time_secs()));
+        if let Some(achieved) = state.lagging() {
+            ui.colored_label(
+                theme.warning,
+                format!(
+                    "running at {}x: this computer cannot keep up at {}x",
+                    number_text(achieved),
+                    number_text(state.settings().speed)
+                ),
+            );
+        }
+    }
+}

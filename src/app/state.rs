@@ -1,0 +1,623 @@
+//! The app's state with no egui in it: the settings, the running
+//! simulation, the analysis of the current parameters, the overlay and the
+//! notices, with the only ways to change them.
+
+use std::collections::VecDeque;
+
+use crate::analysis::{
+    AffinePencil, AnalysisError, BRACKET_SAMPLES, C64, Locus, Spectrum, State, Transition,
+    classify, critical_loads_along, locus, resolution_warning,
+};
+use crate::model::{Assignment, Axis, KEYS, Model, ModelError, PRESETS, apply_assignments, preset};
+use crate::sim::{
+    DEFAULT_STEP_SECS, EngineKind, Observables, SimError, Simulation, Status, initial_state,
+};
+
+use super::history::History;
+use super::notice::Notice;
+use super::pace::Pace;
+
+/// The load slider's range and the locus's, on the common axis p.
+pub const LOAD_MAX_P: f64 = 8.0;
+/// Evenly spaced loads of the plotted locus (plus the refinement). The same
+/// locus brackets the critical loads, with the sample count `critical` uses.
+const LOCUS_SAMPLES: usize = BRACKET_SAMPLES;
+/// The size of a kick, in rad on both angles.
+const KICK_RAD: f64 = 0.01;
+/// The step of the load keys, on the common axis p.
+pub const LOAD_KEY_STEP_P: f64 = 0.01 * LOAD_MAX_P;
+
+/// How long the tip's trail lasts, in simulated seconds.
+pub const TRAIL_SECS: f64 = 6.0;
+
+/// Keeps the trail to its duration.
+fn push_trail(trail: &mut VecDeque<(f64, [f64; 2])>, now: &Observables) {
+    trail.push_back((now.t_secs, now.tip_m));
+    while trail
+        .front()
+        .is_some_and(|(t, _)| now.t_secs - t > TRAIL_SECS)
+    {
+        trail.pop_front();
+    }
+}
+
+/// What persists between runs of the app.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(default)]
+pub struct Settings {
+    pub preset: String,
+    pub model: Model,
+    pub engine: EngineKind,
+    /// Simulated seconds per wall second.
+    pub speed: f64,
+    pub projector: bool,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        let roller = PRESETS
+            .iter()
+            .find(|p| p.name == "roller")
+            .unwrap_or(&PRESETS[0]);
+        Self {
+            preset: roller.name.to_owned(),
+            model: roller.model(),
+            engine: EngineKind::Rapier,
+            speed: 1.0,
+            projector: false,
+        }
+    }
+}
+
+/// The linear analysis of the current parameters, over the slider's range.
+pub struct Analysis {
+    /// The model at p = 0: the locus depends on everything but the load.
+    key: Model,
+    pencil: AffinePencil,
+    pub locus: Locus,
+    pub transitions: Vec<Transition>,
+    /// The stability ranges `(from, to, state)` that cover `[0, LOAD_MAX_P]`.
+    pub ranges: Vec<(f64, f64, State)>,
+    /// Why the transitions cannot be trusted, when they cannot.
+    pub warning: Option<String>,
+}
+
+impl Analysis {
+    fn new(model: &Model) -> Result<Self, AnalysisError> {
+        let key = model.at_load(0.0);
+        let pencil = AffinePencil::new(&key)?;
+        let locus = locus(&pencil, 0.0, LOAD_MAX_P, LOCUS_SAMPLES)?;
+        let transitions = critical_loads_along(&pencil, &locus)?;
+        let warning = resolution_warning(&pencil, &locus)?;
+        let at_zero = pencil.spectrum(0.0)?;
+        let first = classify(&at_zero.eigenvalues, at_zero.scale_per_s).state;
+        let ranges = ranges(&transitions, first, LOAD_MAX_P);
+        Ok(Self {
+            key,
+            pencil,
+            locus,
+            transitions,
+            ranges,
+            warning,
+        })
+    }
+
+    /// The first load at which the column loses stability, if it does below
+    /// the slider's end.
+    #[must_use]
+    pub fn first_instability(&self) -> Option<f64> {
+        self.transitions
+            .iter()
+            .find(|t| t.from == State::Stable)
+            .map(|t| t.load)
+    }
+}
+
+/// The stability ranges `(from, to, state)` covering `[0, max]`, from the
+/// transitions and the state at p = 0.
+#[must_use]
+pub fn ranges(transitions: &[Transition], first: State, max: f64) -> Vec<(f64, f64, State)> {
+    let mut out = Vec::new();
+    let (mut start, mut state) = (0.0, first);
+    for t in transitions {
+        if t.load > max {
+            break;
+        }
+        out.push((start, t.load, state));
+        (start, state) = (t.load, t.to);
+    }
+    out.push((start, max, state));
+    out
+}
+
+/// Another preset's root locus, at the current model's `a`.
+pub struct Overlay {
+    pub preset: &'static str,
+    /// The group `a` the locus was computed with.
+    a: f64,
+    pub locus: Locus,
+}
+
+/// Why the overlay could not be drawn.
+#[derive(Debug, thiserror::Error)]
+enum OverlayError {
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    #[error(transparent)]
+    Analysis(#[from] AnalysisError),
+}
+
+/// What the user is told when rapier cannot integrate the column.
+const SWITCHED_TO_REFERENCE: &str = "the column is too stiff for the rapier engine at its 1/240 s step (huge damping or stiffness against little mass); switched to the reference engine";
+
+/// A run of the settings' model from the standard kick. When rapier cannot
+/// integrate it the reference engine runs instead, the settings say so, and
+/// so does the returned notice.
+fn start(settings: &mut Settings) -> Result<(Simulation, Option<Notice>), SimError> {
+    let model = settings.model;
+    let x0 = initial_state(&model, 1e-3);
+    match Simulation::new(model, settings.engine, x0, DEFAULT_STEP_SECS) {
+        Ok(sim) => Ok((sim, None)),
+        Err(SimError::TooStiffForRapier { .. }) => {
+            settings.engine = EngineKind::Reference;
+            Simulation::new(model, EngineKind::Reference, x0, DEFAULT_STEP_SECS)
+                .map(|sim| (sim, Some(Notice::warning(SWITCHED_TO_REFERENCE))))
+        }
+        Err(error) => Err(error),
+    }
+}
+
+/// Everything the window shows, and the only ways to change it.
+pub struct AppState {
+    settings: Settings,
+    sim: Simulation,
+    running: bool,
+    trail: VecDeque<(f64, [f64; 2])>,
+    analysis: Option<Analysis>,
+    /// Simulated time against wall-clock time.
+    pace: Pace,
+    /// The spectrum at the current load and the model it is for.
+    current: Option<(Model, Spectrum)>,
+    /// The last thing to tell the user.
+    notice: Option<Notice>,
+    /// The last refused parameter value: its key and why.
+    refused: Option<(&'static str, String)>,
+    history: History,
+    /// The column's eigenvalues measured from the run, refreshed about once a
+    /// simulated second.
+    measured: Option<Vec<C64>>,
+    measured_at_secs: f64,
+    /// A second model's locus drawn behind the current one (Fig. 8).
+    overlay: Option<Overlay>,
+}
+
+impl AppState {
+    /// The state with `settings`, its run started from the standard kick.
+    ///
+    /// # Errors
+    /// Settings that make no valid simulation.
+    pub fn new(mut settings: Settings) -> Result<Self, SimError> {
+        let (sim, notice) = start(&mut settings)?;
+        let mut state = Self {
+            settings,
+            sim,
+            running: true,
+            trail: VecDeque::new(),
+            analysis: None,
+            pace: Pace::default(),
+            current: None,
+            notice,
+            refused: None,
+            history: History::default(),
+            measured: None,
+            measured_at_secs: f64::NEG_INFINITY,
+            overlay: None,
+        };
+        state.refresh_analysis();
+        Ok(state)
+    }
+
+    #[must_use]
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    #[must_use]
+    pub fn simulation(&self) -> &Simulation {
+        &self.sim
+    }
+
+    #[must_use]
+    pub fn model(&self) -> &Model {
+        &self.settings.model
+    }
+
+    #[must_use]
+    pub fn running(&self) -> bool {
+        self.running
+    }
+
+    #[must_use]
+    pub fn trail(&self) -> &VecDeque<(f64, [f64; 2])> {
+        &self.trail
+    }
+
+    #[must_use]
+    pub fn history(&self) -> &History {
+        &self.history
+    }
+
+    #[must_use]
+    pub fn measured(&self) -> Option<&[C64]> {
+        self.measured.as_deref()
+    }
+
+    #[must_use]
+    pub fn analysis(&self) -> Option<&Analysis> {
+        self.analysis.as_ref()
+    }
+
+    #[must_use]
+    pub fn overlay(&self) -> Option<&Overlay> {
+        self.overlay.as_ref()
+    }
+
+    #[must_use]
+    pub fn notice(&self) -> Option<&Notice> {
+        self.notice.as_ref()
+    }
+
+    /// Why the last value typed for `key` was refused, if it was.
+    #[must_use]
+    pub fn refusal(&self, key: &str) -> Option<&str> {
+        self.refused
+            .as_ref()
+            .filter(|(k, _)| *k == key)
+            .map(|(_, why)| why.as_str())
+    }
+
+    /// The achieved speed when the run falls behind the chosen one.
+    #[must_use]
+    pub fn lagging(&self) -> Option<f64> {
+        self.running
+            .then(|| self.pace.lagging(self.settings.speed))
+            .flatten()
+    }
+
+    /// Tells the user `notice`, after what they were already told.
+    pub fn tell(&mut self, notice: Notice) {
+        self.notice = Some(match self.notice.take() {
+            Some(earlier) => earlier.and(&notice),
+            None => notice,
+        });
+    }
+
+    /// Replaces what the user is told.
+    pub fn say(&mut self, notice: Notice) {
+        self.notice = Some(notice);
+    }
+
+    pub fn dismiss_notice(&mut self) {
+        self.notice = None;
+    }
+
+    /// Sets one parameter by its key (as `--set` does): the model changes for
+    /// the running simulation and the analysis follows; a refused value
+    /// changes nothing and the error says why.
+    ///
+    /// # Errors
+    /// The key's or the model's validation error.
+    pub fn set_parameter(&mut self, key: &str, value: f64) -> Result<(), ModelError> {
+        let mut candidate = self.settings.model;
+        let assignment = Assignment {
+            key: key.to_owned(),
+            value,
+        };
+        apply_assignments(&mut candidate, &self.settings.preset, &[assignment])?;
+        self.set_model(candidate);
+        Ok(())
+    }
+
+    /// [`Self::set_parameter`] as typed or dragged in a field: a refusal is
+    /// kept to show beside the field until the next value for it.
+    pub fn enter_parameter(&mut self, key: &'static str, value: f64) {
+        self.refused = self
+            .set_parameter(key, value)
+            .err()
+            .map(|why| (key, why.to_string()));
+    }
+
+    /// Moves the load by `delta_p`, within the slider's range (or toward it
+    /// from beyond).
+    pub fn nudge_load(&mut self, delta_p: f64) {
+        let p = self.settings.model.load_p();
+        let moved = if delta_p > 0.0 {
+            (p + delta_p).min(LOAD_MAX_P.max(p))
+        } else {
+            (p + delta_p).max(0.0)
+        };
+        self.enter_parameter("load", moved);
+    }
+
+    /// Switches to the preset `name` at the current load: its parameters,
+    /// a fresh run, the overlay at its `a`.
+    pub fn set_preset(&mut self, name: &str) {
+        let Ok(chosen) = preset(name) else {
+            self.say(Notice::error(format!("no preset named {name}")));
+            return;
+        };
+        chosen.name.clone_into(&mut self.settings.preset);
+        self.refused = None;
+        self.set_model(chosen.model().at_load(self.settings.model.load_p()));
+        self.reset();
+    }
+
+    /// Runs the simulation on `engine` from the current state.
+    pub fn set_engine(&mut self, engine: EngineKind) {
+        match self.sim.restart_from(engine, self.sim.state()) {
+            Ok(()) => self.settings.engine = engine,
+            Err(error) => self.say(Notice::error(error.to_string())),
+        }
+    }
+
+    /// Simulated seconds per wall second.
+    pub fn set_speed(&mut self, speed: f64) {
+        self.settings.speed = speed;
+    }
+
+    pub fn set_projector(&mut self, on: bool) {
+        self.settings.projector = on;
+    }
+
+    pub fn toggle_running(&mut self) {
+        self.running = !self.running;
+    }
+
+    /// Applies a changed model to the running simulation; the analysis and
+    /// the overlay follow.
+    pub fn set_model(&mut self, model: Model) {
+        let result = match self.sim.set_model(model) {
+            Err(SimError::TooStiffForRapier { .. }) => {
+                // rapier cannot follow: the reference engine takes over, and says so.
+                let state = self.sim.state();
+                let switched = self
+                    .sim
+                    .restart_from(EngineKind::Reference, state)
+                    .and_then(|()| self.sim.set_model(model));
+                if switched.is_ok() {
+                    self.settings.engine = EngineKind::Reference;
+                    self.say(Notice::warning(SWITCHED_TO_REFERENCE));
+                }
+                switched
+            }
+            other => other,
+        };
+        match result {
+            Ok(()) => {
+                self.settings.model = model;
+                self.refresh_analysis();
+                if let Some(overlay) = &self.overlay
+                    && overlay.a != self.group_a()
+                {
+                    self.set_overlay(Some(overlay.preset));
+                }
+            }
+            Err(error) => self.say(Notice::error(error.to_string())),
+        }
+    }
+
+    /// What a click on the map does: the load and the map's second
+    /// parameter are set (the run goes on with them); a refused value says why.
+    pub fn set_map_point(&mut self, axis: &Axis, load: f64, value: f64) {
+        match axis.apply(&self.settings.model, &self.settings.preset, value) {
+            Ok(model) => self.set_model(model.at_load(load)),
+            Err(error) => self.say(Notice::error(format!("map: {error}"))),
+        }
+    }
+
+    /// Advances the run by `wall_secs` of wall-clock time at the chosen speed
+    /// (whole engine steps, the remainder carried; see [`Pace`]).
+    pub fn advance(&mut self, wall_secs: f64) {
+        if !self.running {
+            self.pace.restart();
+            return;
+        }
+        let steps = self
+            .pace
+            .steps(wall_secs, self.settings.speed, self.sim.step_secs());
+        for _ in 0..steps {
+            if !self.take_step() {
+                break;
+            }
+        }
+    }
+
+    /// One engine step, then paused (the step button).
+    pub fn step(&mut self) {
+        self.running = false;
+        self.pace.restart();
+        self.take_step();
+    }
+
+    /// One engine step with what follows it: the trail, the history, the
+    /// measured eigenvalues; a run that ends stops. Whether it goes on.
+    fn take_step(&mut self) -> bool {
+        if self.sim.step() != Status::Running {
+            self.running = false;
+            self.pace.restart();
+            return false;
+        }
+        let now = self.sim.observe();
+        push_trail(&mut self.trail, &now);
+        self.history.push(now);
+        let t = self.sim.time_secs();
+        if t - self.measured_at_secs >= 1.0 {
+            // Two exponentials per oscillating mode of the column.
+            self.measured = self.history.measured(4);
+            self.measured_at_secs = t;
+        }
+        true
+    }
+
+    /// Disturbs both angles by [`KICK_RAD`] and runs on.
+    pub fn kick(&mut self) {
+        let mut x = self.sim.state();
+        x[0] += KICK_RAD;
+        x[1] += KICK_RAD;
+        if let Err(error) = self.sim.restart_from(self.sim.engine(), x) {
+            self.say(Notice::error(error.to_string()));
+        }
+        self.running = true;
+    }
+
+    /// A fresh run of the current model from the standard kick.
+    pub fn reset(&mut self) {
+        match start(&mut self.settings) {
+            Ok((sim, notice)) => {
+                if let Some(notice) = notice {
+                    self.say(notice);
+                }
+                self.sim = sim;
+                self.trail.clear();
+                self.history.clear();
+                self.measured = None;
+                self.measured_at_secs = f64::NEG_INFINITY;
+                self.pace.restart();
+                self.running = true;
+            }
+            Err(error) => self.say(Notice::error(error.to_string())),
+        }
+    }
+
+    /// Recomputes the locus and the critical loads when the parameters
+    /// (anything but the load) changed, and the spectrum at the current load
+    /// when the load did; keeps them otherwise.
+    fn refresh_analysis(&mut self) {
+        let key = self.settings.model.at_load(0.0);
+        if !self.analysis.as_ref().is_some_and(|a| a.key == key) {
+            match Analysis::new(&self.settings.model) {
+                Ok(analysis) => self.analysis = Some(analysis),
+                Err(error) => {
+                    // No stale plots: the old locus belongs to other parameters.
+                    self.analysis = None;
+                    self.say(Notice::error(format!("analysis unavailable: {error}")));
+                }
+            }
+        }
+        let model = self.settings.model;
+        self.current = self
+            .analysis
+            .as_ref()
+            .and_then(|a| a.pencil.spectrum(model.load_p()).ok())
+            .map(|spectrum| (model, spectrum));
+    }
+
+    /// The spectrum at the current load, if the current model has one.
+    #[must_use]
+    pub fn current_spectrum(&self) -> Option<&Spectrum> {
+        self.current
+            .as_ref()
+            .filter(|(m, _)| *m == self.settings.model && self.analysis.is_some())
+            .map(|(_, spectrum)| spectrum)
+    }
+
+    /// Every eigenvalue at the current load (none without an analysis).
+    #[must_use]
+    pub fn current_eigenvalues(&self) -> Vec<C64> {
+        self.current_spectrum()
+            .map(|s| s.all().collect())
+            .unwrap_or_default()
+    }
+
+    /// The current model's `a = k/(m l^2)`.
+    fn group_a(&self) -> f64 {
+        KEYS.iter()
+            .find(|k| k.key == "a")
+            .map_or(f64::NAN, |k| k.get(&self.settings.model))
+    }
+
+    /// Shows `name`'s locus behind the current one, at the current `a`
+    /// (`None`: no overlay).
+    pub fn set_overlay(&mut self, name: Option<&'static str>) {
+        let Some(name) = name else {
+            self.overlay = None;
+            return;
+        };
+        let a = self.group_a();
+        let build = || -> Result<Locus, OverlayError> {
+            let mut model = preset(name)?.model();
+            let set_a = Assignment {
+                key: "a".to_owned(),
+                value: a,
+            };
+            apply_assignments(&mut model, name, &[set_a])?;
+            let pencil = AffinePencil::new(&model)?;
+            Ok(locus(&pencil, 0.0, LOAD_MAX_P, LOCUS_SAMPLES)?)
+        };
+        match build() {
+            Ok(locus) => {
+                self.overlay = Some(Overlay {
+                    preset: name,
+                    a,
+                    locus,
+                });
+            }
+            Err(error) => {
+                self.overlay = None;
+                self.say(Notice::error(format!("overlay unavailable: {error}")));
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn t(load: f64, from: State, to: State) -> Transition {
+        Transition { load, from, to }
+    }
+
+    #[test]
+    fn ranges_cover_the_slider_from_zero_to_its_end() {
+        let transitions = [
+            t(2.0, State::Stable, State::Flutter),
+            t(4.0, State::Flutter, State::Divergence),
+            t(9.0, State::Divergence, State::Flutter),
+        ];
+        let ranges = ranges(&transitions, State::Stable, 8.0);
+        assert_eq!(
+            ranges,
+            vec![
+                (0.0, 2.0, State::Stable),
+                (2.0, 4.0, State::Flutter),
+                (4.0, 8.0, State::Divergence)
+            ]
+        );
+    }
+
+    #[test]
+    fn the_step_button_steps_through_advance_s_bookkeeping() {
+        let mut state = AppState::new(Settings::default()).unwrap();
+        let before = state.history().thinned(usize::MAX).count();
+        state.step();
+        assert!(!state.running());
+        assert_eq!(state.history().thinned(usize::MAX).count(), before + 1);
+        assert!(state.simulation().time_secs() > 0.0);
+    }
+
+    #[test]
+    fn switching_preset_recomputes_the_overlay_and_clears_a_refusal() {
+        let mut state = AppState::new(Settings::default()).unwrap();
+        state.enter_parameter("a", 21.0);
+        state.enter_parameter("nu", -1.0);
+        assert!(state.refusal("nu").is_some());
+        state.set_overlay(Some("ziegler-1952"));
+        assert_eq!(state.overlay().unwrap().a, 21.0);
+        state.set_preset("midpoint-masses");
+        assert!(state.refusal("nu").is_none());
+        let overlay = state.overlay().unwrap();
+        assert_eq!(overlay.a, state.group_a());
+        assert_ne!(overlay.a, 21.0, "the preset's own a");
+    }
+}

@@ -1,0 +1,78 @@
+//! The tabs of the lower half of the window, each a [`View`] in a file of
+//! its own: the root locus, the time histories, the stability map and the
+//! paradox explorer.
+
+mod histories;
+mod locus;
+pub mod map;
+mod paradox;
+
+use eframe::egui;
+
+use super::View;
+use super::state::{AppState, LOAD_MAX_P};
+
+/// The choice of plots in the lower half of the window.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum Tab {
+    #[default]
+    Locus,
+    Histories,
+    Map,
+    Paradox,
+}
+
+impl Tab {
+    /// Every tab, in the order the tab bar shows them.
+    pub const ALL: [Self; 4] = [Self::Locus, Self::Histories, Self::Map, Self::Paradox];
+
+    /// The tab bar's name for it.
+    #[must_use]
+    pub fn title(self) -> &'static str {
+        match self {
+            Self::Locus => "root locus",
+            Self::Histories => "time histories",
+            Self::Map => "stability map",
+            Self::Paradox => "paradox",
+        }
+    }
+}
+
+/// Every tab's view (the map and the paradox keep their background work).
+#[derive(Default)]
+pub struct Tabs {
+    locus: locus::LocusTab,
+    histories: histories::HistoriesTab,
+    map: map::MapPanel,
+    paradox: paradox::ParadoxPanel,
+}
+
+impl Tabs {
+    /// The view that draws `tab`.
+    pub fn view(&mut self, tab: Tab) -> &mut dyn View {
+        match tab {
+            Tab::Locus => &mut self.locus,
+            Tab::Histories => &mut self.histories,
+            Tab::Map => &mut self.map,
+            Tab::Paradox => &mut self.paradox,
+        }
+    }
+
+    /// The tab bar: a click shows another tab.
+    pub fn bar_ui(ui: &mut egui::Ui, open: &mut Tab) {
+        ui.horizontal(|ui| {
+            for tab in Tab::ALL {
+                ui.selectable_value(open, tab, tab.title());
+            }
+        });
+    }
+
+    /// Computes the stability map and the paradox curves of the current
+    /// parameters and waits until they are complete (for pictures and tests).
+    pub fn complete_background_work(&mut self, state: &AppState) {
+        let (model, preset) = (state.model(), &state.settings().preset);
+        self.map.follow(model, preset, LOAD_MAX_P);
+        self.map.wait();
+        self.paradox.wait(model, preset);
+    }
+}

@@ -1,0 +1,95 @@
+//! Numbers for people: every formatter the app, the CLI and the messages
+//! use, in one place (pure; no UI).
+
+/// A number for people and for editing: plain with up to six significant
+/// digits from 1e-3 to 1e6, in exponent form outside (so 1e-6 is not shown
+/// as 0.0000), "0" for zero.
+#[must_use]
+pub fn number_text(value: f64) -> String {
+    let magnitude = value.abs();
+    if value == 0.0 || !value.is_finite() {
+        format!("{value}")
+    } else if (1e-3..1e6).contains(&magnitude) {
+        // Six significant digits, trailing zeros dropped.
+        #[expect(clippy::cast_possible_truncation, reason = "a small exponent")]
+        let decimals = (5 - magnitude.log10().floor() as i32).max(0);
+        let text = format!("{value:.*}", decimals.unsigned_abs() as usize);
+        if text.contains('.') {
+            text.trim_end_matches('0').trim_end_matches('.').to_owned()
+        } else {
+            text
+        }
+    } else {
+        let text = format!("{value:.5e}");
+        let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+        format!("{mantissa}e{exponent}")
+    }
+}
+
+/// A growth rate, signed: five decimals, or four significant digits when small.
+#[must_use]
+pub fn rate_text(rate: f64) -> String {
+    if rate == 0.0 || rate.abs() >= 1e-3 {
+        format!("{rate:+.5}")
+    } else {
+        format!("{rate:+.3e}")
+    }
+}
+
+/// A time in s: one decimal from 10 s, three significant digits below.
+#[must_use]
+pub fn secs_text(secs: f64) -> String {
+    if secs >= 10.0 {
+        format!("{secs:.1}")
+    } else if secs >= 1e-3 {
+        format!("{secs:.3}")
+    } else {
+        format!("{secs:.2e}")
+    }
+}
+
+/// A load: four decimals, or three significant digits when it is below
+/// 1e-3 (the roller's first flutter load scales with nu).
+#[must_use]
+pub fn load_text(load: f64) -> String {
+    if load == 0.0 || load.abs() >= 1e-3 {
+        format!("{load:.4}")
+    } else {
+        format!("{load:.2e}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_keep_their_significant_digits() {
+        for (value, text) in [
+            (0.0, "0"),
+            (0.1, "0.1"),
+            (0.123_456_789, "0.123457"),
+            (1234.5, "1234.5"),
+            (-0.001, "-0.001"),
+            (1e-6, "1e-6"),
+            (2.5e6, "2.5e6"),
+            (3.0, "3"),
+        ] {
+            assert_eq!(number_text(value), text, "{value}");
+            let read: f64 = text.parse().unwrap();
+            assert!((read - value).abs() <= 5e-6 * value.abs(), "{value}");
+        }
+    }
+
+    #[test]
+    fn small_loads_rates_and_times_keep_three_significant_digits() {
+        assert_eq!(load_text(2.085_786_437_626_9), "2.0858");
+        assert_eq!(load_text(2.382e-4), "2.38e-4");
+        assert_eq!(rate_text(0.004_49), "+0.00449");
+        assert_eq!(rate_text(-2.5e-5), "-2.500e-5");
+        assert_eq!(secs_text(122.04), "122.0");
+        assert_eq!(secs_text(1.234_56), "1.235");
+        assert_eq!(secs_text(5e-4), "5.00e-4");
+    }
+}
