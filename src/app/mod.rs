@@ -3,6 +3,7 @@
 //! it shows lives in [`state::AppState`]; every part of the window is a
 //! [`View`] of it in a file of its own.
 
+mod analysis_cache;
 mod command;
 mod history;
 mod notice;

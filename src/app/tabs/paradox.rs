@@ -301,7 +301,7 @@ impl View for ParadoxPanel {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
         let known = state
             .analysis()
-            .and_then(crate::app::state::Analysis::first_instability);
+            .and_then(crate::app::analysis_cache::Analysis::first_instability);
         let (model, preset) = (*state.model(), state.settings().preset.clone());
         self.draw(ui, &model, &preset, known, theme);
     }
