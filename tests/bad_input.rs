@@ -228,7 +228,7 @@ const CLI: &[Cli] = &[
             "--out",
             "/tmp/zl-never.png",
         ],
-        "size = 10x10",
+        "invalid value '10x10' for '--size",
     ),
     refused(
         &[
@@ -585,7 +585,7 @@ const CLI: &[Cli] = &[
         &[
             "snapshot", "--preset", "roller", "--size", "-640x480", "--out", "x.png",
         ],
-        "size = -640x480: must be WIDTHxHEIGHT",
+        "invalid value '-640x480' for '--size <SIZE>': must be WIDTHxHEIGHT",
     ),
     refused(
         &["critical", "--preset", "roller", "--set", "n\x1bu\tx=1"],

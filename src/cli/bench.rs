@@ -1,0 +1,157 @@
+//! `zieglerlab bench`: the speed figures of this machine, as a table with the
+//! targets or as JSON.
+
+use std::io::Write;
+
+use anyhow::Result;
+
+use zieglerlab::bench::{FRAMES, Report};
+
+/// The most frames `bench` times (about a minute of frames).
+const MAX_FRAMES: usize = 10_000;
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[arg(long)]
+    json: bool,
+    /// Frames timed for the frame-time quantiles.
+    #[arg(long, default_value_t = FRAMES)]
+    frames: usize,
+}
+
+/// A target on a 2-core machine.
+#[derive(Clone, Copy)]
+enum Target {
+    AtMost(f64),
+    AtLeast(f64),
+}
+
+/// A figure of the report.
+type Figure = fn(&Report) -> f64;
+
+/// The table: each line's JSON key, figure, unit, what was measured and the
+/// target, if there is one.
+const LINES: [(&str, Figure, &str, &str, Option<Target>); 13] = [
+    (
+        "locus_us_per_load",
+        |r| r.locus_us_per_load,
+        "us per load",
+        "tracked locus, roller, 1000 loads",
+        Some(Target::AtMost(0.8)),
+    ),
+    (
+        "locus2_us_per_load",
+        |r| r.locus2_us_per_load,
+        "us per load",
+        "tracked locus, midpoint-masses, 1000 loads",
+        None,
+    ),
+    (
+        "eig_us_per_pencil",
+        |r| r.eig_us_per_pencil,
+        "us per pencil",
+        "eigenvalues alone, 100000 roller pencils",
+        None,
+    ),
+    (
+        "critical_ms",
+        |r| r.critical_ms,
+        "ms",
+        "critical loads, roller, p in [0, 10]",
+        None,
+    ),
+    (
+        "sim_reference_x_realtime",
+        |r| r.sim_reference_x_realtime,
+        "x real time",
+        "reference engine, roller p = 1, dt = 1/240 s",
+        Some(Target::AtLeast(1000.0)),
+    ),
+    (
+        "sim_rapier_x_realtime",
+        |r| r.sim_rapier_x_realtime,
+        "x real time",
+        "rapier engine, roller p = 1, dt = 1/240 s",
+        Some(Target::AtLeast(200.0)),
+    ),
+    (
+        "frame_ms_p50",
+        |r| r.frame_ms_p50,
+        "ms",
+        "app frame at 1280x800, nu moving every frame: median",
+        None,
+    ),
+    (
+        "frame_ms_p99",
+        |r| r.frame_ms_p99,
+        "ms",
+        "the same, 99th percentile",
+        Some(Target::AtMost(8.0)),
+    ),
+    (
+        "frame_ms_p99_map",
+        |r| r.frame_ms_p99_map,
+        "ms",
+        "the same drag with the stability-map tab open: p99",
+        Some(Target::AtMost(8.0)),
+    ),
+    (
+        "frame_ms_p99_paradox",
+        |r| r.frame_ms_p99_paradox,
+        "ms",
+        "the same drag with the paradox tab open: p99",
+        Some(Target::AtMost(8.0)),
+    ),
+    (
+        "map_ms",
+        |r| r.map_ms,
+        "ms",
+        "roller map 256x256 (load, nu) on every core",
+        Some(Target::AtMost(300.0)),
+    ),
+    (
+        "numpy_eig_us_per_pencil",
+        |r| r.numpy_eig_us_per_pencil.unwrap_or(f64::NAN),
+        "us per pencil",
+        "numpy's batched eigvals, the same 6x6 pencils (NaN: no numpy)",
+        None,
+    ),
+    (
+        "locus_speedup_vs_numpy",
+        |r| r.locus_speedup_vs_numpy.unwrap_or(f64::NAN),
+        "x",
+        "numpy per pencil over the locus per load",
+        Some(Target::AtLeast(8.0)),
+    ),
+];
+
+pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
+    if !(1..=MAX_FRAMES).contains(&args.frames) {
+        anyhow::bail!("frames = {}: must be 1 to {MAX_FRAMES}", args.frames);
+    }
+    if cfg!(debug_assertions) {
+        eprintln!(
+            "note: this is a debug build; for representative numbers run `cargo run --release -- bench`"
+        );
+    }
+    let report = zieglerlab::bench::run(args.frames)?;
+    if args.json {
+        writeln!(out, "{}", serde_json::to_string_pretty(&report)?)?;
+        return Ok(());
+    }
+    for (key, figure, unit, what, target) in LINES {
+        let figure = figure(&report);
+        let target = target
+            .map(|target| {
+                let (sign, bound, met) = match target {
+                    Target::AtMost(bound) => ("<=", bound, figure <= bound),
+                    Target::AtLeast(bound) => (">=", bound, figure >= bound),
+                };
+                let verdict = if met { "met" } else { "MISSED" };
+                format!("  (target {sign} {bound}: {verdict})")
+            })
+            .unwrap_or_default();
+        writeln!(out, "{key:<26} {figure:>10.3} {unit:<14} {what}{target}")?;
+    }
+    Ok(())
+}

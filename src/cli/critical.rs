@@ -1,0 +1,68 @@
+//! `zieglerlab critical`: every change of stability along the load axis.
+
+use std::io::Write;
+
+use anyhow::Result;
+use serde_json::json;
+
+use zieglerlab::analysis::{
+    AffinePencil, DEFAULT_LOAD_MAX, bracketing_locus, critical_loads_along, resolution_warning,
+};
+
+use super::{LOAD_AXIS, ModelArgs, printable};
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    model: ModelArgs,
+    /// Lower end of the load range searched.
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    load_min: f64,
+    /// Upper end of the load range searched.
+    #[arg(long, default_value_t = DEFAULT_LOAD_MAX, allow_negative_numbers = true)]
+    load_max: f64,
+    #[arg(long)]
+    json: bool,
+}
+
+pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
+    let (load_min, load_max) = (args.load_min, args.load_max);
+    let (name, model) = args.model.build()?;
+    let pencil = AffinePencil::new(&model)?;
+    let bracket = bracketing_locus(&pencil, load_min, load_max)?;
+    let transitions = critical_loads_along(&pencil, &bracket)?;
+    let warning = resolution_warning(&pencil, &bracket)?;
+    if let Some(warning) = &warning {
+        eprintln!("warning: {}", printable(warning));
+    }
+    if args.json {
+        let value = json!({
+            "preset": name,
+            "load_axis": LOAD_AXIS,
+            "load_min": load_min,
+            "load_max": load_max,
+            "transitions": transitions,
+            "resolved": warning.is_none(),
+            "warning": warning,
+        });
+        writeln!(out, "{}", serde_json::to_string_pretty(&value)?)?;
+        return Ok(());
+    }
+    writeln!(
+        out,
+        "{name}: stability changes for {LOAD_AXIS} in [{load_min}, {load_max}]"
+    )?;
+    if transitions.is_empty() {
+        writeln!(out, "  none")?;
+    }
+    // The roller's own load q = R l/k = p / mu, beside p.
+    let mu = model.roller().map(|roller| roller.mu);
+    for t in &transitions {
+        let (from, to) = (t.from.name(), t.to.name());
+        let q = mu
+            .map(|mu| format!("  (q = R l/k = {:.9})", t.load / mu))
+            .unwrap_or_default();
+        writeln!(out, "  p = {:<22} {from} -> {to}{q}", t.load)?;
+    }
+    Ok(())
+}

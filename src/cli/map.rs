@@ -1,0 +1,208 @@
+//! `zieglerlab map`: the state and growth rate of every cell of a grid over
+//! the load and a second parameter, as CSV or a PNG picture.
+
+use std::io::Write as _;
+use std::str::FromStr;
+use std::sync::atomic::{AtomicBool, AtomicUsize};
+
+use anyhow::Result;
+use clap::ValueEnum;
+
+use zieglerlab::analysis::{
+    AffinePencil, MapSpec, Row, RowResult, bracketing_locus, compute_map, resolution_warning,
+};
+use zieglerlab::model::{Axis, Shown};
+
+use super::output::{check_output, write_atomically, write_png};
+use super::{ModelArgs, printable, progress_bar};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum Format {
+    Csv,
+    Png,
+}
+
+/// The most cells along one axis of a map.
+const MAX_CELLS: usize = 2048;
+
+/// One axis of the map as `NAME:MIN:MAX:N`: N evenly spaced values from MIN
+/// to MAX, ends included (the name may hold ':'-free '/', as c1/c2).
+#[derive(Clone, Debug)]
+pub struct AxisArg {
+    text: String,
+    name: String,
+    min: f64,
+    max: f64,
+    count: usize,
+}
+
+impl FromStr for AxisArg {
+    type Err = String;
+
+    fn from_str(text: &str) -> Result<Self, String> {
+        let shape = || "must be NAME:MIN:MAX:N (e.g. nu:0.01:1:256)".to_owned();
+        let mut parts = text.rsplitn(4, ':');
+        let (Some(n), Some(max), Some(min), Some(name)) =
+            (parts.next(), parts.next(), parts.next(), parts.next())
+        else {
+            return Err(shape());
+        };
+        let number = |s: &str| {
+            s.trim()
+                .parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| format!("'{s}' is not a finite number"))
+        };
+        let (min, max) = (number(min)?, number(max)?);
+        let count: usize = n
+            .trim()
+            .parse()
+            .map_err(|_| format!("N = '{n}' is not a count"))?;
+        if !(1..=MAX_CELLS).contains(&count) {
+            return Err(format!("N = {count}: must be 1 to {MAX_CELLS}"));
+        }
+        if !(max > min || (count == 1 && max == min)) {
+            return Err("MAX must be above MIN (or equal with N = 1)".to_owned());
+        }
+        Ok(Self {
+            text: text.to_owned(),
+            name: name.trim().to_owned(),
+            min,
+            max,
+            count,
+        })
+    }
+}
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    model: ModelArgs,
+    /// The load axis, load:MIN:MAX:N (N evenly spaced loads, ends included).
+    #[arg(long, allow_hyphen_values = true)]
+    x: AxisArg,
+    /// The second axis, KEY:MIN:MAX:N.
+    #[arg(long, allow_hyphen_values = true)]
+    y: AxisArg,
+    #[arg(long, value_enum, default_value_t = Format::Csv)]
+    format: Format,
+    #[arg(long)]
+    out: std::path::PathBuf,
+}
+
+pub fn run(args: &Args) -> Result<()> {
+    let Args { x, y, out, .. } = args;
+    check_output(out, args.format == Format::Png)?;
+    let (name, model) = args.model.build()?;
+    if x.name != "load" {
+        anyhow::bail!(
+            "--x {}: the map's first axis is the load: load:MIN:MAX:N",
+            x.text
+        );
+    }
+    if x.min < 0.0 {
+        anyhow::bail!("--x {}: loads must be >= 0", x.text);
+    }
+    let axis = Axis::parse(&y.name, &model, &name)?;
+    if axis == Axis::Key("load") {
+        anyhow::bail!("--y {}: the second axis cannot be the load again", y.text);
+    }
+    let spec = MapSpec {
+        model,
+        preset: name,
+        axis,
+        load_range: (x.min, x.max),
+        loads: x.count,
+        axis_range: (y.min, y.max),
+        values: y.count,
+    };
+    let rows = compute(&spec)?;
+    let mut complete = Vec::with_capacity(y.count);
+    for row in &rows {
+        match row {
+            Some(Ok(row)) => complete.push(row),
+            Some(Err(reason)) => anyhow::bail!("--y {}: no analysis there: {reason}", y.text),
+            None => anyhow::bail!("a map row was not computed"),
+        }
+    }
+    warn_if_unresolved(&spec, &complete, &y.name)?;
+    match args.format {
+        Format::Csv => {
+            let grid = spec.load_grid()?;
+            write_atomically(out, |file| {
+                writeln!(file, "load,{},state,growth_rate", y.name)?;
+                for row in &complete {
+                    for (p, cell) in grid.iter().zip(&row.cells) {
+                        writeln!(
+                            file,
+                            "{p},{},{},{}",
+                            row.value,
+                            cell.state.name(),
+                            cell.growth_per_s
+                        )?;
+                    }
+                }
+                Ok(())
+            })?;
+        }
+        Format::Png => {
+            let scale = (512 / x.count.max(y.count)).max(1);
+            let picture = zieglerlab::app::map_picture(&rows, x.count, scale);
+            let [width, height] = picture.size;
+            let bytes: Vec<u8> = picture
+                .pixels
+                .iter()
+                .flat_map(eframe::egui::Color32::to_array)
+                .collect();
+            let width = u32::try_from(width)?;
+            let height = u32::try_from(height)?;
+            let image = image::RgbaImage::from_raw(width, height, bytes)
+                .ok_or_else(|| anyhow::anyhow!("the map picture has the wrong size"))?;
+            write_png(out, &image)?;
+        }
+    }
+    Ok(())
+}
+
+/// Every row of `spec` on every core, with a progress bar.
+fn compute(spec: &MapSpec) -> Result<Vec<Option<RowResult>>> {
+    let rows: std::sync::Mutex<Vec<Option<RowResult>>> =
+        std::sync::Mutex::new(vec![None; spec.values]);
+    let threads = std::thread::available_parallelism().map_or(2, std::num::NonZero::get);
+    let (cancel, done) = (AtomicBool::new(false), AtomicUsize::new(0));
+    let progress = progress_bar(spec.values as u64, "map rows");
+    compute_map(spec, threads, &cancel, &done, &|j, row| {
+        if let Ok(mut rows) = rows.lock() {
+            rows[j] = Some(row);
+        }
+        progress.inc(1);
+    })?;
+    progress.finish_and_clear();
+    rows.into_inner()
+        .map_err(|_| anyhow::anyhow!("a map thread failed"))
+}
+
+/// Checks the resolution of the map's rows at both ends of the second axis
+/// and in its middle: where a singular limit (a tiny roller mass, a slow
+/// band) leaves the states to rounding, the map says so as `critical` does.
+fn warn_if_unresolved(spec: &MapSpec, rows: &[&Row], y_name: &str) -> Result<()> {
+    let (load_min, load_max) = spec.load_range;
+    for row in [rows.first(), rows.get(rows.len() / 2), rows.last()]
+        .into_iter()
+        .flatten()
+    {
+        let model = spec.axis.apply(&spec.model, &spec.preset, row.value)?;
+        let pencil = AffinePencil::new(&model)?;
+        let bracket = bracketing_locus(&pencil, load_min, load_max)?;
+        if let Some(warning) = resolution_warning(&pencil, &bracket)? {
+            eprintln!(
+                "warning: at {y_name} = {}: {}",
+                Shown(row.value),
+                printable(&warning)
+            );
+            break;
+        }
+    }
+    Ok(())
+}

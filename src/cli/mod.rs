@@ -1,0 +1,199 @@
+//! The command line: parses the arguments, runs one subcommand (each in a
+//! file of its own with its arguments), and turns every error into one line
+//! on stderr with exit status 2.
+
+mod bench;
+mod critical;
+mod locus;
+mod map;
+mod output;
+mod presets;
+mod simulate;
+mod snapshot;
+
+use std::process::ExitCode;
+
+use anyhow::Result;
+use clap::{Parser, Subcommand, ValueEnum};
+
+use zieglerlab::model::{Model, apply_assignments, parse_assignment, preset};
+use zieglerlab::sim::EngineKind;
+
+/// The load axis, as printed in every output.
+const LOAD_AXIS: &str = "p = P l/k";
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "zieglerlab",
+    version,
+    about = "Flutter and divergence of the Ziegler column: ideal follower force versus a roller on a moving band"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+/// The model options shared by the analysis subcommands.
+#[derive(clap::Args, Debug)]
+struct ModelArgs {
+    /// Preset name (see `zieglerlab presets`).
+    #[arg(long)]
+    preset: String,
+    /// Parameter override, `key=value` (repeatable): `load`, the paper's groups
+    /// `a`, `nu`, `rho`, `mu`, `V`, or any SI key that `presets` lists.
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    set: Vec<String>,
+}
+
+impl ModelArgs {
+    /// The preset's name and its model with the `--set` overrides applied
+    /// and validated.
+    fn build(&self) -> Result<(String, Model)> {
+        let preset = preset(&self.preset)?;
+        let assignments = self
+            .set
+            .iter()
+            .map(|text| parse_assignment(text))
+            .collect::<Result<Vec<_>, _>>()?;
+        let mut model = preset.model();
+        apply_assignments(&mut model, preset.name, &assignments)?;
+        Ok((preset.name.to_owned(), model))
+    }
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum EngineArg {
+    Rapier,
+    Reference,
+}
+
+impl From<EngineArg> for EngineKind {
+    fn from(engine: EngineArg) -> Self {
+        match engine {
+            EngineArg::Rapier => Self::Rapier,
+            EngineArg::Reference => Self::Reference,
+        }
+    }
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// List the presets with every parameter, its unit and its range.
+    Presets(presets::Args),
+    /// Critical loads: every change of stability along the load axis.
+    Critical(critical::Args),
+    /// Root locus: every eigenvalue at evenly spaced loads, branches tracked.
+    Locus(locus::Args),
+    /// Time simulation from phi1 = phi2 = perturb, at rest; one CSV row per step.
+    Simulate(simulate::Args),
+    /// Stability map: the state and growth rate of every cell of a grid over
+    /// the load and a second parameter (a key, c1/c2 or damping).
+    Map(map::Args),
+    /// Speed: the root locus, the eigenvalues, the critical loads, both
+    /// engines and the app's frame time, measured in this process.
+    Bench(bench::Args),
+    /// Render the app (or one panel) headlessly to a PNG after simulating
+    /// `--time` seconds from the standard perturbation.
+    Snapshot(snapshot::Args),
+}
+
+/// Runs the command line; status 0 on success, 2 with one line on any error.
+pub fn run() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(error) => {
+            use clap::error::ErrorKind;
+            if matches!(
+                error.kind(),
+                ErrorKind::DisplayHelp | ErrorKind::DisplayVersion
+            ) {
+                let _ = error.print();
+                return ExitCode::SUCCESS;
+            }
+            // clap's message runs over several lines (the missing arguments
+            // are listed under the first): its first paragraph, on one line.
+            let text = error.to_string();
+            let first: Vec<&str> = text
+                .lines()
+                .take_while(|line| !line.trim().is_empty())
+                .map(str::trim)
+                .collect();
+            let first = if first.is_empty() {
+                "error: bad arguments".to_owned()
+            } else {
+                first.join(" ")
+            };
+            eprintln!("{} (see zieglerlab --help)", printable(&first));
+            return ExitCode::from(2);
+        }
+    };
+    let Some(command) = cli.command else {
+        // No subcommand: the app.
+        return match zieglerlab::app::run() {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(error) => {
+                eprintln!("error: the app could not start: {error}");
+                ExitCode::from(2)
+            }
+        };
+    };
+    match execute(&command) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => {
+            // A reader that stopped reading (`| head`) is not an error: end
+            // quietly, as Unix tools do.
+            let broken_pipe = error.chain().any(|cause| {
+                cause
+                    .downcast_ref::<std::io::Error>()
+                    .is_some_and(|e| e.kind() == std::io::ErrorKind::BrokenPipe)
+            });
+            if broken_pipe {
+                return ExitCode::SUCCESS;
+            }
+            let chain: Vec<String> = error.chain().map(ToString::to_string).collect();
+            eprintln!("error: {}", printable(&chain.join(": ")));
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn execute(command: &Command) -> Result<()> {
+    let mut out = std::io::stdout().lock();
+    match command {
+        Command::Presets(args) => presets::run(args, &mut out),
+        Command::Critical(args) => critical::run(args, &mut out),
+        Command::Locus(args) => locus::run(args, &mut out),
+        Command::Simulate(args) => simulate::run(args, &mut out),
+        Command::Map(args) => map::run(args),
+        Command::Bench(args) => bench::run(args, &mut out),
+        Command::Snapshot(args) => snapshot::run(args),
+    }
+}
+
+/// A progress bar of `len` steps on stderr, drawn only when stderr is a
+/// terminal (indicatif's default target hides itself otherwise), so piped
+/// and scripted runs see nothing.
+fn progress_bar(len: u64, what: &str) -> indicatif::ProgressBar {
+    let bar = indicatif::ProgressBar::new(len);
+    if let Ok(style) = indicatif::ProgressStyle::with_template(
+        "{bar:40} {pos}/{len} {msg} ({elapsed}, about {eta} left)",
+    ) {
+        bar.set_style(style);
+    }
+    bar.set_message(what.to_owned());
+    bar
+}
+
+/// `text` with control characters (a key typed with a tab or an escape
+/// sequence) shown escaped, so an error message stays one readable line.
+fn printable(text: &str) -> String {
+    text.chars()
+        .map(|c| {
+            if c.is_control() {
+                c.escape_default().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
+}

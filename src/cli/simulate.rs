@@ -1,0 +1,95 @@
+//! `zieglerlab simulate`: a time simulation from phi1 = phi2 = perturb at
+//! rest, one CSV row per step.
+
+use std::io::Write;
+
+use anyhow::Result;
+use clap::ValueEnum;
+
+use zieglerlab::sim::{DEFAULT_STEP_SECS, Observables, Simulation, Status, initial_state};
+
+use super::{EngineArg, ModelArgs};
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum Format {
+    Csv,
+}
+
+/// Most rows a simulation prints (duration / dt).
+const MAX_ROWS: f64 = 1.0e7;
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    model: ModelArgs,
+    /// Simulated time in seconds.
+    #[arg(long, allow_negative_numbers = true)]
+    duration: f64,
+    #[arg(long, value_enum, default_value_t = EngineArg::Rapier)]
+    engine: EngineArg,
+    /// Initial angle of both rods, in rad.
+    #[arg(long, default_value_t = 0.001, allow_negative_numbers = true)]
+    perturb: f64,
+    /// Time step (and output interval), in s.
+    #[arg(long, default_value_t = DEFAULT_STEP_SECS, allow_negative_numbers = true)]
+    dt: f64,
+    #[arg(long, value_enum, default_value_t = Format::Csv)]
+    format: Format,
+}
+
+pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
+    let Format::Csv = args.format;
+    let (_, model) = args.model.build()?;
+    let (duration, perturb, dt) = (args.duration, args.perturb, args.dt);
+    if !(duration.is_finite() && duration > 0.0) {
+        anyhow::bail!("duration = {duration}: must be a positive number of seconds");
+    }
+    if !(perturb.is_finite() && perturb.abs() <= 1.0) {
+        anyhow::bail!("perturb = {perturb}: must be an angle in [-1, 1] rad");
+    }
+    if dt.is_finite() && dt > 0.0 && duration / dt > MAX_ROWS {
+        anyhow::bail!(
+            "duration / dt = {}: at most {MAX_ROWS} rows; raise dt",
+            duration / dt
+        );
+    }
+    let mut simulation = Simulation::new(
+        model,
+        args.engine.into(),
+        initial_state(&model, perturb),
+        dt,
+    )?;
+    let mut out = std::io::BufWriter::new(out);
+    writeln!(
+        out,
+        "t,phi1,phi2,psi,phi1_dot,phi2_dot,psi_dot,delta,energy"
+    )?;
+    let mut row = |o: &Observables| {
+        writeln!(
+            out,
+            "{},{},{},{},{},{},{},{},{}",
+            o.t_secs,
+            o.phi1_rad,
+            o.phi2_rad,
+            o.psi_rad,
+            o.phi1_dot_rad_per_s,
+            o.phi2_dot_rad_per_s,
+            o.psi_dot_rad_per_s,
+            o.delta_rad,
+            o.energy_j()
+        )
+    };
+    row(&simulation.observe())?;
+    let mut written = Ok(());
+    let status = simulation.run(duration, |o| {
+        if written.is_ok() {
+            written = row(o);
+        }
+    });
+    written?;
+    out.flush()?;
+    if status != Status::Running {
+        eprintln!("run stopped: {status}");
+    }
+    Ok(())
+}
