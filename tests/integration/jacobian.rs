@@ -4,7 +4,7 @@
 //! joint dampers. The simulation integrates the nonlinear function and the
 //! root locus uses the matrices: this is what ties the two together.
 
-mod common;
+use crate::common;
 
 use nalgebra::DMatrix;
 use zieglerlab::model::{Model, StateVec, linearize, state_derivative};

@@ -4,8 +4,6 @@
 //! Schur path; the vanishing-damping flutter load against Semler's closed
 //! form and its limits (physics.md section 7).
 
-mod common;
-
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicUsize};
 

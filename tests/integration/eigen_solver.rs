@@ -5,7 +5,7 @@
 //! uniform-rods collision where nalgebra's balanced Schur iteration stalls
 //! (regression: the solver must fall back, not fail).
 
-mod common;
+use crate::common;
 
 use common::{model, pencil, set_distance};
 use zieglerlab::analysis::C64;

@@ -4,7 +4,7 @@
 //! changes by exactly the work the force does. The reference integrator must
 //! hold both to 1e-8 of the energy over 100 s.
 
-mod common;
+use crate::common;
 
 use common::model;
 use zieglerlab::model::{Load, Model};

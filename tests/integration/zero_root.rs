@@ -3,7 +3,7 @@
 //! The analysis removes that root exactly and reports it as a structural
 //! branch; here an undeflated 6x6 companion matrix confirms it is a root.
 
-mod common;
+use crate::common;
 
 use common::model;
 use nalgebra::DMatrix;

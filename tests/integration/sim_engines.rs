@@ -4,7 +4,7 @@
 //! run is bit-identical when repeated; the load can change mid-run; and the
 //! singular cases (no band speed, a blow-up) end in a status, not in NaN.
 
-mod common;
+use crate::common;
 
 use common::model;
 use zieglerlab::model::{Model, StateVec};

@@ -4,7 +4,7 @@
 //! the general two-degree-of-freedom formula. These are the numbers a lecture
 //! quotes; the app's load slider shades its ranges from them.
 
-mod common;
+use crate::common;
 
 use common::{assert_close, model, transitions};
 use zieglerlab::analysis::State;

@@ -4,7 +4,7 @@
 //! This checks the mass matrix and the velocity-squared terms of section 3,
 //! which the linearization test cannot see.
 
-mod common;
+use crate::common;
 
 use zieglerlab::model::{Load, Model, StateVec, energy_j, friction, state_derivative};
 

@@ -5,7 +5,7 @@
 //! they wander irregularly inside a bounded envelope with no attractor, so
 //! only the envelope can be compared.
 
-mod common;
+use crate::common;
 
 use common::model;
 use zieglerlab::model::Model;

@@ -1,6 +1,6 @@
 //! Helpers shared by the physics tests: building models and reading spectra.
 
-#![allow(dead_code, reason = "each test file uses a different subset")]
+#![allow(dead_code, reason = "each test module uses a different subset")]
 use zieglerlab::analysis::{AffinePencil, C64, Transition, critical_loads};
 use zieglerlab::model::{Model, apply_assignments, parse_assignment, preset};
 use zieglerlab::sim::{EngineKind, Simulation, identify, initial_state};

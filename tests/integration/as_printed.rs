@@ -3,7 +3,7 @@
 //! multiplied by r/l2 (physics.md, erratum): the paper's third row is the
 //! consistent one divided by rho, except its inertia.
 
-mod common;
+use crate::common;
 
 use common::{eigenvalues, model, set_distance};
 use nalgebra::{DMatrix, dmatrix};

@@ -5,7 +5,7 @@
 //! columns (physics.md section 7). A damped crossing is a transversal one, so
 //! this also exercises the Brent polishing of the critical load.
 
-mod common;
+use crate::common;
 
 use common::{assert_close, model, transitions};
 use zieglerlab::analysis::State;

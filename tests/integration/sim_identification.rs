@@ -4,7 +4,7 @@
 //! and divergence ranges. This is what makes the animation honest: the
 //! column flutters at the load the root locus predicts.
 
-mod common;
+use crate::common;
 
 use common::{identified, model, predicted};
 use zieglerlab::analysis::{C64, classify};

@@ -6,7 +6,7 @@
 //! where branches meet or cross Re = 0, so the critical loads lie between
 //! samples a hair apart.
 
-mod common;
+use crate::common;
 
 use common::{pencil, set_distance};
 use zieglerlab::analysis::{C64, critical_loads, locus};

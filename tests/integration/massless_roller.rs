@@ -4,7 +4,7 @@
 //! nonlinear equations; as m3 -> 0 the roller's finite eigenvalues converge to
 //! the follower column's while the spin's relaxation -2 mu R/(m3 V) runs off.
 
-mod common;
+use crate::common;
 
 use common::{eigenvalues, model, set_distance};
 use zieglerlab::analysis::{AffinePencil, C64};

@@ -1,0 +1,24 @@
+//! The integration tests, one module per topic, in one crate (one link of
+//! the app, wgpu and rapier instead of one per topic).
+
+mod app_input;
+mod app_logic;
+mod as_printed;
+mod bad_input;
+mod cli;
+mod closed_form_loads;
+mod common;
+mod damped_ziegler;
+mod eigen_solver;
+mod energy_balance;
+mod jacobian;
+mod locus_tracking;
+mod massless_roller;
+mod properties;
+mod sim_energy;
+mod sim_engines;
+mod sim_identification;
+mod sim_large_amplitude;
+mod snapshots;
+mod stability_map;
+mod zero_root;
