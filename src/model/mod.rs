@@ -1,5 +1,9 @@
 //! The Ziegler column and its loads: parameters, presets, nonlinear equations
 //! of motion and their linearization. Pure f64 physics (no UI, no clock, no rapier).
+//!
+//! The physics notes below (`src/model/physics.md`) derive the models and say
+//! how every number is checked; code comments cite them by section.
+#![doc = include_str!("physics.md")]
 
 mod axis;
 mod dynamics;
