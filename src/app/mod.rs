@@ -6,6 +6,7 @@
 mod analysis_cache;
 mod command;
 mod history;
+mod layout;
 mod notice;
 mod pace;
 mod plots;
@@ -19,10 +20,12 @@ mod theme;
 
 use eframe::egui::{self, vec2};
 
+use crate::model::PRESETS;
 use crate::sim::{SimError, Simulation};
 use command::Command;
 use theme::Theme;
 
+pub use layout::Layout;
 pub use notice::{Level, Notice};
 pub use pace::{MAX_FRAME_SECS, MAX_STEPS_PER_FRAME};
 pub use state::{AppState, LOAD_MAX_P, Settings};
@@ -31,6 +34,8 @@ pub use tabs::map::map_picture;
 
 /// The key the settings are stored under.
 const SETTINGS_KEY: &str = "zieglerlab-settings";
+/// The key the window's layout is stored under.
+const LAYOUT_KEY: &str = "zieglerlab-layout";
 /// eframe's name for the app (its storage folder).
 const APP_ID: &str = "zieglerlab";
 
@@ -86,14 +91,58 @@ impl ZieglerApp {
     /// was ignored).
     #[must_use]
     pub fn from_storage(storage: Option<&dyn eframe::Storage>) -> Self {
-        let text = storage.and_then(|s| s.get_string(SETTINGS_KEY));
-        Self::from_stored_text(text.as_deref())
+        let text = |key| storage.and_then(|s| s.get_string(key));
+        let mut app = Self::from_stored_text(text(SETTINGS_KEY).as_deref());
+        if let Some(layout) = text(LAYOUT_KEY) {
+            let (layout, note) = Layout::read(&layout);
+            if let Some(note) = note {
+                app.state.tell(Notice::warning(note));
+            }
+            app.arrange(&layout);
+        }
+        app
     }
 
     /// The app from settings stored as text (see [`AppState::from_stored_text`]).
     #[must_use]
     pub fn from_stored_text(text: Option<&str>) -> Self {
         Self::with_state(AppState::from_stored_text(text))
+    }
+
+    /// The window's arrangement now, as it is stored.
+    #[must_use]
+    pub fn layout(&mut self) -> Layout {
+        Layout {
+            tab: self.tab,
+            overlay: self.state.overlay().map(|o| o.preset.to_owned()),
+            map_axis: self.tabs.map().axis_choice(),
+        }
+    }
+
+    /// Arranges the window as `layout` says; what does not fit the current
+    /// model (an overlay or a map axis it has not) is left out, and said.
+    pub fn arrange(&mut self, layout: &Layout) {
+        self.tab = layout.tab;
+        if let Some(name) = &layout.overlay {
+            match PRESETS.iter().find(|p| p.name == name) {
+                Some(p) => self.state.set_overlay(Some(p.name)),
+                None => self.state.tell(Notice::warning(format!(
+                    "stored overlay {name} is not a preset; no overlay"
+                ))),
+            }
+        }
+        if let Some((name, lo, hi)) = &layout.map_axis {
+            let model = *self.state.model();
+            let preset = self.state.settings().preset.clone();
+            if let Err(why) = self
+                .tabs
+                .map()
+                .choose_axis(&model, &preset, (name, *lo, *hi))
+            {
+                self.state
+                    .tell(Notice::warning(format!("stored map axis not used: {why}")));
+            }
+        }
     }
 
     /// The state the window shows.
@@ -225,6 +274,12 @@ impl eframe::App for ZieglerApp {
             Err(error) => self
                 .state
                 .say(Notice::error(format!("settings not saved: {error}"))),
+        }
+        match ron::to_string(&self.layout()) {
+            Ok(text) => storage.set_string(LAYOUT_KEY, text),
+            Err(error) => self
+                .state
+                .say(Notice::error(format!("window layout not saved: {error}"))),
         }
     }
 }

@@ -245,3 +245,52 @@ fn a_map_point_sets_both_parameters_and_the_run_follows() {
     assert_eq!(app.settings().model, model);
     assert!(app.message().unwrap().contains("nu = -1"));
 }
+
+/// The open tab, the overlay and the map's axis come back at the next
+/// launch; what does not fit the stored model is left out and said.
+#[test]
+fn the_window_layout_comes_back_and_a_misfit_is_said() {
+    use zieglerlab::app::{Layout, Tab};
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    let arranged = Layout {
+        tab: Tab::Map,
+        overlay: Some("ziegler-1952".to_owned()),
+        map_axis: Some(("V".to_owned(), 0.05, 0.5)),
+    };
+    app.arrange(&arranged);
+    assert_eq!(app.layout(), arranged);
+    let text = ron::to_string(&app.layout()).unwrap();
+    let mut next = ZieglerApp::new(Settings::default()).unwrap();
+    let (read, note) = Layout::read(&text);
+    assert_eq!(note, None);
+    next.arrange(&read);
+    assert_eq!(next.layout(), arranged);
+    assert_eq!(next.message(), None);
+
+    // The 1952 column has no roller mass to map, and no preset is named so.
+    let column = Settings {
+        preset: "ziegler-1952".to_owned(),
+        model: zieglerlab::model::preset("ziegler-1952").unwrap().model(),
+        ..Settings::default()
+    };
+    let mut other = ZieglerApp::new(column).unwrap();
+    other.arrange(&Layout {
+        tab: Tab::Paradox,
+        overlay: Some("no-such-preset".to_owned()),
+        map_axis: Some(("nu".to_owned(), 0.01, 1.0)),
+    });
+    let layout = other.layout();
+    assert_eq!(layout.tab, Tab::Paradox);
+    assert_eq!(layout.overlay, None);
+    assert_eq!(
+        layout.map_axis, None,
+        "the map's own default comes when shown"
+    );
+    let said = other.message().unwrap();
+    assert!(said.contains("no-such-preset"), "{said}");
+    assert!(said.contains("stored map axis not used"), "{said}");
+
+    let (garbage, note) = Layout::read("{{ not a layout");
+    assert_eq!(garbage, Layout::default());
+    assert!(note.unwrap().contains("layout ignored"));
+}

@@ -206,6 +206,33 @@ impl MapPanel {
         self.job = Some(job);
     }
 
+    /// The second axis chosen, by name, and its range.
+    #[must_use]
+    pub fn axis_choice(&self) -> Option<(String, f64, f64)> {
+        let axis = self.axis.as_ref()?;
+        Some((axis.name().to_owned(), self.range.0, self.range.1))
+    }
+
+    /// Chooses the second axis `name` over `[lo, hi]` when it applies to
+    /// `model` and the range is one; says why not otherwise.
+    ///
+    /// # Errors
+    /// An axis the model does not have, or an empty or non-finite range.
+    pub fn choose_axis(
+        &mut self,
+        model: &Model,
+        preset: &str,
+        (name, lo, hi): (&str, f64, f64),
+    ) -> Result<(), String> {
+        let axis = Axis::parse(name, model, preset).map_err(|e| e.to_string())?;
+        if !(lo.is_finite() && hi.is_finite() && hi > lo) {
+            return Err(format!("map range {lo} to {hi} is empty"));
+        }
+        self.axis = Some(axis);
+        self.range = (lo, hi);
+        Ok(())
+    }
+
     /// Blocks until the current map is complete (for pictures and tests).
     pub fn wait(&mut self) {
         if let Some(job) = &mut self.job {

@@ -67,6 +67,11 @@ impl Tabs {
         });
     }
 
+    /// The stability map's view (its axis choice).
+    pub fn map(&mut self) -> &mut map::MapPanel {
+        &mut self.map
+    }
+
     /// Computes the stability map and the paradox curves of the current
     /// parameters and waits until they are complete (for pictures and tests).
     pub fn complete_background_work(&mut self, state: &AppState) {
