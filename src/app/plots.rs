@@ -2,15 +2,12 @@
 //! eigenvalues against the load with the current load and the stability
 //! ranges marked (the paper's Figs 3 and 8).
 
-use eframe::egui::{self, Color32, vec2};
+use eframe::egui::{self, vec2};
 use egui_plot::{Legend, Line, Plot, PlotPoints, Points, Span, VLine};
 
 use super::history::History;
 use super::theme::{Theme, load_color};
 use crate::analysis::{C64, Locus, State};
-
-/// The overlaid model's branches: grey, behind the current ones.
-const OVERLAY: Color32 = Color32::from_rgb(120, 120, 120);
 
 /// Branch segments are drawn in this many colour bands along the load.
 const COLOR_BANDS: usize = 24;
@@ -78,7 +75,7 @@ pub fn root_locus_ui(
                     let points: PlotPoints<'_> = branch.iter().map(|z| [z.re, z.im]).collect();
                     plot_ui.line(
                         Line::new("overlay", points)
-                            .color(OVERLAY)
+                            .color(theme.overlay)
                             .width(1.5 * theme.stroke_scale),
                     );
                 }
@@ -111,7 +108,7 @@ pub fn root_locus_ui(
             plot_ui.points(
                 Points::new("predicted now", now)
                     .radius(6.0 * theme.stroke_scale)
-                    .color(Color32::WHITE)
+                    .color(theme.now)
                     .filled(true),
             );
             if let Some(measured) = measured {
@@ -119,7 +116,7 @@ pub fn root_locus_ui(
                 plot_ui.points(
                     Points::new("measured from the run", points)
                         .radius(9.0 * theme.stroke_scale)
-                        .color(theme.friction)
+                        .color(theme.measured)
                         .filled(false),
                 );
             }
@@ -173,7 +170,7 @@ pub fn versus_load_ui(
             }
             // The overlay behind, the current model in front.
             let layers = overlay
-                .map(|o| (o, OVERLAY))
+                .map(|o| (o, theme.overlay))
                 .into_iter()
                 .chain([(locus, theme.text)]);
             for (shown, color) in layers {
@@ -195,7 +192,7 @@ pub fn versus_load_ui(
             }
             plot_ui.vline(
                 VLine::new("load", load)
-                    .color(theme.friction)
+                    .color(theme.load_line)
                     .width(2.0 * theme.stroke_scale),
             );
         });
@@ -217,10 +214,12 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, theme: &Theme) {
                     .y_axis_label("rad")
                     .legend(Legend::default())
                     .show(ui, |plot_ui| {
-                        plot_ui.line(Line::new("φ1", series(&|o| o.phi1_rad)).color(theme.spring));
-                        plot_ui.line(Line::new("φ2", series(&|o| o.phi2_rad)).color(theme.rod));
                         plot_ui
-                            .line(Line::new("δ", series(&|o| o.delta_rad)).color(theme.friction));
+                            .line(Line::new("φ1", series(&|o| o.phi1_rad)).color(theme.series[0]));
+                        plot_ui
+                            .line(Line::new("φ2", series(&|o| o.phi2_rad)).color(theme.series[1]));
+                        plot_ui
+                            .line(Line::new("δ", series(&|o| o.delta_rad)).color(theme.series[2]));
                     });
             });
             ui.allocate_ui(vec2(0.62 * width, 0.5 * height - 4.0), |ui| {
@@ -231,11 +230,11 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, theme: &Theme) {
                     .show(ui, |plot_ui| {
                         plot_ui.line(
                             Line::new("kinetic + spring energy", series(&|o| o.energy_j()))
-                                .color(theme.follower),
+                                .color(theme.series[3]),
                         );
                         plot_ui.line(
                             Line::new("power from the band", series(&|o| o.band_power_w))
-                                .color(theme.flutter),
+                                .color(theme.series[4]),
                         );
                     });
             });
@@ -249,7 +248,7 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, theme: &Theme) {
                         .iter()
                         .map(|o| [o.phi2_rad, o.phi2_dot_rad_per_s])
                         .collect();
-                    plot_ui.line(Line::new("rod 2", points).color(theme.trail));
+                    plot_ui.line(Line::new("rod 2", points).color(theme.series[5]));
                 });
         });
     });

@@ -287,12 +287,12 @@ fn roller_ui(
 fn notes(painter: &egui::Painter, theme: &Theme, rect: Rect, status: Status, stick_slip: bool) {
     let mut lines = Vec::new();
     if status != Status::Running {
-        lines.push((status.to_string(), theme.divergence));
+        lines.push((status.to_string(), theme.error));
     }
     if stick_slip {
         lines.push((
             "stick-slip: the slip speed is below 1e-4 m/s; Coulomb friction is regularized here, outside the model's validity".to_owned(),
-            theme.flutter,
+            theme.warning,
         ));
     }
     for (i, (text, color)) in lines.into_iter().enumerate() {

@@ -25,6 +25,19 @@ pub struct Theme {
     pub flutter: Color32,
     pub divergence: Color32,
     pub axis: Color32,
+    /// Markers of the present: the current eigenvalues, the current load on
+    /// the load bar, the current model's point on the map and the paradox plot.
+    pub now: Color32,
+    /// The current load as a line across the plots against the load.
+    pub load_line: Color32,
+    /// Eigenvalues measured from the run.
+    pub measured: Color32,
+    /// The overlaid model's locus, behind the current one.
+    pub overlay: Color32,
+    /// Cells and rows without data (not computed yet, or no analysis).
+    pub no_data: Color32,
+    /// Curves that are neither states nor the scene's objects, in order.
+    pub series: [Color32; 6],
     /// Notices: something refused or failed.
     pub error: Color32,
     /// Notices and cautions: done, but not quite as asked, or not resolved.
@@ -56,6 +69,19 @@ impl Theme {
         flutter: Color32::from_rgb(230, 150, 40),
         divergence: Color32::from_rgb(215, 60, 60),
         axis: Color32::from_rgb(200, 200, 200),
+        now: Color32::WHITE,
+        load_line: Color32::from_rgb(255, 90, 90),
+        measured: Color32::from_rgb(255, 90, 90),
+        overlay: Color32::from_rgb(120, 120, 120),
+        no_data: Color32::from_gray(40),
+        series: [
+            Color32::from_rgb(120, 170, 255),
+            Color32::from_rgb(205, 210, 220),
+            Color32::from_rgb(255, 90, 90),
+            Color32::from_rgb(90, 220, 140),
+            Color32::from_rgb(230, 150, 40),
+            Color32::from_rgb(150, 110, 255),
+        ],
         error: Color32::from_rgb(215, 60, 60),
         warning: Color32::from_rgb(230, 150, 40),
         info: Color32::from_rgb(120, 170, 255),
@@ -81,6 +107,19 @@ impl Theme {
         flutter: Color32::from_rgb(255, 170, 0),
         divergence: Color32::from_rgb(255, 50, 50),
         axis: Color32::WHITE,
+        now: Color32::WHITE,
+        load_line: Color32::from_rgb(255, 60, 60),
+        measured: Color32::from_rgb(255, 60, 60),
+        overlay: Color32::from_rgb(120, 120, 120),
+        no_data: Color32::from_gray(40),
+        series: [
+            Color32::from_rgb(80, 180, 255),
+            Color32::WHITE,
+            Color32::from_rgb(255, 60, 60),
+            Color32::from_rgb(0, 255, 120),
+            Color32::from_rgb(255, 170, 0),
+            Color32::from_rgb(200, 140, 255),
+        ],
         error: Color32::from_rgb(255, 50, 50),
         warning: Color32::from_rgb(255, 170, 0),
         info: Color32::from_rgb(80, 180, 255),

@@ -1,7 +1,7 @@
 //! The load slider, the stability ranges drawn under it, and the critical
 //! loads in words.
 
-use eframe::egui::{self, Color32, RichText, Sense, Stroke, pos2, vec2};
+use eframe::egui::{self, RichText, Sense, Stroke, pos2, vec2};
 
 use crate::app::View;
 use crate::app::state::{AppState, LOAD_MAX_P};
@@ -56,7 +56,7 @@ impl View for LoadSection {
         let x = x_of(p);
         painter.line_segment(
             [pos2(x, rect.top() - 2.0), pos2(x, rect.bottom() + 2.0)],
-            Stroke::new(3.0, Color32::WHITE),
+            Stroke::new(3.0, theme.now),
         );
         for t in &analysis.transitions {
             ui.label(

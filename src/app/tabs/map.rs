@@ -257,7 +257,7 @@ impl MapPanel {
         let done = job.done.load(Ordering::Relaxed);
         let total = job.spec.values;
         if let Some(error) = &job.error {
-            ui.colored_label(theme.divergence, error);
+            ui.colored_label(theme.error, error);
         }
         if done < total {
             #[expect(clippy::cast_precision_loss, reason = "row counts")]
@@ -266,7 +266,7 @@ impl MapPanel {
         }
         if let Some(reason) = job.rows.iter().flatten().find_map(|r| r.as_ref().err()) {
             ui.colored_label(
-                theme.flutter,
+                theme.warning,
                 format!("grey rows have no analysis: {reason}"),
             );
         }
@@ -376,7 +376,7 @@ pub fn map_image(rows: &[Option<RowResult>], loads: usize, theme: &Theme) -> Col
         .filter(|g| g.is_finite())
         .fold(0.0, f64::max);
     let height = rows.len();
-    let mut image = ColorImage::filled([loads, height], Color32::from_gray(40));
+    let mut image = ColorImage::filled([loads, height], theme.no_data);
     let nearest = |j: usize| {
         (0..height)
             .flat_map(|d| [j.checked_sub(d), Some(j + d)])
@@ -473,7 +473,7 @@ fn map_plot_ui(
             plot_ui.points(
                 Points::new("now", vec![here])
                     .radius(5.0 * theme.stroke_scale)
-                    .color(Color32::WHITE)
+                    .color(theme.now)
                     .filled(true),
             );
             plot_ui.pointer_coordinate()

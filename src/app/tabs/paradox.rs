@@ -6,7 +6,7 @@
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, mpsc};
 
-use eframe::egui::{self, Color32};
+use eframe::egui;
 use egui_plot::{HLine, Legend, Line, Plot, PlotPoints, Points};
 
 use crate::analysis::{first_instability, flutter_load_damped};
@@ -264,7 +264,7 @@ impl ParadoxPanel {
             Load::Roller(_) => "The load at which the roller column first loses stability, against the roller's mass, for three band speeds (the slip damping is mu R / V). As nu -> 0 it goes to zero, not to the massless roller's (ideal follower's) value.",
             _ => "The flutter load with joint dampers c1 = (c1/c2) c2 as the damping level g2 = c2 / sqrt(k m l^2) goes to zero: the limit depends on the ratio and lies below the undamped load (Ziegler's paradox).",
         });
-        let palette = [theme.stable, theme.flutter, theme.divergence];
+        let palette = [theme.series[0], theme.series[3], theme.series[4]];
         Plot::new("paradox")
             .legend(Legend::default())
             .x_axis_label(format!("{} (log scale)", curves.x_label))
@@ -289,7 +289,7 @@ impl ParadoxPanel {
                     plot_ui.points(
                         Points::new("this model", vec![point])
                             .radius(5.0 * theme.stroke_scale)
-                            .color(Color32::WHITE)
+                            .color(theme.now)
                             .filled(true),
                     );
                 }
