@@ -43,7 +43,7 @@ pub struct Row {
 }
 
 /// A row's answer: the row, or why this value makes no analysis.
-pub type RowResult = Result<Row, String>;
+pub type RowResult = Result<Row, AnalysisError>;
 
 impl MapSpec {
     /// The grid loads.
@@ -74,21 +74,14 @@ impl MapSpec {
     /// loads (the states).
     ///
     /// # Errors
-    /// A value the model or the analysis refuses, in words.
+    /// A value the model or the analysis refuses.
     pub fn row(&self, value: f64) -> RowResult {
-        let model = self
-            .axis
-            .apply(&self.model, &self.preset, value)
-            .map_err(|e| e.to_string())?;
-        let pencil = AffinePencil::new(&model).map_err(|e| e.to_string())?;
+        let model = self.axis.apply(&self.model, &self.preset, value)?;
+        let pencil = AffinePencil::new(&model)?;
         let (min, max) = self.load_range;
-        let transitions = critical_loads_along(
-            &pencil,
-            &bracketing_locus(&pencil, min, max).map_err(|e| e.to_string())?,
-        )
-        .map_err(|e| e.to_string())?;
-        let grid = locus(&pencil, min, max, self.loads).map_err(|e| e.to_string())?;
-        let first = pencil.spectrum(min).map_err(|e| e.to_string())?;
+        let transitions = critical_loads_along(&pencil, &bracketing_locus(&pencil, min, max)?)?;
+        let grid = locus(&pencil, min, max, self.loads)?;
+        let first = pencil.spectrum(min)?;
         let mut state = classify(&first.eigenvalues, first.scale_per_s).state;
         let mut next = transitions.iter().peekable();
         let cells = (0..grid.loads.len())

@@ -110,6 +110,10 @@ pub enum SimError {
         RAPIER_MAX_RATE_STEP / rate_per_s
     )]
     TooStiffForRapier { rate_per_s: f64, step_secs: f64 },
+    #[error(
+        "the rapier2d world could not be built for this column (its joints were refused); use the reference engine"
+    )]
+    RapierWorld,
 }
 
 impl SimError {
@@ -120,6 +124,7 @@ impl SimError {
             Self::Model(error) => error.parameter(),
             Self::Bad { what, .. } => Some(what),
             Self::TooStiffForRapier { .. } => Some("dt"),
+            Self::RapierWorld => None,
         }
     }
 }
@@ -246,11 +251,7 @@ impl Simulation {
         let engine = match kind {
             EngineKind::Rapier => Engine::Rapier(Box::new({
                 check_rapier_step(&model, step_secs)?;
-                rapier::RapierEngine::new(&model, &x0, step_secs).ok_or(SimError::Bad {
-                    what: "rapier",
-                    value: f64::NAN,
-                    allowed: "the rapier2d world could not be built for this column",
-                })?
+                rapier::RapierEngine::new(&model, &x0, step_secs).ok_or(SimError::RapierWorld)?
             })),
             EngineKind::Reference => Engine::Reference(Reference::new(x0)),
         };
