@@ -25,7 +25,7 @@ use nalgebra::DMatrix;
 
 use crate::analysis::{AffinePencil, MapSpec, compute_map, critical_loads, load_grid, locus};
 use crate::app::{Settings, Tab, ZieglerApp};
-use crate::model::{Axis, Model, preset};
+use crate::model::{Axis, Key, Model, PresetId};
 use crate::sim::{DEFAULT_STEP_SECS, EngineKind, Simulation, initial_state};
 
 /// Loads of the benchmarked root loci, over `p` in `[0, LOCUS_LOAD_MAX]`.
@@ -80,8 +80,8 @@ pub struct Report {
 /// # Errors
 /// A preset or a computation that fails (none should).
 pub fn run(frames: usize) -> Result<Report> {
-    let roller = pencil("roller")?;
-    let midpoint = pencil("midpoint-masses")?;
+    let roller = pencil(PresetId::Roller)?;
+    let midpoint = pencil(PresetId::MidpointMasses)?;
     let frame_ms = frame_times_ms(frames, Tab::Locus)?;
     let frame_ms_map = frame_times_ms(frames, Tab::Map)?;
     let frame_ms_paradox = frame_times_ms(frames, Tab::Paradox)?;
@@ -106,25 +106,21 @@ pub fn run(frames: usize) -> Result<Report> {
 
 /// The map of the app's stability-map tab for `roller`: 256 loads in
 /// [0, 8] against 256 values of nu in [0.005, 1].
-///
-/// # Errors
-/// None in practice (the preset and its axis exist).
-pub fn roller_map_spec() -> Result<MapSpec> {
-    let model = preset("roller")?.model();
-    Ok(MapSpec {
-        axis: Axis::parse("nu", &model, "roller")?,
-        model,
-        preset: "roller".to_owned(),
+#[must_use]
+pub fn roller_map_spec() -> MapSpec {
+    MapSpec {
+        axis: Axis::Key(Key::Nu),
+        model: PresetId::Roller.model(),
         load_range: (0.0, 8.0),
         loads: 256,
         axis_range: (0.005, 1.0),
         values: 256,
-    })
+    }
 }
 
 /// [`roller_map_spec`] on every core.
 fn map_ms() -> Result<f64> {
-    let spec = roller_map_spec()?;
+    let spec = roller_map_spec();
     let threads = std::thread::available_parallelism().map_or(2, std::num::NonZero::get);
     let secs = median_secs(3, || {
         let (cancel, done) = (AtomicBool::new(false), AtomicUsize::new(0));
@@ -190,8 +186,8 @@ print(times[len(times) // 2] * 1e6 / len(a))
     Ok(text.trim().parse::<f64>().ok().filter(|us| us.is_finite()))
 }
 
-fn pencil(name: &str) -> Result<AffinePencil> {
-    Ok(AffinePencil::new(&preset(name)?.model())?)
+fn pencil(id: PresetId) -> Result<AffinePencil> {
+    Ok(AffinePencil::new(&id.model())?)
 }
 
 /// The median wall time of `repeats` calls of `f`, in s.
@@ -247,7 +243,7 @@ fn critical_ms(pencil: &AffinePencil) -> Result<f64> {
 
 /// Simulated seconds per wall second of `engine` for the default launch.
 fn x_realtime(engine: EngineKind) -> Result<f64> {
-    let model: Model = preset("roller")?.model().at_load(SIM_LOAD_P);
+    let model: Model = PresetId::Roller.model().at_load(SIM_LOAD_P);
     let secs = median_secs(5, || {
         let x0 = initial_state(&model, 1e-3);
         let mut sim = Simulation::new(model, engine, x0, DEFAULT_STEP_SECS)?;
@@ -283,7 +279,7 @@ pub fn frame_times_ms(frames: usize, tab: Tab) -> Result<Vec<f64>> {
         };
         let start = Instant::now();
         app.state_mut()
-            .set_parameter("nu", nu)
+            .set_parameter(Key::Nu, nu)
             .context("setting nu")?;
         app.advance(1.0 / 60.0);
         let mut output = ctx.run_ui(input, |ui| app.contents_ui(ui));

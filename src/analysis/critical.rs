@@ -388,7 +388,7 @@ pub fn critical_loads_along(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::{Axis, Model, PRESETS, preset};
+    use crate::model::{Axis, Key, Model, PRESETS, PresetId};
 
     /// Bisects every change of stability that the bracketing locus of
     /// `model` shows both ways and returns how many there were.
@@ -436,13 +436,11 @@ mod tests {
             checked += assert_fast_bisection_matches_schur(p.name, &p.model());
         }
         assert!(checked >= 2 * PRESETS.len(), "{checked} changes checked");
-        let column = preset("ziegler-1952").unwrap().model();
-        let damped = Axis::DampingLevel
-            .apply(&column, "ziegler-1952", 1e-3)
-            .unwrap();
+        let column = PresetId::Ziegler1952.model();
+        let damped = Axis::DampingLevel.apply(&column, 1e-3).unwrap();
         assert!(assert_fast_bisection_matches_schur("damped", &damped) >= 2);
-        let roller = preset("roller").unwrap().model();
-        let light = Axis::Key("nu").apply(&roller, "roller", 0.01).unwrap();
+        let roller = PresetId::Roller.model();
+        let light = Axis::Key(Key::Nu).apply(&roller, 0.01).unwrap();
         assert!(assert_fast_bisection_matches_schur("light roller", &light) >= 2);
     }
 }

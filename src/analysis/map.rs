@@ -18,7 +18,6 @@ use crate::model::{Axis, Model};
 #[derive(Clone, Debug, PartialEq)]
 pub struct MapSpec {
     pub model: Model,
-    pub preset: String,
     pub axis: Axis,
     pub load_range: (f64, f64),
     pub loads: usize,
@@ -76,7 +75,7 @@ impl MapSpec {
     /// # Errors
     /// A value the model or the analysis refuses.
     pub fn row(&self, value: f64) -> RowResult {
-        let model = self.axis.apply(&self.model, &self.preset, value)?;
+        let model = self.axis.apply(&self.model, value)?;
         let pencil = AffinePencil::new(&model)?;
         let (min, max) = self.load_range;
         let transitions = critical_loads_along(&pencil, &bracketing_locus(&pencil, min, max)?)?;

@@ -29,12 +29,11 @@ pub fn first_instability(model: &Model, load_max: f64) -> Result<Option<f64>, An
 /// A ratio or level the model refuses, or a failed analysis.
 pub fn flutter_load_damped(
     model: &Model,
-    preset: &str,
     ratio: f64,
     level: f64,
     load_max: f64,
 ) -> Result<Option<f64>, AnalysisError> {
-    let damped = Axis::DampingLevel.apply(model, preset, level)?;
-    let damped = Axis::DamperRatio.apply(&damped, preset, ratio)?;
+    let damped = Axis::DampingLevel.apply(model, level)?;
+    let damped = Axis::DamperRatio.apply(&damped, ratio)?;
     first_instability(&damped, load_max)
 }

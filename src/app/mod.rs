@@ -20,7 +20,7 @@ mod theme;
 
 use eframe::egui::{self, vec2};
 
-use crate::model::PRESETS;
+use crate::model::PresetId;
 use crate::sim::{SimError, Simulation};
 use command::Command;
 use theme::Theme;
@@ -114,7 +114,7 @@ impl ZieglerApp {
     pub fn layout(&mut self) -> Layout {
         Layout {
             tab: self.tab,
-            overlay: self.state.overlay().map(|o| o.preset.to_owned()),
+            overlay: self.state.overlay().map(|o| o.preset.name().to_owned()),
             map_axis: self.tabs.map().axis_choice(),
         }
     }
@@ -124,21 +124,16 @@ impl ZieglerApp {
     pub fn arrange(&mut self, layout: &Layout) {
         self.tab = layout.tab;
         if let Some(name) = &layout.overlay {
-            match PRESETS.iter().find(|p| p.name == name) {
-                Some(p) => self.state.set_overlay(Some(p.name)),
-                None => self.state.tell(Notice::warning(format!(
+            match name.parse::<PresetId>() {
+                Ok(id) => self.state.set_overlay(Some(id)),
+                Err(_) => self.state.tell(Notice::warning(format!(
                     "stored overlay {name} is not a preset; no overlay"
                 ))),
             }
         }
         if let Some((name, lo, hi)) = &layout.map_axis {
             let model = *self.state.model();
-            let preset = self.state.settings().preset.clone();
-            if let Err(why) = self
-                .tabs
-                .map()
-                .choose_axis(&model, &preset, (name, *lo, *hi))
-            {
+            if let Err(why) = self.tabs.map().choose_axis(&model, (name, *lo, *hi)) {
                 self.state
                     .tell(Notice::warning(format!("stored map axis not used: {why}")));
             }

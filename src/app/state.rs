@@ -5,7 +5,7 @@
 use std::collections::VecDeque;
 
 use crate::analysis::{AffinePencil, AnalysisError, C64, Locus, Spectrum, locus};
-use crate::model::{Assignment, Axis, KEYS, Model, ModelError, PRESETS, apply_assignments, preset};
+use crate::model::{Assignment, Axis, Key, Model, ModelError, PresetId, apply_assignments};
 use crate::sim::{
     DEFAULT_STEP_SECS, EngineKind, Observables, SimError, Simulation, Status, initial_state,
 };
@@ -40,7 +40,7 @@ fn push_trail(trail: &mut VecDeque<(f64, [f64; 2])>, now: &Observables) {
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 #[serde(default)]
 pub struct Settings {
-    pub preset: String,
+    pub preset: PresetId,
     pub model: Model,
     pub engine: EngineKind,
     /// Simulated seconds per wall second.
@@ -50,13 +50,9 @@ pub struct Settings {
 
 impl Default for Settings {
     fn default() -> Self {
-        let roller = PRESETS
-            .iter()
-            .find(|p| p.name == "roller")
-            .unwrap_or(&PRESETS[0]);
         Self {
-            preset: roller.name.to_owned(),
-            model: roller.model(),
+            preset: PresetId::Roller,
+            model: PresetId::Roller.model(),
             engine: EngineKind::Rapier,
             speed: 1.0,
             projector: false,
@@ -66,7 +62,7 @@ impl Default for Settings {
 
 /// Another preset's root locus, at the current model's `a`.
 pub struct Overlay {
-    pub preset: &'static str,
+    pub preset: PresetId,
     /// The group `a` the locus was computed with.
     a: f64,
     pub locus: Locus,
@@ -115,7 +111,7 @@ pub struct AppState {
     /// The last thing to tell the user.
     notice: Option<Notice>,
     /// The last refused parameter value: its key and why.
-    refused: Option<(&'static str, String)>,
+    refused: Option<(Key, String)>,
     history: History,
     /// The column's eigenvalues measured from the run, refreshed about once a
     /// simulated second.
@@ -203,7 +199,7 @@ impl AppState {
 
     /// Why the last value typed for `key` was refused, if it was.
     #[must_use]
-    pub fn refusal(&self, key: &str) -> Option<&str> {
+    pub fn refusal(&self, key: Key) -> Option<&str> {
         self.refused
             .as_ref()
             .filter(|(k, _)| *k == key)
@@ -241,20 +237,16 @@ impl AppState {
     ///
     /// # Errors
     /// The key's or the model's validation error.
-    pub fn set_parameter(&mut self, key: &str, value: f64) -> Result<(), ModelError> {
+    pub fn set_parameter(&mut self, key: Key, value: f64) -> Result<(), ModelError> {
         let mut candidate = self.settings.model;
-        let assignment = Assignment {
-            key: key.to_owned(),
-            value,
-        };
-        apply_assignments(&mut candidate, &self.settings.preset, &[assignment])?;
+        apply_assignments(&mut candidate, &[Assignment { key, value }])?;
         self.set_model(candidate);
         Ok(())
     }
 
     /// [`Self::set_parameter`] as typed or dragged in a field: a refusal is
     /// kept to show beside the field until the next value for it.
-    pub fn enter_parameter(&mut self, key: &'static str, value: f64) {
+    pub fn enter_parameter(&mut self, key: Key, value: f64) {
         self.refused = self
             .set_parameter(key, value)
             .err()
@@ -270,19 +262,15 @@ impl AppState {
         } else {
             (p + delta_p).max(0.0)
         };
-        self.enter_parameter("load", moved);
+        self.enter_parameter(Key::Load, moved);
     }
 
-    /// Switches to the preset `name` at the current load: its parameters,
+    /// Switches to the preset `id` at the current load: its parameters,
     /// a fresh run, the overlay at its `a`.
-    pub fn set_preset(&mut self, name: &str) {
-        let Ok(chosen) = preset(name) else {
-            self.say(Notice::error(format!("no preset named {name}")));
-            return;
-        };
-        chosen.name.clone_into(&mut self.settings.preset);
+    pub fn set_preset(&mut self, id: PresetId) {
+        self.settings.preset = id;
         self.refused = None;
-        self.set_model(chosen.model().at_load(self.settings.model.load_p()));
+        self.set_model(id.model().at_load(self.settings.model.load_p()));
         self.reset();
     }
 
@@ -343,7 +331,7 @@ impl AppState {
     /// What a click on the map does: the load and the map's second
     /// parameter are set (the run goes on with them); a refused value says why.
     pub fn set_map_point(&mut self, axis: &Axis, load: f64, value: f64) {
-        match axis.apply(&self.settings.model, &self.settings.preset, value) {
+        match axis.apply(&self.settings.model, value) {
             Ok(model) => self.set_model(model.at_load(load)),
             Err(error) => self.say(Notice::error(format!("map: {error}"))),
         }
@@ -465,33 +453,33 @@ impl AppState {
 
     /// The current model's `a = k/(m l^2)`.
     fn group_a(&self) -> f64 {
-        KEYS.iter()
-            .find(|k| k.key == "a")
-            .map_or(f64::NAN, |k| k.get(&self.settings.model))
+        Key::A.get(&self.settings.model)
     }
 
     /// Shows `name`'s locus behind the current one, at the current `a`
     /// (`None`: no overlay).
-    pub fn set_overlay(&mut self, name: Option<&'static str>) {
-        let Some(name) = name else {
+    pub fn set_overlay(&mut self, id: Option<PresetId>) {
+        let Some(id) = id else {
             self.overlay = None;
             return;
         };
         let a = self.group_a();
         let build = || -> Result<Locus, OverlayError> {
-            let mut model = preset(name)?.model();
-            let set_a = Assignment {
-                key: "a".to_owned(),
-                value: a,
-            };
-            apply_assignments(&mut model, name, &[set_a])?;
+            let mut model = id.model();
+            apply_assignments(
+                &mut model,
+                &[Assignment {
+                    key: Key::A,
+                    value: a,
+                }],
+            )?;
             let pencil = AffinePencil::new(&model)?;
             Ok(locus(&pencil, 0.0, LOAD_MAX_P, LOCUS_SAMPLES)?)
         };
         match build() {
             Ok(locus) => {
                 self.overlay = Some(Overlay {
-                    preset: name,
+                    preset: id,
                     a,
                     locus,
                 });
@@ -521,13 +509,13 @@ mod tests {
     #[test]
     fn switching_preset_recomputes_the_overlay_and_clears_a_refusal() {
         let mut state = AppState::new(Settings::default()).unwrap();
-        state.enter_parameter("a", 21.0);
-        state.enter_parameter("nu", -1.0);
-        assert!(state.refusal("nu").is_some());
-        state.set_overlay(Some("ziegler-1952"));
+        state.enter_parameter(Key::A, 21.0);
+        state.enter_parameter(Key::Nu, -1.0);
+        assert!(state.refusal(Key::Nu).is_some());
+        state.set_overlay(Some(PresetId::Ziegler1952));
         assert_eq!(state.overlay().unwrap().a, 21.0);
-        state.set_preset("midpoint-masses");
-        assert!(state.refusal("nu").is_none());
+        state.set_preset(PresetId::MidpointMasses);
+        assert!(state.refusal(Key::Nu).is_none());
         let overlay = state.overlay().unwrap();
         assert_eq!(overlay.a, state.group_a());
         assert_ne!(overlay.a, 21.0, "the preset's own a");

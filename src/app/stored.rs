@@ -9,7 +9,7 @@ use serde::de::{MapAccess, Visitor};
 
 use super::notice::Notice;
 use super::state::{AppState, Settings};
-use crate::model::{Model, preset};
+use crate::model::{Model, PresetId};
 
 /// The simulated seconds per wall second the speed slider offers.
 pub const SPEED_RANGE: std::ops::RangeInclusive<f64> = 0.1..=10.0;
@@ -90,10 +90,10 @@ pub fn read(text: &str) -> Result<Read, String> {
     let mut settings = Settings::default();
     let name: Option<String> = field(preset_raw.as_deref(), "preset", &mut ignored);
     let model: Option<Model> = field(model_raw.as_deref(), "model", &mut ignored);
-    match name.map(|name| preset(&name).map(|p| (name, p))) {
-        Some(Ok((name, known))) => {
-            settings.model = known.model();
-            settings.preset = name;
+    match name.map(|name| name.parse::<PresetId>()) {
+        Some(Ok(id)) => {
+            settings.model = id.model();
+            settings.preset = id;
             match model {
                 Some(model)
                     if std::mem::discriminant(&model.load)

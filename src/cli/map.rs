@@ -11,7 +11,7 @@ use clap::ValueEnum;
 use zieglerlab::analysis::{
     AffinePencil, MapSpec, Row, RowResult, bracketing_locus, compute_map, resolution_warning,
 };
-use zieglerlab::model::{Axis, Shown};
+use zieglerlab::model::{Axis, Key, Shown};
 
 use super::output::{check_output, write_atomically, write_png};
 use super::{ModelArgs, printable, progress_bar};
@@ -94,7 +94,7 @@ pub struct Args {
 pub fn run(args: &Args) -> Result<()> {
     let Args { x, y, out, .. } = args;
     check_output(out, args.format == Format::Png)?;
-    let (name, model) = args.model.build()?;
+    let (_, model) = args.model.build()?;
     if x.name != "load" {
         anyhow::bail!(
             "--x {}: the map's first axis is the load: load:MIN:MAX:N",
@@ -104,13 +104,12 @@ pub fn run(args: &Args) -> Result<()> {
     if x.min < 0.0 {
         anyhow::bail!("--x {}: loads must be >= 0", x.text);
     }
-    let axis = Axis::parse(&y.name, &model, &name)?;
-    if axis == Axis::Key("load") {
+    let axis = Axis::parse(&y.name, &model)?;
+    if axis == Axis::Key(Key::Load) {
         anyhow::bail!("--y {}: the second axis cannot be the load again", y.text);
     }
     let spec = MapSpec {
         model,
-        preset: name,
         axis,
         load_range: (x.min, x.max),
         loads: x.count,
@@ -192,7 +191,7 @@ fn warn_if_unresolved(spec: &MapSpec, rows: &[&Row], y_name: &str) -> Result<()>
         .into_iter()
         .flatten()
     {
-        let model = spec.axis.apply(&spec.model, &spec.preset, row.value)?;
+        let model = spec.axis.apply(&spec.model, row.value)?;
         let pencil = AffinePencil::new(&model)?;
         let bracket = bracketing_locus(&pencil, load_min, load_max)?;
         if let Some(warning) = resolution_warning(&pencil, &bracket)? {

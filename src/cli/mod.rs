@@ -16,7 +16,9 @@ use std::process::ExitCode;
 use anyhow::Result;
 use clap::{Parser, Subcommand, ValueEnum};
 
-use zieglerlab::model::{Model, apply_assignments, parse_assignment, preset};
+use zieglerlab::model::{
+    Key, Model, ModelError, PresetId, apply_assignments, parse_assignment,
+};
 use zieglerlab::sim::EngineKind;
 
 /// The load axis, as printed in every output.
@@ -38,7 +40,7 @@ struct Cli {
 struct ModelArgs {
     /// Preset name (see `zieglerlab presets`).
     #[arg(long)]
-    preset: String,
+    preset: PresetId,
     /// Parameter override, `key=value` (repeatable): `load`, the paper's groups
     /// `a`, `nu`, `rho`, `mu`, `V`, or any SI key that `presets` lists.
     #[arg(long = "set", value_name = "KEY=VALUE")]
@@ -46,18 +48,27 @@ struct ModelArgs {
 }
 
 impl ModelArgs {
-    /// The preset's name and its model with the `--set` overrides applied
-    /// and validated.
-    fn build(&self) -> Result<(String, Model)> {
-        let preset = preset(&self.preset)?;
+    /// The preset and its model with the `--set` overrides applied and
+    /// validated. A key the preset does not have is named with the preset
+    /// and the keys it has.
+    fn build(&self) -> Result<(PresetId, Model)> {
+        let keys = Key::names_for(&self.preset.model());
+        let in_preset = |error: ModelError| match error {
+            ModelError::UnknownKey { key, .. } => anyhow::anyhow!(
+                "unknown key '{key}' for preset {}; its keys are: {keys}",
+                self.preset
+            ),
+            other => other.into(),
+        };
         let assignments = self
             .set
             .iter()
             .map(|text| parse_assignment(text))
-            .collect::<Result<Vec<_>, _>>()?;
-        let mut model = preset.model();
-        apply_assignments(&mut model, preset.name, &assignments)?;
-        Ok((preset.name.to_owned(), model))
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(in_preset)?;
+        let mut model = self.preset.model();
+        apply_assignments(&mut model, &assignments).map_err(in_preset)?;
+        Ok((self.preset, model))
     }
 }
 

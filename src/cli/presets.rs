@@ -24,7 +24,7 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
                     .filter(|key| key.applies_to(&model))
                     .map(|key| {
                         json!({
-                            "key": key.key,
+                            "key": key.key.name(),
                             "value": key.get(&model),
                             "unit": key.unit,
                             "range": key.range,
@@ -51,7 +51,7 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
             writeln!(
                 out,
                 "  {:<6} {:>12} {:<10} {:<12} {}",
-                key.key,
+                key.key.name(),
                 format!("{:.6}", key.get(&model))
                     .trim_end_matches('0')
                     .trim_end_matches('.'),

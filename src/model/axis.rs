@@ -2,7 +2,7 @@
 //! explorer's): any key, or the joints' damper ratio c1/c2 or damping level
 //! with the other held.
 
-use super::keys::{Assignment, KEYS, apply_assignments};
+use super::keys::{Assignment, KEYS, Key, apply_assignments};
 use super::{Model, ModelError};
 
 /// The name of the damper-ratio axis, `c1/c2` (the damping level held).
@@ -18,7 +18,7 @@ pub const DAMPING_LEVEL: &str = "damping";
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Axis {
     /// A key as `--set` takes it.
-    Key(&'static str),
+    Key(Key),
     DamperRatio,
     DampingLevel,
     MassRatio,
@@ -30,19 +30,19 @@ impl Axis {
     ///
     /// # Errors
     /// An unknown name, naming the ones there are.
-    pub fn parse(name: &str, model: &Model, preset: &str) -> Result<Self, ModelError> {
+    pub fn parse(name: &str, model: &Model) -> Result<Self, ModelError> {
         match name {
             DAMPER_RATIO => return Ok(Self::DamperRatio),
             DAMPING_LEVEL => return Ok(Self::DampingLevel),
             MASS_RATIO => return Ok(Self::MassRatio),
             _ => {}
         }
-        KEYS.iter()
-            .find(|spec| spec.key == name && spec.applies_to(model))
-            .map(|spec| Self::Key(spec.key))
+        name.parse::<Key>()
+            .ok()
+            .filter(|key| key.applies_to(model))
+            .map(Self::Key)
             .ok_or_else(|| ModelError::UnknownKey {
                 key: name.to_owned(),
-                preset: preset.to_owned(),
                 known: Self::names(model).join(", "),
             })
     }
@@ -52,7 +52,7 @@ impl Axis {
     pub fn names(model: &Model) -> Vec<&'static str> {
         KEYS.iter()
             .filter(|spec| spec.applies_to(model))
-            .map(|spec| spec.key)
+            .map(|spec| spec.key.name())
             .chain([DAMPER_RATIO, DAMPING_LEVEL, MASS_RATIO])
             .collect()
     }
@@ -60,7 +60,7 @@ impl Axis {
     #[must_use]
     pub fn name(&self) -> &'static str {
         match self {
-            Self::Key(key) => key,
+            Self::Key(key) => key.name(),
             Self::DamperRatio => DAMPER_RATIO,
             Self::DampingLevel => DAMPING_LEVEL,
             Self::MassRatio => MASS_RATIO,
@@ -73,10 +73,7 @@ impl Axis {
     pub fn get(&self, model: &Model) -> f64 {
         let c = &model.column;
         match self {
-            Self::Key(key) => KEYS
-                .iter()
-                .find(|spec| spec.key == *key)
-                .map_or(f64::NAN, |spec| spec.get(model)),
+            Self::Key(key) => key.get(model),
             Self::DamperRatio => ratio(model).unwrap_or(1.0),
             Self::DampingLevel => c.c2_nms_per_rad / damping_scale(model),
             Self::MassRatio => c.rod1.mass_kg / mass_beyond_joint(model),
@@ -87,20 +84,16 @@ impl Axis {
     ///
     /// # Errors
     /// A value or a resulting model that is refused, naming the axis.
-    pub fn apply(&self, model: &Model, preset: &str, value: f64) -> Result<Model, ModelError> {
+    pub fn apply(&self, model: &Model, value: f64) -> Result<Model, ModelError> {
         let mut out = *model;
         match self {
             Self::MassRatio => {
                 non_negative(MASS_RATIO, value)?;
                 let m1 = value * mass_beyond_joint(model);
-                return Self::Key("m1").apply(model, preset, m1);
+                return Self::Key(Key::M1).apply(model, m1);
             }
             Self::Key(key) => {
-                let set = Assignment {
-                    key: (*key).to_owned(),
-                    value,
-                };
-                apply_assignments(&mut out, preset, &[set])?;
+                apply_assignments(&mut out, &[Assignment { key: *key, value }])?;
             }
             Self::DamperRatio => {
                 non_negative(DAMPER_RATIO, value)?;

@@ -4,6 +4,145 @@
 use super::ModelError;
 use super::params::{Load, Model, Rod, analysis_range_text};
 
+/// A settable parameter, by the name `--set` and the app's fields use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Key {
+    Load,
+    A,
+    Nu,
+    Rho,
+    Mu,
+    V,
+    L1,
+    L2,
+    M1,
+    M2,
+    S1,
+    S2,
+    I1,
+    I2,
+    MTip,
+    K1,
+    K2,
+    C1,
+    C2,
+    P,
+    M3,
+    RollerRadius,
+    NormalForce,
+}
+
+impl Key {
+    /// Every key, in the order of [`KEYS`].
+    pub const ALL: [Self; 23] = [
+        Self::Load,
+        Self::A,
+        Self::Nu,
+        Self::Rho,
+        Self::Mu,
+        Self::V,
+        Self::L1,
+        Self::L2,
+        Self::M1,
+        Self::M2,
+        Self::S1,
+        Self::S2,
+        Self::I1,
+        Self::I2,
+        Self::MTip,
+        Self::K1,
+        Self::K2,
+        Self::C1,
+        Self::C2,
+        Self::P,
+        Self::M3,
+        Self::RollerRadius,
+        Self::NormalForce,
+    ];
+
+    /// The key's name, as typed.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Load => "load",
+            Self::A => "a",
+            Self::Nu => "nu",
+            Self::Rho => "rho",
+            Self::Mu => "mu",
+            Self::V => "V",
+            Self::L1 => "l1",
+            Self::L2 => "l2",
+            Self::M1 => "m1",
+            Self::M2 => "m2",
+            Self::S1 => "s1",
+            Self::S2 => "s2",
+            Self::I1 => "I1",
+            Self::I2 => "I2",
+            Self::MTip => "m_tip",
+            Self::K1 => "k1",
+            Self::K2 => "k2",
+            Self::C1 => "c1",
+            Self::C2 => "c2",
+            Self::P => "P",
+            Self::M3 => "m3",
+            Self::RollerRadius => "r",
+            Self::NormalForce => "R",
+        }
+    }
+
+    /// What the key is: unit, range, scope, how it reads and writes a model.
+    #[must_use]
+    pub fn spec(self) -> &'static KeySpec {
+        &KEYS[self as usize]
+    }
+
+    /// The parameter's current value in `model` (NaN where the key does not
+    /// apply, e.g. the roller's keys on a column).
+    #[must_use]
+    pub fn get(self, model: &Model) -> f64 {
+        self.spec().get(model)
+    }
+
+    /// Whether the key exists for this model's load.
+    #[must_use]
+    pub fn applies_to(self, model: &Model) -> bool {
+        self.spec().applies_to(model)
+    }
+
+    /// The names of the keys that apply to `model`, for messages.
+    #[must_use]
+    pub fn names_for(model: &Model) -> String {
+        Self::ALL
+            .iter()
+            .filter(|key| key.applies_to(model))
+            .map(|key| key.name())
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+}
+
+impl std::fmt::Display for Key {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl std::str::FromStr for Key {
+    type Err = ModelError;
+
+    /// The key named `name` (case-sensitive: `r` is the roller's radius, `R`
+    /// the band's normal force).
+    fn from_str(name: &str) -> Result<Self, ModelError> {
+        Self::ALL
+            .into_iter()
+            .find(|key| key.name() == name)
+            .ok_or_else(|| ModelError::UnknownKey {
+                key: name.to_owned(),
+                known: Self::ALL.map(Self::name).join(", "),
+            })
+    }
+}
+
 /// Which loads a key exists for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Scope {
@@ -23,7 +162,7 @@ enum Sign {
 /// One settable parameter.
 #[derive(Clone, Copy, Debug)]
 pub struct KeySpec {
-    pub key: &'static str,
+    pub key: Key,
     pub unit: &'static str,
     pub description: &'static str,
     /// The allowed range, as text (bounds may name other parameters).
@@ -58,9 +197,9 @@ impl KeySpec {
 }
 
 /// A parsed `key=value`.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Assignment {
-    pub key: String,
+    pub key: Key,
     pub value: f64,
 }
 
@@ -68,7 +207,8 @@ pub struct Assignment {
 /// rejected later, with the key named).
 ///
 /// # Errors
-/// [`ModelError::Malformed`] when there is no `=` or the value is not a number.
+/// [`ModelError::Malformed`] when there is no `=` or the value is not a
+/// number, [`ModelError::UnknownKey`] for a name that is no key.
 pub fn parse_assignment(text: &str) -> Result<Assignment, ModelError> {
     let malformed = |reason: &str| ModelError::Malformed {
         text: text.to_owned(),
@@ -84,19 +224,19 @@ pub fn parse_assignment(text: &str) -> Result<Assignment, ModelError> {
         .parse::<f64>()
         .map_err(|_| malformed(&format!("'{}' is not a number", value.trim())))?;
     Ok(Assignment {
-        key: key.to_owned(),
+        key: key.parse()?,
         value,
     })
 }
 
 /// Keys that write the same quantity; setting both is ambiguous.
-const CONFLICTS: [(&str, &str); 6] = [
-    ("m3", "nu"),
-    ("r", "rho"),
-    ("k1", "a"),
-    ("k2", "a"),
-    ("load", "P"),
-    ("load", "R"),
+const CONFLICTS: [(Key, Key); 6] = [
+    (Key::M3, Key::Nu),
+    (Key::RollerRadius, Key::Rho),
+    (Key::K1, Key::A),
+    (Key::K2, Key::A),
+    (Key::Load, Key::P),
+    (Key::Load, Key::NormalForce),
 ];
 
 /// Applies the assignments to `model` in the canonical order and validates the result.
@@ -105,26 +245,17 @@ const CONFLICTS: [(&str, &str); 6] = [
 /// Unknown or inapplicable key, a key given twice or with a conflicting
 /// partner, a value out of range (named by the key the user typed), or a
 /// resulting model that [`Model::validate`] rejects.
-pub fn apply_assignments(
-    model: &mut Model,
-    preset_name: &str,
-    assignments: &[Assignment],
-) -> Result<(), ModelError> {
+pub fn apply_assignments(model: &mut Model, assignments: &[Assignment]) -> Result<(), ModelError> {
     let mut specs: Vec<&KeySpec> = Vec::with_capacity(assignments.len());
     for assignment in assignments {
-        let spec = KEYS
-            .iter()
-            .find(|spec| spec.key == assignment.key && spec.applies_to(model))
-            .ok_or_else(|| ModelError::UnknownKey {
-                key: assignment.key.clone(),
-                preset: preset_name.to_owned(),
-                known: KEYS
-                    .iter()
-                    .filter(|spec| spec.applies_to(model))
-                    .map(|spec| spec.key)
-                    .collect::<Vec<_>>()
-                    .join(", "),
-            })?;
+        let key = assignment.key;
+        if !key.applies_to(model) {
+            return Err(ModelError::UnknownKey {
+                key: key.name().to_owned(),
+                known: Key::names_for(model),
+            });
+        }
+        let spec = key.spec();
         for earlier in &specs {
             let clash = earlier.key == spec.key
                 || CONFLICTS.iter().any(|&(a, b)| {
@@ -132,8 +263,8 @@ pub fn apply_assignments(
                 });
             if clash {
                 return Err(ModelError::Conflict {
-                    first: earlier.key.to_owned(),
-                    second: spec.key.to_owned(),
+                    first: earlier.key.name().to_owned(),
+                    second: spec.key.name().to_owned(),
                 });
             }
         }
@@ -149,7 +280,7 @@ pub fn apply_assignments(
         (spec.set)(model, value);
         if let Some((what, _)) = model.beyond_analysis() {
             return Err(ModelError::invalid(
-                spec.key,
+                spec.key.name(),
                 value,
                 &format!("makes {what} {}", analysis_range_text()),
             ));
@@ -168,7 +299,11 @@ fn check_sign(spec: &KeySpec, value: f64) -> Result<(), ModelError> {
     if ok {
         Ok(())
     } else {
-        Err(ModelError::invalid(spec.key, value, allowed.trim_end()))
+        Err(ModelError::invalid(
+            spec.key.name(),
+            value,
+            allowed.trim_end(),
+        ))
     }
 }
 
@@ -215,7 +350,7 @@ fn roller_value(model: &Model, get: fn(&super::params::Roller) -> f64) -> f64 {
 /// Every settable key, in the order `zieglerlab presets` lists them.
 pub const KEYS: [KeySpec; 23] = [
     KeySpec {
-        key: "load",
+        key: Key::Load,
         unit: "",
         description: "load p = P l/k on the common axis (P = mu R for the roller; l = l1, k = k1)",
         range: ">= 0",
@@ -227,7 +362,7 @@ pub const KEYS: [KeySpec; 23] = [
         set: Model::set_load_p,
     },
     KeySpec {
-        key: "a",
+        key: Key::A,
         unit: "1/s^2",
         description: "a = k/(m l^2): sets k1 (and k2 in the same ratio), keeps p",
         range: "> 0",
@@ -248,7 +383,7 @@ pub const KEYS: [KeySpec; 23] = [
         },
     },
     KeySpec {
-        key: "nu",
+        key: Key::Nu,
         unit: "",
         description: "nu = m3/m, roller mass over the rod's mass",
         range: ">= 0",
@@ -265,7 +400,7 @@ pub const KEYS: [KeySpec; 23] = [
         },
     },
     KeySpec {
-        key: "rho",
+        key: Key::Rho,
         unit: "",
         description: "rho = r/l, roller radius over the rod's length",
         range: "in (0, l2/l]",
@@ -282,7 +417,7 @@ pub const KEYS: [KeySpec; 23] = [
         },
     },
     KeySpec {
-        key: "mu",
+        key: Key::Mu,
         unit: "",
         description: "friction coefficient; only mu R enters the equations, so R is held and the load p = mu R l/k moves",
         range: "> 0",
@@ -298,7 +433,7 @@ pub const KEYS: [KeySpec; 23] = [
         },
     },
     KeySpec {
-        key: "V",
+        key: Key::V,
         unit: "m/s",
         description: "band speed (the band moves toward -x); the linear analysis needs V > 0",
         range: ">= 0",
@@ -314,7 +449,7 @@ pub const KEYS: [KeySpec; 23] = [
         },
     },
     KeySpec {
-        key: "l1",
+        key: Key::L1,
         unit: "m",
         description: "length of rod 1 (its mass distribution scales with it)",
         range: "> 0",
@@ -326,7 +461,7 @@ pub const KEYS: [KeySpec; 23] = [
         set: |m, v| set_length(m, 1, v),
     },
     KeySpec {
-        key: "l2",
+        key: Key::L2,
         unit: "m",
         description: "length of rod 2 (its mass distribution scales with it)",
         range: "> 0",
@@ -338,7 +473,7 @@ pub const KEYS: [KeySpec; 23] = [
         set: |m, v| set_length(m, 2, v),
     },
     KeySpec {
-        key: "m1",
+        key: Key::M1,
         unit: "kg",
         description: "mass of rod 1, point masses on it included (distribution kept)",
         range: ">= 0",
@@ -350,7 +485,7 @@ pub const KEYS: [KeySpec; 23] = [
         set: |m, v| set_mass(m, 1, v),
     },
     KeySpec {
-        key: "m2",
+        key: Key::M2,
         unit: "kg",
         description: "mass of rod 2 (distribution kept)",
         range: ">= 0",
@@ -362,7 +497,7 @@ pub const KEYS: [KeySpec; 23] = [
         set: |m, v| set_mass(m, 2, v),
     },
     KeySpec {
-        key: "s1",
+        key: Key::S1,
         unit: "m",
         description: "centre of mass of rod 1, from the clamp O",
         range: "in [0, l1]",
@@ -374,7 +509,7 @@ pub const KEYS: [KeySpec; 23] = [
         set: |m, v| m.column.rod1.com_m = v,
     },
     KeySpec {
-        key: "s2",
+        key: Key::S2,
         unit: "m",
         description: "centre of mass of rod 2, from the joint A",
         range: "in [0, l2]",
@@ -386,7 +521,7 @@ pub const KEYS: [KeySpec; 23] = [
         set: |m, v| m.column.rod2.com_m = v,
     },
     KeySpec {
-        key: "I1",
+        key: Key::I1,
         unit: "kg m^2",
         description: "moment of inertia of rod 1 about its centre of mass",
         range: ">= 0",
@@ -398,7 +533,7 @@ pub const KEYS: [KeySpec; 23] = [
         set: |m, v| m.column.rod1.inertia_kg_m2 = v,
     },
     KeySpec {
-        key: "I2",
+        key: Key::I2,
         unit: "kg m^2",
         description: "moment of inertia of rod 2 about its centre of mass",
         range: ">= 0",
@@ -410,7 +545,7 @@ pub const KEYS: [KeySpec; 23] = [
         set: |m, v| m.column.rod2.inertia_kg_m2 = v,
     },
     KeySpec {
-        key: "m_tip",
+        key: Key::MTip,
         unit: "kg",
         description: "point mass at the tip B (the roller's mass is m3)",
         range: ">= 0",
@@ -422,7 +557,7 @@ pub const KEYS: [KeySpec; 23] = [
         set: |m, v| m.column.tip_mass_kg = v,
     },
     KeySpec {
-        key: "k1",
+        key: Key::K1,
         unit: "N m/rad",
         description: "rotary spring at the clamp O",
         range: "> 0",
@@ -434,7 +569,7 @@ pub const KEYS: [KeySpec; 23] = [
         set: |m, v| m.column.k1_nm_per_rad = v,
     },
     KeySpec {
-        key: "k2",
+        key: Key::K2,
         unit: "N m/rad",
         description: "rotary spring at the joint A",
         range: "> 0",
@@ -446,7 +581,7 @@ pub const KEYS: [KeySpec; 23] = [
         set: |m, v| m.column.k2_nm_per_rad = v,
     },
     KeySpec {
-        key: "c1",
+        key: Key::C1,
         unit: "N m s/rad",
         description: "viscous damper at the clamp O",
         range: ">= 0",
@@ -458,7 +593,7 @@ pub const KEYS: [KeySpec; 23] = [
         set: |m, v| m.column.c1_nms_per_rad = v,
     },
     KeySpec {
-        key: "c2",
+        key: Key::C2,
         unit: "N m s/rad",
         description: "viscous damper at the joint A",
         range: ">= 0",
@@ -470,7 +605,7 @@ pub const KEYS: [KeySpec; 23] = [
         set: |m, v| m.column.c2_nms_per_rad = v,
     },
     KeySpec {
-        key: "P",
+        key: Key::P,
         unit: "N",
         description: "magnitude of the tip force",
         range: ">= 0",
@@ -486,7 +621,7 @@ pub const KEYS: [KeySpec; 23] = [
         },
     },
     KeySpec {
-        key: "m3",
+        key: Key::M3,
         unit: "kg",
         description: "mass of the roller (0: massless, the ideal follower force)",
         range: ">= 0",
@@ -502,7 +637,7 @@ pub const KEYS: [KeySpec; 23] = [
         },
     },
     KeySpec {
-        key: "r",
+        key: Key::RollerRadius,
         unit: "m",
         description: "radius of the roller",
         range: "in (0, l2]",
@@ -518,7 +653,7 @@ pub const KEYS: [KeySpec; 23] = [
         },
     },
     KeySpec {
-        key: "R",
+        key: Key::NormalForce,
         unit: "N",
         description: "normal force of the roller on the band",
         range: ">= 0",
@@ -534,3 +669,37 @@ pub const KEYS: [KeySpec; 23] = [
         },
     },
 ];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `Key::spec` indexes `KEYS` by the variant: the two orders must agree,
+    /// and every name reads back as its key.
+    #[test]
+    fn every_key_reads_back_from_its_name_and_finds_its_spec() {
+        for key in Key::ALL {
+            assert_eq!(key.spec().key, key);
+            assert_eq!(key.name().parse::<Key>().unwrap(), key);
+            assert_eq!(key.to_string(), key.name());
+        }
+        let unknown = "colour".parse::<Key>().unwrap_err();
+        assert!(unknown.to_string().contains("unknown key 'colour'"));
+        // r and R are different keys.
+        assert_ne!("r".parse::<Key>().unwrap(), "R".parse::<Key>().unwrap());
+    }
+
+    #[test]
+    fn a_key_of_another_load_is_refused_naming_the_model_s_keys() {
+        let mut column = super::super::PresetId::UniformRods.model();
+        let set_r = Assignment {
+            key: Key::NormalForce,
+            value: 3.0,
+        };
+        let error = apply_assignments(&mut column, &[set_r]).unwrap_err();
+        let text = error.to_string();
+        assert!(text.starts_with("unknown key 'R'"), "{text}");
+        assert!(text.contains("load, a, l1"), "{text}");
+        assert!(!text.contains("nu"), "{text}");
+    }
+}

@@ -17,10 +17,10 @@ pub use dynamics::{
     Friction, SLIP_REGULARIZATION_M_PER_S, StateVec, TipLoad, energy_j, friction, joint_torques_nm,
     state_derivative, tip_load, tip_m,
 };
-pub use keys::{Assignment, KEYS, KeySpec, apply_assignments, parse_assignment};
+pub use keys::{Assignment, KEYS, Key, KeySpec, apply_assignments, parse_assignment};
 pub use linear::{LinearModel, linearize};
 pub use params::{Column, Inertia, Load, Model, Rod, Roller, SpinInertia};
-pub use presets::{PRESETS, Preset, preset};
+pub use presets::{PRESETS, Preset, PresetId, preset};
 
 /// A number in a message: as Rust writes it for everyday magnitudes, in
 /// exponent form beyond them, so no message prints 300 digits.
@@ -49,12 +49,8 @@ pub enum ModelError {
     },
     #[error("unknown preset '{name}'; the presets are: {known}")]
     UnknownPreset { name: String, known: String },
-    #[error("unknown key '{key}' for preset {preset}; the keys are: {known}")]
-    UnknownKey {
-        key: String,
-        preset: String,
-        known: String,
-    },
+    #[error("unknown key '{key}'; the keys are: {known}")]
+    UnknownKey { key: String, known: String },
     #[error("'{text}' is not key=value with a number (e.g. load=2.5): {reason}")]
     Malformed { text: String, reason: String },
     #[error("{first} and {second} both set the same quantity; give only one")]

@@ -3,9 +3,90 @@
 use super::ModelError;
 use super::params::{Column, Load, Model, Rod, Roller, SpinInertia};
 
+/// A preset, by the name the command line and the settings use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+#[serde(try_from = "String", into = "String")]
+pub enum PresetId {
+    Ziegler1952,
+    UniformRods,
+    MidpointMasses,
+    Roller,
+    RollerAsPrinted,
+}
+
+impl PresetId {
+    /// Every preset, in the order of [`PRESETS`].
+    pub const ALL: [Self; 5] = [
+        Self::Ziegler1952,
+        Self::UniformRods,
+        Self::MidpointMasses,
+        Self::Roller,
+        Self::RollerAsPrinted,
+    ];
+
+    /// The preset's name, as typed.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Ziegler1952 => "ziegler-1952",
+            Self::UniformRods => "uniform-rods",
+            Self::MidpointMasses => "midpoint-masses",
+            Self::Roller => "roller",
+            Self::RollerAsPrinted => "roller-as-printed",
+        }
+    }
+
+    /// The preset itself.
+    #[must_use]
+    pub fn preset(self) -> &'static Preset {
+        &PRESETS[self as usize]
+    }
+
+    /// The preset's model at its default load.
+    #[must_use]
+    pub fn model(self) -> Model {
+        self.preset().model()
+    }
+}
+
+impl std::fmt::Display for PresetId {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl std::str::FromStr for PresetId {
+    type Err = ModelError;
+
+    fn from_str(name: &str) -> Result<Self, ModelError> {
+        Self::ALL
+            .into_iter()
+            .find(|id| id.name() == name)
+            .ok_or_else(|| ModelError::UnknownPreset {
+                name: name.to_owned(),
+                known: Self::ALL.map(Self::name).join(", "),
+            })
+    }
+}
+
+impl TryFrom<String> for PresetId {
+    type Error = ModelError;
+
+    fn try_from(name: String) -> Result<Self, ModelError> {
+        name.parse()
+    }
+}
+
+impl From<PresetId> for String {
+    fn from(id: PresetId) -> Self {
+        id.name().to_owned()
+    }
+}
+
 /// A named model with the line that says where it comes from.
 #[derive(Clone, Copy, Debug)]
 pub struct Preset {
+    pub id: PresetId,
     pub name: &'static str,
     /// Where in the paper the model is: a figure or equations.
     pub source: &'static str,
@@ -24,30 +105,35 @@ impl Preset {
 /// Every preset, in the order the UI and `zieglerlab presets` show them.
 pub const PRESETS: [Preset; 5] = [
     Preset {
+        id: PresetId::Ziegler1952,
         name: "ziegler-1952",
         source: "Ziegler 1952",
         description: "Ziegler's column: massless rods, point mass 2m at the joint A and m at the tip, ideal follower force",
         build: ziegler_1952,
     },
     Preset {
+        id: PresetId::UniformRods,
         name: "uniform-rods",
         source: "Fig. 1a",
         description: "Uniform rigid rods of mass m (Fig. 1a), ideal follower force",
         build: uniform_rods,
     },
     Preset {
+        id: PresetId::MidpointMasses,
         name: "midpoint-masses",
         source: "Fig. 1b, eqs 1-7",
         description: "Massless rods with a point mass m at each midpoint (Fig. 1b, eqs 1-7), ideal follower force",
         build: midpoint_masses,
     },
     Preset {
+        id: PresetId::Roller,
         name: "roller",
         source: "Fig. 7, eqs 8-38",
         description: "Uniform rods with a roller dragged by a moving band (Fig. 7, eqs 8-38), consistent spin inertia; Fig. 8 parameters",
         build: roller,
     },
     Preset {
+        id: PresetId::RollerAsPrinted,
         name: "roller-as-printed",
         source: "eq. 39, Fig. 8",
         description: "The roller model as printed in eq. (39): spin inertia multiplied by r/l2 (physics.md erratum); Fig. 8 parameters",
@@ -60,13 +146,7 @@ pub const PRESETS: [Preset; 5] = [
 /// # Errors
 /// [`ModelError::UnknownPreset`] listing the known names.
 pub fn preset(name: &str) -> Result<&'static Preset, ModelError> {
-    PRESETS
-        .iter()
-        .find(|p| p.name == name)
-        .ok_or_else(|| ModelError::UnknownPreset {
-            name: name.to_owned(),
-            known: PRESETS.map(|p| p.name).join(", "),
-        })
+    name.parse::<PresetId>().map(PresetId::preset)
 }
 
 const LENGTH_M: f64 = 1.0;
@@ -149,4 +229,24 @@ fn roller() -> Model {
 
 fn roller_as_printed() -> Model {
     roller_with_spin(SpinInertia::AsPrinted)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `PresetId::preset` indexes `PRESETS` by the variant; names read back,
+    /// and the stored form is the name (settings files stay readable).
+    #[test]
+    fn every_preset_reads_back_from_its_name() {
+        for id in PresetId::ALL {
+            assert_eq!(id.preset().id, id);
+            assert_eq!(id.preset().name, id.name());
+            assert_eq!(id.name().parse::<PresetId>().unwrap(), id);
+            assert_eq!(ron::to_string(&id).unwrap(), format!("\"{}\"", id.name()));
+        }
+        let error = "nope".parse::<PresetId>().unwrap_err().to_string();
+        assert!(error.contains("unknown preset 'nope'"), "{error}");
+        assert!(ron::from_str::<PresetId>("\"nope\"").is_err());
+    }
 }

@@ -172,14 +172,14 @@ fn dormand_prince_step(model: &Model, x: &StateVec, h: f64) -> (StateVec, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::preset;
+    use crate::model::PresetId;
     use crate::sim::initial_state;
 
     /// Late in a long run the rounding of earlier steps can leave a sliver
     /// of time below the step-size floor: the run goes on, not "diverged".
     #[test]
     fn a_sliver_of_time_left_by_rounding_is_not_a_collapse() {
-        let model = preset("ziegler-1952").unwrap().model().at_load(1.0);
+        let model = PresetId::Ziegler1952.model().at_load(1.0);
         let mut engine = Reference::new(initial_state(&model, 1e-3));
         let end = 4.0e4;
         engine.t_secs = end - 1e-12;

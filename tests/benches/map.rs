@@ -15,7 +15,7 @@ use zieglerlab::analysis::compute_map;
 use zieglerlab::bench::roller_map_spec;
 
 fn benches(c: &mut Criterion) {
-    let spec = roller_map_spec().unwrap();
+    let spec = roller_map_spec();
     let threads = std::thread::available_parallelism().map_or(2, std::num::NonZero::get);
     let mut group = c.benchmark_group("map");
     group.sample_size(10);

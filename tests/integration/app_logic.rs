@@ -4,7 +4,7 @@
 //! what was ignored.
 
 use zieglerlab::app::{MAX_FRAME_SECS, Settings, ZieglerApp};
-use zieglerlab::model::Axis;
+use zieglerlab::model::{Axis, Key, PresetId};
 use zieglerlab::sim::{DEFAULT_STEP_SECS, EngineKind, Status};
 
 #[test]
@@ -74,7 +74,7 @@ fn stored_settings_keep_what_reads_and_name_the_rest() {
     };
     let dead_load = {
         let settings = Settings {
-            preset: "ziegler-1952".to_owned(),
+            preset: PresetId::Ziegler1952,
             model: zieglerlab::model::preset("roller").unwrap().model(),
             ..Settings::default()
         };
@@ -147,7 +147,7 @@ fn stored_settings_keep_what_reads_and_name_the_rest() {
 fn a_column_too_stiff_for_rapier_switches_engines_and_says_so() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     assert_eq!(app.simulation().engine(), EngineKind::Rapier);
-    app.state_mut().set_parameter("c1", 1e6).unwrap();
+    app.state_mut().set_parameter(Key::C1, 1e6).unwrap();
     assert_eq!(app.simulation().engine(), EngineKind::Reference);
     assert_eq!(app.settings().engine, EngineKind::Reference);
     assert_eq!(app.settings().model.column.c1_nms_per_rad, 1e6);
@@ -167,7 +167,7 @@ fn a_column_too_stiff_for_rapier_switches_engines_and_says_so() {
 #[test]
 fn a_blow_up_stops_with_a_status_and_finite_data() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
-    app.state_mut().set_parameter("load", 1e6).unwrap();
+    app.state_mut().set_parameter(Key::Load, 1e6).unwrap();
     for _ in 0..120 {
         app.advance(1.0 / 60.0);
     }
@@ -218,7 +218,7 @@ fn a_model_without_analysis_shows_no_stale_locus() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     assert!(app.state().analysis().is_some());
     // The band stops: the simulation goes on, the linear analysis cannot.
-    app.state_mut().set_parameter("V", 0.0).unwrap();
+    app.state_mut().set_parameter(Key::V, 0.0).unwrap();
     assert!(app.state().analysis().is_none());
     assert!(
         app.message().unwrap().contains("V = 0"),
@@ -227,7 +227,7 @@ fn a_model_without_analysis_shows_no_stale_locus() {
     );
     app.advance(0.05);
     assert!(app.simulation().time_secs() > 0.0);
-    app.state_mut().set_parameter("V", 0.1).unwrap();
+    app.state_mut().set_parameter(Key::V, 0.1).unwrap();
     assert!(app.state().analysis().is_some());
 }
 
@@ -236,12 +236,13 @@ fn a_model_without_analysis_shows_no_stale_locus() {
 #[test]
 fn a_map_point_sets_both_parameters_and_the_run_follows() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
-    app.state_mut().set_map_point(&Axis::Key("nu"), 3.0, 0.4);
+    app.state_mut().set_map_point(&Axis::Key(Key::Nu), 3.0, 0.4);
     let model = app.settings().model;
     assert!((model.load_p() - 3.0).abs() < 1e-12);
-    assert!((Axis::Key("nu").get(&model) - 0.4).abs() < 1e-12);
+    assert!((Axis::Key(Key::Nu).get(&model) - 0.4).abs() < 1e-12);
     assert_eq!(app.simulation().model(), &model);
-    app.state_mut().set_map_point(&Axis::Key("nu"), 2.0, -1.0);
+    app.state_mut()
+        .set_map_point(&Axis::Key(Key::Nu), 2.0, -1.0);
     assert_eq!(app.settings().model, model);
     assert!(app.message().unwrap().contains("nu = -1"));
 }
@@ -269,7 +270,7 @@ fn the_window_layout_comes_back_and_a_misfit_is_said() {
 
     // The 1952 column has no roller mass to map, and no preset is named so.
     let column = Settings {
-        preset: "ziegler-1952".to_owned(),
+        preset: PresetId::Ziegler1952,
         model: zieglerlab::model::preset("ziegler-1952").unwrap().model(),
         ..Settings::default()
     };

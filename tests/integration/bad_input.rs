@@ -769,8 +769,7 @@ fn model(name: &str, sets: &[&str]) -> Result<Model, Option<String>> {
     for set in sets {
         assignments.push(parse_assignment(set).map_err(|e| e.parameter().map(str::to_owned))?);
     }
-    apply_assignments(&mut model, name, &assignments)
-        .map_err(|e| e.parameter().map(str::to_owned))?;
+    apply_assignments(&mut model, &assignments).map_err(|e| e.parameter().map(str::to_owned))?;
     Ok(model)
 }
 

@@ -10,7 +10,7 @@ pub fn model(name: &str, sets: &[&str]) -> Model {
     let preset = preset(name).unwrap();
     let mut model = preset.model();
     let assignments: Vec<_> = sets.iter().map(|s| parse_assignment(s).unwrap()).collect();
-    apply_assignments(&mut model, name, &assignments).unwrap();
+    apply_assignments(&mut model, &assignments).unwrap();
     model
 }
 

@@ -18,11 +18,11 @@ fn with(name: &str, sets: &[(&str, f64)]) -> Model {
     let assignments: Vec<Assignment> = sets
         .iter()
         .map(|&(key, value)| Assignment {
-            key: key.to_owned(),
+            key: key.parse().unwrap(),
             value,
         })
         .collect();
-    apply_assignments(&mut model, name, &assignments).unwrap();
+    apply_assignments(&mut model, &assignments).unwrap();
     model
 }
 
@@ -78,11 +78,11 @@ fn column(decades: f64) -> impl Strategy<Value = Model> {
                 ("load", load),
             ] {
                 let set = [Assignment {
-                    key: key.to_owned(),
+                    key: key.parse().unwrap(),
                     value,
                 }];
                 let mut candidate = model;
-                if apply_assignments(&mut candidate, name, &set).is_ok() {
+                if apply_assignments(&mut candidate, &set).is_ok() {
                     model = candidate;
                 }
             }

@@ -6,13 +6,13 @@
 
 use egui_kittest::{Harness, SnapshotResults};
 use zieglerlab::app::{Panel, Settings, Tab, ZieglerApp};
-use zieglerlab::model::{PRESETS, preset};
+use zieglerlab::model::{Key, PRESETS, preset};
 
 /// The app in `settings`, at `load`, after `secs` whole seconds simulated
 /// from the standard kick, in 1/60 s frames.
 fn app_at(settings: Settings, load: f64, secs: u32) -> ZieglerApp {
     let mut app = ZieglerApp::new(settings).unwrap();
-    app.state_mut().set_parameter("load", load).unwrap();
+    app.state_mut().set_parameter(Key::Load, load).unwrap();
     for _ in 0..secs * 60 {
         app.advance(1.0 / 60.0);
     }
@@ -30,7 +30,7 @@ fn window_snapshot(name: &str, mut app: ZieglerApp) {
 
 fn preset_settings(name: &str) -> Settings {
     Settings {
-        preset: name.to_owned(),
+        preset: name.parse().unwrap(),
         model: preset(name).unwrap().model(),
         ..Settings::default()
     }

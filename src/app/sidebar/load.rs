@@ -7,6 +7,7 @@ use crate::app::View;
 use crate::app::state::{AppState, LOAD_MAX_P};
 use crate::app::theme::Theme;
 use crate::format::load_text;
+use crate::model::Key;
 
 pub struct LoadSection;
 
@@ -20,9 +21,9 @@ impl View for LoadSection {
                 .text("load p = P l/k"),
         );
         if response.changed() {
-            state.enter_parameter("load", p);
+            state.enter_parameter(Key::Load, p);
         }
-        if let Some(why) = state.refusal("load") {
+        if let Some(why) = state.refusal(Key::Load) {
             ui.colored_label(theme.error, format!("refused: {why}"));
         }
         let p = state.model().load_p();

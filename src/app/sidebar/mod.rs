@@ -15,7 +15,7 @@ use super::View;
 use super::command::Command;
 use super::state::AppState;
 use super::theme::Theme;
-use crate::model::PRESETS;
+use crate::model::{PRESETS, PresetId};
 
 /// The sidebar and the sections that keep something of their own.
 #[derive(Default)]
@@ -60,11 +60,11 @@ fn overlay_ui(ui: &mut egui::Ui, state: &mut AppState) {
     let current = state.overlay().map(|o| o.preset);
     let mut chosen = current;
     egui::ComboBox::from_label("overlay")
-        .selected_text(chosen.unwrap_or("none"))
+        .selected_text(chosen.map_or("none", PresetId::name))
         .show_ui(ui, |ui| {
             ui.selectable_value(&mut chosen, None, "none");
             for p in &PRESETS {
-                ui.selectable_value(&mut chosen, Some(p.name), p.name);
+                ui.selectable_value(&mut chosen, Some(p.id), p.name);
             }
         })
         .response

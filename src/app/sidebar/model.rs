@@ -5,32 +5,27 @@ use eframe::egui::{self, RichText};
 use crate::app::View;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
-use crate::model::{PRESETS, preset};
+use crate::model::{PRESETS, PresetId};
 use crate::sim::EngineKind;
 
 pub struct ModelSection;
 
 impl View for ModelSection {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, _theme: &Theme) {
-        let current = state.settings().preset.clone();
-        let mut chosen = current.clone();
-        let shown = |name: &str| {
-            preset(name).map_or_else(
-                |_| name.to_owned(),
-                |p| format!("{} ({})", p.name, p.source),
-            )
-        };
+        let current = state.settings().preset;
+        let mut chosen = current;
+        let shown = |id: PresetId| format!("{} ({})", id.name(), id.preset().source);
         // The label first and the name cut to the panel's width, so that a
         // long name in projector mode does not squeeze the label.
         ui.horizontal(|ui| {
             let label = ui.label("model");
             egui::ComboBox::from_id_salt("model")
-                .selected_text(shown(&chosen))
+                .selected_text(shown(chosen))
                 .width(ui.available_width() - ui.spacing().icon_width)
                 .truncate()
                 .show_ui(ui, |ui| {
                     for p in &PRESETS {
-                        ui.selectable_value(&mut chosen, p.name.to_owned(), shown(p.name))
+                        ui.selectable_value(&mut chosen, p.id, shown(p.id))
                             .on_hover_text(p.description);
                     }
                 })
@@ -38,11 +33,9 @@ impl View for ModelSection {
                 .labelled_by(label.id);
         });
         if chosen != current {
-            state.set_preset(&chosen);
+            state.set_preset(chosen);
         }
-        if let Ok(p) = preset(&state.settings().preset) {
-            ui.label(RichText::new(p.description).small());
-        }
+        ui.label(RichText::new(state.settings().preset.preset().description).small());
         let mut engine = state.settings().engine;
         egui::ComboBox::from_label("engine")
             .selected_text(format!("{engine:?}").to_lowercase())

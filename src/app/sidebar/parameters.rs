@@ -7,7 +7,7 @@ use crate::app::View;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::number_text;
-use crate::model::{KEYS, KeySpec};
+use crate::model::{KEYS, Key, KeySpec};
 
 pub struct ParametersSection;
 
@@ -18,7 +18,7 @@ impl View for ParametersSection {
         let model = *state.model();
         let applicable: Vec<&'static KeySpec> = KEYS
             .iter()
-            .filter(|k| k.applies_to(&model) && k.key != "load")
+            .filter(|k| k.applies_to(&model) && k.key != Key::Load)
             .collect();
         let (groups, si): (Vec<_>, Vec<_>) = applicable.into_iter().partition(|k| k.is_group);
         ui.label("dimensionless groups");
@@ -44,10 +44,10 @@ fn parameter_field(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme, spec:
                         .speed(speed)
                         .custom_formatter(|v, _| number_text(v)),
                 )
-                .accessible_name(spec.key);
+                .accessible_name(spec.key.name());
             // Only mu R enters the equations: the mu field keeps R and so
             // moves the load, and says so.
-            let note = if spec.key == "mu" {
+            let note = if spec.key == Key::Mu {
                 "  (R held: moves p)"
             } else {
                 ""

@@ -15,7 +15,7 @@ use crate::app::View;
 use crate::app::state::{AppState, LOAD_MAX_P};
 use crate::app::theme::Theme;
 use crate::format::number_text;
-use crate::model::{Axis, Model};
+use crate::model::{Axis, Key, Model};
 
 /// Cells along the load and along the second parameter.
 pub const MAP_LOADS: usize = 256;
@@ -131,7 +131,7 @@ impl Default for MapPanel {
 /// ratio; for the columns the damping level (the paradox in a picture).
 fn default_axis(model: &Model) -> (Axis, (f64, f64)) {
     if model.roller().is_some() {
-        (Axis::Key("nu"), (0.005, 1.0))
+        (Axis::Key(Key::Nu), (0.005, 1.0))
     } else {
         (Axis::DampingLevel, (0.0, 0.5))
     }
@@ -147,14 +147,13 @@ pub struct Pick {
 impl MapPanel {
     /// The map's spec for `model`: the second parameter is set to the start
     /// of its range, so moving along it (a click) does not restart the map.
-    fn spec(&self, model: &Model, preset: &str, load_max: f64) -> Option<MapSpec> {
+    fn spec(&self, model: &Model, load_max: f64) -> Option<MapSpec> {
         let axis = self.axis.clone()?;
         let base = axis
-            .apply(&model.at_load(0.0), preset, self.range.0)
+            .apply(&model.at_load(0.0), self.range.0)
             .unwrap_or_else(|_| model.at_load(0.0));
         Some(MapSpec {
             model: base,
-            preset: preset.to_owned(),
             axis,
             load_range: (0.0, load_max),
             loads: MAP_LOADS,
@@ -164,17 +163,17 @@ impl MapPanel {
     }
 
     /// Starts (or restarts) the map for the current model when what it shows changed.
-    pub fn follow(&mut self, model: &Model, preset: &str, load_max: f64) {
+    pub fn follow(&mut self, model: &Model, load_max: f64) {
         let fits = self
             .axis
             .as_ref()
-            .is_some_and(|axis| Axis::parse(axis.name(), model, preset).is_ok());
+            .is_some_and(|axis| Axis::parse(axis.name(), model).is_ok());
         if !fits {
             let (axis, range) = default_axis(model);
             self.axis = Some(axis);
             self.range = range;
         }
-        let Some(spec) = self.spec(model, preset, load_max) else {
+        let Some(spec) = self.spec(model, load_max) else {
             return;
         };
         if self.job.as_ref().is_some_and(|job| job.spec == spec) {
@@ -221,10 +220,9 @@ impl MapPanel {
     pub fn choose_axis(
         &mut self,
         model: &Model,
-        preset: &str,
         (name, lo, hi): (&str, f64, f64),
     ) -> Result<(), String> {
-        let axis = Axis::parse(name, model, preset).map_err(|e| e.to_string())?;
+        let axis = Axis::parse(name, model).map_err(|e| e.to_string())?;
         if !(lo.is_finite() && hi.is_finite() && hi > lo) {
             return Err(format!("map range {lo} to {hi} is empty"));
         }
@@ -241,14 +239,8 @@ impl MapPanel {
     }
 
     /// The panel: axis choice and range, progress, the map. Returns a click.
-    fn draw(
-        &mut self,
-        ui: &mut egui::Ui,
-        model: &Model,
-        preset: &str,
-        theme: &Theme,
-    ) -> Option<Pick> {
-        self.controls_ui(ui, model, preset);
+    fn draw(&mut self, ui: &mut egui::Ui, model: &Model, theme: &Theme) -> Option<Pick> {
+        self.controls_ui(ui, model);
         let job = self.job.as_mut()?;
         job.drain();
         if !job.finished() {
@@ -288,7 +280,7 @@ impl MapPanel {
         map_plot_ui(ui, job, texture, model, theme)
     }
 
-    fn controls_ui(&mut self, ui: &mut egui::Ui, model: &Model, preset: &str) {
+    fn controls_ui(&mut self, ui: &mut egui::Ui, model: &Model) {
         ui.horizontal(|ui| {
             let label = ui.label("load p against");
             let current = self.axis.as_ref().map_or("", Axis::name);
@@ -305,7 +297,7 @@ impl MapPanel {
                 .response
                 .labelled_by(label.id);
             if chosen != current
-                && let Ok(axis) = Axis::parse(chosen, model, preset)
+                && let Ok(axis) = Axis::parse(chosen, model)
             {
                 let now = axis.get(model);
                 self.range = if now.is_finite() && now > 0.0 {
@@ -335,9 +327,9 @@ impl View for MapPanel {
     /// The stability map of the current parameters; a click on it sets the
     /// load and the map's second parameter.
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
-        let (model, preset) = (*state.model(), state.settings().preset.clone());
-        self.follow(&model, &preset, LOAD_MAX_P);
-        if let Some(pick) = self.draw(ui, &model, &preset, theme) {
+        let model = *state.model();
+        self.follow(&model, LOAD_MAX_P);
+        if let Some(pick) = self.draw(ui, &model, theme) {
             state.set_map_point(&pick.axis, pick.load, pick.value);
         }
     }

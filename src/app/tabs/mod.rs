@@ -75,9 +75,9 @@ impl Tabs {
     /// Computes the stability map and the paradox curves of the current
     /// parameters and waits until they are complete (for pictures and tests).
     pub fn complete_background_work(&mut self, state: &AppState) {
-        let (model, preset) = (state.model(), &state.settings().preset);
-        self.map.follow(model, preset, LOAD_MAX_P);
+        let model = state.model();
+        self.map.follow(model, LOAD_MAX_P);
         self.map.wait();
-        self.paradox.wait(model, preset);
+        self.paradox.wait(model);
     }
 }

@@ -14,7 +14,7 @@ use crate::app::View;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::number_text;
-use crate::model::{Axis, Load, Model};
+use crate::model::{Axis, Key, Load, Model};
 
 /// Loads searched for the first loss of stability.
 const LOAD_MAX: f64 = 10.0;
@@ -62,19 +62,19 @@ fn curve(
 /// set by the curves themselves). Once `cancel` is set the curves end early:
 /// a cancelled result is for no one.
 #[must_use]
-pub fn curves(model: &Model, preset: &str, cancel: &AtomicBool) -> Curves {
+pub fn curves(model: &Model, cancel: &AtomicBool) -> Curves {
     let first = |m: &Model| first_instability(m, LOAD_MAX).ok().flatten();
     match model.load {
         Load::Follower { .. } => {
             let undamped = Axis::DampingLevel
-                .apply(model, preset, 0.0)
+                .apply(model, 0.0)
                 .ok()
                 .and_then(|m| first(&m));
             let lines = LEVELS
                 .iter()
                 .map(|&level| {
                     let points = curve(RATIO_DECADES, cancel, |ratio| {
-                        flutter_load_damped(model, preset, ratio, level, LOAD_MAX)
+                        flutter_load_damped(model, ratio, level, LOAD_MAX)
                             .ok()
                             .flatten()
                     });
@@ -90,8 +90,8 @@ pub fn curves(model: &Model, preset: &str, cancel: &AtomicBool) -> Curves {
         }
         Load::Roller(roller) => {
             let v = roller.band_speed_m_per_s;
-            let massless = Axis::Key("nu")
-                .apply(model, preset, 0.0)
+            let massless = Axis::Key(Key::Nu)
+                .apply(model, 0.0)
                 .ok()
                 .and_then(|m| first(&m));
             let lines = [0.1 * v, v, 10.0 * v]
@@ -99,8 +99,8 @@ pub fn curves(model: &Model, preset: &str, cancel: &AtomicBool) -> Curves {
                 .filter(|&&speed| speed > 0.0)
                 .map(|&speed| {
                     let points = curve(NU_DECADES, cancel, |nu| {
-                        let m = Axis::Key("V").apply(model, preset, speed).ok()?;
-                        let m = Axis::Key("nu").apply(&m, preset, nu).ok()?;
+                        let m = Axis::Key(Key::V).apply(model, speed).ok()?;
+                        let m = Axis::Key(Key::Nu).apply(&m, nu).ok()?;
                         first(&m)
                     });
                     (format!("V = {} m/s", number_text(speed)), points)
@@ -148,18 +148,18 @@ pub struct ParadoxPanel {
 }
 
 /// The model the curves depend on: the swept parameters at a fixed value.
-fn curve_key(model: &Model, preset: &str) -> Model {
+fn curve_key(model: &Model) -> Model {
     let zero = match model.load {
-        Load::Roller(_) => Axis::Key("nu").apply(model, preset, 0.0),
-        _ => Axis::DampingLevel.apply(model, preset, 0.0),
+        Load::Roller(_) => Axis::Key(Key::Nu).apply(model, 0.0),
+        _ => Axis::DampingLevel.apply(model, 0.0),
     };
     zero.unwrap_or(*model).at_load(0.0)
 }
 
 impl ParadoxPanel {
     /// Starts the curves for `model` when they are not those of its key.
-    fn follow(&mut self, model: &Model, preset: &str) {
-        let key = curve_key(model, preset);
+    fn follow(&mut self, model: &Model) {
+        let key = curve_key(model);
         if self.job.as_ref().is_some_and(|job| job.key == key) {
             return;
         }
@@ -169,14 +169,14 @@ impl ParadoxPanel {
         let previous = self.job.take().and_then(|mut job| job.thread.take());
         let (sender, receiver) = mpsc::channel();
         let cancel = Arc::new(AtomicBool::new(false));
-        let (model_copy, preset_copy, flag) = (*model, preset.to_owned(), Arc::clone(&cancel));
+        let (model_copy, flag) = (*model, Arc::clone(&cancel));
         let spawned = std::thread::Builder::new()
             .name("paradox curves".to_owned())
             .spawn(move || {
                 if let Some(previous) = previous {
                     drop(previous.join());
                 }
-                drop(sender.send(curves(&model_copy, &preset_copy, &flag)));
+                drop(sender.send(curves(&model_copy, &flag)));
             });
         let (thread, curves) = match spawned {
             Ok(handle) => (Some(handle), None),
@@ -198,8 +198,8 @@ impl ParadoxPanel {
     }
 
     /// Blocks until the curves are computed (for pictures and tests).
-    pub fn wait(&mut self, model: &Model, preset: &str) {
-        self.follow(model, preset);
+    pub fn wait(&mut self, model: &Model) {
+        self.follow(model);
         if let Some(job) = &mut self.job
             && job.curves.is_none()
         {
@@ -218,7 +218,7 @@ impl ParadoxPanel {
             return *point;
         }
         let x = match model.load {
-            Load::Roller(_) => Axis::Key("nu").get(model),
+            Load::Roller(_) => Axis::Key(Key::Nu).get(model),
             _ if model.column.c2_nms_per_rad > 0.0 => {
                 model.column.c1_nms_per_rad / model.column.c2_nms_per_rad
             }
@@ -232,15 +232,8 @@ impl ParadoxPanel {
         point
     }
 
-    fn draw(
-        &mut self,
-        ui: &mut egui::Ui,
-        model: &Model,
-        preset: &str,
-        known: Option<f64>,
-        theme: &Theme,
-    ) {
-        self.follow(model, preset);
+    fn draw(&mut self, ui: &mut egui::Ui, model: &Model, known: Option<f64>, theme: &Theme) {
+        self.follow(model);
         let here = self.current_point(model, known);
         let Some(job) = &mut self.job else {
             return;
@@ -302,7 +295,7 @@ impl View for ParadoxPanel {
         let known = state
             .analysis()
             .and_then(crate::app::analysis_cache::Analysis::first_instability);
-        let (model, preset) = (*state.model(), state.settings().preset.clone());
-        self.draw(ui, &model, &preset, known, theme);
+        let model = *state.model();
+        self.draw(ui, &model, known, theme);
     }
 }
