@@ -16,9 +16,7 @@ use std::process::ExitCode;
 use anyhow::Result;
 use clap::{Parser, Subcommand, ValueEnum};
 
-use zieglerlab::model::{
-    Key, Model, ModelError, PresetId, apply_assignments, parse_assignment,
-};
+use zieglerlab::model::{Key, Model, ModelError, PresetId, apply_assignments, parse_assignment};
 use zieglerlab::sim::EngineKind;
 
 /// The load axis, as printed in every output.
