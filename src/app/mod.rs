@@ -15,6 +15,7 @@ mod sidebar;
 mod state;
 mod store_check;
 mod stored;
+mod stored_model;
 mod tabs;
 mod theme;
 

@@ -1,5 +1,6 @@
-//! Settings read back from text (eframe's store, or pasted) field by field:
-//! what can be read is kept, what cannot is named with the reason.
+//! Settings read back from text (eframe's store, or pasted) field by field,
+//! the model number by number: what can be read is kept, what cannot is
+//! named with the reason.
 
 use std::collections::BTreeMap;
 
@@ -9,14 +10,16 @@ use serde::de::{MapAccess, Visitor};
 
 use super::notice::Notice;
 use super::state::{AppState, Settings};
-use crate::model::{Model, PresetId};
+use super::stored_model::read_model;
+use crate::model::PresetId;
 
 /// The simulated seconds per wall second the speed slider offers.
 pub const SPEED_RANGE: std::ops::RangeInclusive<f64> = 0.1..=10.0;
 
-/// The fields of a settings text, each as unparsed RON, by name.
+/// The fields of a RON struct (the settings, or a part of the model), each
+/// as unparsed RON, by name.
 #[derive(Default)]
-struct Fields(BTreeMap<String, Box<RawValue>>);
+pub(super) struct Fields(pub(super) BTreeMap<String, Box<RawValue>>);
 
 impl<'de> Deserialize<'de> for Fields {
     fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
@@ -24,7 +27,7 @@ impl<'de> Deserialize<'de> for Fields {
         impl<'de> Visitor<'de> for FieldsVisitor {
             type Value = Fields;
             fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-                f.write_str("settings as (name: value, ...)")
+                f.write_str("a struct, (name: value, ...)")
             }
             fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Fields, A::Error> {
                 let mut fields = Fields::default();
@@ -89,35 +92,21 @@ pub fn read(text: &str) -> Result<Read, String> {
     );
     let mut settings = Settings::default();
     let name: Option<String> = field(preset_raw.as_deref(), "preset", &mut ignored);
-    let model: Option<Model> = field(model_raw.as_deref(), "model", &mut ignored);
     match name.map(|name| name.parse::<PresetId>()) {
         Some(Ok(id)) => {
-            settings.model = id.model();
             settings.preset = id;
-            match model {
-                Some(model)
-                    if std::mem::discriminant(&model.load)
-                        != std::mem::discriminant(&settings.model.load) =>
-                {
-                    ignored.push(format!(
-                        "model (its load is not the one of preset {})",
-                        settings.preset
-                    ));
-                }
-                Some(model) => match model.validate() {
-                    Ok(()) => settings.model = model,
-                    Err(error) => ignored.push(format!("model ({error})")),
-                },
-                None => {}
-            }
+            settings.model = match model_raw.as_deref() {
+                Some(raw) => read_model(raw, id.model(), &mut ignored),
+                None => id.model(),
+            };
         }
         Some(Err(error)) => {
             ignored.push(format!("preset ({error})"));
-            if model.is_some() {
+            if model_raw.is_some() {
                 ignored.push("model (it belongs to that preset)".to_owned());
             }
         }
-        None if model.is_some() => {
+        None if model_raw.is_some() => {
             ignored.push("model (no preset says what it is)".to_owned());
         }
         None => {}

@@ -19,6 +19,7 @@ pub use dynamics::{
 };
 pub use keys::{Assignment, KEYS, Key, KeySpec, apply_assignments, parse_assignment};
 pub use linear::{LinearModel, linearize};
+pub(crate) use params::analysis_range_text;
 pub use params::{Column, Inertia, Load, Model, Rod, Roller, SpinInertia};
 pub use presets::{PRESETS, Preset, PresetId, preset};
 

@@ -109,11 +109,15 @@ fn stored_settings_keep_what_reads_and_name_the_rest() {
             2.0,
             Some("preset (unknown preset 'nope'"),
         ),
-        (&stiff_roller, 1.0, Some("ignored model (k1 = -1")),
+        (
+            &stiff_roller,
+            1.0,
+            Some("ignored model.column.k1_nm_per_rad (k1 = -1"),
+        ),
         (
             &dead_load,
             1.0,
-            Some("model (its load is not the one of preset ziegler-1952)"),
+            Some("model.load (a Roller load; the preset's is Follower)"),
         ),
         // Corrupted.
         (
@@ -139,6 +143,50 @@ fn stored_settings_keep_what_reads_and_name_the_rest() {
             }
         }
     }
+}
+
+/// The stored model is read number by number: one bad number (hand-edited,
+/// out of range, or of an older layout) costs that number only, named with
+/// its reason; the others are kept, also when they only fit together (a
+/// centre of mass beyond the preset's rod, on a longer stored rod).
+#[test]
+fn a_bad_number_in_the_stored_model_costs_only_that_number() {
+    let mut settings = Settings::default();
+    settings.model.column.k1_nm_per_rad = -1.0;
+    settings.model.column.rod2.length_m = 2.0;
+    settings.model.column.rod2.com_m = 1.5;
+    settings.model.column.c2_nms_per_rad = 0.01;
+    if let zieglerlab::model::Load::Roller(roller) = &mut settings.model.load {
+        roller.mu = 0.2;
+    }
+    let text = ron::to_string(&settings)
+        .unwrap()
+        .replace("tip_mass_kg:", "colour:1.0,tip_mass_kg:")
+        .replace("band_speed_m_per_s:0.1", "band_speed_m_per_s:\"fast\"");
+    let app = ZieglerApp::from_stored_text(Some(&text));
+    let model = app.settings().model;
+    let defaults = Settings::default().model;
+    // Kept: the good numbers, including the pair that fits only together.
+    assert_eq!(model.column.rod2.length_m, 2.0);
+    assert_eq!(model.column.rod2.com_m, 1.5);
+    assert_eq!(model.column.c2_nms_per_rad, 0.01);
+    assert_eq!(model.roller().unwrap().mu, 0.2);
+    // Defaulted: the bad ones.
+    assert_eq!(model.column.k1_nm_per_rad, defaults.column.k1_nm_per_rad);
+    assert_eq!(
+        model.roller().unwrap().band_speed_m_per_s,
+        defaults.roller().unwrap().band_speed_m_per_s
+    );
+    let said = app.message().unwrap();
+    for fragment in [
+        "model.column.k1_nm_per_rad (k1 = -1",
+        "model.column.colour (not a field)",
+        "model.load.band_speed_m_per_s (",
+    ] {
+        assert!(said.contains(fragment), "{fragment}: {said}");
+    }
+    assert!(!said.contains("model.load.mu"), "{said}");
+    assert!(app.state().analysis().is_some());
 }
 
 /// A column too stiff for rapier's step runs on the reference engine, and
