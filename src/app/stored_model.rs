@@ -41,7 +41,9 @@ const ROLLER: [(&str, Setter); 5] = [
     ("mass_kg", |m, v| with_roller(m, |r| r.mass_kg = v)),
     ("radius_m", |m, v| with_roller(m, |r| r.radius_m = v)),
     ("mu", |m, v| with_roller(m, |r| r.mu = v)),
-    ("normal_force_n", |m, v| with_roller(m, |r| r.normal_force_n = v)),
+    ("normal_force_n", |m, v| {
+        with_roller(m, |r| r.normal_force_n = v)
+    }),
     ("band_speed_m_per_s", |m, v| {
         with_roller(m, |r| r.band_speed_m_per_s = v);
     }),
@@ -196,12 +198,13 @@ fn apply(mut model: Model, entries: Vec<Entry>, ignored: &mut Vec<String>) -> Mo
         for entry in pending {
             let mut candidate = model;
             (entry.set)(&mut candidate, entry.value);
-            let verdict = candidate.validate().map_err(|e| e.to_string()).and_then(|()| {
-                match candidate.beyond_analysis() {
+            let verdict = candidate
+                .validate()
+                .map_err(|e| e.to_string())
+                .and_then(|()| match candidate.beyond_analysis() {
                     Some((what, _)) => Err(format!("makes {what} {}", analysis_range_text())),
                     None => Ok(()),
-                }
-            });
+                });
             match verdict {
                 Ok(()) => model = candidate,
                 Err(why) if last_pass => ignored.push(format!("{} ({why})", entry.name)),

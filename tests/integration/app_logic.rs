@@ -343,3 +343,57 @@ fn the_window_layout_comes_back_and_a_misfit_is_said() {
     assert_eq!(garbage, Layout::default());
     assert!(note.unwrap().contains("layout ignored"));
 }
+
+/// Extreme stored values (a tiny roller mass, a crawling or a vanishing
+/// band) start the app with an answer or a refusal, never a hang: the value
+/// the analysis cannot square is refused by name and defaulted, the one it
+/// can is analysed with the resolution warning, and a frame is drawn.
+#[test]
+fn extreme_stored_values_start_the_app_with_an_answer_or_a_refusal() {
+    let stored = |nu: f64, v: f64| {
+        let mut settings = Settings::default();
+        if let zieglerlab::model::Load::Roller(roller) = &mut settings.model.load {
+            roller.mass_kg = nu * settings.model.column.rod2.mass_kg;
+            roller.band_speed_m_per_s = v;
+        }
+        ron::to_string(&settings).unwrap()
+    };
+    let mut refused = ZieglerApp::from_stored_text(Some(&stored(1e-9, 1e-300)));
+    let said = refused.message().unwrap().to_owned();
+    assert!(
+        said.contains("model.load.band_speed_m_per_s (the slip damping"),
+        "{said}"
+    );
+    assert_eq!(
+        refused
+            .settings()
+            .model
+            .roller()
+            .unwrap()
+            .band_speed_m_per_s,
+        Settings::default()
+            .model
+            .roller()
+            .unwrap()
+            .band_speed_m_per_s
+    );
+    let mut kept = ZieglerApp::from_stored_text(Some(&stored(1e-9, 1e-100)));
+    assert_eq!(kept.message(), None);
+    let analysis = kept.state().analysis().unwrap();
+    assert!(
+        analysis.warning.is_some(),
+        "the spin mode outruns the others"
+    );
+    for app in [&mut refused, &mut kept] {
+        let ctx = eframe::egui::Context::default();
+        for _ in 0..3 {
+            app.advance(1.0 / 60.0);
+            let mut output = ctx.run_ui(eframe::egui::RawInput::default(), |ui| {
+                app.contents_ui(ui);
+            });
+            // No renderer takes the font atlas here.
+            output.textures_delta.clear();
+        }
+        assert!(app.simulation().state().iter().all(|x| x.is_finite()));
+    }
+}
