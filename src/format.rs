@@ -1,4 +1,4 @@
-//! Numbers for people: every formatter the app, the CLI and the messages
+//! Numbers for people: every formatter the app, the CLI and the error messages
 //! use, in one place (pure; no UI).
 
 /// A number for people and for editing: plain with up to six significant
@@ -57,6 +57,22 @@ pub fn load_text(load: f64) -> String {
         format!("{load:.4}")
     } else {
         format!("{load:.2e}")
+    }
+}
+
+/// A number in a message: as Rust writes it for everyday magnitudes, in
+/// exponent form beyond them, so no message prints 300 digits.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Shown(pub f64);
+
+impl std::fmt::Display for Shown {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let magnitude = self.0.abs();
+        if magnitude != 0.0 && magnitude.is_finite() && !(1e-4..1e7).contains(&magnitude) {
+            write!(f, "{:e}", self.0)
+        } else {
+            write!(f, "{}", self.0)
+        }
     }
 }
 

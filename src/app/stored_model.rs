@@ -42,7 +42,7 @@ const ROLLER: [(&str, Setter); 5] = [
     ("radius_m", |m, v| with_roller(m, |r| r.radius_m = v)),
     ("mu", |m, v| with_roller(m, |r| r.mu = v)),
     ("normal_force_n", |m, v| {
-        with_roller(m, |r| r.normal_force_n = v)
+        with_roller(m, |r| r.normal_force_n = v);
     }),
     ("band_speed_m_per_s", |m, v| {
         with_roller(m, |r| r.band_speed_m_per_s = v);

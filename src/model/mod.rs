@@ -7,11 +7,13 @@
 
 mod axis;
 mod dynamics;
+mod key_table;
 mod keys;
 mod linear;
 mod params;
 mod presets;
 
+pub use crate::format::Shown;
 pub use axis::{Axis, DAMPER_RATIO, DAMPING_LEVEL, MASS_RATIO};
 pub use dynamics::{
     Friction, SLIP_REGULARIZATION_M_PER_S, StateVec, TipLoad, energy_j, friction, joint_torques_nm,
@@ -22,22 +24,6 @@ pub use linear::{LinearModel, linearize};
 pub(crate) use params::analysis_range_text;
 pub use params::{Column, Inertia, Load, Model, Rod, Roller, SpinInertia};
 pub use presets::{PRESETS, Preset, PresetId, preset};
-
-/// A number in a message: as Rust writes it for everyday magnitudes, in
-/// exponent form beyond them, so no message prints 300 digits.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Shown(pub f64);
-
-impl std::fmt::Display for Shown {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let magnitude = self.0.abs();
-        if magnitude != 0.0 && magnitude.is_finite() && !(1e-4..1e7).contains(&magnitude) {
-            write!(f, "{:e}", self.0)
-        } else {
-            write!(f, "{}", self.0)
-        }
-    }
-}
 
 /// A parameter value that makes no model, named so the user can fix it.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
