@@ -1,0 +1,321 @@
+//! Bad input, singular physics and blow-ups, as tables: every case gets an
+//! answer a person understands. From the command line (run as a process):
+//! the status, one line on stderr, never a panic, never NaN in the output.
+//! From the library: an error naming the parameter, or a result with its
+//! caveat. The README's table "Bad input and extremes" lists the same cases.
+
+use std::io::Read as _;
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+use zieglerlab::analysis::{
+    AffinePencil, bracketing_locus, critical_loads_along, resolution_warning,
+};
+use zieglerlab::model::{Model, apply_assignments, parse_assignment, preset};
+use zieglerlab::sim::{EngineKind, SimError, Simulation, Status, initial_state};
+
+mod cli_cases;
+mod cli_extremes;
+
+use cli_cases::CLI;
+use cli_extremes::CLI_EXTREMES;
+
+/// Longest a command line case may run: a hang fails the test instead of
+/// freezing CI.
+const CASE_LIMIT: Duration = Duration::from_mins(1);
+
+/// Runs the binary with `args`, killed after [`CASE_LIMIT`].
+fn run_limited(args: &[&str]) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    // Readers on their own threads, so a full pipe cannot stall the child.
+    let mut stdout = child.stdout.take().unwrap();
+    let mut stderr = child.stderr.take().unwrap();
+    let out_reader = std::thread::spawn(move || {
+        let mut bytes = Vec::new();
+        stdout.read_to_end(&mut bytes).map(|_| bytes)
+    });
+    let err_reader = std::thread::spawn(move || {
+        let mut bytes = Vec::new();
+        stderr.read_to_end(&mut bytes).map(|_| bytes)
+    });
+    let start = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        if start.elapsed() > CASE_LIMIT {
+            child.kill().unwrap();
+            panic!("{args:?}: no answer within {CASE_LIMIT:?}");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    Output {
+        status,
+        stdout: out_reader.join().unwrap().unwrap(),
+        stderr: err_reader.join().unwrap().unwrap(),
+    }
+}
+
+#[test]
+fn every_command_line_case_gets_its_answer() {
+    for case in CLI.iter().chain(CLI_EXTREMES) {
+        let out = run_limited(case.args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        let args = case.args;
+        assert_eq!(out.status.code(), Some(case.status), "{args:?}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+        assert!(stderr.contains(case.stderr), "{args:?}: {stderr}");
+        if case.status == 2 {
+            assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+            assert!(stdout.is_empty(), "{args:?}");
+        } else {
+            assert!(stderr.lines().count() <= 1, "{args:?}: {stderr}");
+            if case.stderr.is_empty() {
+                assert!(stderr.is_empty(), "{args:?}: {stderr}");
+            }
+            assert!(!stdout.is_empty(), "{args:?}");
+            let lower = stdout.to_lowercase();
+            assert!(!lower.contains("nan") && !lower.contains("inf"), "{args:?}");
+        }
+    }
+}
+
+/// The preset with `key=value` assignments, through the library's parser.
+fn model(name: &str, sets: &[&str]) -> Result<Model, Option<String>> {
+    let mut model = preset(name)
+        .map_err(|e| e.parameter().map(str::to_owned))?
+        .model();
+    let mut assignments = Vec::new();
+    for set in sets {
+        assignments.push(parse_assignment(set).map_err(|e| e.parameter().map(str::to_owned))?);
+    }
+    apply_assignments(&mut model, &assignments).map_err(|e| e.parameter().map(str::to_owned))?;
+    Ok(model)
+}
+
+/// Values the model refuses, each by the parameter it names.
+const MODEL_REFUSALS: &[(&str, &str, &str)] = &[
+    ("roller", "m1=nan", "m1"),
+    ("roller", "m2=inf", "m2"),
+    ("ziegler-1952", "m_tip=-1", "m_tip"),
+    ("roller", "m3=-1", "m3"),
+    ("roller", "nu=-1", "nu"),
+    ("roller", "l1=0", "l1"),
+    ("roller", "l2=-1", "l2"),
+    ("uniform-rods", "k1=0", "k1"),
+    ("uniform-rods", "k2=nan", "k2"),
+    ("uniform-rods", "c1=-1", "c1"),
+    ("roller", "r=0", "r"),
+    ("roller", "r=3", "r"),
+    ("roller", "rho=5", "r"),
+    ("roller", "mu=0", "mu"),
+    ("roller", "mu=inf", "mu"),
+    ("roller", "R=-1", "R"),
+    ("roller", "V=-1", "V"),
+    ("roller", "V=nan", "V"),
+    ("roller", "load=-1", "load"),
+    ("roller", "load=inf", "load"),
+    ("uniform-rods", "R=1", "R"),
+    ("roller", "colour=1", "colour"),
+];
+
+#[test]
+fn the_model_refuses_bad_values_naming_the_parameter() {
+    for &(name, set, parameter) in MODEL_REFUSALS {
+        let refused = model(name, &[set]).expect_err(set);
+        assert_eq!(refused.as_deref(), Some(parameter), "{name} {set}");
+    }
+    // No mass at all: the mass matrix is singular, and says so.
+    let refused = model("uniform-rods", &["m1=0", "m2=0"]).expect_err("massless");
+    assert_eq!(refused.as_deref(), Some("mass matrix"));
+}
+
+/// The linear analysis: refused (naming the parameter), answered, or
+/// answered with a warning that its stability is not resolved.
+#[derive(Debug, PartialEq)]
+enum Analysis {
+    Refused(&'static str),
+    Answered,
+    Unresolved,
+}
+
+const ANALYSIS: &[(&str, &[&str], Analysis)] = &[
+    ("roller", &["V=0"], Analysis::Refused("V")),
+    ("roller", &[], Analysis::Answered),
+    ("roller", &["load=1e6"], Analysis::Answered),
+    ("roller", &["nu=1e3"], Analysis::Answered),
+    ("roller", &["nu=1e-6"], Analysis::Answered),
+    ("roller", &["nu=0"], Analysis::Answered),
+    ("roller", &["R=0"], Analysis::Answered),
+    ("roller", &["V=10"], Analysis::Answered),
+    ("roller", &["nu=1e-9"], Analysis::Unresolved),
+    ("roller", &["V=1e-5"], Analysis::Unresolved),
+    ("roller", &["V=1e-6"], Analysis::Unresolved),
+    ("roller", &["V=1e-12"], Analysis::Unresolved),
+    ("ziegler-1952", &["c1=1e6"], Analysis::Unresolved),
+    ("ziegler-1952", &[], Analysis::Answered),
+    ("midpoint-masses", &["load=1e6"], Analysis::Answered),
+];
+
+#[test]
+fn the_analysis_answers_or_says_why_not() {
+    for (name, sets, expected) in ANALYSIS {
+        let model = model(name, sets).expect("a valid model");
+        let answer = match AffinePencil::new(&model) {
+            Err(error) => Analysis::Refused(match error.parameter() {
+                Some("V") => "V",
+                other => panic!("{name} {sets:?}: {other:?} {error}"),
+            }),
+            Ok(pencil) => {
+                let locus = bracketing_locus(&pencil, 0.0, 10.0).unwrap();
+                let transitions = critical_loads_along(&pencil, &locus).unwrap();
+                assert!(transitions.iter().all(|t| t.load.is_finite()));
+                let spectrum = pencil.spectrum(model.load_p()).unwrap();
+                assert!(spectrum.all().all(|z| z.re.is_finite() && z.im.is_finite()));
+                match resolution_warning(&pencil, &locus).unwrap() {
+                    None => Analysis::Answered,
+                    Some(_) => Analysis::Unresolved,
+                }
+            }
+        };
+        assert_eq!(&answer, expected, "{name} {sets:?}");
+    }
+}
+
+/// How a run of 2 s ends: with a status, or refused naming the parameter.
+type RunEnd = Result<&'static str, &'static str>;
+
+const RUNS: &[(&str, &[&str], EngineKind, RunEnd)] = &[
+    ("roller", &["load=1e6"], EngineKind::Rapier, Ok("too fast")),
+    (
+        "roller",
+        &["load=1e6"],
+        EngineKind::Reference,
+        Ok("too stiff"),
+    ),
+    ("roller", &["V=0"], EngineKind::Rapier, Ok("running")),
+    ("roller", &["V=0"], EngineKind::Reference, Ok("running")),
+    ("roller", &["nu=1e-9"], EngineKind::Rapier, Ok("running")),
+    ("roller", &["nu=1e3"], EngineKind::Rapier, Ok("running")),
+    ("roller", &["nu=1e3"], EngineKind::Reference, Ok("running")),
+    ("roller", &["c1=1e6"], EngineKind::Rapier, Err("dt")),
+    ("roller", &["c1=1e6"], EngineKind::Reference, Ok("running")),
+    ("uniform-rods", &["k1=1e9"], EngineKind::Rapier, Err("dt")),
+    (
+        "ziegler-1952",
+        &["load=1e6"],
+        EngineKind::Rapier,
+        Ok("too fast"),
+    ),
+];
+
+#[test]
+fn runs_end_with_a_status_and_finite_states() {
+    for (name, sets, engine, expected) in RUNS {
+        let model = model(name, sets).expect("a valid model");
+        let run = Simulation::new(model, *engine, initial_state(&model, 1e-3), 1.0 / 240.0);
+        let answer = match run {
+            Err(error @ SimError::TooStiffForRapier { .. }) => {
+                Err(error.parameter().unwrap_or_default().to_owned())
+            }
+            Err(error) => panic!("{name} {sets:?}: {error}"),
+            Ok(mut sim) => {
+                let status = sim.run(2.0, |o| {
+                    assert!(o.phi1_rad.is_finite() && o.phi2_rad.is_finite());
+                    assert!(o.energy_j().is_finite());
+                });
+                assert!(sim.state().iter().all(|v| v.is_finite()), "{name} {sets:?}");
+                Ok(match status {
+                    Status::Running => "running",
+                    Status::Diverged { .. } => "diverged",
+                    Status::TooStiff { .. } => "too stiff",
+                    Status::TooFast { .. } => "too fast",
+                })
+            }
+        };
+        assert_eq!(
+            answer,
+            expected.map_err(str::to_owned),
+            "{name} {sets:?} {engine:?}"
+        );
+    }
+}
+
+/// A refused or failed write leaves an existing file as it was: the output
+/// is checked before any work and written beside its destination, renamed
+/// into place only when complete.
+#[test]
+fn a_refused_output_leaves_the_existing_file_alone() {
+    let dir = std::env::temp_dir().join(format!("zl-keep-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let jpg = dir.join("existing.jpg");
+    std::fs::write(&jpg, "the user's picture").unwrap();
+    let out = run_limited(&[
+        "snapshot",
+        "--preset",
+        "roller",
+        "--out",
+        jpg.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(std::fs::read_to_string(&jpg).unwrap(), "the user's picture");
+    // A completed map replaces the file whole, leaving no temporary behind.
+    let csv = dir.join("map.csv");
+    std::fs::write(&csv, "old").unwrap();
+    let out = run_limited(&[
+        "map",
+        "--preset",
+        "roller",
+        "--x",
+        "load:0:8:4",
+        "--y",
+        "nu:0.1:0.2:2",
+        "--out",
+        csv.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert!(text.starts_with("load,nu,state,growth_rate\n"), "{text}");
+    assert_eq!(text.lines().count(), 1 + 4 * 2);
+    let names: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names.len(), 2, "{names:?}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A reader that stops early (`simulate | head -1`) ends the command quietly
+/// with status 0, as Unix tools do, instead of "error: Broken pipe".
+#[test]
+fn a_closed_pipe_ends_quietly() {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+        .args(["simulate", "--preset", "roller", "--duration", "200"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = [0u8; 64];
+    child
+        .stdout
+        .as_mut()
+        .unwrap()
+        .read_exact(&mut first)
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(stderr.is_empty(), "{stderr}");
+}
