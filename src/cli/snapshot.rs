@@ -132,16 +132,11 @@ fn render(
         harness.render()
     }));
     std::panic::set_hook(previous_hook);
-    let help = "no renderer could be created (a GPU, or Mesa's CPU GL: Debian packages libegl1 libegl-mesa0 libgl1-mesa-dri)";
     match rendered {
         Ok(Ok(image)) => Ok(image),
         // The renderer exists (its creation panics otherwise): this is the
-        // drawing itself failing, e.g. a large picture timing out on a busy
-        // machine's CPU renderer.
-        Ok(Err(error)) if error.to_lowercase().contains("timeout") => anyhow::bail!(
-            "rendering timed out ({error}): Mesa's CPU renderer needs more time for a {width}x{height} picture on this machine; try a smaller --size or run it again when the machine is less busy"
-        ),
-        Ok(Err(error)) => anyhow::bail!("rendering failed: {error}"),
+        // drawing itself failing.
+        Ok(Err(error)) => anyhow::bail!(failure_message(&Failure::Drawing(error), width, height)),
         Err(payload) => {
             let what = payload
                 .downcast_ref::<String>()
@@ -152,7 +147,59 @@ fn render(
                 .next()
                 .unwrap_or("")
                 .to_owned();
-            anyhow::bail!("rendering failed ({what}); if {help}")
+            anyhow::bail!(failure_message(&Failure::NoRenderer(what), width, height))
         }
+    }
+}
+
+/// How a headless picture failed.
+#[derive(Debug)]
+enum Failure {
+    /// The renderer exists; drawing failed with this message.
+    Drawing(String),
+    /// The renderer could not be created (its setup panicked with this).
+    NoRenderer(String),
+}
+
+/// What the user is told: a drawing that timed out (a large picture on a
+/// busy machine's CPU renderer) says so and what to try; a missing renderer
+/// names the packages that provide one.
+fn failure_message(failure: &Failure, width: f32, height: f32) -> String {
+    match failure {
+        Failure::Drawing(error) if error.to_lowercase().contains("timeout") => format!(
+            "rendering timed out ({error}): Mesa's CPU renderer needs more time for a {width}x{height} picture on this machine; try a smaller --size or run it again when the machine is less busy"
+        ),
+        Failure::Drawing(error) => format!("rendering failed: {error}"),
+        Failure::NoRenderer(what) => format!(
+            "rendering failed ({what}); if no renderer could be created (a GPU, or Mesa's CPU GL: Debian packages libegl1 libegl-mesa0 libgl1-mesa-dri)"
+        ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A timed-out drawing is not reported as a missing renderer (it once
+    /// said "install Mesa" for a 4096x4096 picture on a busy machine).
+    #[test]
+    fn a_timeout_says_so_and_a_missing_renderer_names_the_packages() {
+        let timeout = failure_message(
+            &Failure::Drawing("Timeout waiting for the GPU".to_owned()),
+            4096.0,
+            4096.0,
+        );
+        assert!(timeout.starts_with("rendering timed out"), "{timeout}");
+        assert!(timeout.contains("4096x4096"), "{timeout}");
+        assert!(timeout.contains("smaller --size"), "{timeout}");
+        assert!(!timeout.contains("Mesa's CPU GL: Debian"), "{timeout}");
+        let other = failure_message(&Failure::Drawing("lost device".to_owned()), 64.0, 64.0);
+        assert_eq!(other, "rendering failed: lost device");
+        let missing = failure_message(&Failure::NoRenderer("no adapter".to_owned()), 1280.0, 800.0);
+        assert!(missing.contains("(no adapter)"), "{missing}");
+        assert!(
+            missing.contains("libegl1 libegl-mesa0 libgl1-mesa-dri"),
+            "{missing}"
+        );
     }
 }
