@@ -352,6 +352,7 @@ impl AppState {
                 break;
             }
         }
+        self.refresh_measured();
     }
 
     /// One engine step, then paused (the step button).
@@ -359,10 +360,11 @@ impl AppState {
         self.running = false;
         self.pace.restart();
         self.take_step();
+        self.refresh_measured();
     }
 
-    /// One engine step with what follows it: the trail, the history, the
-    /// measured eigenvalues; a run that ends stops. Whether it goes on.
+    /// One engine step with what follows it: the trail and the history; a
+    /// run that ends stops. Whether it goes on.
     fn take_step(&mut self) -> bool {
         if self.sim.step() != Status::Running {
             self.running = false;
@@ -372,13 +374,18 @@ impl AppState {
         let now = self.sim.observe();
         push_trail(&mut self.trail, &now);
         self.history.push(now);
+        true
+    }
+
+    /// The eigenvalues measured from the run, refitted about once a
+    /// simulated second (not every step: at 10x a frame holds ten seconds).
+    fn refresh_measured(&mut self) {
         let t = self.sim.time_secs();
         if t - self.measured_at_secs >= 1.0 {
             // Two exponentials per oscillating mode of the column.
             self.measured = self.history.measured(4);
             self.measured_at_secs = t;
         }
-        true
     }
 
     /// Disturbs both angles by [`KICK_RAD`] and runs on.
