@@ -112,7 +112,7 @@ impl ZieglerApp {
 
     /// The window's arrangement now, as it is stored.
     #[must_use]
-    pub fn layout(&mut self) -> Layout {
+    pub fn layout(&self) -> Layout {
         Layout {
             tab: self.tab,
             overlay: self.state.overlay().map(|o| o.preset.name().to_owned()),
@@ -134,7 +134,7 @@ impl ZieglerApp {
         }
         if let Some((name, lo, hi)) = &layout.map_axis {
             let model = *self.state.model();
-            if let Err(why) = self.tabs.map().choose_axis(&model, (name, *lo, *hi)) {
+            if let Err(why) = self.tabs.map_mut().choose_axis(&model, (name, *lo, *hi)) {
                 self.state
                     .tell(Notice::warning(format!("stored map axis not used: {why}")));
             }

@@ -68,7 +68,13 @@ impl Tabs {
     }
 
     /// The stability map's view (its axis choice).
-    pub fn map(&mut self) -> &mut map::MapPanel {
+    #[must_use]
+    pub fn map(&self) -> &map::MapPanel {
+        &self.map
+    }
+
+    /// The stability map's view, to choose its axis.
+    pub fn map_mut(&mut self) -> &mut map::MapPanel {
         &mut self.map
     }
 
