@@ -110,8 +110,8 @@ pub struct AppState {
     current: Option<(Model, Spectrum)>,
     /// The last thing to tell the user.
     notice: Option<Notice>,
-    /// The last refused parameter value: its key and why.
-    refused: Option<(Key, String)>,
+    /// Each field's refused value: why, by key, until a value for it is taken.
+    refused: Vec<(Key, String)>,
     history: History,
     /// The column's eigenvalues measured from the run, refreshed about once a
     /// simulated second.
@@ -137,7 +137,7 @@ impl AppState {
             pace: Pace::default(),
             current: None,
             notice,
-            refused: None,
+            refused: Vec::new(),
             history: History::default(),
             measured: None,
             measured_at_secs: f64::NEG_INFINITY,
@@ -201,8 +201,8 @@ impl AppState {
     #[must_use]
     pub fn refusal(&self, key: Key) -> Option<&str> {
         self.refused
-            .as_ref()
-            .filter(|(k, _)| *k == key)
+            .iter()
+            .find(|(k, _)| *k == key)
             .map(|(_, why)| why.as_str())
     }
 
@@ -245,12 +245,24 @@ impl AppState {
     }
 
     /// [`Self::set_parameter`] as typed or dragged in a field: a refusal is
-    /// kept to show beside the field until the next value for it.
+    /// kept to show beside the field until a value for it is taken (the
+    /// other fields' refusals stay as they are).
     pub fn enter_parameter(&mut self, key: Key, value: f64) {
-        self.refused = self
-            .set_parameter(key, value)
-            .err()
-            .map(|why| (key, why.to_string()));
+        match self.set_parameter(key, value) {
+            Ok(()) => self.clear_refusal(key),
+            Err(why) => self.refuse(key, why.to_string()),
+        }
+    }
+
+    /// Refuses text typed for `key` that is not a value at all, saying why.
+    pub fn refuse(&mut self, key: Key, why: String) {
+        self.clear_refusal(key);
+        self.refused.push((key, why));
+    }
+
+    /// Forgets a refusal of `key` (the user went back to the applied value).
+    pub fn clear_refusal(&mut self, key: Key) {
+        self.refused.retain(|(k, _)| *k != key);
     }
 
     /// Moves the load by `delta_p`, within the slider's range (or toward it
@@ -269,7 +281,7 @@ impl AppState {
     /// a fresh run, the overlay at its `a`.
     pub fn set_preset(&mut self, id: PresetId) {
         self.settings.preset = id;
-        self.refused = None;
+        self.refused.clear();
         self.set_model(id.model().at_load(self.settings.model.load_p()));
         self.reset();
     }

@@ -1,39 +1,127 @@
-//! The app driven as a user drives it (`egui_kittest`, no window, no GPU): a
-//! bad value typed into a parameter field is refused on screen with the
-//! reason, and the model keeps its value.
+//! The app driven as a user drives it (`egui_kittest`, no window, no GPU):
+//! real key sequences typed into the parameter fields (select all, one
+//! character at a time, Enter, Escape, Tab), with the model and the field's
+//! text checked after each.
 
 use eframe::egui;
 use eframe::egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
 use zieglerlab::app::{Settings, ZieglerApp};
+use zieglerlab::model::Key;
 
-/// Types `text` into the number field labelled `key` and presses Enter.
+/// Clicks into the field labelled `key`, selects its text and types `text`
+/// one character at a time, a frame after each (as a person at a keyboard).
 fn type_into(harness: &mut Harness<'_>, key: &str, text: &str) {
-    harness.get_by_role_and_label(Role::SpinButton, key).focus();
+    harness.get_by_role_and_label(Role::TextInput, key).click();
     harness.run();
     harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    harness.run();
+    for c in text.chars() {
+        harness
+            .get_by_role_and_label(Role::TextInput, key)
+            .type_text(&c.to_string());
+        harness.run();
+    }
+}
+
+/// The text the field labelled `key` shows.
+fn shown(harness: &Harness<'_>, key: &str) -> String {
     harness
-        .get_by_role_and_label(Role::SpinButton, key)
-        .type_text(text);
-    harness.key_press(egui::Key::Enter);
+        .get_by_role_and_label(Role::TextInput, key)
+        .value()
+        .unwrap_or_default()
+}
+
+fn press(harness: &mut Harness<'_>, key: egui::Key) {
+    harness.key_press(key);
     harness.run();
 }
 
+fn harness(app: &mut ZieglerApp) -> Harness<'_> {
+    let mut harness = Harness::builder()
+        .with_size([1280.0, 800.0])
+        .build_ui(|ui| app.contents_ui(ui));
+    harness.run();
+    harness
+}
+
+/// "0.2" into mu (0.1): every intermediate text ("0", "0.") is the user's,
+/// nothing is applied until Enter, and then exactly 0.2.
 #[test]
-fn a_bad_value_typed_into_a_field_is_refused_on_screen() {
+fn a_value_starting_with_zero_point_is_taken_as_typed_on_enter() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    let load_before = app.settings().model.load_p();
+    {
+        let mut harness = harness(&mut app);
+        type_into(&mut harness, "mu", "0.2");
+        assert_eq!(shown(&harness, "mu"), "0.2");
+        assert!(harness.query_by_label_contains("refused:").is_none());
+        press(&mut harness, egui::Key::Enter);
+        assert_eq!(shown(&harness, "mu"), "0.2");
+        assert!(harness.query_by_label_contains("refused:").is_none());
+    }
+    let model = app.settings().model;
+    assert_eq!(Key::Mu.get(&model), 0.2);
+    // mu moves the load with R held: p = mu R l / k doubles.
+    assert!((model.load_p() - 2.0 * load_before).abs() < 1e-12);
+}
+
+/// Two digits typed into a: nothing moves in between, 78 is taken whole.
+#[test]
+fn several_digits_are_one_value() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    {
+        let mut harness = harness(&mut app);
+        type_into(&mut harness, "a", "78");
+        assert_eq!(shown(&harness, "a"), "78");
+        press(&mut harness, egui::Key::Enter);
+        assert_eq!(shown(&harness, "a"), "78");
+    }
+    assert_eq!(Key::A.get(&app.settings().model), 78.0);
+}
+
+/// Escape restores the applied value and applies nothing; Tab commits.
+#[test]
+fn escape_restores_and_tab_commits() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    {
+        let mut harness = harness(&mut app);
+        type_into(&mut harness, "rho", "0.35");
+        press(&mut harness, egui::Key::Escape);
+        assert_eq!(shown(&harness, "rho"), "0.1");
+        type_into(&mut harness, "V", "0.3");
+        press(&mut harness, egui::Key::Tab);
+        assert_eq!(shown(&harness, "V"), "0.3");
+    }
+    let model = app.settings().model;
+    assert_eq!(Key::Rho.get(&model), 0.1);
+    assert_eq!(Key::V.get(&model), 0.3);
+}
+
+/// A refused value stays in the field with the reason beside it until it
+/// is corrected; text that is no number says so; the model keeps its value.
+#[test]
+fn a_refused_value_stays_with_its_reason_until_corrected() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     let nu_before = app.settings().model.roller().unwrap().mass_kg;
     {
-        let mut harness = Harness::builder()
-            .with_size([1280.0, 800.0])
-            .build_ui(|ui| app.contents_ui(ui));
-        harness.run();
+        let mut harness = harness(&mut app);
         type_into(&mut harness, "nu", "-1");
+        press(&mut harness, egui::Key::Enter);
         harness.get_by_label_contains("refused: nu = -1: must be");
-        // A good value is taken, and the refusal goes away.
+        assert_eq!(shown(&harness, "nu"), "-1");
+        // Still there a few frames later.
+        harness.run();
+        assert_eq!(shown(&harness, "nu"), "-1");
+        type_into(&mut harness, "nu", "0.5x");
+        press(&mut harness, egui::Key::Enter);
+        harness.get_by_label_contains("refused: '0.5x' is not a number");
+        // Corrected: taken, and the refusal goes.
         type_into(&mut harness, "nu", "0.5");
+        press(&mut harness, egui::Key::Enter);
         assert!(harness.query_by_label_contains("refused:").is_none());
+        assert_eq!(shown(&harness, "nu"), "0.5");
     }
     let nu_after = app.settings().model.roller().unwrap().mass_kg;
     assert!(
@@ -46,12 +134,40 @@ fn a_bad_value_typed_into_a_field_is_refused_on_screen() {
 fn a_huge_typed_load_is_taken_as_typed_and_said_to_be_off_the_plots() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     {
-        let mut harness = Harness::builder()
-            .with_size([1280.0, 800.0])
-            .build_ui(|ui| app.contents_ui(ui));
+        let mut harness = harness(&mut app);
+        harness
+            .get_by_role_and_label(Role::SpinButton, "load p = P l/k")
+            .focus();
         harness.run();
-        type_into(&mut harness, "load p = P l/k", "1e6");
+        harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+        harness
+            .get_by_role_and_label(Role::SpinButton, "load p = P l/k")
+            .type_text("1e6");
+        harness.key_press(egui::Key::Enter);
+        harness.run();
         harness.get_by_label_contains("is beyond the plotted range");
     }
     assert_eq!(app.settings().model.load_p(), 1e6);
+}
+
+/// A refusal stays while another field is edited and abandoned.
+#[test]
+fn a_refusal_outlives_an_edit_escaped_elsewhere() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    let mut harness = harness(&mut app);
+    type_into(&mut harness, "nu", "-5");
+    press(&mut harness, egui::Key::Enter);
+    harness.get_by_label_contains("refused: nu = -5");
+    harness.get_by_role_and_label(Role::TextInput, "a").click();
+    harness.run();
+    assert_eq!(shown(&harness, "nu"), "-5", "after the click");
+    harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    harness.run();
+    assert_eq!(shown(&harness, "nu"), "-5", "after select all");
+    type_into(&mut harness, "a", "21");
+    assert_eq!(shown(&harness, "nu"), "-5", "after typing");
+    press(&mut harness, egui::Key::Escape);
+    assert_eq!(shown(&harness, "a"), "0.1");
+    assert_eq!(shown(&harness, "nu"), "-5");
+    harness.get_by_label_contains("refused: nu = -5");
 }

@@ -20,6 +20,7 @@ use crate::model::{PRESETS, PresetId};
 /// The sidebar and the sections that keep something of their own.
 #[derive(Default)]
 pub struct Sidebar {
+    parameters: parameters::ParametersSection,
     share: share::ShareSection,
 }
 
@@ -39,7 +40,7 @@ impl View for Sidebar {
         ui.separator();
         load::LoadSection.ui(ui, state, theme);
         ui.separator();
-        parameters::ParametersSection.ui(ui, state, theme);
+        self.parameters.ui(ui, state, theme);
         ui.separator();
         time::TimeSection.ui(ui, state, theme);
         ui.separator();
