@@ -135,16 +135,8 @@ fn a_huge_typed_load_is_taken_as_typed_and_said_to_be_off_the_plots() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     {
         let mut harness = harness(&mut app);
-        harness
-            .get_by_role_and_label(Role::SpinButton, "load p = P l/k")
-            .focus();
-        harness.run();
-        harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
-        harness
-            .get_by_role_and_label(Role::SpinButton, "load p = P l/k")
-            .type_text("1e6");
-        harness.key_press(egui::Key::Enter);
-        harness.run();
+        type_into(&mut harness, "load", "1e6");
+        press(&mut harness, egui::Key::Enter);
         harness.get_by_label_contains("is beyond the plotted range");
     }
     assert_eq!(app.settings().model.load_p(), 1e6);
@@ -170,4 +162,24 @@ fn a_refusal_outlives_an_edit_escaped_elsewhere() {
     assert_eq!(shown(&harness, "a"), "0.1");
     assert_eq!(shown(&harness, "nu"), "-5");
     harness.get_by_label_contains("refused: nu = -5");
+}
+
+/// "3.5" typed into the load field one character a frame is one value:
+/// the "3" on the way is not applied, Enter applies 3.5; Escape restores.
+#[test]
+fn the_load_field_applies_what_is_typed_on_enter() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    {
+        let mut harness = harness(&mut app);
+        type_into(&mut harness, "load", "3.5");
+        assert_eq!(shown(&harness, "load"), "3.5");
+        harness.get_by_label_contains("q = R l/k = p/μ = 10.000");
+        press(&mut harness, egui::Key::Enter);
+        harness.get_by_label_contains("q = R l/k = p/μ = 35.000");
+        type_into(&mut harness, "load", "6");
+        press(&mut harness, egui::Key::Escape);
+        assert_eq!(shown(&harness, "load"), "3.5");
+        harness.get_by_label_contains("q = R l/k = p/μ = 35.000");
+    }
+    assert_eq!(app.settings().model.load_p(), 3.5);
 }

@@ -3,26 +3,39 @@
 
 use eframe::egui::{self, RichText, Sense, Stroke, pos2, vec2};
 
+use super::number_field::NumberFields;
 use crate::app::View;
 use crate::app::state::{AppState, LOAD_MAX_P};
 use crate::app::theme::Theme;
 use crate::format::load_text;
 use crate::model::Key;
 
-pub struct LoadSection;
+/// The load's number field (the slider beside it applies live).
+#[derive(Default)]
+pub struct LoadSection {
+    field: NumberFields,
+}
 
 impl View for LoadSection {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+        self.field.prune(ui, state);
         let mut p = state.model().load_p();
-        // A typed load beyond the slider's range is taken as typed, not clamped.
-        let response = ui.add(
-            egui::Slider::new(&mut p, 0.0..=LOAD_MAX_P)
-                .clamping(egui::SliderClamping::Never)
-                .text("load p = P l/k"),
-        );
-        if response.changed() {
-            state.enter_parameter(Key::Load, p);
-        }
+        ui.label("load p = P l/k");
+        ui.horizontal(|ui| {
+            // The slider applies while dragged; the field beside it takes a
+            // typed load, also beyond the slider's range (not clamped).
+            let slider = ui
+                .add(
+                    egui::Slider::new(&mut p, 0.0..=LOAD_MAX_P)
+                        .clamping(egui::SliderClamping::Never)
+                        .show_value(false),
+                )
+                .accessible_name("load slider");
+            if slider.changed() {
+                state.enter_parameter(Key::Load, p);
+            }
+            self.field.show(ui, state, theme, Key::Load);
+        });
         if let Some(why) = state.refusal(Key::Load) {
             ui.colored_label(theme.error, format!("refused: {why}"));
         }

@@ -4,6 +4,7 @@
 
 mod load;
 mod model;
+mod number_field;
 mod parameters;
 mod share;
 mod status;
@@ -20,6 +21,7 @@ use crate::model::{PRESETS, PresetId};
 /// The sidebar and the sections that keep something of their own.
 #[derive(Default)]
 pub struct Sidebar {
+    load: load::LoadSection,
     parameters: parameters::ParametersSection,
     share: share::ShareSection,
 }
@@ -38,7 +40,7 @@ impl View for Sidebar {
         ui.separator();
         model::ModelSection.ui(ui, state, theme);
         ui.separator();
-        load::LoadSection.ui(ui, state, theme);
+        self.load.ui(ui, state, theme);
         ui.separator();
         self.parameters.ui(ui, state, theme);
         ui.separator();

@@ -1,0 +1,105 @@
+//! Number fields that take text as typed: the text is the user's while the
+//! field has focus, it is applied on Enter or when focus leaves, Escape
+//! restores the value in use, and a refused value stays in the field, in
+//! the error colour, until it is corrected (the reason is the caller's to
+//! show beside it).
+
+use std::collections::HashMap;
+
+use eframe::egui;
+
+use crate::app::state::AppState;
+use crate::app::theme::Theme;
+use crate::format::number_text;
+use crate::model::Key;
+
+/// The width of a number field, in points.
+const FIELD_WIDTH: f32 = 72.0;
+
+/// The text of the fields being typed in, or holding a refused value.
+#[derive(Default)]
+pub struct NumberFields {
+    drafts: HashMap<Key, String>,
+}
+
+/// The field of `key` (one id wherever it is drawn).
+fn field_id(key: Key) -> egui::Id {
+    egui::Id::unique(("number field", key.name()))
+}
+
+/// What the text of a field asks for when it is committed.
+fn parse(text: &str) -> Result<f64, String> {
+    let trimmed = text.trim();
+    trimmed
+        .parse::<f64>()
+        .map_err(|_| format!("'{trimmed}' is not a number"))
+}
+
+impl NumberFields {
+    /// Forgets the drafts of fields that neither have focus nor hold a
+    /// refused value: a new preset or a value set elsewhere (the slider, a
+    /// key, the map) shows the model's value again. Call once a frame.
+    pub fn prune(&mut self, ui: &egui::Ui, state: &AppState) {
+        let focused = ui.memory(egui::Memory::focused);
+        self.drafts
+            .retain(|&key, _| state.refusal(key).is_some() || focused == Some(field_id(key)));
+    }
+
+    /// The field of `key`, named `key` for screen readers and tests.
+    pub fn show(
+        &mut self,
+        ui: &mut egui::Ui,
+        state: &mut AppState,
+        theme: &Theme,
+        key: Key,
+    ) -> egui::Response {
+        // Focus is reported lost on more than one pass (egui reruns a pass
+        // whose layout changed, without the key events): only text that
+        // differs from the value in use, or was refused, is applied.
+        let applied_text = number_text(key.get(state.model()));
+        let mut text = self
+            .drafts
+            .get(&key)
+            .cloned()
+            .unwrap_or_else(|| applied_text.clone());
+        let refused = state.refusal(key).is_some();
+        let mut edit = egui::TextEdit::singleline(&mut text)
+            .id(field_id(key))
+            .desired_width(FIELD_WIDTH);
+        if refused {
+            edit = edit.text_color(theme.error);
+        }
+        let response = ui.add(edit).accessible_name(key.name());
+        let escaped = response.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Escape));
+        if escaped {
+            self.drafts.remove(&key);
+            state.clear_refusal(key);
+        } else if response.lost_focus() && (refused || text != applied_text) {
+            match parse(&text) {
+                Ok(value) => state.enter_parameter(key, value),
+                Err(why) => state.refuse(key, why),
+            }
+            if state.refusal(key).is_some() {
+                self.drafts.insert(key, text);
+            } else {
+                self.drafts.remove(&key);
+            }
+        } else if response.has_focus() {
+            self.drafts.insert(key, text);
+        }
+        response
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::parse;
+
+    #[test]
+    fn typed_text_is_a_number_or_says_why_not() {
+        assert_eq!(parse(" 0.2 "), Ok(0.2));
+        assert_eq!(parse("1e-3"), Ok(1e-3));
+        assert_eq!(parse("0.2.1"), Err("'0.2.1' is not a number".to_owned()));
+        assert_eq!(parse(""), Err("'' is not a number".to_owned()));
+    }
+}
