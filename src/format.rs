@@ -49,6 +49,44 @@ pub fn secs_text(secs: f64) -> String {
     }
 }
 
+/// A duration in the largest unit that keeps it readable: s below a
+/// minute, then min, h, days and years (a growth at the onset of flutter
+/// can take years to e-fold).
+#[must_use]
+pub fn duration_text(secs: f64) -> String {
+    const MINUTE: f64 = 60.0;
+    const HOUR: f64 = 60.0 * MINUTE;
+    const DAY: f64 = 24.0 * HOUR;
+    const YEAR: f64 = 365.25 * DAY;
+    let magnitude = secs.abs();
+    if !magnitude.is_finite() {
+        return "forever".to_owned();
+    }
+    let (value, unit) = if magnitude < MINUTE {
+        return format!("{} s", secs_text(secs));
+    } else if magnitude < HOUR {
+        (secs / MINUTE, "min")
+    } else if magnitude < DAY {
+        (secs / HOUR, "h")
+    } else if magnitude < YEAR {
+        (secs / DAY, "days")
+    } else {
+        (secs / YEAR, "years")
+    };
+    format!("{} {unit}", number_text(round_to_3(value)))
+}
+
+/// `value` to three significant digits.
+fn round_to_3(value: f64) -> f64 {
+    if value == 0.0 || !value.is_finite() {
+        return value;
+    }
+    #[expect(clippy::cast_possible_truncation, reason = "a small exponent")]
+    let digits = 2 - value.abs().log10().floor() as i32;
+    let scale = 10f64.powi(digits);
+    (value * scale).round() / scale
+}
+
 /// A load: four decimals, or three significant digits when it is below
 /// 1e-3 (the roller's first flutter load scales with nu).
 #[must_use]
@@ -107,5 +145,16 @@ mod tests {
         assert_eq!(secs_text(122.04), "122.0");
         assert_eq!(secs_text(1.234_56), "1.235");
         assert_eq!(secs_text(5e-4), "5.00e-4");
+    }
+
+    #[test]
+    fn long_durations_are_given_in_readable_units() {
+        assert_eq!(duration_text(6.826), "6.826 s");
+        assert_eq!(duration_text(242.3), "4.04 min");
+        assert_eq!(duration_text(7200.0), "2 h");
+        assert_eq!(duration_text(3.0 * 86_400.0), "3 days");
+        // Midpoint masses at the flutter onset: 122039455.4 s.
+        assert_eq!(duration_text(122_039_455.4), "3.87 years");
+        assert_eq!(duration_text(f64::INFINITY), "forever");
     }
 }

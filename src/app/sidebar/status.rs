@@ -7,7 +7,20 @@ use crate::analysis::{State, classify};
 use crate::app::View;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
-use crate::format::{rate_text, secs_text};
+use crate::format::{duration_text, rate_text, secs_text};
+
+/// An e-folding time beyond this is a growth nobody sees in a lesson: even
+/// at the fastest speed (10x) it takes over five minutes to grow by e.
+const TOO_SLOW_TO_SEE_SECS: f64 = 3000.0;
+
+/// A percentage: two decimals, or three significant digits when small.
+fn percent_text(percent: f64) -> String {
+    if percent.abs() >= 0.01 {
+        format!("{percent:.2}%")
+    } else {
+        format!("{percent:.2e}%")
+    }
+}
 
 pub struct StatusSection;
 
@@ -45,8 +58,10 @@ impl View for StatusSection {
             );
         }
         match s.e_folding_secs() {
-            Some(secs) => ui.label(format!("e-folding time  {} s", secs_text(secs))),
-            None if growth < 0.0 => ui.label(format!("decay time  {} s", secs_text(-1.0 / growth))),
+            Some(secs) => ui.label(format!("e-folding time  {}", duration_text(secs))),
+            None if growth < 0.0 => {
+                ui.label(format!("decay time  {}", duration_text(-1.0 / growth)))
+            }
             None => ui.label("neutral: no growth, no decay"),
         };
         if frequency > s.tolerance_per_s {
@@ -70,10 +85,19 @@ impl View for StatusSection {
             ),
         };
         if weak {
+            let per_period = 100.0 * (growth * std::f64::consts::TAU / frequency).exp_m1();
+            let pace = if s
+                .e_folding_secs()
+                .is_some_and(|secs| secs > TOO_SLOW_TO_SEE_SECS)
+            {
+                "too slow to see in a lesson"
+            } else {
+                "watch for minutes, not seconds"
+            };
             ui.label(
                 RichText::new(format!(
-                    "grows by {:.2}% per period: watch for minutes, not seconds",
-                    100.0 * (growth * std::f64::consts::TAU / frequency).exp_m1()
+                    "grows by {} per period: {pace}",
+                    percent_text(per_period)
                 ))
                 .small(),
             );
