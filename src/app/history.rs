@@ -21,11 +21,21 @@ const MEASURE_SAMPLES: usize = 400;
 #[derive(Default)]
 pub struct History {
     samples: VecDeque<Observables>,
+    /// The measurement uses the samples from this time on: the parameters
+    /// changed then, and older samples belong to another column.
+    measure_from_secs: f64,
 }
 
 impl History {
     pub fn clear(&mut self) {
         self.samples.clear();
+        self.measure_from_secs = 0.0;
+    }
+
+    /// Measures from `t_secs` on (the parameters changed then); the samples
+    /// before stay for the plots.
+    pub fn restart_measurement(&mut self, t_secs: f64) {
+        self.measure_from_secs = t_secs;
     }
 
     pub fn push(&mut self, now: Observables) {
@@ -50,19 +60,24 @@ impl History {
     /// exponentials to fit (two per oscillating mode).
     #[must_use]
     pub fn measured(&self, order: usize) -> Option<Vec<C64>> {
-        let (first, last) = (self.samples.front()?, self.samples.back()?);
+        let window: Vec<&Observables> = self
+            .samples
+            .iter()
+            .filter(|o| o.t_secs >= self.measure_from_secs)
+            .collect();
+        let (first, last) = (window.first()?, window.last()?);
         if last.t_secs - first.t_secs < MIN_WINDOW_SECS {
             return None;
         }
-        let amplitude = self
-            .samples
+        let amplitude = window
             .iter()
             .map(|o| o.phi1_rad.abs().max(o.phi2_rad.abs()))
             .fold(0.0, f64::max);
         if !(amplitude < LINEAR_AMPLITUDE_RAD && amplitude > 0.0) {
             return None;
         }
-        let picked: Vec<&Observables> = self.thinned(MEASURE_SAMPLES).collect();
+        let every = window.len().div_ceil(MEASURE_SAMPLES).max(1);
+        let picked: Vec<&Observables> = window.into_iter().step_by(every).collect();
         let dt_secs = picked.get(1)?.t_secs - picked.first()?.t_secs;
         let phi1: Vec<f64> = picked.iter().map(|o| o.phi1_rad).collect();
         let phi2: Vec<f64> = picked.iter().map(|o| o.phi2_rad).collect();

@@ -328,6 +328,13 @@ impl AppState {
         };
         match result {
             Ok(()) => {
+                if model != self.settings.model {
+                    // The run goes on with another column: what was measured
+                    // belongs to the old one, and so do the samples before now.
+                    self.history.restart_measurement(self.sim.time_secs());
+                    self.measured = None;
+                    self.measured_at_secs = f64::NEG_INFINITY;
+                }
                 self.settings.model = model;
                 self.refresh_analysis();
                 if let Some(overlay) = &self.overlay
@@ -523,6 +530,42 @@ mod tests {
         assert!(!state.running());
         assert_eq!(state.history().thinned(usize::MAX).count(), before + 1);
         assert!(state.simulation().time_secs() > 0.0);
+    }
+
+    /// A change of load mid-run restarts the measurement: the eigenvalues
+    /// measured before belong to the old column, and a window that
+    /// straddled the change would mix the two.
+    #[test]
+    fn a_change_of_load_restarts_the_measurement() {
+        let mut state = AppState::new(Settings::default()).unwrap();
+        for _ in 0..(25 * 60) {
+            state.advance(1.0 / 60.0);
+        }
+        assert!(state.measured().is_some(), "measured after 25 s");
+        state.set_parameter(Key::Load, 1.24).unwrap();
+        assert!(state.measured().is_none());
+        for _ in 0..(15 * 60) {
+            state.advance(1.0 / 60.0);
+        }
+        assert!(
+            state.measured().is_none(),
+            "15 s since the change: too short"
+        );
+        for _ in 0..(7 * 60) {
+            state.advance(1.0 / 60.0);
+        }
+        let measured = state.measured().expect("22 s since the change");
+        let predicted = state.current_spectrum().unwrap();
+        let growth = crate::analysis::classify(&predicted.eigenvalues, predicted.scale_per_s)
+            .growth_rate_per_s();
+        let fastest = measured
+            .iter()
+            .map(|z| z.re)
+            .fold(f64::NEG_INFINITY, f64::max);
+        assert!(
+            (fastest - growth).abs() < 0.2 * growth.abs(),
+            "measured {fastest} against predicted {growth}"
+        );
     }
 
     #[test]
