@@ -104,6 +104,8 @@ pub struct AppState {
     running: bool,
     trail: VecDeque<(f64, [f64; 2])>,
     analysis: Option<Analysis>,
+    /// Why there is no analysis, and the parameters (at p = 0) it is for.
+    analysis_failure: Option<(Model, AnalysisError)>,
     /// Simulated time against wall-clock time.
     pace: Pace,
     /// The spectrum at the current load and the model it is for.
@@ -134,6 +136,7 @@ impl AppState {
             running: true,
             trail: VecDeque::new(),
             analysis: None,
+            analysis_failure: None,
             pace: Pace::default(),
             current: None,
             notice,
@@ -185,6 +188,12 @@ impl AppState {
     #[must_use]
     pub fn analysis(&self) -> Option<&Analysis> {
         self.analysis.as_ref()
+    }
+
+    /// Why the current parameters have no analysis, when they have none.
+    #[must_use]
+    pub fn analysis_failure(&self) -> Option<&AnalysisError> {
+        self.analysis_failure.as_ref().map(|(_, error)| error)
     }
 
     #[must_use]
@@ -442,13 +451,20 @@ impl AppState {
     /// when the load did; keeps them otherwise.
     fn refresh_analysis(&mut self) {
         let key = self.settings.model.at_load(0.0);
-        if !self.analysis.as_ref().is_some_and(|a| a.key == key) {
+        let known = self.analysis.as_ref().is_some_and(|a| a.key == key)
+            || self
+                .analysis_failure
+                .as_ref()
+                .is_some_and(|(k, _)| *k == key);
+        if !known {
+            self.analysis_failure = None;
             match Analysis::new(&self.settings.model) {
                 Ok(analysis) => self.analysis = Some(analysis),
                 Err(error) => {
                     // No stale plots: the old locus belongs to other parameters.
                     self.analysis = None;
                     self.say(Notice::error(format!("analysis unavailable: {error}")));
+                    self.analysis_failure = Some((key, error));
                 }
             }
         }

@@ -3,6 +3,7 @@
 //! partial, from another version or garbage start the app anyway, saying
 //! what was ignored.
 
+use egui_kittest::kittest::Queryable as _;
 use zieglerlab::app::{MAX_FRAME_SECS, Settings, ZieglerApp};
 use zieglerlab::model::{Axis, Key, PresetId};
 use zieglerlab::sim::{DEFAULT_STEP_SECS, EngineKind, Status};
@@ -275,8 +276,22 @@ fn a_model_without_analysis_shows_no_stale_locus() {
     );
     app.advance(0.05);
     assert!(app.simulation().time_secs() > 0.0);
+    {
+        // The empty panel and the status card say why, where they are.
+        let mut harness = egui_kittest::Harness::builder()
+            .with_size([1280.0, 800.0])
+            .build_ui(|ui| app.contents_ui(ui));
+        harness.run();
+        harness.get_by_label_contains("No root locus for these parameters: V = 0: must be > 0");
+        harness.get_by_label_contains("no stability figures: V = 0");
+    }
+    // Moving the load at V = 0 is not a new failure each frame.
+    app.state_mut().dismiss_notice();
+    app.state_mut().set_parameter(Key::Load, 2.0).unwrap();
+    assert_eq!(app.message(), None);
     app.state_mut().set_parameter(Key::V, 0.1).unwrap();
     assert!(app.state().analysis().is_some());
+    assert!(app.state().analysis_failure().is_none());
 }
 
 /// A click on the stability map sets the load and the map's parameter, and

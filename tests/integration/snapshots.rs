@@ -106,3 +106,41 @@ fn stability_map_and_paradox_panels() {
         }
     }
 }
+
+/// Two states a user must be able to read: a refused value typed into a
+/// field (it stays, in red, with the reason under it), and the band stopped
+/// (no linear analysis: the locus panel and the status card say why).
+#[test]
+fn a_refused_field_and_a_panel_without_analysis() {
+    use eframe::egui;
+    use egui_kittest::kittest::Queryable as _;
+    let mut results = SnapshotResults::default();
+    let mut refused = app_at(Settings::default(), 1.0, 0);
+    let mut harness = Harness::builder()
+        .wgpu()
+        .with_size([1280.0, 800.0])
+        .build_ui(|ui| refused.contents_ui(ui));
+    harness.run();
+    let field = || (egui::accesskit::Role::TextInput, "nu");
+    harness.get_by_role_and_label(field().0, field().1).click();
+    harness.run();
+    harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    harness
+        .get_by_role_and_label(field().0, field().1)
+        .type_text("-1");
+    harness.key_press(egui::Key::Enter);
+    harness.run_steps(4);
+    harness.snapshot("refused_field");
+    results.extend(harness.take_snapshot_results());
+    drop(harness);
+    let mut stopped = app_at(Settings::default(), 1.0, 0);
+    stopped.state_mut().set_parameter(Key::V, 0.0).unwrap();
+    let mut harness = Harness::builder()
+        .wgpu()
+        .with_size([1280.0, 800.0])
+        .build_ui(|ui| stopped.contents_ui(ui));
+    harness.run_steps(4);
+    harness.snapshot("band_stopped");
+    results.extend(harness.take_snapshot_results());
+    results.unwrap();
+}

@@ -27,6 +27,9 @@ pub struct StatusSection;
 impl View for StatusSection {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
         let (Some(analysis), Some(spectrum)) = (state.analysis(), state.current_spectrum()) else {
+            if let Some(error) = state.analysis_failure() {
+                ui.colored_label(theme.warning, format!("no stability figures: {error}"));
+            }
             return;
         };
         let s = classify(&spectrum.eigenvalues, spectrum.scale_per_s);

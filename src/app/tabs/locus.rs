@@ -14,7 +14,13 @@ pub struct LocusTab;
 impl View for LocusTab {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
         let Some(analysis) = state.analysis() else {
-            ui.label("No root locus for these parameters.");
+            let why = state
+                .analysis_failure()
+                .map_or_else(String::new, |error| format!(": {error}"));
+            ui.colored_label(
+                theme.warning,
+                format!("No root locus for these parameters{why}."),
+            );
             return;
         };
         let load = state.model().load_p();
