@@ -11,6 +11,7 @@ mod notice;
 mod pace;
 mod plots;
 mod scene;
+mod settings;
 mod sidebar;
 mod state;
 mod store_check;

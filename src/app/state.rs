@@ -14,6 +14,7 @@ use super::analysis_cache::{Analysis, LOCUS_SAMPLES};
 use super::history::History;
 use super::notice::Notice;
 use super::pace::Pace;
+pub use super::settings::Settings;
 
 /// The load slider's range and the locus's, on the common axis p.
 pub const LOAD_MAX_P: f64 = 8.0;
@@ -33,30 +34,6 @@ fn push_trail(trail: &mut VecDeque<(f64, [f64; 2])>, now: &Observables) {
         .is_some_and(|(t, _)| now.t_secs - t > TRAIL_SECS)
     {
         trail.pop_front();
-    }
-}
-
-/// What persists between runs of the app.
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(default)]
-pub struct Settings {
-    pub preset: PresetId,
-    pub model: Model,
-    pub engine: EngineKind,
-    /// Simulated seconds per wall second.
-    pub speed: f64,
-    pub projector: bool,
-}
-
-impl Default for Settings {
-    fn default() -> Self {
-        Self {
-            preset: PresetId::Roller,
-            model: PresetId::Roller.model(),
-            engine: EngineKind::Rapier,
-            speed: 1.0,
-            projector: false,
-        }
     }
 }
 
