@@ -53,7 +53,7 @@ pub struct Read {
 }
 
 /// One field as a `T`, or its reason for being ignored in `ignored`.
-fn field<T: for<'de> Deserialize<'de>>(
+pub(super) fn field<T: for<'de> Deserialize<'de>>(
     raw: Option<&RawValue>,
     name: &str,
     ignored: &mut Vec<String>,

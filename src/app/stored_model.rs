@@ -4,7 +4,7 @@
 
 use ron::value::RawValue;
 
-use super::stored::Fields;
+use super::stored::{Fields, field};
 use crate::model::{Load, Model, SpinInertia, analysis_range_text};
 
 /// Writes one number of a model.
@@ -62,17 +62,6 @@ struct Entry {
     value: f64,
 }
 
-/// The fields of a RON struct in `raw`, or why not (named `name` in `ignored`).
-fn fields(raw: &RawValue, name: &str, ignored: &mut Vec<String>) -> Option<Fields> {
-    match raw.into_rust::<Fields>() {
-        Ok(fields) => Some(fields),
-        Err(error) => {
-            ignored.push(format!("{name} ({})", error.code));
-            None
-        }
-    }
-}
-
 /// Moves each known number of `fields` into `entries` (named `prefix.name`),
 /// naming the unknown and unreadable ones in `ignored`.
 fn numbers(
@@ -87,9 +76,8 @@ fn numbers(
             continue;
         };
         let name = format!("{prefix}.{name}");
-        match raw.into_rust::<f64>() {
-            Ok(value) => entries.push(Entry { name, set, value }),
-            Err(error) => ignored.push(format!("{name} ({})", error.code)),
+        if let Some(value) = field::<f64>(Some(&raw), &name, ignored) {
+            entries.push(Entry { name, set, value });
         }
     }
     ignored.extend(
@@ -120,17 +108,17 @@ fn variant(text: &str) -> Option<(&str, String)> {
 /// by number. What could not be read or would make the model invalid is
 /// named in `ignored` (as `model.column.k1_nm_per_rad (k1 = -1: ...)`).
 pub fn read_model(raw: &RawValue, base: Model, ignored: &mut Vec<String>) -> Model {
-    let Some(mut model_fields) = fields(raw, "model", ignored) else {
+    let Some(mut model_fields) = field::<Fields>(Some(raw), "model", ignored) else {
         return base;
     };
     let mut entries = Vec::new();
     if let Some(column) = model_fields.0.remove("column")
-        && let Some(mut column) = fields(&column, "model.column", ignored)
+        && let Some(mut column) = field::<Fields>(Some(&column), "model.column", ignored)
     {
         for (i, rod) in RODS.iter().enumerate() {
             let name = format!("model.column.rod{}", i + 1);
             if let Some(raw) = column.0.remove(&format!("rod{}", i + 1))
-                && let Some(rod_fields) = fields(&raw, &name, ignored)
+                && let Some(rod_fields) = field::<Fields>(Some(&raw), &name, ignored)
             {
                 numbers(rod_fields, &name, rod, &mut entries, ignored);
             }
@@ -168,7 +156,7 @@ fn read_load(raw: &RawValue, base: &Model, entries: &mut Vec<Entry>, ignored: &m
     }
     let Some(mut load) = RawValue::from_ron(&inner)
         .ok()
-        .and_then(|raw| fields(raw, "model.load", ignored))
+        .and_then(|raw| field::<Fields>(Some(raw), "model.load", ignored))
     else {
         return;
     };
