@@ -3,7 +3,7 @@
 //! roller as its mass goes to zero), next to the undamped value.
 
 use super::AnalysisError;
-use super::critical::critical_loads;
+use super::critical::{Transition, critical_loads};
 use super::pencil::AffinePencil;
 use super::stability::State;
 use crate::model::{Axis, Model};
@@ -15,11 +15,19 @@ use crate::model::{Axis, Model};
 /// A model the linear analysis refuses.
 pub fn first_instability(model: &Model, load_max: f64) -> Result<Option<f64>, AnalysisError> {
     let pencil = AffinePencil::new(model)?;
-    let transitions = critical_loads(&pencil, 0.0, load_max)?;
-    Ok(transitions
+    Ok(first_loss_of_stability(&critical_loads(
+        &pencil, 0.0, load_max,
+    )?))
+}
+
+/// The load of the first change from stable to unstable among
+/// `transitions` (in increasing load), if there is one.
+#[must_use]
+pub fn first_loss_of_stability(transitions: &[Transition]) -> Option<f64> {
+    transitions
         .iter()
         .find(|t| t.from == State::Stable)
-        .map(|t| t.load))
+        .map(|t| t.load)
 }
 
 /// [`first_instability`] with joint dampers `g1 = ratio level`,

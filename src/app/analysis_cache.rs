@@ -4,7 +4,7 @@
 
 use crate::analysis::{
     AffinePencil, AnalysisError, BRACKET_SAMPLES, Locus, State, Transition, classify,
-    critical_loads_along, locus, resolution_warning,
+    critical_loads_along, first_loss_of_stability, locus, resolution_warning,
 };
 use crate::model::Model;
 
@@ -51,10 +51,7 @@ impl Analysis {
     /// the slider's end.
     #[must_use]
     pub fn first_instability(&self) -> Option<f64> {
-        self.transitions
-            .iter()
-            .find(|t| t.from == State::Stable)
-            .map(|t| t.load)
+        first_loss_of_stability(&self.transitions)
     }
 }
 
