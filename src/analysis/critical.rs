@@ -44,7 +44,12 @@ fn max_real_part(pencil: &AffinePencil, p: f64) -> Result<(f64, f64), AnalysisEr
 }
 
 fn width_tolerance(a: f64, b: f64) -> f64 {
-    RELATIVE_LOAD_TOLERANCE * a.abs().max(b.abs()).max(f64::MIN_POSITIVE)
+    width_at(RELATIVE_LOAD_TOLERANCE, a, b)
+}
+
+/// `relative` of the larger of the loads `a`, `b` (never zero).
+fn width_at(relative: f64, a: f64, b: f64) -> f64 {
+    relative * a.abs().max(b.abs()).max(f64::MIN_POSITIVE)
 }
 
 /// The polynomial path bisects to this relative width of the load bracket,
@@ -73,7 +78,7 @@ fn bisect(
     relative_width: f64,
     out: &mut Vec<Bracket>,
 ) -> Result<(), AnalysisError> {
-    if b - a <= relative_width * a.abs().max(b.abs()).max(f64::MIN_POSITIVE) {
+    if b - a <= width_at(relative_width, a, b) {
         out.push(Bracket { a, sa, b, sb });
         return Ok(());
     }
