@@ -37,6 +37,16 @@ pub fn rate_text(rate: f64) -> String {
     }
 }
 
+/// A percentage: two decimals, or three significant digits when small.
+#[must_use]
+pub fn percent_text(percent: f64) -> String {
+    if percent.abs() >= 0.01 {
+        format!("{percent:.2}%")
+    } else {
+        format!("{percent:.2e}%")
+    }
+}
+
 /// A time in s: one decimal from 10 s, three significant digits below.
 #[must_use]
 pub fn secs_text(secs: f64) -> String {
@@ -142,6 +152,8 @@ mod tests {
         assert_eq!(load_text(2.382e-4), "2.38e-4");
         assert_eq!(rate_text(0.004_49), "+0.00449");
         assert_eq!(rate_text(-2.5e-5), "-2.500e-5");
+        assert_eq!(percent_text(2.864), "2.86%");
+        assert_eq!(percent_text(8.140_47e-6), "8.14e-6%");
         assert_eq!(secs_text(122.04), "122.0");
         assert_eq!(secs_text(1.234_56), "1.235");
         assert_eq!(secs_text(5e-4), "5.00e-4");

@@ -50,11 +50,11 @@ impl ModelArgs {
     /// validated. A key the preset does not have is named with the preset
     /// and the keys it has.
     fn build(&self) -> Result<(PresetId, Model)> {
-        let keys = Key::names_for(&self.preset.model());
         let in_preset = |error: ModelError| match error {
             ModelError::UnknownKey { key, .. } => anyhow::anyhow!(
-                "unknown key '{key}' for preset {}; its keys are: {keys}",
-                self.preset
+                "unknown key '{key}' for preset {}; its keys are: {}",
+                self.preset,
+                Key::names_for(&self.preset.model())
             ),
             other => other.into(),
         };

@@ -7,20 +7,11 @@ use crate::analysis::{State, classify};
 use crate::app::View;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
-use crate::format::{duration_text, rate_text, secs_text};
+use crate::format::{duration_text, percent_text, rate_text, secs_text};
 
 /// An e-folding time beyond this is a growth nobody sees in a lesson: even
 /// at the fastest speed (10x) it takes over five minutes to grow by e.
 const TOO_SLOW_TO_SEE_SECS: f64 = 3000.0;
-
-/// A percentage: two decimals, or three significant digits when small.
-fn percent_text(percent: f64) -> String {
-    if percent.abs() >= 0.01 {
-        format!("{percent:.2}%")
-    } else {
-        format!("{percent:.2e}%")
-    }
-}
 
 pub struct StatusSection;
 
