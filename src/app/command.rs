@@ -125,16 +125,15 @@ impl Command {
     /// has the keyboard.
     #[must_use]
     pub fn pressed(ctx: &egui::Context) -> Vec<Self> {
-        let pressed: Vec<Self> = ctx.input(|input| {
+        if ctx.egui_wants_keyboard_input() {
+            return Vec::new();
+        }
+        ctx.input(|input| {
             Self::ALL
                 .into_iter()
                 .filter(|command| command.keys().iter().any(|&key| input.key_pressed(key)))
                 .collect()
-        });
-        if ctx.egui_wants_keyboard_input() {
-            return Vec::new();
-        }
-        pressed
+        })
     }
 
     /// The keys help: one row per command that has keys.
