@@ -318,8 +318,7 @@ impl AppState {
                     // The run goes on with another column: what was measured
                     // belongs to the old one, and so do the samples before now.
                     self.history.restart_measurement(self.sim.time_secs());
-                    self.measured = None;
-                    self.measured_at_secs = f64::NEG_INFINITY;
+                    self.forget_measured();
                 }
                 self.settings.model = model;
                 self.refresh_analysis();
@@ -382,6 +381,13 @@ impl AppState {
         true
     }
 
+    /// Drops the measured eigenvalues; the next refit comes as soon as the
+    /// history allows.
+    fn forget_measured(&mut self) {
+        self.measured = None;
+        self.measured_at_secs = f64::NEG_INFINITY;
+    }
+
     /// The eigenvalues measured from the run, refitted about once a
     /// simulated second (not every step: at 10x a frame holds ten seconds).
     fn refresh_measured(&mut self) {
@@ -414,8 +420,7 @@ impl AppState {
                 self.sim = sim;
                 self.trail.clear();
                 self.history.clear();
-                self.measured = None;
-                self.measured_at_secs = f64::NEG_INFINITY;
+                self.forget_measured();
                 self.pace.restart();
                 self.running = true;
             }

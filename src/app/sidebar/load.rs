@@ -3,7 +3,7 @@
 
 use eframe::egui::{self, RichText, Sense, Stroke, pos2, vec2};
 
-use super::number_field::NumberFields;
+use super::number_field::{NumberFields, refusal_ui};
 use crate::app::View;
 use crate::app::state::{AppState, LOAD_MAX_P};
 use crate::app::theme::Theme;
@@ -36,9 +36,7 @@ impl View for LoadSection {
             }
             self.field.show(ui, state, theme, Key::Load);
         });
-        if let Some(why) = state.refusal(Key::Load) {
-            ui.colored_label(theme.error, format!("refused: {why}"));
-        }
+        refusal_ui(ui, state, theme, Key::Load);
         let p = state.model().load_p();
         if let Some(roller) = state.model().roller() {
             ui.label(format!(

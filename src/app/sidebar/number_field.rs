@@ -91,6 +91,13 @@ impl NumberFields {
     }
 }
 
+/// The reason a typed value for `key` was refused, under its field.
+pub fn refusal_ui(ui: &mut egui::Ui, state: &AppState, theme: &Theme, key: Key) {
+    if let Some(why) = state.refusal(key) {
+        ui.colored_label(theme.error, format!("refused: {why}"));
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::parse;

@@ -3,7 +3,7 @@
 
 use eframe::egui;
 
-use super::number_field::NumberFields;
+use super::number_field::{NumberFields, refusal_ui};
 use crate::app::View;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
@@ -60,8 +60,6 @@ impl ParametersSection {
         })
         .response
         .on_hover_text(format!("{} (allowed: {})", spec.description, spec.range));
-        if let Some(why) = state.refusal(key) {
-            ui.colored_label(theme.error, format!("refused: {why}"));
-        }
+        refusal_ui(ui, state, theme, key);
     }
 }
