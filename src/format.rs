@@ -108,6 +108,39 @@ pub fn load_text(load: f64) -> String {
     }
 }
 
+/// An axis tick at `value` on a grid of spacing `step`: as many decimals as
+/// the step needs when the step is 1e-3 or more and the value below 1e5
+/// ("0.25", "-1", "0"), exponent form otherwise ("8e-8", "1.2e-3"), the same
+/// form for every tick of an axis, so a tick label never runs to ten digits.
+#[must_use]
+pub fn tick_text(value: f64, step: f64) -> String {
+    let step = step.abs();
+    if !value.is_finite() || !step.is_finite() || step == 0.0 {
+        return format!("{value}");
+    }
+    // A tick within rounding of zero is zero (no "-0.0").
+    if value.abs() < 1e-6 * step {
+        return "0".to_owned();
+    }
+    // Digits after the step's leading digit (the tolerance keeps a step of
+    // 0.09999999 from asking for one more).
+    #[expect(clippy::cast_possible_truncation, reason = "a small exponent")]
+    let step_exponent = (step.log10() + 1e-6).floor() as i32;
+    if value.abs() < 1e5 && step >= 1e-3 {
+        format!(
+            "{value:.*}",
+            (-step_exponent).max(0).unsigned_abs() as usize
+        )
+    } else {
+        #[expect(clippy::cast_possible_truncation, reason = "a small exponent")]
+        let value_exponent = (value.abs().log10() + 1e-6).floor() as i32;
+        format!(
+            "{value:.*e}",
+            (value_exponent - step_exponent).max(0).unsigned_abs() as usize
+        )
+    }
+}
+
 /// A number in a message: as Rust writes it for everyday magnitudes, in
 /// exponent form beyond them, so no message prints 300 digits.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -157,6 +190,26 @@ mod tests {
         assert_eq!(secs_text(122.04), "122.0");
         assert_eq!(secs_text(1.234_56), "1.235");
         assert_eq!(secs_text(5e-4), "5.00e-4");
+    }
+
+    #[test]
+    fn ticks_have_the_digits_their_step_needs() {
+        for (value, step, text) in [
+            (0.0, 1.0, "0"),
+            (1e-17, 0.1, "0"),
+            (3.0, 1.0, "3"),
+            (-0.2, 0.1, "-0.2"),
+            (0.3, 0.099_999_999, "0.3"),
+            (0.001, 0.001, "0.001"),
+            (9e-4, 1e-4, "9e-4"),
+            (0.0012, 1e-4, "1.2e-3"),
+            (8e-8, 1e-8, "8e-8"),
+            (1.5e-7, 1e-8, "1.5e-7"),
+            (2e5, 1e5, "2e5"),
+            (-1.0, 0.5, "-1.0"),
+        ] {
+            assert_eq!(tick_text(value, step), text, "{value} on {step}");
+        }
     }
 
     #[test]

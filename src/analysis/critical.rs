@@ -8,6 +8,7 @@ use super::C64;
 use super::locus::{Locus, eigenvalues_near, load_resolution, locus};
 use super::pencil::AffinePencil;
 use super::stability::{Stability, State, classify};
+use crate::format::load_text;
 
 /// Default upper end of the load range searched, `p = 10` (twice the ideal
 /// columns' divergence loads).
@@ -26,6 +27,19 @@ pub struct Transition {
     pub load: f64,
     pub from: State,
     pub to: State,
+}
+
+impl std::fmt::Display for Transition {
+    /// "p = 0.0238: stable -> flutter".
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "p = {}: {} -> {}",
+            load_text(self.load),
+            self.from.name(),
+            self.to.name()
+        )
+    }
 }
 
 /// The classification at load p, on the Schur path.

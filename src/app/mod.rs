@@ -9,6 +9,7 @@ mod history;
 mod layout;
 mod notice;
 mod pace;
+mod plot_frame;
 mod plots;
 mod scene;
 mod settings;

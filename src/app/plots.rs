@@ -6,6 +6,8 @@ use eframe::egui::{self, vec2};
 use egui_plot::{Legend, Line, Plot, PlotPoints, Points, Span, VLine};
 
 use super::history::History;
+use super::plot_frame::{axes, refit_if};
+use super::state::Overlay;
 use super::theme::{Theme, load_color};
 use crate::analysis::{C64, Locus, State};
 
@@ -40,9 +42,10 @@ fn drawn_samples(locus: &Locus) -> Vec<usize> {
 pub fn root_locus_ui(
     ui: &mut egui::Ui,
     locus: &Locus,
-    overlay: Option<&Locus>,
+    overlay: Option<&Overlay>,
     current: &[C64],
     measured: Option<&[C64]>,
+    refit: bool,
     theme: &Theme,
 ) {
     let (min, max) = (
@@ -58,80 +61,80 @@ pub fn root_locus_ui(
         .map(|z| z.im.abs())
         .fold(0.0, f64::max)
         .max(1e-3);
-    Plot::new("root locus")
+    let plot = Plot::new("root locus")
         .data_aspect(1.0)
         .default_x_bounds(-1.3 * extent, 1.3 * extent)
-        .default_y_bounds(-1.15 * extent, 1.15 * extent)
-        .x_axis_label("Re λ (1/s)")
-        .y_axis_label("Im λ (rad/s)")
-        .show(ui, |plot_ui| {
-            plot_ui.vline(
-                VLine::new("Re λ = 0", 0.0)
-                    .color(theme.axis)
-                    .width(2.0 * theme.stroke_scale),
-            );
-            if let Some(other) = overlay {
-                for branch in &other.branches {
-                    let points: PlotPoints<'_> = branch.iter().map(|z| [z.re, z.im]).collect();
-                    plot_ui.line(
-                        Line::new("overlay", points)
-                            .color(theme.overlay)
-                            .width(1.5 * theme.stroke_scale),
-                    );
-                }
-            }
-            let shown = drawn_samples(locus);
-            let n = shown.len();
-            for branch in &locus.branches {
-                for band in 0..COLOR_BANDS {
-                    let (k0, k1) = (
-                        band * (n - 1) / COLOR_BANDS,
-                        ((band + 1) * (n - 1) / COLOR_BANDS).min(n - 1),
-                    );
-                    if k1 <= k0 {
-                        continue;
-                    }
-                    let (i0, i1) = (shown[k0], shown[k1]);
-                    let points: PlotPoints<'_> = shown[k0..=k1]
-                        .iter()
-                        .map(|&i| [branch[i].re, branch[i].im])
-                        .collect();
-                    let mid = 0.5 * (locus.loads[i0] + locus.loads[i1]);
-                    plot_ui.line(
-                        Line::new("", points)
-                            .color(load_color(mid, min, max))
-                            .width(2.0 * theme.stroke_scale),
-                    );
-                }
-            }
-            let now: PlotPoints<'_> = current.iter().map(|z| [z.re, z.im]).collect();
-            plot_ui.points(
-                Points::new("predicted now", now)
-                    .radius(6.0 * theme.stroke_scale)
-                    .color(theme.now)
-                    .filled(true),
-            );
-            if let Some(measured) = measured {
-                let points: PlotPoints<'_> = measured.iter().map(|z| [z.re, z.im]).collect();
-                plot_ui.points(
-                    Points::new("measured from the run", points)
-                        .radius(9.0 * theme.stroke_scale)
-                        .color(theme.measured)
-                        .filled(false),
+        .default_y_bounds(-1.15 * extent, 1.15 * extent);
+    refit_if(axes(plot, "Re λ (1/s)", "Im λ (rad/s)"), refit).show(ui, |plot_ui| {
+        plot_ui.vline(
+            VLine::new("", 0.0)
+                .color(theme.axis)
+                .width(2.0 * theme.stroke_scale),
+        );
+        if let Some(other) = overlay {
+            for branch in &other.locus.branches {
+                let points: PlotPoints<'_> = branch.iter().map(|z| [z.re, z.im]).collect();
+                plot_ui.line(
+                    Line::new("", points)
+                        .color(theme.overlay)
+                        .width(1.5 * theme.stroke_scale),
                 );
             }
-        });
+        }
+        let shown = drawn_samples(locus);
+        let n = shown.len();
+        for branch in &locus.branches {
+            for band in 0..COLOR_BANDS {
+                let (k0, k1) = (
+                    band * (n - 1) / COLOR_BANDS,
+                    ((band + 1) * (n - 1) / COLOR_BANDS).min(n - 1),
+                );
+                if k1 <= k0 {
+                    continue;
+                }
+                let (i0, i1) = (shown[k0], shown[k1]);
+                let points: PlotPoints<'_> = shown[k0..=k1]
+                    .iter()
+                    .map(|&i| [branch[i].re, branch[i].im])
+                    .collect();
+                let mid = 0.5 * (locus.loads[i0] + locus.loads[i1]);
+                plot_ui.line(
+                    Line::new("", points)
+                        .color(load_color(mid, min, max))
+                        .width(2.0 * theme.stroke_scale),
+                );
+            }
+        }
+        let now: PlotPoints<'_> = current.iter().map(|z| [z.re, z.im]).collect();
+        plot_ui.points(
+            Points::new("", now)
+                .radius(6.0 * theme.stroke_scale)
+                .color(theme.now)
+                .filled(true),
+        );
+        if let Some(measured) = measured {
+            let points: PlotPoints<'_> = measured.iter().map(|z| [z.re, z.im]).collect();
+            plot_ui.points(
+                Points::new("", points)
+                    .radius(9.0 * theme.stroke_scale)
+                    .color(theme.measured)
+                    .filled(false),
+            );
+        }
+    });
 }
 
 /// Re(lambda) or Im(lambda) of every branch against the load, with the
 /// stability ranges shaded and a cursor at the current load.
+#[expect(clippy::too_many_arguments, reason = "one plot's inputs")]
 pub fn versus_load_ui(
     ui: &mut egui::Ui,
     locus: &Locus,
-    overlay: Option<&Locus>,
+    overlay: Option<&Overlay>,
     ranges: &[(f64, f64, State)],
     load: f64,
     imaginary: bool,
+    refit: bool,
     theme: &Theme,
 ) {
     let label = if imaginary {
@@ -157,50 +160,48 @@ pub fn versus_load_ui(
         locus.loads.first().copied().unwrap_or(0.0),
         locus.loads.last().copied().unwrap_or(1.0),
     );
-    Plot::new(label)
-        .x_axis_label("p = P l/k")
-        .y_axis_label(label)
-        // The locus's range, also when the load is beyond it.
+    // The locus's range, also when the load is beyond it.
+    let plot = Plot::new(label)
         .default_x_bounds(min, max)
-        .default_y_bounds(-1.1 * extent, 1.1 * extent)
-        .show(ui, |plot_ui| {
-            for &(start, end, state) in ranges {
-                let color = theme.state_color(state).gamma_multiply(0.18);
-                plot_ui.span(Span::new(state.name(), start..=end).fill(color));
+        .default_y_bounds(-1.1 * extent, 1.1 * extent);
+    refit_if(axes(plot, "p = P l/k", label), refit).show(ui, |plot_ui| {
+        for &(start, end, state) in ranges {
+            let color = theme.state_color(state).gamma_multiply(0.18);
+            plot_ui.span(Span::new(state.name(), start..=end).fill(color));
+        }
+        // The overlay behind, the current model in front.
+        let layers = overlay
+            .map(|o| (&o.locus, theme.overlay))
+            .into_iter()
+            .chain([(locus, theme.text)]);
+        for (shown, color) in layers {
+            let samples = drawn_samples(shown);
+            for branch in &shown.branches {
+                let points: PlotPoints<'_> = samples
+                    .iter()
+                    .map(|&i| {
+                        let z = branch[i];
+                        [shown.loads[i], if imaginary { z.im } else { z.re }]
+                    })
+                    .collect();
+                plot_ui.line(
+                    Line::new("", points)
+                        .color(color)
+                        .width(1.5 * theme.stroke_scale),
+                );
             }
-            // The overlay behind, the current model in front.
-            let layers = overlay
-                .map(|o| (o, theme.overlay))
-                .into_iter()
-                .chain([(locus, theme.text)]);
-            for (shown, color) in layers {
-                let samples = drawn_samples(shown);
-                for branch in &shown.branches {
-                    let points: PlotPoints<'_> = samples
-                        .iter()
-                        .map(|&i| {
-                            let z = branch[i];
-                            [shown.loads[i], if imaginary { z.im } else { z.re }]
-                        })
-                        .collect();
-                    plot_ui.line(
-                        Line::new("", points)
-                            .color(color)
-                            .width(1.5 * theme.stroke_scale),
-                    );
-                }
-            }
-            plot_ui.vline(
-                VLine::new("load", load)
-                    .color(theme.load_line)
-                    .width(2.0 * theme.stroke_scale),
-            );
-        });
+        }
+        plot_ui.vline(
+            VLine::new("load", load)
+                .color(theme.load_line)
+                .width(2.0 * theme.stroke_scale),
+        );
+    });
 }
 
 /// The run's recent past: the angles and delta against time, the energies,
 /// and a phase portrait of rod 2.
-pub fn histories_ui(ui: &mut egui::Ui, history: &History, theme: &Theme) {
+pub fn histories_ui(ui: &mut egui::Ui, history: &History, refit: bool, theme: &Theme) {
     let samples: Vec<_> = history.thinned(1500).collect();
     let series = |f: &dyn Fn(&crate::sim::Observables) -> f64| -> PlotPoints<'_> {
         samples.iter().map(|o| [o.t_secs, f(o)]).collect()
@@ -209,47 +210,36 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, theme: &Theme) {
     ui.horizontal(|ui| {
         ui.vertical(|ui| {
             ui.allocate_ui(vec2(0.62 * width, 0.5 * height - 4.0), |ui| {
-                Plot::new("angles")
-                    .x_axis_label("t (s)")
-                    .y_axis_label("rad")
-                    .legend(Legend::default())
-                    .show(ui, |plot_ui| {
-                        plot_ui
-                            .line(Line::new("φ1", series(&|o| o.phi1_rad)).color(theme.series[0]));
-                        plot_ui
-                            .line(Line::new("φ2", series(&|o| o.phi2_rad)).color(theme.series[1]));
-                        plot_ui
-                            .line(Line::new("δ", series(&|o| o.delta_rad)).color(theme.series[2]));
-                    });
+                let plot = Plot::new("angles").legend(Legend::default());
+                refit_if(axes(plot, "t (s)", "rad"), refit).show(ui, |plot_ui| {
+                    plot_ui.line(Line::new("φ1", series(&|o| o.phi1_rad)).color(theme.series[0]));
+                    plot_ui.line(Line::new("φ2", series(&|o| o.phi2_rad)).color(theme.series[1]));
+                    plot_ui.line(Line::new("δ", series(&|o| o.delta_rad)).color(theme.series[2]));
+                });
             });
             ui.allocate_ui(vec2(0.62 * width, 0.5 * height - 4.0), |ui| {
-                Plot::new("energy")
-                    .x_axis_label("t (s)")
-                    .y_axis_label("J, W")
-                    .legend(Legend::default())
-                    .show(ui, |plot_ui| {
-                        plot_ui.line(
-                            Line::new("kinetic + spring energy", series(&|o| o.energy_j()))
-                                .color(theme.series[3]),
-                        );
-                        plot_ui.line(
-                            Line::new("power from the band", series(&|o| o.band_power_w))
-                                .color(theme.series[4]),
-                        );
-                    });
+                let plot = Plot::new("energy").legend(Legend::default());
+                refit_if(axes(plot, "t (s)", "J, W"), refit).show(ui, |plot_ui| {
+                    plot_ui.line(
+                        Line::new("kinetic + spring energy", series(&|o| o.energy_j()))
+                            .color(theme.series[3]),
+                    );
+                    plot_ui.line(
+                        Line::new("power from the band", series(&|o| o.band_power_w))
+                            .color(theme.series[4]),
+                    );
+                });
             });
         });
         ui.allocate_ui(vec2(ui.available_width(), height), |ui| {
-            Plot::new("phase portrait")
-                .x_axis_label("φ2 (rad)")
-                .y_axis_label("φ2' (rad/s)")
-                .show(ui, |plot_ui| {
-                    let points: PlotPoints<'_> = samples
-                        .iter()
-                        .map(|o| [o.phi2_rad, o.phi2_dot_rad_per_s])
-                        .collect();
-                    plot_ui.line(Line::new("rod 2", points).color(theme.series[5]));
-                });
+            let plot = Plot::new("phase portrait");
+            refit_if(axes(plot, "φ2 (rad)", "φ2' (rad/s)"), refit).show(ui, |plot_ui| {
+                let points: PlotPoints<'_> = samples
+                    .iter()
+                    .map(|o| [o.phi2_rad, o.phi2_dot_rad_per_s])
+                    .collect();
+                plot_ui.line(Line::new("rod 2", points).color(theme.series[5]));
+            });
         });
     });
 }

@@ -308,8 +308,10 @@ fn notes(painter: &egui::Painter, theme: &Theme, rect: Rect, status: Status, sti
     }
 }
 
-/// The band: a strip under the tip's reach with marks moving toward -x at V,
-/// and an arrow saying which way it goes.
+/// The band: under the whole disc the tip can reach (the model's band is
+/// everywhere under the roller, so the roller never leaves it, even with the
+/// column folded back), with marks moving toward -x at V and an arrow
+/// saying which way it goes.
 fn band(
     painter: &egui::Painter,
     theme: &Theme,
@@ -320,7 +322,7 @@ fn band(
 ) {
     let s = theme.stroke_scale;
     let to = |x, y| view.to(x, y);
-    let (x0, x1) = (0.15 * reach, reach + margin);
+    let (x0, x1) = (-reach - 0.5 * margin, reach + margin);
     let (y0, y1) = (-reach - 0.5 * margin, reach + 0.5 * margin);
     painter.rect_filled(Rect::from_two_pos(to(x0, y0), to(x1, y1)), 4.0, theme.band);
     let spacing = 0.08 * reach;

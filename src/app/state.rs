@@ -4,7 +4,9 @@
 
 use std::collections::VecDeque;
 
-use crate::analysis::{AffinePencil, AnalysisError, C64, Locus, Spectrum, locus};
+use crate::analysis::{
+    AffinePencil, AnalysisError, C64, Locus, Spectrum, Transition, critical_loads_along, locus,
+};
 use crate::model::{Assignment, Axis, Key, Model, ModelError, PresetId, apply_assignments};
 use crate::sim::{
     DEFAULT_STEP_SECS, EngineKind, Observables, SimError, Simulation, Status, initial_state,
@@ -43,6 +45,8 @@ pub struct Overlay {
     /// The group `a` the locus was computed with.
     a: f64,
     pub locus: Locus,
+    /// Its critical loads along the slider's range.
+    pub transitions: Vec<Transition>,
 }
 
 /// Why the overlay could not be drawn.
@@ -488,7 +492,7 @@ impl AppState {
             return;
         };
         let a = self.group_a();
-        let build = || -> Result<Locus, OverlayError> {
+        let build = || -> Result<(Locus, Vec<Transition>), OverlayError> {
             let mut model = id.model();
             apply_assignments(
                 &mut model,
@@ -498,14 +502,17 @@ impl AppState {
                 }],
             )?;
             let pencil = AffinePencil::new(&model)?;
-            Ok(locus(&pencil, 0.0, LOAD_MAX_P, LOCUS_SAMPLES)?)
+            let locus = locus(&pencil, 0.0, LOAD_MAX_P, LOCUS_SAMPLES)?;
+            let transitions = critical_loads_along(&pencil, &locus)?;
+            Ok((locus, transitions))
         };
         match build() {
-            Ok(locus) => {
+            Ok((locus, transitions)) => {
                 self.overlay = Some(Overlay {
                     preset: id,
                     a,
                     locus,
+                    transitions,
                 });
             }
             Err(error) => {

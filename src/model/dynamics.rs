@@ -1,7 +1,7 @@
 //! The full nonlinear equations of motion (physics.md section 3) as a pure
 //! function state -> state derivative, with the roller's Coulomb friction.
 
-use nalgebra::{SVector, Vector2};
+use nalgebra::{Matrix2, SVector, Vector2};
 
 use super::params::{Column, Load, Model, Roller};
 
@@ -155,22 +155,12 @@ pub fn joint_torques_nm(column: &Column, x: &StateVec) -> [f64; 2] {
 /// state that starts consistent stays so.
 #[must_use]
 pub fn state_derivative(model: &Model, x: &StateVec) -> StateVec {
-    let inertia = model.inertia();
     let (phi1, phi2, phi1_dot, phi2_dot) = (x[0], x[1], x[3], x[4]);
+    let [q1, q2, q3] = tip_load(model, x).generalized_n_m;
+    let [phi1_ddot, phi2_ddot] = column_accelerations(model, x, [q1, q2]);
+    let inertia = model.inertia();
     let d = phi2 - phi1;
     let (sin_d, cos_d) = d.sin_cos();
-    let [q1, q2, q3] = tip_load(model, x).generalized_n_m;
-    // The torque at A acts on rod 2, and back on rod 1.
-    let [torque_o, torque_a] = joint_torques_nm(&model.column, x);
-    let b = inertia.b_kg_m2;
-    let rhs1 = q1 + b * sin_d * phi2_dot * phi2_dot + torque_o - torque_a;
-    let rhs2 = q2 - b * sin_d * phi1_dot * phi1_dot + torque_a;
-    // 2x2 mass matrix [[A, B cos d], [B cos d, C]]; its determinant is at
-    // least A C - B^2 > 0, which `Model::validate` guarantees.
-    let (a, c, b_cos) = (inertia.a_kg_m2, inertia.c_kg_m2, b * cos_d);
-    let det = a * c - b_cos * b_cos;
-    let phi1_ddot = (c * rhs1 - b_cos * rhs2) / det;
-    let phi2_ddot = (a * rhs2 - b_cos * rhs1) / det;
     let (psi_dot, psi_ddot) = match model.roller() {
         None => (0.0, 0.0),
         Some(roller) if roller.mass_kg > 0.0 => (x[5], q3 / inertia.spin_kg_m2),
@@ -187,6 +177,55 @@ pub fn state_derivative(model: &Model, x: &StateVec) -> StateVec {
         }
     };
     StateVec::from([phi1_dot, phi2_dot, psi_dot, phi1_ddot, phi2_ddot, psi_ddot])
+}
+
+/// The rods' angular accelerations `(phi1'', phi2'')` under the joints'
+/// springs and dampers and the generalized tip forces `q` (eqs 29-30).
+fn column_accelerations(model: &Model, x: &StateVec, [q1, q2]: [f64; 2]) -> [f64; 2] {
+    let inertia = model.inertia();
+    let (phi1_dot, phi2_dot) = (x[3], x[4]);
+    let (sin_d, cos_d) = (x[1] - x[0]).sin_cos();
+    // The torque at A acts on rod 2, and back on rod 1.
+    let [torque_o, torque_a] = joint_torques_nm(&model.column, x);
+    let b = inertia.b_kg_m2;
+    let rhs1 = q1 + b * sin_d * phi2_dot * phi2_dot + torque_o - torque_a;
+    let rhs2 = q2 - b * sin_d * phi1_dot * phi1_dot + torque_a;
+    // 2x2 mass matrix [[A, B cos d], [B cos d, C]]; its determinant is at
+    // least A C - B^2 > 0, which `Model::validate` guarantees.
+    let (a, c, b_cos) = (inertia.a_kg_m2, inertia.c_kg_m2, b * cos_d);
+    let det = a * c - b_cos * b_cos;
+    [
+        (c * rhs1 - b_cos * rhs2) / det,
+        (a * rhs2 - b_cos * rhs1) / det,
+    ]
+}
+
+/// How the tip's velocity answers a force at the tip, for a step of `dt`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TipResponse {
+    /// `J M^-1 J^T`: the change of the tip's velocity per unit impulse
+    /// there, in (m/s) / (N s), with `J` the tip's Jacobian `[l1 t1, l2 t2]`.
+    pub mobility: Matrix2<f64>,
+    /// The rates `(phi1', phi2')` after `dt` with no tip load (explicit).
+    pub free_rates: [f64; 2],
+}
+
+/// The tip's response in state `x` over a step `dt` (for a friction force
+/// that is solved implicitly with the rods' motion).
+#[must_use]
+pub fn tip_response(model: &Model, x: &StateVec, dt: f64) -> TipResponse {
+    let inertia = model.inertia();
+    let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
+    let b_cos = inertia.b_kg_m2 * (x[1] - x[0]).cos();
+    let mass = Matrix2::new(inertia.a_kg_m2, b_cos, b_cos, inertia.c_kg_m2);
+    let jacobian = Matrix2::from_columns(&[l1 * normal(x[0]), l2 * normal(x[1])]);
+    // `Model::validate` keeps the mass matrix positive definite.
+    let inverse = mass.try_inverse().unwrap_or_else(Matrix2::zeros);
+    let [a1, a2] = column_accelerations(model, x, [0.0, 0.0]);
+    TipResponse {
+        mobility: jacobian * inverse * jacobian.transpose(),
+        free_rates: [x[3] + dt * a1, x[4] + dt * a2],
+    }
 }
 
 /// Kinetic energy (13) and spring energy (14), in joules.

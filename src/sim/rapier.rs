@@ -6,8 +6,8 @@
 use rapier2d::prelude::*;
 
 use crate::model::{
-    Column, Load, Model, Roller, SLIP_REGULARIZATION_M_PER_S, StateVec, joint_torques_nm, tip_load,
-    tip_m,
+    Column, Load, Model, Roller, SLIP_REGULARIZATION_M_PER_S, StateVec, friction, joint_torques_nm,
+    tip_load, tip_m, tip_response,
 };
 
 /// The rapier world of one column, and the roller's spin (f64, ours).
@@ -197,7 +197,11 @@ impl RapierEngine {
                 vec2(f.x, f.y)
             }
             Load::Roller(roller) => {
-                let (force, psi_dot) = roller_step(&model.column, &roller, &x, dt);
+                let (force, psi_dot) = if friction_is_stiff(model, &roller, &now, dt) {
+                    implicit_roller_step(model, &roller, &now, dt)
+                } else {
+                    roller_step(&model.column, &roller, &x, dt)
+                };
                 self.psi_dot_rad_per_s = psi_dot;
                 vec2(force[0], force[1])
             }
@@ -216,6 +220,91 @@ impl RapierEngine {
         self.psi_rad += dt * self.psi_dot_rad_per_s;
         Some(())
     }
+}
+
+/// Whether the friction's answer to the slip it causes within one step is
+/// too strong for an explicit force: `dt mu R |W| / |w| > 1/2`, with `W`
+/// the contact's mobility (the rods' and the spin's) and `w` the slip. Near
+/// stick (|w| small) an explicit friction reverses the slip every step and
+/// the force chatters; there the step is taken implicitly.
+fn friction_is_stiff(model: &Model, roller: &Roller, x: &StateVec, dt: f64) -> bool {
+    let response = tip_response(model, x, dt);
+    let spin_inertia = roller.spin_inertia_kg_m2(model.column.rod2.length_m);
+    let spin_mobility = if spin_inertia > 0.0 {
+        roller.radius_m * roller.radius_m / spin_inertia
+    } else {
+        0.0
+    };
+    // The largest eigenvalue of the symmetric mobility is at most its trace.
+    let mobility = response.mobility.trace() + spin_mobility;
+    let slip = friction(&model.column, roller, x).slip_m_per_s.norm();
+    dt * roller.friction_force_n() * mobility > 0.5 * slip
+}
+
+/// One backward Euler step of the friction together with the rods' and the
+/// spin's velocities: with `w_free` the slip at the step's end without
+/// friction and `W` the contact's mobility, the slip `w` at the end solves
+/// `w + dt mu R W w / s = w_free` with `s = max(|w|, eps)`. For a given `s`
+/// that is a 2x2 linear system, and `|w(s)|` grows with `s`, so the root in
+/// `s` is found by bisection: the friction stops the slip (the viscous
+/// regime below `eps`) or slides with it, and never reverses it. A massless
+/// roller slips only along rod 2. Returns the force `(Fx, Fy)` and the new
+/// spin rate.
+fn implicit_roller_step(model: &Model, roller: &Roller, x: &StateVec, dt: f64) -> ([f64; 2], f64) {
+    let column = &model.column;
+    let (l1, l2, r) = (column.rod1.length_m, column.rod2.length_m, roller.radius_m);
+    let response = tip_response(model, x, dt);
+    let [v1, v2] = response.free_rates;
+    let (phi1, phi2) = (x[0], x[1]);
+    let t1 = nalgebra::Vector2::new(-phi1.sin(), phi1.cos());
+    let (e2, t2) = (
+        nalgebra::Vector2::new(phi2.cos(), phi2.sin()),
+        nalgebra::Vector2::new(-phi2.sin(), phi2.cos()),
+    );
+    let band = nalgebra::Vector2::new(roller.band_speed_m_per_s, 0.0);
+    let spin_inertia = roller.spin_inertia_kg_m2(l2);
+    let without_spin = l1 * v1 * t1 + l2 * v2 * t2 + band;
+    let (w_free, mobility) = if spin_inertia > 0.0 {
+        (
+            without_spin - r * x[5] * t2,
+            response.mobility + (r * r / spin_inertia) * t2 * t2.transpose(),
+        )
+    } else {
+        // The massless roller's spin cancels the slip across rod 2.
+        let along = e2.dot(&(response.mobility * e2));
+        (without_spin.dot(&e2) * e2, along * e2 * e2.transpose())
+    };
+    let mu_r = roller.friction_force_n();
+    let impulse = dt * mu_r;
+    let eps = SLIP_REGULARIZATION_M_PER_S;
+    let slip_at = |s: f64| {
+        (nalgebra::Matrix2::identity() + (impulse / s) * mobility)
+            .try_inverse()
+            .map_or(w_free, |inverse| inverse * w_free)
+    };
+    let s = if slip_at(eps).norm() <= eps {
+        eps
+    } else {
+        let (mut lo, mut hi) = (eps, w_free.norm().max(eps));
+        for _ in 0..64 {
+            let mid = 0.5 * (lo + hi);
+            if mid < slip_at(mid).norm() {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
+    };
+    let force = -mu_r / s * slip_at(s);
+    let psi_dot = if spin_inertia > 0.0 {
+        x[5] - dt * r * t2.dot(&force) / spin_inertia
+    } else {
+        // The slaved spin of the rods' velocities at the step's end.
+        let mobility_force = response.mobility * force * dt;
+        (without_spin + mobility_force).dot(&t2) / r
+    };
+    ([force.x, force.y], psi_dot)
 }
 
 /// One implicit (backward Euler) step of the roller's spin, and the friction

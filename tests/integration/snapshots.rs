@@ -144,3 +144,42 @@ fn a_refused_field_and_a_panel_without_analysis() {
     results.extend(harness.take_snapshot_results());
     results.unwrap();
 }
+
+/// The roller's root locus with the ideal follower (uniform rods) drawn
+/// behind it, as the paper's Fig. 8 compares them: the legend above the
+/// plots names the overlay and lists its own critical loads, the uniform
+/// rods' closed forms `2 (9 -/+ sqrt 7) / 5`.
+#[test]
+fn the_overlay_has_a_legend_with_its_own_critical_loads() {
+    use zieglerlab::analysis::State;
+    use zieglerlab::model::PresetId;
+    let mut app = app_at(preset_settings("roller"), 1.0, 0);
+    app.state_mut().set_overlay(Some(PresetId::UniformRods));
+    let overlay = app.state().overlay().unwrap();
+    let closed_form = [
+        (
+            2.0 * (9.0 - 7f64.sqrt()) / 5.0,
+            State::Stable,
+            State::Flutter,
+        ),
+        (
+            2.0 * (9.0 + 7f64.sqrt()) / 5.0,
+            State::Flutter,
+            State::Divergence,
+        ),
+    ];
+    assert_eq!(overlay.transitions.len(), closed_form.len());
+    for (shown, (load, from, to)) in overlay.transitions.iter().zip(closed_form) {
+        assert!(
+            (shown.load - load).abs() < 1e-9,
+            "{shown} against p = {load}"
+        );
+        assert_eq!((shown.from, shown.to), (from, to));
+    }
+    let mut harness = Harness::builder()
+        .wgpu()
+        .with_size([960.0, 520.0])
+        .build_ui(|ui| app.panel_ui(ui, Panel::Tab(Tab::Locus)));
+    harness.run_steps(4);
+    harness.snapshot("locus_roller_with_overlay");
+}

@@ -7,7 +7,6 @@ use super::number_field::{NumberFields, refusal_ui};
 use crate::app::View;
 use crate::app::state::{AppState, LOAD_MAX_P};
 use crate::app::theme::Theme;
-use crate::format::load_text;
 use crate::model::Key;
 
 /// The load's number field (the slider beside it applies live).
@@ -71,15 +70,7 @@ impl View for LoadSection {
             Stroke::new(3.0, theme.now),
         );
         for t in &analysis.transitions {
-            ui.label(
-                RichText::new(format!(
-                    "p = {}: {} -> {}",
-                    load_text(t.load),
-                    t.from.name(),
-                    t.to.name()
-                ))
-                .color(theme.state_color(t.to)),
-            );
+            ui.label(RichText::new(t.to_string()).color(theme.state_color(t.to)));
         }
         if let Some(warning) = &analysis.warning {
             ui.colored_label(

@@ -4,15 +4,22 @@
 use eframe::egui;
 
 use crate::app::View;
+use crate::app::plot_frame::Fit;
 use crate::app::plots::histories_ui;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 
+/// The plots follow the run until they are zoomed or panned; "fit" (or a
+/// double-click) makes them follow it again.
 #[derive(Default)]
-pub struct HistoriesTab;
+pub struct HistoriesTab {
+    fit: Fit<()>,
+}
 
 impl View for HistoriesTab {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
-        histories_ui(ui, state.history(), theme);
+        self.fit.bar_ui(ui);
+        let refit = self.fit.refit(());
+        histories_ui(ui, state.history(), refit, theme);
     }
 }

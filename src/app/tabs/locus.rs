@@ -1,15 +1,24 @@
 //! The root locus tab: the eigenvalues in the complex plane beside their
-//! real and imaginary parts against the load, the current load marked.
+//! real and imaginary parts against the load, the current load marked, and
+//! the overlay's critical loads when one is drawn.
 
 use eframe::egui::{self, vec2};
 
+use crate::analysis::Locus;
 use crate::app::View;
+use crate::app::plot_frame::{Fit, Swatch, legend_row};
 use crate::app::plots::{root_locus_ui, versus_load_ui};
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
+use crate::app::theme::load_color;
+use crate::format::number_text;
+use crate::model::{Model, PresetId};
 
+/// The plots refit when the parameters (at p = 0) or the overlay change.
 #[derive(Default)]
-pub struct LocusTab;
+pub struct LocusTab {
+    fit: Fit<(Model, Option<PresetId>)>,
+}
 
 impl View for LocusTab {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
@@ -23,8 +32,13 @@ impl View for LocusTab {
             );
             return;
         };
+        self.fit.bar_ui(ui);
+        let overlay = state.overlay();
+        legend_ui(ui, state, &analysis.locus, theme);
+        let refit = self
+            .fit
+            .refit((state.model().at_load(0.0), overlay.map(|o| o.preset)));
         let load = state.model().load_p();
-        let overlay = state.overlay().map(|o| &o.locus);
         let current = state.current_eigenvalues();
         let width = ui.available_width();
         let height = ui.available_height();
@@ -36,6 +50,7 @@ impl View for LocusTab {
                     overlay,
                     &current,
                     state.measured(),
+                    refit,
                     theme,
                 );
             });
@@ -49,6 +64,7 @@ impl View for LocusTab {
                             &analysis.ranges,
                             load,
                             imaginary,
+                            refit,
                             theme,
                         );
                     });
@@ -56,4 +72,54 @@ impl View for LocusTab {
             });
         });
     }
+}
+
+/// The legend of the tab's plots, above them: what the colours, markers
+/// and lines are, and the overlay's own critical loads.
+fn legend_ui(ui: &mut egui::Ui, state: &AppState, locus: &Locus, theme: &Theme) {
+    let (min, max) = (
+        locus.loads.first().copied().unwrap_or(0.0),
+        locus.loads.last().copied().unwrap_or(1.0),
+    );
+    let scale = (0..8)
+        .map(|i| load_color(min + (max - min) * f64::from(i) / 7.0, min, max))
+        .collect();
+    let mut entries = vec![
+        (
+            Swatch::Scale(scale),
+            format!(
+                "branch colour: the load, p = {} to {}",
+                number_text(min),
+                number_text(max)
+            ),
+        ),
+        (
+            Swatch::Dot(theme.now),
+            "eigenvalues at the current load".to_owned(),
+        ),
+    ];
+    if state.measured().is_some() {
+        entries.push((
+            Swatch::Ring(theme.measured),
+            "measured from the run".to_owned(),
+        ));
+    }
+    entries.push((Swatch::Line(theme.load_line), "current load".to_owned()));
+    if let Some(overlay) = state.overlay() {
+        let loads = if overlay.transitions.is_empty() {
+            "no change of stability up to the slider's end".to_owned()
+        } else {
+            overlay
+                .transitions
+                .iter()
+                .map(ToString::to_string)
+                .collect::<Vec<_>>()
+                .join(";  ")
+        };
+        entries.push((
+            Swatch::Line(theme.overlay),
+            format!("overlay {}: {loads}", overlay.preset),
+        ));
+    }
+    legend_row(ui, &entries);
 }

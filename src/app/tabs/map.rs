@@ -12,6 +12,7 @@ use egui_plot::{Line, Plot, PlotImage, PlotPoint, PlotPoints, Points};
 
 use crate::analysis::{MapSpec, Row, RowResult, State, Transition, compute_map};
 use crate::app::View;
+use crate::app::plot_frame::{Fit, SingleClick, axes, refit_if};
 use crate::app::state::{AppState, LOAD_MAX_P};
 use crate::app::theme::Theme;
 use crate::format::number_text;
@@ -110,11 +111,18 @@ impl Drop for Job {
     }
 }
 
+/// What the map's view shows: the second axis, its range, the load range.
+type MapAxes = (String, (f64, f64), (f64, f64));
+
 /// The panel's choices and its current job.
 pub struct MapPanel {
     axis: Option<Axis>,
     range: (f64, f64),
     job: Option<Job>,
+    /// The view refits when the axes change: (second axis, its range, loads).
+    fit: Fit<MapAxes>,
+    /// A click sets the load and the parameter unless it was a double-click.
+    click: SingleClick<Pick>,
 }
 
 impl Default for MapPanel {
@@ -123,6 +131,8 @@ impl Default for MapPanel {
             axis: None,
             range: (0.0, 1.0),
             job: None,
+            fit: Fit::default(),
+            click: SingleClick::default(),
         }
     }
 }
@@ -277,7 +287,22 @@ impl MapPanel {
             job.stale = false;
         }
         let texture = job.texture.as_ref()?;
-        map_plot_ui(ui, job, texture, model, theme)
+        self.fit.bar_ui(ui);
+        let spec = &job.spec;
+        let refit = self.fit.refit((
+            spec.axis.name().to_owned(),
+            spec.axis_range,
+            spec.load_range,
+        ));
+        let (click, double) = map_plot_ui(ui, job, texture, model, refit, theme);
+        let now_secs = ui.input(|i| i.time);
+        let window_secs = ui.ctx().options(|o| o.input_options.max_double_click_delay);
+        let pick = self.click.update(click, double, now_secs, window_secs);
+        if self.click.waiting() {
+            ui.ctx()
+                .request_repaint_after(std::time::Duration::from_secs_f64(window_secs));
+        }
+        pick
     }
 
     fn controls_ui(&mut self, ui: &mut egui::Ui, model: &Model) {
@@ -419,13 +444,16 @@ fn boundaries(rows: &[Option<RowResult>]) -> Vec<Vec<[f64; 2]>> {
     curves.into_iter().map(|(_, points)| points).collect()
 }
 
+/// The map with its boundaries and the current point. Returns a click's
+/// pick this frame, and whether the frame completed a double-click.
 fn map_plot_ui(
     ui: &mut egui::Ui,
     job: &Job,
     texture: &TextureHandle,
     model: &Model,
+    refit: bool,
     theme: &Theme,
-) -> Option<Pick> {
+) -> (Option<Pick>, bool) {
     let spec = &job.spec;
     let (p0, p1) = spec.load_range;
     let (y0, y1) = spec.axis_range;
@@ -435,48 +463,49 @@ fn map_plot_ui(
         (y1 - y0) / (spec.values.max(2) - 1) as f64,
     );
     let axis_name = spec.axis.name();
-    let response = Plot::new("stability map")
-        .x_axis_label("p = P l/k")
-        .y_axis_label(axis_name)
+    let plot = Plot::new("stability map")
         .default_x_bounds(p0 - 0.5 * cell_x, p1 + 0.5 * cell_x)
-        .default_y_bounds(y0 - 0.5 * cell_y, y1 + 0.5 * cell_y)
-        .allow_drag(false)
-        .allow_zoom(false)
-        .allow_scroll(false)
-        .show(ui, |plot_ui| {
-            #[expect(clippy::cast_possible_truncation, reason = "plot sizes")]
-            let size = [(p1 - p0 + cell_x) as f32, (y1 - y0 + cell_y) as f32];
-            plot_ui.image(PlotImage::new(
-                "map",
-                texture.id(),
-                PlotPoint::new(0.5 * (p0 + p1), 0.5 * (y0 + y1)),
-                size,
-            ));
-            for curve in boundaries(&job.rows) {
-                if curve.len() > 1 {
-                    plot_ui.line(
-                        Line::new("boundary", PlotPoints::from(curve))
-                            .color(theme.text)
-                            .width(1.5 * theme.stroke_scale),
-                    );
-                }
+        .default_y_bounds(y0 - 0.5 * cell_y, y1 + 0.5 * cell_y);
+    let response = refit_if(axes(plot, "p = P l/k", axis_name), refit).show(ui, |plot_ui| {
+        #[expect(clippy::cast_possible_truncation, reason = "plot sizes")]
+        let size = [(p1 - p0 + cell_x) as f32, (y1 - y0 + cell_y) as f32];
+        plot_ui.image(PlotImage::new(
+            "map",
+            texture.id(),
+            PlotPoint::new(0.5 * (p0 + p1), 0.5 * (y0 + y1)),
+            size,
+        ));
+        for curve in boundaries(&job.rows) {
+            if curve.len() > 1 {
+                plot_ui.line(
+                    Line::new("boundary", PlotPoints::from(curve))
+                        .color(theme.text)
+                        .width(1.5 * theme.stroke_scale),
+                );
             }
-            let here = [model.load_p(), spec.axis.get(model)];
-            plot_ui.points(
-                Points::new("now", vec![here])
-                    .radius(5.0 * theme.stroke_scale)
-                    .color(theme.now)
-                    .filled(true),
-            );
-            plot_ui.pointer_coordinate()
-        });
-    let clicked = response.response.clicked();
-    let point = response.inner?;
-    (clicked && (y0..=y1).contains(&point.y) && point.x >= 0.0).then(|| Pick {
+        }
+        let here = [model.load_p(), spec.axis.get(model)];
+        plot_ui.points(
+            Points::new("now", vec![here])
+                .radius(5.0 * theme.stroke_scale)
+                .color(theme.now)
+                .filled(true),
+        );
+        plot_ui.pointer_coordinate()
+    });
+    let (clicked, double) = (
+        response.response.clicked(),
+        response.response.double_clicked(),
+    );
+    let pick = response
+        .inner
+        .filter(|point| clicked && (y0..=y1).contains(&point.y) && (p0..=p1).contains(&point.x));
+    let pick = pick.map(|point| Pick {
         load: point.x,
         axis: spec.axis.clone(),
         value: point.y,
-    })
+    });
+    (pick, double)
 }
 
 /// The map as a picture for a file (`zieglerlab map --format png`): the

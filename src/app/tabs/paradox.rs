@@ -7,10 +7,11 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, mpsc};
 
 use eframe::egui;
-use egui_plot::{HLine, Legend, Line, Plot, PlotPoints, Points};
+use egui_plot::{Corner, HLine, Legend, Line, Plot, PlotPoints, Points, log_grid_spacer};
 
 use crate::analysis::{first_instability, flutter_load_damped};
 use crate::app::View;
+use crate::app::plot_frame::{Fit, axes, refit_if};
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::number_text;
@@ -26,6 +27,10 @@ const LEVELS: [f64; 3] = [0.1, 0.01, 1e-4];
 const RATIO_DECADES: (f64, f64) = (-2.0, 2.0);
 /// log10 of the roller's mass ratio nu shown.
 const NU_DECADES: (f64, f64) = (-6.0, 1.0);
+/// Curves closer than this, relative to their loads, are one curve.
+const SAME_CURVE: f64 = 1e-6;
+/// The plot's height over its highest point: room for the legend above the data.
+const HEADROOM: f64 = 1.5;
 
 /// What the explorer draws: curves of the first critical load against
 /// log10 of the swept ratio, and the undamped (or massless) reference.
@@ -38,24 +43,67 @@ pub struct Curves {
     pub note: Option<String>,
 }
 
+impl Curves {
+    /// Curves with `reference`; with a note instead when no line has a point.
+    fn new(
+        x_label: &'static str,
+        lines: Vec<(String, Vec<[f64; 2]>)>,
+        failures: Vec<Option<String>>,
+        reference: Option<(String, f64)>,
+    ) -> Self {
+        let note = lines
+            .iter()
+            .all(|(_, points)| points.is_empty())
+            .then(|| empty_reason(failures));
+        Self {
+            x_label,
+            lines,
+            reference,
+            note,
+        }
+    }
+}
+
 /// The points `(log10 x, first critical load)` of `load_at(x)` over
-/// `decades`, leaving out values where the column never loses stability.
-/// Stops computing (the rest left out) once `cancel` is set.
-fn curve(
+/// `decades`, leaving out values where the column never loses stability or
+/// cannot be analysed (the first such reason is returned with them). Stops
+/// computing (the rest left out) once `cancel` is set.
+fn curve<E: std::fmt::Display>(
     decades: (f64, f64),
     cancel: &AtomicBool,
-    load_at: impl Fn(f64) -> Option<f64>,
-) -> Vec<[f64; 2]> {
+    load_at: impl Fn(f64) -> Result<Option<f64>, E>,
+) -> (Vec<[f64; 2]>, Option<String>) {
     #[expect(clippy::cast_precision_loss, reason = "point counts")]
     let step = (decades.1 - decades.0) / (POINTS - 1) as f64;
-    (0..POINTS)
+    let mut failure = None;
+    let points = (0..POINTS)
         .take_while(|_| !cancel.load(Ordering::Relaxed))
         .filter_map(|i| {
             #[expect(clippy::cast_precision_loss, reason = "point counts")]
             let e = decades.0 + step * i as f64;
-            load_at(10f64.powf(e)).map(|p| [e, p])
+            match load_at(10f64.powf(e)) {
+                Ok(load) => load.map(|p| [e, p]),
+                Err(error) => {
+                    failure.get_or_insert_with(|| error.to_string());
+                    None
+                }
+            }
         })
-        .collect()
+        .collect();
+    (points, failure)
+}
+
+/// Why a plot with no point at all is empty: the first failure, or that
+/// no point loses stability below [`LOAD_MAX`].
+fn empty_reason(failures: impl IntoIterator<Item = Option<String>>) -> String {
+    failures.into_iter().flatten().next().map_or_else(
+        || {
+            format!(
+                "No curve to draw: at every ratio shown the column keeps its stability up to p = {LOAD_MAX}."
+            )
+        },
+        |error| format!("No curve to draw: {error}."),
+    )
 }
 
 /// The explorer's curves for `model` (its load and the swept parameters are
@@ -70,23 +118,24 @@ pub fn curves(model: &Model, cancel: &AtomicBool) -> Curves {
                 .apply(model, 0.0)
                 .ok()
                 .and_then(|m| first(&m));
-            let lines = LEVELS
+            let (lines, failures): (Vec<_>, Vec<_>) = LEVELS
                 .iter()
                 .map(|&level| {
-                    let points = curve(RATIO_DECADES, cancel, |ratio| {
+                    let (points, failure) = curve(RATIO_DECADES, cancel, |ratio| {
                         flutter_load_damped(model, ratio, level, LOAD_MAX)
-                            .ok()
-                            .flatten()
                     });
-                    (format!("damping g2 = {}", number_text(level)), points)
+                    (
+                        (format!("damping g2 = {}", number_text(level)), points),
+                        failure,
+                    )
                 })
-                .collect();
-            Curves {
-                x_label: "c1/c2",
+                .unzip();
+            Curves::new(
+                "c1/c2",
                 lines,
-                reference: undamped.map(|p| ("undamped".to_owned(), p)),
-                note: None,
-            }
+                failures,
+                undamped.map(|p| ("undamped".to_owned(), p)),
+            )
         }
         Load::Roller(roller) => {
             let v = roller.band_speed_m_per_s;
@@ -94,24 +143,28 @@ pub fn curves(model: &Model, cancel: &AtomicBool) -> Curves {
                 .apply(model, 0.0)
                 .ok()
                 .and_then(|m| first(&m));
-            let lines = [0.1 * v, v, 10.0 * v]
+            let (lines, failures): (Vec<_>, Vec<_>) = [0.1 * v, v, 10.0 * v]
                 .iter()
-                .filter(|&&speed| speed > 0.0)
                 .map(|&speed| {
-                    let points = curve(NU_DECADES, cancel, |nu| {
-                        let m = Axis::Key(Key::V).apply(model, speed).ok()?;
-                        let m = Axis::Key(Key::Nu).apply(&m, nu).ok()?;
-                        first(&m)
+                    let (points, failure) = curve(NU_DECADES, cancel, |nu| {
+                        let m = Axis::Key(Key::V)
+                            .apply(model, speed)
+                            .map_err(|e| e.to_string())?;
+                        let m = Axis::Key(Key::Nu)
+                            .apply(&m, nu)
+                            .map_err(|e| e.to_string())?;
+                        first_instability(&m, LOAD_MAX).map_err(|e| e.to_string())
                     });
-                    (format!("V = {} m/s", number_text(speed)), points)
+                    ((format!("V = {} m/s", number_text(speed)), points), failure)
                 })
-                .collect();
-            Curves {
-                x_label: "nu = m3/m",
+                .unzip();
+            let lines = merge_if_one_curve(lines, "the first critical load does not depend on V");
+            Curves::new(
+                "nu = m3/m",
                 lines,
-                reference: massless.map(|p| ("nu = 0: the ideal follower".to_owned(), p)),
-                note: None,
-            }
+                failures,
+                massless.map(|p| ("nu = 0: the ideal follower".to_owned(), p)),
+            )
         }
         Load::Dead { .. } => Curves {
             note: Some(
@@ -121,6 +174,30 @@ pub fn curves(model: &Model, cancel: &AtomicBool) -> Curves {
             ..Curves::default()
         },
     }
+}
+
+/// `lines`, or the one curve they all draw (the same points, loads within
+/// [`SAME_CURVE`]) under a name that lists them and says `why`.
+fn merge_if_one_curve(
+    lines: Vec<(String, Vec<[f64; 2]>)>,
+    why: &str,
+) -> Vec<(String, Vec<[f64; 2]>)> {
+    let Some((_, first)) = lines.first() else {
+        return lines;
+    };
+    let same = |points: &Vec<[f64; 2]>| {
+        points.len() == first.len()
+            && points.iter().zip(first).all(|(a, b)| {
+                a[0] == b[0] && (a[1] - b[1]).abs() <= SAME_CURVE * a[1].abs().max(b[1].abs())
+            })
+    };
+    if lines.len() < 2 || first.is_empty() || !lines.iter().all(|(_, points)| same(points)) {
+        return lines;
+    }
+    let names: Vec<&str> = lines.iter().map(|(name, _)| name.as_str()).collect();
+    let name = format!("{}: one curve, {why}", names.join(", "));
+    let points = first.clone();
+    vec![(name, points)]
 }
 
 /// The curves of one model, computed or being computed. Dropping the job
@@ -145,6 +222,8 @@ pub struct ParadoxPanel {
     job: Option<Job>,
     /// The current model's own point, and the model it is for.
     current: Option<(Model, Option<[f64; 2]>)>,
+    /// Refits when the curves of other parameters arrive.
+    fit: Fit<Model>,
 }
 
 /// The model the curves depend on: the swept parameters at a fixed value.
@@ -250,43 +329,58 @@ impl ParadoxPanel {
             return;
         };
         if let Some(note) = &curves.note {
-            ui.label(note);
+            ui.colored_label(theme.warning, note);
             return;
         }
         ui.label(match model.load {
             Load::Roller(_) => "The load at which the roller column first loses stability, against the roller's mass, for three band speeds (the slip damping is mu R / V). As nu -> 0 it goes to zero, not to the massless roller's (ideal follower's) value.",
             _ => "The flutter load with joint dampers c1 = (c1/c2) c2 as the damping level g2 = c2 / sqrt(k m l^2) goes to zero: the limit depends on the ratio and lies below the undamped load (Ziegler's paradox).",
         });
+        self.fit.bar_ui(ui);
+        let refit = self.fit.refit(job.key);
         let palette = [theme.series[0], theme.series[3], theme.series[4]];
-        Plot::new("paradox")
-            .legend(Legend::default())
-            .x_axis_label(format!("{} (log scale)", curves.x_label))
-            .y_axis_label("first critical load p")
-            .x_axis_formatter(|mark, _| number_text(10f64.powf(mark.value)))
-            .show(ui, |plot_ui| {
-                if let Some((label, p)) = &curves.reference {
-                    plot_ui.hline(
-                        HLine::new(label.clone(), *p)
-                            .color(theme.text)
-                            .width(1.5 * theme.stroke_scale),
-                    );
-                }
-                for ((label, points), color) in curves.lines.iter().zip(palette.iter().cycle()) {
-                    plot_ui.line(
-                        Line::new(label.clone(), PlotPoints::from(points.clone()))
-                            .color(*color)
-                            .width(2.0 * theme.stroke_scale),
-                    );
-                }
-                if let Some(point) = here {
-                    plot_ui.points(
-                        Points::new("this model", vec![point])
-                            .radius(5.0 * theme.stroke_scale)
-                            .color(theme.now)
-                            .filled(true),
-                    );
-                }
-            });
+        let highest = curves
+            .lines
+            .iter()
+            .flat_map(|(_, points)| points.iter().map(|p| p[1]))
+            .chain(curves.reference.as_ref().map(|(_, p)| *p))
+            .fold(0.0, f64::max);
+        let plot = Plot::new("paradox")
+            .legend(Legend::default().position(Corner::LeftTop))
+            .include_y(0.0)
+            .include_y(HEADROOM * highest);
+        let plot = axes(
+            plot,
+            format!("{} (log scale)", curves.x_label),
+            "first critical load p",
+        )
+        // Decades on the log axis, not 1-2-5 steps of the exponent.
+        .x_grid_spacer(log_grid_spacer(10))
+        .x_axis_formatter(|mark, _| number_text(10f64.powf(mark.value)));
+        refit_if(plot, refit).show(ui, |plot_ui| {
+            if let Some((label, p)) = &curves.reference {
+                plot_ui.hline(
+                    HLine::new(label.clone(), *p)
+                        .color(theme.text)
+                        .width(1.5 * theme.stroke_scale),
+                );
+            }
+            for ((label, points), color) in curves.lines.iter().zip(palette.iter().cycle()) {
+                plot_ui.line(
+                    Line::new(label.clone(), PlotPoints::from(points.clone()))
+                        .color(*color)
+                        .width(2.0 * theme.stroke_scale),
+                );
+            }
+            if let Some(point) = here {
+                plot_ui.points(
+                    Points::new("this model", vec![point])
+                        .radius(5.0 * theme.stroke_scale)
+                        .color(theme.now)
+                        .filled(true),
+                );
+            }
+        });
     }
 }
 
@@ -297,5 +391,43 @@ impl View for ParadoxPanel {
             .and_then(crate::app::analysis_cache::Analysis::first_instability);
         let model = *state.model();
         self.draw(ui, &model, known, theme);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::PresetId;
+
+    fn roller_with(key: Key, value: f64) -> Model {
+        Axis::Key(key)
+            .apply(&PresetId::Roller.model(), value)
+            .unwrap()
+    }
+
+    /// The roller's first critical load is the same at every band speed
+    /// (computed, not assumed): the three curves are drawn as one, and the
+    /// legend says so; curves that differ stay apart.
+    #[test]
+    fn the_roller_s_band_speeds_draw_one_curve_and_say_why() {
+        let curves = curves(&PresetId::Roller.model(), &AtomicBool::new(false));
+        assert_eq!(curves.lines.len(), 1, "{:?}", curves.lines);
+        let (name, points) = &curves.lines[0];
+        assert!(name.contains("does not depend on V"), "{name}");
+        assert_eq!(points.len(), POINTS);
+        let apart = vec![
+            ("a".to_owned(), vec![[0.0, 1.0], [1.0, 2.0]]),
+            ("b".to_owned(), vec![[0.0, 1.0], [1.0, 2.001]]),
+        ];
+        assert_eq!(merge_if_one_curve(apart, "same").len(), 2);
+    }
+
+    /// A stopped band has no linear analysis: the panel says so instead of
+    /// claiming that the column never loses stability.
+    #[test]
+    fn a_stopped_band_leaves_the_plot_empty_with_the_reason() {
+        let curves = curves(&roller_with(Key::V, 0.0), &AtomicBool::new(false));
+        let note = curves.note.unwrap();
+        assert!(note.contains("V = 0"), "{note}");
     }
 }
