@@ -19,9 +19,11 @@ pub const VIEW_HINT: &str = "drag: pan · Ctrl+scroll: zoom · double-click: fit
 const VIEW_HINT_MORE: &str = "Show all the data again (as a double-click on a plot does).\n\
      Drag or scroll to pan, Ctrl+scroll to zoom, drag a box with the right button to zoom into it.";
 
-/// The grid's three levels: the smallest steps of 1, 2 or 5 times a power of
-/// ten at least `input`'s minimum (the plot crate's default has only powers
-/// of ten, so a short axis spanning 1.8 shows the single tick "0").
+/// The grid's three levels: the smallest step of 1, 2 or 5 times a power of
+/// ten at least `input`'s minimum, and two coarser steps that it divides
+/// (1-5-10, 2-10-20, 5-10-50), so the labels of two levels never collide.
+/// The plot crate's default has only powers of ten, so a short axis
+/// spanning 1.8 showed the single tick "0".
 #[must_use]
 #[expect(
     clippy::needless_pass_by_value,
@@ -29,18 +31,22 @@ const VIEW_HINT_MORE: &str = "Show all the data again (as a double-click on a pl
 )]
 pub fn nice_steps(input: GridInput) -> [f64; 3] {
     let base = input.base_step_size.max(f64::MIN_POSITIVE);
-    let decade = 10f64.powf(base.log10().floor());
-    let mut steps = [1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0]
+    let mut decade = 10f64.powf(base.log10().floor());
+    let mantissa = [1_u8, 2, 5, 10]
         .into_iter()
-        .map(|m| m * decade)
-        .filter(|&step| step >= base);
-    let first = steps.next().unwrap_or(10.0 * decade);
-    let second = steps.next().unwrap_or(2.0 * first);
-    let third = steps.next().unwrap_or(2.0 * second);
-    [first, second, third]
+        .find(|&m| f64::from(m) * decade >= base)
+        .unwrap_or(10);
+    if mantissa == 10 {
+        decade *= 10.0;
+    }
+    match mantissa {
+        2 => [2.0 * decade, 10.0 * decade, 20.0 * decade],
+        5 => [5.0 * decade, 10.0 * decade, 50.0 * decade],
+        _ => [decade, 5.0 * decade, 10.0 * decade],
+    }
 }
 
-/// `plot` with labelled axes on a 1-2-5 grid whose ticks carry the digits
+/// `plot` with labelled axes on a 1-2-5 grid (see [`nice_steps`]) whose ticks carry the digits
 /// their spacing needs ("0.25", "8e-8") and are labelled whenever they fit.
 pub fn axes(
     plot: Plot<'_>,
@@ -233,11 +239,23 @@ mod tests {
                 base_step_size,
             })
         };
-        assert_eq!(steps(0.06), [0.1, 0.2, 0.5]);
-        assert_eq!(steps(0.3), [0.5, 1.0, 2.0]);
-        assert_eq!(steps(1.0), [1.0, 2.0, 5.0]);
-        let [a, b, c] = steps(7e-9);
-        assert!((a - 1e-8).abs() < 1e-20 && (b - 2e-8).abs() < 1e-20 && (c - 5e-8).abs() < 1e-20);
+        let close =
+            |a: [f64; 3], b: [f64; 3]| a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-9 * y);
+        for (base, expected) in [
+            (0.06, [0.1, 0.5, 1.0]),
+            (0.15, [0.2, 1.0, 2.0]),
+            (0.3, [0.5, 1.0, 5.0]),
+            (1.0, [1.0, 5.0, 10.0]),
+            (7e-9, [1e-8, 5e-8, 1e-7]),
+        ] {
+            let got = steps(base);
+            assert!(close(got, expected), "{base}: {got:?}");
+            // Each level divides the next: labels of two levels never collide.
+            for pair in got.windows(2) {
+                let ratio = pair[1] / pair[0];
+                assert!((ratio - ratio.round()).abs() < 1e-9, "{got:?}");
+            }
+        }
     }
 
     #[test]

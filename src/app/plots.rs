@@ -3,10 +3,10 @@
 //! ranges marked (the paper's Figs 3 and 8).
 
 use eframe::egui::{self, vec2};
-use egui_plot::{Legend, Line, Plot, PlotPoints, Points, Span, VLine};
+use egui_plot::{Line, Plot, PlotPoints, Points, Span, VLine};
 
 use super::history::History;
-use super::plot_frame::{axes, refit_if};
+use super::plot_frame::{Swatch, axes, legend_row, refit_if};
 use super::state::Overlay;
 use super::theme::{Theme, load_color};
 use crate::analysis::{C64, Locus, State};
@@ -210,7 +210,18 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, refit: bool, theme: &T
     ui.horizontal(|ui| {
         ui.vertical(|ui| {
             ui.allocate_ui(vec2(0.62 * width, 0.5 * height - 4.0), |ui| {
-                let plot = Plot::new("angles").legend(Legend::default());
+                legend_row(
+                    ui,
+                    &[
+                        (Swatch::Line(theme.series[0]), "φ1".to_owned()),
+                        (Swatch::Line(theme.series[1]), "φ2".to_owned()),
+                        (
+                            Swatch::Line(theme.series[2]),
+                            "δ: the band force's angle from rod 2".to_owned(),
+                        ),
+                    ],
+                );
+                let plot = Plot::new("angles");
                 refit_if(axes(plot, "t (s)", "rad"), refit).show(ui, |plot_ui| {
                     plot_ui.line(Line::new("φ1", series(&|o| o.phi1_rad)).color(theme.series[0]));
                     plot_ui.line(Line::new("φ2", series(&|o| o.phi2_rad)).color(theme.series[1]));
@@ -218,7 +229,20 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, refit: bool, theme: &T
                 });
             });
             ui.allocate_ui(vec2(0.62 * width, 0.5 * height - 4.0), |ui| {
-                let plot = Plot::new("energy").legend(Legend::default());
+                legend_row(
+                    ui,
+                    &[
+                        (
+                            Swatch::Line(theme.series[3]),
+                            "kinetic + spring energy".to_owned(),
+                        ),
+                        (
+                            Swatch::Line(theme.series[4]),
+                            "power from the band".to_owned(),
+                        ),
+                    ],
+                );
+                let plot = Plot::new("energy");
                 refit_if(axes(plot, "t (s)", "J, W"), refit).show(ui, |plot_ui| {
                     plot_ui.line(
                         Line::new("kinetic + spring energy", series(&|o| o.energy_j()))

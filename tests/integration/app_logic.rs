@@ -215,7 +215,12 @@ fn a_column_too_stiff_for_rapier_switches_engines_and_says_so() {
 /// A run that blows up stops with a status and keeps its last finite state.
 #[test]
 fn a_blow_up_stops_with_a_status_and_finite_data() {
-    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    let mut app = ZieglerApp::new(Settings {
+        preset: PresetId::Ziegler1952,
+        model: PresetId::Ziegler1952.model(),
+        ..Settings::default()
+    })
+    .unwrap();
     app.state_mut().set_parameter(Key::Load, 1e6).unwrap();
     for _ in 0..120 {
         app.advance(1.0 / 60.0);

@@ -22,7 +22,7 @@ pub const CLI_EXTREMES: &[Cli] = &[
         &[
             "simulate",
             "--preset",
-            "roller",
+            "ziegler-1952",
             "--set",
             "load=1e6",
             "--duration",

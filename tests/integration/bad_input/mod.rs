@@ -192,7 +192,9 @@ fn the_analysis_answers_or_says_why_not() {
 type RunEnd = Result<&'static str, &'static str>;
 
 const RUNS: &[(&str, &[&str], EngineKind, RunEnd)] = &[
-    ("roller", &["load=1e6"], EngineKind::Rapier, Ok("too fast")),
+    // The band's friction mu R = P holds the contact in stick and drags the
+    // column at the band's pace: rapier's implicit friction follows that.
+    ("roller", &["load=1e6"], EngineKind::Rapier, Ok("running")),
     (
         "roller",
         &["load=1e6"],
