@@ -10,7 +10,14 @@ use crate::format::tick_text;
 /// The gap between x tick labels, in points, below which they are hidden
 /// and above which they are fully drawn (the plot crate's default, 60 to 80,
 /// leaves a 300-point load axis with the single label "0").
-const X_LABEL_SPACING: std::ops::RangeInclusive<f32> = 24.0..=40.0;
+const X_LABEL_SPACING: std::ops::RangeInclusive<f32> = 30.0..=45.0;
+/// The same for y tick labels (the default, 20 to 30, stacks them densely).
+const Y_LABEL_SPACING: std::ops::RangeInclusive<f32> = 28.0..=40.0;
+
+/// The gap between grid lines, in points, below which they are hidden and
+/// above which they are fully drawn (the plot crate's default starts at 8:
+/// a line every 8 points is texture, not a scale, and costs a frame time).
+const GRID_SPACING: std::ops::RangeInclusive<f32> = 16.0..=300.0;
 
 /// How to move about in a plot (the plot crate's bindings).
 pub const VIEW_HINT: &str = "drag: pan · Ctrl+scroll: zoom · double-click: fit";
@@ -53,7 +60,8 @@ pub fn axes(
     x_label: impl Into<WidgetText>,
     y_label: impl Into<WidgetText>,
 ) -> Plot<'_> {
-    plot.x_grid_spacer(uniform_grid_spacer(nice_steps))
+    plot.grid_spacing(GRID_SPACING)
+        .x_grid_spacer(uniform_grid_spacer(nice_steps))
         .y_grid_spacer(uniform_grid_spacer(nice_steps))
         .custom_x_axes(vec![
             AxisHints::new_x()
@@ -64,7 +72,8 @@ pub fn axes(
         .custom_y_axes(vec![
             AxisHints::new_y()
                 .label(y_label)
-                .formatter(|mark, _| tick_text(mark.value, mark.step_size)),
+                .formatter(|mark, _| tick_text(mark.value, mark.step_size))
+                .label_spacing(Y_LABEL_SPACING),
         ])
 }
 

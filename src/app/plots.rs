@@ -16,7 +16,7 @@ const COLOR_BANDS: usize = 24;
 
 /// Evenly spaced samples the plots draw at most (a plot is a few hundred
 /// pixels wide); the refinement's samples are all drawn.
-const DRAWN_GRID_SAMPLES: usize = 500;
+const DRAWN_GRID_SAMPLES: usize = 300;
 
 /// The indices of the locus samples a plot draws: every k-th evenly spaced
 /// one, so that at most [`DRAWN_GRID_SAMPLES`] are, every sample the
