@@ -108,12 +108,13 @@ pub fn load_text(load: f64) -> String {
     }
 }
 
-/// An axis tick at `value` on a grid of spacing `step`: as many decimals as
-/// the step needs when the step is 1e-3 or more and the value below 1e5
-/// ("0.25", "-1", "0"), exponent form otherwise ("8e-8", "1.2e-3"), the same
-/// form for every tick of an axis, so a tick label never runs to ten digits.
+/// An axis tick at `value` on a grid of spacing `step`, on an axis that
+/// spans `span`: plain with as many decimals as the step needs when the axis
+/// spans 0.01 to 1e5 ("0.25", "-1", "0"), in exponent form otherwise
+/// ("8e-8", "1.2e-3"), so every tick of an axis has the same form and no
+/// label runs to ten digits.
 #[must_use]
-pub fn tick_text(value: f64, step: f64) -> String {
+pub fn tick_text(value: f64, step: f64, span: f64) -> String {
     let step = step.abs();
     if !value.is_finite() || !step.is_finite() || step == 0.0 {
         return format!("{value}");
@@ -126,7 +127,7 @@ pub fn tick_text(value: f64, step: f64) -> String {
     // 0.09999999 from asking for one more).
     #[expect(clippy::cast_possible_truncation, reason = "a small exponent")]
     let step_exponent = (step.log10() + 1e-6).floor() as i32;
-    if value.abs() < 1e5 && step >= 1e-3 {
+    if (1e-2..1e5).contains(&span.abs()) {
         format!(
             "{value:.*}",
             (-step_exponent).max(0).unsigned_abs() as usize
@@ -194,21 +195,23 @@ mod tests {
 
     #[test]
     fn ticks_have_the_digits_their_step_needs() {
-        for (value, step, text) in [
-            (0.0, 1.0, "0"),
-            (1e-17, 0.1, "0"),
-            (3.0, 1.0, "3"),
-            (-0.2, 0.1, "-0.2"),
-            (0.3, 0.099_999_999, "0.3"),
-            (0.001, 0.001, "0.001"),
-            (9e-4, 1e-4, "9e-4"),
-            (0.0012, 1e-4, "1.2e-3"),
-            (8e-8, 1e-8, "8e-8"),
-            (1.5e-7, 1e-8, "1.5e-7"),
-            (2e5, 1e5, "2e5"),
-            (-1.0, 0.5, "-1.0"),
+        for (value, step, span, text) in [
+            (0.0, 1.0, 8.0, "0"),
+            (1e-17, 0.1, 1.0, "0"),
+            (3.0, 1.0, 8.0, "3"),
+            (-0.2, 0.1, 1.0, "-0.2"),
+            (0.3, 0.099_999_999, 1.0, "0.3"),
+            (0.005, 0.005, 0.05, "0.005"),
+            // An axis from 8e-4 to 1.4e-3: every tick in exponent form.
+            (9e-4, 1e-4, 6e-4, "9e-4"),
+            (0.001, 0.001, 6e-4, "1e-3"),
+            (0.0012, 1e-4, 6e-4, "1.2e-3"),
+            (8e-8, 1e-8, 9e-8, "8e-8"),
+            (1.5e-7, 1e-8, 9e-8, "1.5e-7"),
+            (2e5, 1e5, 1e6, "2e5"),
+            (-1.0, 0.5, 3.0, "-1.0"),
         ] {
-            assert_eq!(tick_text(value, step), text, "{value} on {step}");
+            assert_eq!(tick_text(value, step, span), text, "{value} on {step}");
         }
     }
 

@@ -3,7 +3,7 @@
 //! and pan, and a refit when what the plots show changes).
 
 use eframe::egui::{self, Color32, Sense, Stroke, WidgetText, vec2};
-use egui_plot::{AxisHints, GridInput, Plot, uniform_grid_spacer};
+use egui_plot::{AxisHints, GridInput, GridMark, Plot};
 
 use crate::format::tick_text;
 
@@ -11,8 +11,8 @@ use crate::format::tick_text;
 /// and above which they are fully drawn (the plot crate's default, 60 to 80,
 /// leaves a 300-point load axis with the single label "0").
 const X_LABEL_SPACING: std::ops::RangeInclusive<f32> = 30.0..=45.0;
-/// The same for y tick labels (the default, 20 to 30, stacks them densely).
-const Y_LABEL_SPACING: std::ops::RangeInclusive<f32> = 28.0..=40.0;
+/// The same for y tick labels (text is less tall than wide).
+const Y_LABEL_SPACING: std::ops::RangeInclusive<f32> = 22.0..=30.0;
 
 /// The gap between grid lines, in points, below which they are hidden and
 /// above which they are fully drawn (the plot crate's default starts at 8:
@@ -26,34 +26,50 @@ pub const VIEW_HINT: &str = "drag: pan · Ctrl+scroll: zoom · double-click: fit
 const VIEW_HINT_MORE: &str = "Show all the data again (as a double-click on a plot does).\n\
      Drag or scroll to pan, Ctrl+scroll to zoom, drag a box with the right button to zoom into it.";
 
-/// The grid's three levels: the smallest step of 1, 2 or 5 times a power of
-/// ten at least `input`'s minimum, and two coarser steps that it divides
-/// (1-5-10, 2-10-20, 5-10-50), so the labels of two levels never collide.
-/// The plot crate's default has only powers of ten, so a short axis
-/// spanning 1.8 showed the single tick "0".
+/// The grid's steps, finest first: 1, 5, 10, 50 and 100 times the power of
+/// ten just below `base_step` (the plot crate's minimum). Each divides the
+/// next, so the labels of two levels never collide, and some level is
+/// always 5 to 50 times the minimum: a short axis gets labelled ticks (the
+/// plot crate's default has only three powers of ten, and an axis spanning
+/// 1.8 showed the single tick "0").
 #[must_use]
+pub fn grid_steps(base_step: f64) -> [f64; 5] {
+    let decade = 10f64.powf(base_step.max(f64::MIN_POSITIVE).log10().floor());
+    [1.0, 5.0, 10.0, 50.0, 100.0].map(|m| m * decade)
+}
+
+/// The grid marks of `input`'s range: every multiple of each of
+/// [`grid_steps`], each value once, with the coarsest step it is on (which
+/// sets how strong its line and label are drawn).
 #[expect(
     clippy::needless_pass_by_value,
     reason = "the signature the plot crate's grid spacer calls"
 )]
-pub fn nice_steps(input: GridInput) -> [f64; 3] {
-    let base = input.base_step_size.max(f64::MIN_POSITIVE);
-    let mut decade = 10f64.powf(base.log10().floor());
-    let mantissa = [1_u8, 2, 5, 10]
-        .into_iter()
-        .find(|&m| f64::from(m) * decade >= base)
-        .unwrap_or(10);
-    if mantissa == 10 {
-        decade *= 10.0;
+fn grid_marks(input: GridInput) -> Vec<GridMark> {
+    let steps = grid_steps(input.base_step_size);
+    let (lo, hi) = input.bounds;
+    let mut marks = Vec::new();
+    for (level, &step) in steps.iter().enumerate() {
+        // A multiple of the next step is that step's mark, not this one's.
+        let ratio = steps.get(level + 1).map(|next| (next / step).round());
+        #[expect(clippy::cast_possible_truncation, reason = "tick indices of one plot")]
+        let (first, last) = ((lo / step).ceil() as i64, (hi / step).floor() as i64);
+        for i in first..=last {
+            #[expect(clippy::cast_precision_loss, reason = "tick indices of one plot")]
+            let index = i as f64;
+            if ratio.is_some_and(|r| index.rem_euclid(r) == 0.0) {
+                continue;
+            }
+            marks.push(GridMark {
+                value: index * step,
+                step_size: step,
+            });
+        }
     }
-    match mantissa {
-        2 => [2.0 * decade, 10.0 * decade, 20.0 * decade],
-        5 => [5.0 * decade, 10.0 * decade, 50.0 * decade],
-        _ => [decade, 5.0 * decade, 10.0 * decade],
-    }
+    marks
 }
 
-/// `plot` with labelled axes on a 1-2-5 grid (see [`nice_steps`]) whose ticks carry the digits
+/// `plot` with labelled axes on a 1-2-5 grid (see [`grid_steps`]) whose ticks carry the digits
 /// their spacing needs ("0.25", "8e-8") and are labelled whenever they fit.
 pub fn axes(
     plot: Plot<'_>,
@@ -61,18 +77,22 @@ pub fn axes(
     y_label: impl Into<WidgetText>,
 ) -> Plot<'_> {
     plot.grid_spacing(GRID_SPACING)
-        .x_grid_spacer(uniform_grid_spacer(nice_steps))
-        .y_grid_spacer(uniform_grid_spacer(nice_steps))
+        .x_grid_spacer(grid_marks)
+        .y_grid_spacer(grid_marks)
         .custom_x_axes(vec![
             AxisHints::new_x()
                 .label(x_label)
-                .formatter(|mark, _| tick_text(mark.value, mark.step_size))
+                .formatter(|mark, range| {
+                    tick_text(mark.value, mark.step_size, range.end() - range.start())
+                })
                 .label_spacing(X_LABEL_SPACING),
         ])
         .custom_y_axes(vec![
             AxisHints::new_y()
                 .label(y_label)
-                .formatter(|mark, _| tick_text(mark.value, mark.step_size))
+                .formatter(|mark, range| {
+                    tick_text(mark.value, mark.step_size, range.end() - range.start())
+                })
                 .label_spacing(Y_LABEL_SPACING),
         ])
 }
@@ -241,30 +261,30 @@ mod tests {
     }
 
     #[test]
-    fn grid_steps_are_one_two_five_times_a_power_of_ten() {
-        let steps = |base_step_size| {
-            nice_steps(GridInput {
-                bounds: (0.0, 1.0),
-                base_step_size,
-            })
-        };
-        let close =
-            |a: [f64; 3], b: [f64; 3]| a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-9 * y);
-        for (base, expected) in [
-            (0.06, [0.1, 0.5, 1.0]),
-            (0.15, [0.2, 1.0, 2.0]),
-            (0.3, [0.5, 1.0, 5.0]),
-            (1.0, [1.0, 5.0, 10.0]),
-            (7e-9, [1e-8, 5e-8, 1e-7]),
-        ] {
-            let got = steps(base);
-            assert!(close(got, expected), "{base}: {got:?}");
-            // Each level divides the next: labels of two levels never collide.
-            for pair in got.windows(2) {
-                let ratio = pair[1] / pair[0];
-                assert!((ratio - ratio.round()).abs() < 1e-9, "{got:?}");
-            }
+    fn grid_steps_nest_and_each_value_is_marked_once_on_its_coarsest_step() {
+        let close = |a: f64, b: f64| (a - b).abs() < 1e-9 * b.abs();
+        let steps = grid_steps(0.15);
+        for (got, want) in steps.iter().zip([0.1, 0.5, 1.0, 5.0, 10.0]) {
+            assert!(close(*got, want), "{steps:?}");
         }
+        assert!(close(grid_steps(7e-9)[0], 1e-9));
+        let marks = grid_marks(GridInput {
+            bounds: (-1.05, 2.0),
+            base_step_size: 0.15,
+        });
+        let at = |value: f64| {
+            let found: Vec<_> = marks
+                .iter()
+                .filter(|m| (m.value - value).abs() < 1e-9)
+                .collect();
+            assert_eq!(found.len(), 1, "{value}: {found:?}");
+            found[0].step_size
+        };
+        assert!(close(at(0.3), 0.1));
+        assert!(close(at(-0.5), 0.5));
+        assert!(close(at(1.0), 1.0));
+        assert!(close(at(0.0), 10.0), "zero is on every step");
+        assert_eq!(marks.len(), 31, "-1.0 to 2.0 in steps of 0.1");
     }
 
     #[test]

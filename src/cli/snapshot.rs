@@ -67,6 +67,11 @@ pub struct Args {
     /// Image size in pixels, `WIDTHxHEIGHT`.
     #[arg(long, default_value = "1280x800", allow_hyphen_values = true)]
     size: Size,
+    /// Pixels per point, 0.5 to 8: 2 draws the same layout as 1 with
+    /// twice as many pixels each way (text for a 4K slide: `--size
+    /// 3840x2160 --scale 3` lays out a 1280x720 window).
+    #[arg(long, default_value_t = 1.0)]
+    scale: f32,
     #[arg(long)]
     projector: bool,
     #[arg(long, value_enum, default_value_t = PanelArg::Window)]
@@ -77,6 +82,9 @@ pub struct Args {
 
 pub fn run(args: &Args) -> Result<()> {
     check_output(&args.out, true)?;
+    if !(args.scale.is_finite() && (0.5..=8.0).contains(&args.scale)) {
+        anyhow::bail!("scale = {}: must be 0.5 to 8 pixels per point", args.scale);
+    }
     let (name, model) = args.model.build()?;
     let time = args.time;
     if !(time.is_finite() && (0.0..=1.0e5).contains(&time)) {
@@ -110,23 +118,31 @@ pub fn run(args: &Args) -> Result<()> {
         app.complete_background_work();
     }
     let Size { width, height } = args.size;
-    let image = render(&mut app, panel, (f32::from(width), f32::from(height)))?;
+    let image = render(
+        &mut app,
+        panel,
+        (f32::from(width), f32::from(height)),
+        args.scale,
+    )?;
     write_png(&args.out, &image)
 }
 
-/// The picture of `panel` by wgpu, headless. A missing renderer (no Mesa, no
-/// GPU) panics inside the renderer's setup: that becomes one clear error.
+/// The picture of `panel` by wgpu, headless, `width` x `height` pixels at
+/// `scale` pixels per point. A missing renderer (no Mesa, no GPU) panics
+/// inside the renderer's setup: that becomes one clear error.
 fn render(
     app: &mut ZieglerApp,
     panel: Panel,
     (width, height): (f32, f32),
+    scale: f32,
 ) -> Result<image::RgbaImage> {
     let previous_hook = std::panic::take_hook();
     std::panic::set_hook(Box::new(|_| {}));
     let rendered = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
         let mut harness = egui_kittest::Harness::builder()
             .wgpu()
-            .with_size([width, height])
+            .with_size([width / scale, height / scale])
+            .with_pixels_per_point(scale)
             .build_ui(|ui| app.panel_ui(ui, panel));
         harness.run_steps(4);
         harness.render()

@@ -12,16 +12,20 @@ pub enum PresetId {
     MidpointMasses,
     Roller,
     RollerAsPrinted,
+    Tabletop,
+    TabletopRoller,
 }
 
 impl PresetId {
     /// Every preset, in the order of [`PRESETS`].
-    pub const ALL: [Self; 5] = [
+    pub const ALL: [Self; 7] = [
         Self::Ziegler1952,
         Self::UniformRods,
         Self::MidpointMasses,
         Self::Roller,
         Self::RollerAsPrinted,
+        Self::Tabletop,
+        Self::TabletopRoller,
     ];
 
     /// The preset's name, as typed.
@@ -33,6 +37,8 @@ impl PresetId {
             Self::MidpointMasses => "midpoint-masses",
             Self::Roller => "roller",
             Self::RollerAsPrinted => "roller-as-printed",
+            Self::Tabletop => "tabletop",
+            Self::TabletopRoller => "tabletop-roller",
         }
     }
 
@@ -103,7 +109,7 @@ impl Preset {
 }
 
 /// Every preset, in the order the UI and `zieglerlab presets` show them.
-pub const PRESETS: [Preset; 5] = [
+pub const PRESETS: [Preset; 7] = [
     Preset {
         id: PresetId::Ziegler1952,
         name: "ziegler-1952",
@@ -138,6 +144,20 @@ pub const PRESETS: [Preset; 5] = [
         source: "eq. 39, Fig. 8",
         description: "The roller model as printed in eq. (39): spin inertia multiplied by r/l2 (physics.md erratum); Fig. 8 parameters",
         build: roller_as_printed,
+    },
+    Preset {
+        id: PresetId::Tabletop,
+        name: "tabletop",
+        source: "lecture pace",
+        description: "A desk-sized column for a lecture: uniform rods of 25 cm and 100 g, springs of 0.0625 N m/rad (a = 10 1/s^2), ideal follower force; past p = 2.54 it flutters with a period of about 1.5 s",
+        build: tabletop,
+    },
+    Preset {
+        id: PresetId::TabletopRoller,
+        name: "tabletop-roller",
+        source: "lecture pace",
+        description: "The tabletop column pushed by a 10 g roller of radius 2.5 cm on a band at 0.1 m/s (nu = rho = mu = 0.1): a weak flutter from p = 0.024 that takes minutes to grow, a strong one near the ideal column's load",
+        build: tabletop_roller,
     },
 ];
 
@@ -229,6 +249,46 @@ fn roller() -> Model {
 
 fn roller_as_printed() -> Model {
     roller_with_spin(SpinInertia::AsPrinted)
+}
+
+/// The tabletop column: the uniform rods at a desk's scale, `a = k / (m l^2)
+/// = 10 1/s^2`, so its motion is `sqrt(10 / 0.1) = 10` times faster than
+/// the paper's (the eigenvalues scale with `sqrt(a)` at a fixed `p`).
+const TABLETOP_LENGTH_M: f64 = 0.25;
+const TABLETOP_MASS_KG: f64 = 0.1;
+const TABLETOP_STIFFNESS_NM_PER_RAD: f64 = 0.0625;
+
+fn tabletop_column() -> Column {
+    Column {
+        k1_nm_per_rad: TABLETOP_STIFFNESS_NM_PER_RAD,
+        k2_nm_per_rad: TABLETOP_STIFFNESS_NM_PER_RAD,
+        ..column(
+            Rod::uniform(TABLETOP_LENGTH_M, TABLETOP_MASS_KG),
+            Rod::uniform(TABLETOP_LENGTH_M, TABLETOP_MASS_KG),
+            0.0,
+        )
+    }
+}
+
+fn tabletop() -> Model {
+    follower(tabletop_column())
+}
+
+fn tabletop_roller() -> Model {
+    // The paper's groups nu = rho = mu = 0.1 at the desk's scale.
+    let mut model = Model {
+        column: tabletop_column(),
+        load: Load::Roller(Roller {
+            mass_kg: 0.1 * TABLETOP_MASS_KG,
+            radius_m: 0.1 * TABLETOP_LENGTH_M,
+            mu: 0.1,
+            normal_force_n: 0.0,
+            band_speed_m_per_s: 0.1,
+            spin: SpinInertia::Consistent,
+        }),
+    };
+    model.set_load_p(DEFAULT_LOAD_P);
+    model
 }
 
 #[cfg(test)]

@@ -183,3 +183,18 @@ fn the_load_field_applies_what_is_typed_on_enter() {
     }
     assert_eq!(app.settings().model.load_p(), 3.5);
 }
+
+/// The named speeds set the factor (simulated seconds per wall second);
+/// Normal is real time.
+#[test]
+fn slow_normal_and_fast_set_the_speed() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    for (name, speed) in [("Fast", 4.0), ("Slow", 0.25), ("Normal", 1.0)] {
+        {
+            let mut harness = harness(&mut app);
+            harness.get_by_label(name).click();
+            harness.run();
+        }
+        assert_eq!(app.settings().speed, speed, "{name}");
+    }
+}

@@ -12,6 +12,7 @@ mod damped_ziegler;
 mod eigen_solver;
 mod energy_balance;
 mod jacobian;
+mod lecture_pace;
 mod locus_tracking;
 mod massless_roller;
 mod properties;

@@ -10,6 +10,14 @@ use crate::app::theme::Theme;
 use crate::format::number_text;
 use crate::sim::Status;
 
+/// The named speeds, as in classroom simulations: simulated seconds per
+/// wall-clock second; Normal is real time.
+pub const PACES: [(&str, f64, &str); 3] = [
+    ("Slow", 0.25, "a quarter of real time"),
+    ("Normal", 1.0, "real time: one simulated second per second"),
+    ("Fast", 4.0, "four times real time"),
+];
+
 pub struct TimeSection;
 
 impl View for TimeSection {
@@ -24,12 +32,26 @@ impl View for TimeSection {
                 command.button(ui, state);
             }
         });
+        ui.horizontal(|ui| {
+            for (name, speed, tip) in PACES {
+                let chosen = state.settings().speed == speed;
+                if ui
+                    .selectable_label(chosen, name)
+                    .on_hover_text(tip)
+                    .clicked()
+                {
+                    state.set_speed(speed);
+                }
+            }
+        });
         let mut speed = state.settings().speed;
-        let response = ui.add(
-            egui::Slider::new(&mut speed, SPEED_RANGE)
-                .logarithmic(true)
-                .text("× speed"),
-        );
+        let response = ui
+            .add(
+                egui::Slider::new(&mut speed, SPEED_RANGE)
+                    .logarithmic(true)
+                    .text("× speed"),
+            )
+            .on_hover_text("simulated seconds per second of wall-clock time");
         if response.changed() {
             state.set_speed(speed);
         }
