@@ -2,6 +2,8 @@
 //! simulation, the analysis of the current parameters, the overlay and the
 //! notices, with the only ways to change them.
 
+mod ramp;
+
 use std::collections::VecDeque;
 
 use crate::analysis::{
@@ -11,6 +13,8 @@ use crate::model::{Assignment, Axis, Key, Model, ModelError, PresetId, apply_ass
 use crate::sim::{
     DEFAULT_STEP_SECS, EngineKind, Observables, SimError, Simulation, Status, initial_state,
 };
+
+pub use ramp::{RampRun, VISIBLE_FRACTION};
 
 use super::analysis_cache::{Analysis, LOCUS_SAMPLES};
 use super::history::History;
@@ -102,6 +106,8 @@ pub struct AppState {
     measured_at_secs: f64,
     /// A second model's locus drawn behind the current one (Fig. 8).
     overlay: Option<Overlay>,
+    /// The quasi-static load ramp, under way or finished.
+    ramp: Option<RampRun>,
 }
 
 impl AppState {
@@ -126,6 +132,7 @@ impl AppState {
             measured: None,
             measured_at_secs: f64::NEG_INFINITY,
             overlay: None,
+            ramp: None,
         };
         state.refresh_analysis();
         Ok(state)
@@ -238,6 +245,10 @@ impl AppState {
     /// kept to show beside the field until a value for it is taken (the
     /// other fields' refusals stay as they are).
     pub fn enter_parameter(&mut self, key: Key, value: f64) {
+        if key == Key::Load {
+            // The hand takes the load over from a ramp.
+            self.ramp = None;
+        }
         match self.set_parameter(key, value) {
             Ok(()) => self.clear_refusal(key),
             Err(why) => self.refuse(key, why.to_string()),
@@ -355,11 +366,14 @@ impl AppState {
         let steps = self
             .pace
             .steps(wall_secs, self.settings.speed, self.sim.step_secs());
+        let mut taken = 0_u32;
         for _ in 0..steps {
             if !self.take_step() {
                 break;
             }
+            taken += 1;
         }
+        self.follow_ramp(f64::from(taken) * self.sim.step_secs());
         self.refresh_measured();
     }
 

@@ -46,6 +46,13 @@ struct ModelArgs {
 }
 
 impl ModelArgs {
+    /// Whether a `--set` assigns `key`.
+    fn sets(&self, key: Key) -> bool {
+        self.set
+            .iter()
+            .any(|text| parse_assignment(text).is_ok_and(|a| a.key == key))
+    }
+
     /// The preset and its model with the `--set` overrides applied and
     /// validated. A key the preset does not have is named with the preset
     /// and the keys it has.

@@ -6,7 +6,8 @@ use std::io::Write;
 use anyhow::Result;
 use clap::ValueEnum;
 
-use zieglerlab::sim::{DEFAULT_STEP_SECS, Observables, Simulation, Status, initial_state};
+use zieglerlab::model::Key;
+use zieglerlab::sim::{DEFAULT_STEP_SECS, Observables, Ramp, Simulation, Status, initial_state};
 
 use super::{EngineArg, ModelArgs};
 
@@ -33,13 +34,24 @@ pub struct Args {
     /// Time step (and output interval), in s.
     #[arg(long, default_value_t = DEFAULT_STEP_SECS, allow_negative_numbers = true)]
     dt: f64,
+    /// A quasi-static load ramp, `FROM:TO:RATE` (loads p, RATE in p per
+    /// simulated second): the load starts at FROM, moves at RATE, stays at
+    /// TO; the CSV gains a `load` column.
+    #[arg(long, value_name = "FROM:TO:RATE")]
+    ramp: Option<Ramp>,
     #[arg(long, value_enum, default_value_t = Format::Csv)]
     format: Format,
 }
 
 pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     let Format::Csv = args.format;
-    let (_, model) = args.model.build()?;
+    let (_, mut model) = args.model.build()?;
+    if let Some(ramp) = &args.ramp {
+        if args.model.sets(Key::Load) {
+            anyhow::bail!("--ramp sets the load (from its FROM on): leave out --set load");
+        }
+        model = model.at_load(ramp.from_p);
+    }
     let (duration, perturb, dt) = (args.duration, args.perturb, args.dt);
     if !(duration.is_finite() && duration > 0.0) {
         anyhow::bail!("duration = {duration}: must be a positive number of seconds");
@@ -60,12 +72,13 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
         dt,
     )?;
     let mut out = std::io::BufWriter::new(out);
+    let load_column = if args.ramp.is_some() { ",load" } else { "" };
     writeln!(
         out,
-        "t,phi1,phi2,psi,phi1_dot,phi2_dot,psi_dot,delta,energy"
+        "t,phi1,phi2,psi,phi1_dot,phi2_dot,psi_dot,delta,energy{load_column}"
     )?;
-    let mut row = |o: &Observables| {
-        writeln!(
+    let mut row = |o: &Observables, load: Option<f64>| {
+        write!(
             out,
             "{},{},{},{},{},{},{},{},{}",
             o.t_secs,
@@ -77,15 +90,27 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
             o.psi_dot_rad_per_s,
             o.delta_rad,
             o.energy_j()
-        )
-    };
-    row(&simulation.observe())?;
-    let mut written = Ok(());
-    let status = simulation.run(duration, |o| {
-        if written.is_ok() {
-            written = row(o);
+        )?;
+        match load {
+            Some(p) => writeln!(out, ",{p}"),
+            None => writeln!(out),
         }
-    });
+    };
+    let first_load = args.ramp.map(|ramp| ramp.from_p);
+    row(&simulation.observe(), first_load)?;
+    let mut written = Ok(());
+    let status = match &args.ramp {
+        Some(ramp) => simulation.run_ramp(ramp, duration, |o, load| {
+            if written.is_ok() {
+                written = row(o, Some(load));
+            }
+        })?,
+        None => simulation.run(duration, |o| {
+            if written.is_ok() {
+                written = row(o, None);
+            }
+        }),
+    };
     written?;
     out.flush()?;
     if status != Status::Running {

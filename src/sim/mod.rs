@@ -3,11 +3,13 @@
 
 mod identify;
 mod observe;
+mod ramp;
 mod rapier;
 mod reference;
 
 pub use identify::identify;
 pub use observe::{Observables, observe};
+pub use ramp::Ramp;
 pub use reference::{Advance, MAX_STEPS_PER_ADVANCE, Reference};
 
 use crate::model::{Model, ModelError, StateVec, state_derivative};

@@ -141,6 +141,8 @@ fn presets_lists_every_preset_with_units() {
         "midpoint-masses",
         "roller",
         "roller-as-printed",
+        "tabletop",
+        "tabletop-roller",
     ] {
         assert!(text.contains(name), "{name}");
     }
@@ -149,7 +151,7 @@ fn presets_lists_every_preset_with_units() {
     }
     let json: serde_json::Value =
         serde_json::from_str(&stdout(&["presets", "--json"])).expect("json");
-    assert_eq!(json.as_array().expect("array").len(), 5);
+    assert_eq!(json.as_array().expect("array").len(), 7);
 }
 
 #[test]
@@ -412,4 +414,66 @@ fn locus_json_and_csv_hold_the_same_rows() {
             assert!((a - b).abs() <= 4.0 * f64::EPSILON * a.abs(), "{line}: {b}");
         }
     }
+}
+
+/// `simulate --ramp FROM:TO:RATE`: a `load` column, the load of each step
+/// from FROM at RATE per simulated second, held at TO; a `--set load` beside
+/// it is refused (the ramp sets the load).
+#[test]
+fn simulate_with_a_ramp_adds_the_load_of_each_step() {
+    let text = stdout(&[
+        "simulate",
+        "--preset",
+        "tabletop",
+        "--duration",
+        "3",
+        "--dt",
+        "0.01",
+        "--ramp",
+        "0.5:1.5:0.5",
+    ]);
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next(),
+        Some("t,phi1,phi2,psi,phi1_dot,phi2_dot,psi_dot,delta,energy,load")
+    );
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().expect("number")).collect())
+        .collect();
+    assert_eq!(rows.len(), 301);
+    for row in &rows {
+        // The row at t closes the step that started at t - dt.
+        let started = (row[0] - 0.01).max(0.0);
+        let expected = (0.5 + 0.5 * started).min(1.5);
+        assert!(
+            (row[9] - expected).abs() < 1e-9,
+            "t = {}: load {}",
+            row[0],
+            row[9]
+        );
+    }
+    let refused = run(&[
+        "simulate",
+        "--preset",
+        "tabletop",
+        "--duration",
+        "1",
+        "--set",
+        "load=2",
+        "--ramp",
+        "0:1:0.5",
+    ]);
+    assert_eq!(refused.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("leave out --set load"));
+    let bad = run(&[
+        "simulate",
+        "--preset",
+        "tabletop",
+        "--duration",
+        "1",
+        "--ramp",
+        "0:1:0",
+    ]);
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("ramp rate = 0"));
 }

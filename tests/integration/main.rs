@@ -16,6 +16,7 @@ mod lecture_pace;
 mod locus_tracking;
 mod massless_roller;
 mod properties;
+mod ramp;
 mod sim_energy;
 mod sim_engines;
 mod sim_identification;

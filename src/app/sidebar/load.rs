@@ -1,12 +1,13 @@
-//! The load slider, the stability ranges drawn under it, and the critical
-//! loads in words.
+//! The load slider, the stability ranges drawn under it, the critical
+//! loads in words, and a ramp's onsets (seen and predicted).
 
 use eframe::egui::{self, RichText, Sense, Stroke, pos2, vec2};
 
 use super::number_field::{NumberFields, refusal_ui};
 use crate::app::View;
-use crate::app::state::{AppState, LOAD_MAX_P};
+use crate::app::state::{AppState, LOAD_MAX_P, VISIBLE_FRACTION};
 use crate::app::theme::Theme;
+use crate::format::load_text;
 use crate::model::Key;
 
 /// The load's number field (the slider beside it applies live).
@@ -69,8 +70,28 @@ impl View for LoadSection {
             [pos2(x, rect.top() - 2.0), pos2(x, rect.bottom() + 2.0)],
             Stroke::new(3.0, theme.now),
         );
+        let onset = analysis.first_instability();
+        let ramp = state.ramp();
+        // With a ramp: where the theory puts the onset and where the
+        // motion was seen, marked on the bar and said below it.
+        let marks = [
+            (onset.filter(|_| ramp.is_some()), theme.text),
+            (ramp.and_then(|run| run.seen_at_p), theme.measured),
+        ];
+        for (load, color) in marks {
+            if let Some(load) = load.filter(|&l| l <= LOAD_MAX_P) {
+                let x = x_of(load);
+                painter.line_segment(
+                    [pos2(x, rect.top()), pos2(x, rect.bottom())],
+                    Stroke::new(2.0, color),
+                );
+            }
+        }
         for t in &analysis.transitions {
             ui.label(RichText::new(t.to_string()).color(theme.state_color(t.to)));
+        }
+        if let Some(run) = ramp {
+            ramp_onset_ui(ui, run.seen_at_p, onset, theme);
         }
         if let Some(warning) = &analysis.warning {
             ui.colored_label(
@@ -78,6 +99,45 @@ impl View for LoadSection {
                 "the stability is not resolved here (hover for why)",
             )
             .on_hover_text(warning);
+        }
+    }
+}
+
+/// The ramp's onsets in words: where the motion was seen against where the
+/// theory puts it, and why the first lags.
+fn ramp_onset_ui(ui: &mut egui::Ui, seen: Option<f64>, theory: Option<f64>, theme: &Theme) {
+    let visible = format!(
+        "the tip off by {:.0}% of the length",
+        100.0 * VISIBLE_FRACTION
+    );
+    if let Some(theory) = theory {
+        ui.label(
+            RichText::new(format!(
+                "theory (white mark): unstable from p = {}",
+                load_text(theory)
+            ))
+            .color(theme.text),
+        );
+    }
+    match seen {
+        Some(seen) => {
+            ui.label(
+                RichText::new(format!(
+                    "seen (mark): motion visible at p = {} ({visible})",
+                    load_text(seen)
+                ))
+                .color(theme.measured),
+            );
+            if theory.is_some_and(|theory| seen > theory) {
+                ui.label(
+                    "It shows late: past the onset the motion needs time to grow to a visible size, and the ramp moves on meanwhile. A slower ramp shows it closer to the theory.",
+                );
+            }
+        }
+        None => {
+            ui.label(format!(
+                "watching for the motion to become visible ({visible})"
+            ));
         }
     }
 }

@@ -1,11 +1,12 @@
 //! The controls on the left: the notice line, then the model, the load,
-//! the parameters, time, the status card, the overlay and the settings to
+//! the load ramp, the parameters, time, the status card, the overlay and the settings to
 //! share, each a section in a file of its own.
 
 mod load;
 mod model;
 mod number_field;
 mod parameters;
+mod ramp;
 mod share;
 mod status;
 mod time;
@@ -23,6 +24,7 @@ use crate::model::{PRESETS, PresetId};
 pub struct Sidebar {
     load: load::LoadSection,
     parameters: parameters::ParametersSection,
+    ramp: ramp::RampSection,
     share: share::ShareSection,
 }
 
@@ -41,6 +43,7 @@ impl View for Sidebar {
         model::ModelSection.ui(ui, state, theme);
         ui.separator();
         self.load.ui(ui, state, theme);
+        self.ramp.ui(ui, state, theme);
         ui.separator();
         self.parameters.ui(ui, state, theme);
         ui.separator();

@@ -1,0 +1,99 @@
+//! The quasi-static ramp: where the load starts and ends and how fast it
+//! moves, start, pause and resume, stop.
+
+use eframe::egui;
+
+use crate::app::View;
+use crate::app::state::{AppState, LOAD_MAX_P};
+use crate::app::theme::Theme;
+use crate::format::{load_text, number_text};
+use crate::sim::Ramp;
+
+/// The ramp the next start uses.
+pub struct RampSection {
+    from_p: f64,
+    to_p: f64,
+    rate_p_per_s: f64,
+}
+
+impl Default for RampSection {
+    fn default() -> Self {
+        Self {
+            from_p: 0.0,
+            to_p: LOAD_MAX_P,
+            rate_p_per_s: 0.1,
+        }
+    }
+}
+
+impl View for RampSection {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+        egui::CollapsingHeader::new("ramp the load").show(ui, |ui| {
+            ui.horizontal(|ui| {
+                ui.label("from");
+                ui.add(load_field(&mut self.from_p, 0.01))
+                    .accessible_name("ramp from")
+                    .on_hover_text("the load the ramp starts at");
+                ui.label("to");
+                ui.add(load_field(&mut self.to_p, 0.01))
+                    .accessible_name("ramp to")
+                    .on_hover_text("the load the ramp stops at");
+                ui.label("at");
+                ui.add(load_field(&mut self.rate_p_per_s, 0.001))
+                    .accessible_name("ramp rate")
+                    .on_hover_text("how fast the load moves, per simulated second");
+                ui.label("/s");
+            });
+            let ramp = Ramp::new(self.from_p, self.to_p, self.rate_p_per_s);
+            ui.horizontal(|ui| {
+                let start = ui
+                    .add_enabled(ramp.is_ok(), egui::Button::new("start ramp"))
+                    .on_hover_text("the load goes to 'from' and moves to 'to' at the rate, as the run goes on (a touch of the load slider ends it)");
+                if start.clicked()
+                    && let Ok(ramp) = &ramp
+                {
+                    state.start_ramp(*ramp);
+                }
+                if let Some(run) = state.ramp() {
+                    let label = if run.paused { "resume" } else { "pause ramp" };
+                    if ui
+                        .button(label)
+                        .on_hover_text("hold the load where it is; the run goes on")
+                        .clicked()
+                    {
+                        state.toggle_ramp_pause();
+                    }
+                    if ui.button("stop").on_hover_text("end the ramp").clicked() {
+                        state.stop_ramp();
+                    }
+                }
+            });
+            if let Err(why) = &ramp {
+                ui.colored_label(theme.error, why);
+            }
+            if let Some(run) = state.ramp() {
+                let doing = if run.finished() {
+                    "done"
+                } else if run.paused {
+                    "paused"
+                } else {
+                    "moving"
+                };
+                ui.label(format!(
+                    "p = {} toward {} at {}/s ({doing})",
+                    load_text(run.load()),
+                    number_text(run.ramp.to_p),
+                    number_text(run.ramp.rate_p_per_s)
+                ));
+            }
+        });
+    }
+}
+
+/// A number field for a load or a rate (typed or dragged; not clamped: a
+/// value the ramp cannot take is named under the fields).
+fn load_field(value: &mut f64, speed: f64) -> egui::DragValue<'_> {
+    egui::DragValue::new(value)
+        .speed(speed)
+        .custom_formatter(|v, _| number_text(v))
+}

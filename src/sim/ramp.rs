@@ -1,0 +1,129 @@
+//! The quasi-static load ramp: the load moving from one value to another at
+//! a constant rate in simulated time (the paper's "force increasing
+//! quasi-statically from zero"), and a run that follows it step by step.
+
+use super::{Observables, SimError, Simulation, Status};
+
+/// A load ramp: `p` from `from_p` toward `to_p` at `rate_p_per_s` (> 0) per
+/// simulated second, then held at `to_p`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ramp {
+    pub from_p: f64,
+    pub to_p: f64,
+    pub rate_p_per_s: f64,
+}
+
+impl Ramp {
+    /// The ramp, when its ends are loads and its rate a positive number.
+    ///
+    /// # Errors
+    /// A negative or non-finite end, or a rate that is not positive and finite.
+    pub fn new(from_p: f64, to_p: f64, rate_p_per_s: f64) -> Result<Self, String> {
+        for (name, p) in [("from", from_p), ("to", to_p)] {
+            if !(p.is_finite() && p >= 0.0) {
+                return Err(format!("ramp {name} = {p}: must be a load p >= 0"));
+            }
+        }
+        if !(rate_p_per_s.is_finite() && rate_p_per_s > 0.0) {
+            return Err(format!(
+                "ramp rate = {rate_p_per_s}: must be a positive load per second"
+            ));
+        }
+        Ok(Self {
+            from_p,
+            to_p,
+            rate_p_per_s,
+        })
+    }
+
+    /// The load `elapsed_secs` after the ramp started (`from_p` before it).
+    #[must_use]
+    pub fn load_at(&self, elapsed_secs: f64) -> f64 {
+        let moved = self.rate_p_per_s * elapsed_secs.max(0.0);
+        if self.to_p >= self.from_p {
+            (self.from_p + moved).min(self.to_p)
+        } else {
+            (self.from_p - moved).max(self.to_p)
+        }
+    }
+
+    /// Simulated seconds from `from_p` to `to_p`.
+    #[must_use]
+    pub fn duration_secs(&self) -> f64 {
+        (self.to_p - self.from_p).abs() / self.rate_p_per_s
+    }
+}
+
+impl std::str::FromStr for Ramp {
+    type Err = String;
+
+    /// `FROM:TO:RATE`, e.g. `0:4:0.05` (loads p, rate in p per second).
+    fn from_str(text: &str) -> Result<Self, String> {
+        let parts: Vec<&str> = text.split(':').collect();
+        let [from, to, rate] = parts.as_slice() else {
+            return Err(format!(
+                "'{text}': must be FROM:TO:RATE (loads p and p per second, e.g. 0:4:0.05)"
+            ));
+        };
+        let number = |name: &str, part: &str| {
+            part.trim()
+                .parse::<f64>()
+                .map_err(|_| format!("ramp {name} '{part}' is not a number"))
+        };
+        Self::new(
+            number("from", from)?,
+            number("to", to)?,
+            number("rate", rate)?,
+        )
+    }
+}
+
+impl Simulation {
+    /// Runs `duration_secs` with the load following `ramp` from now, set
+    /// before every step; `each` gets the observables and the load of the
+    /// step just taken.
+    ///
+    /// # Errors
+    /// A load the engine cannot take (the run stops there).
+    pub fn run_ramp(
+        &mut self,
+        ramp: &Ramp,
+        duration_secs: f64,
+        mut each: impl FnMut(&Observables, f64),
+    ) -> Result<Status, SimError> {
+        let start = self.time_secs();
+        let end = start + duration_secs;
+        while self.time_secs() < end - 0.5 * self.step_secs() {
+            let load = ramp.load_at(self.time_secs() - start);
+            let model = self.model().at_load(load);
+            self.set_model(model)?;
+            if self.step() != Status::Running {
+                break;
+            }
+            each(&self.observe(), load);
+        }
+        Ok(self.status())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_ramp_moves_at_its_rate_and_holds_at_its_end() {
+        let up: Ramp = "1:3:0.5".parse().unwrap();
+        assert_eq!(up.load_at(-1.0), 1.0);
+        assert_eq!(up.load_at(2.0), 2.0);
+        assert_eq!(up.load_at(10.0), 3.0);
+        assert_eq!(up.duration_secs(), 4.0);
+        let down: Ramp = "3:1:0.5".parse().unwrap();
+        assert_eq!(down.load_at(2.0), 2.0);
+        assert_eq!(down.load_at(10.0), 1.0);
+        for bad in [
+            "1:2", "a:2:1", "0:2:0", "0:2:-1", "-1:2:1", "0:inf:1", "0:2:NaN",
+        ] {
+            assert!(bad.parse::<Ramp>().is_err(), "{bad}");
+        }
+    }
+}
