@@ -13,6 +13,7 @@ pub enum Command {
     Step,
     Kick,
     Reset,
+    ResetAll,
     LoadUp,
     LoadDown,
     Projector,
@@ -20,12 +21,13 @@ pub enum Command {
 
 impl Command {
     /// Every command, in the order the keys help lists them.
-    pub const ALL: [Self; 7] = [
+    pub const ALL: [Self; 8] = [
         Self::PlayPause,
         Self::LoadUp,
         Self::LoadDown,
         Self::Kick,
         Self::Reset,
+        Self::ResetAll,
         Self::Projector,
         Self::Step,
     ];
@@ -39,6 +41,7 @@ impl Command {
             Self::Step => "step",
             Self::Kick => "kick",
             Self::Reset => "reset",
+            Self::ResetAll => "reset all",
             Self::LoadUp => "load up",
             Self::LoadDown => "load down",
             Self::Projector => "projector mode",
@@ -53,6 +56,9 @@ impl Command {
             Self::Step => "one engine step (1/240 s), then paused",
             Self::Kick => "kick: both angles by 0.01 rad",
             Self::Reset => "reset: a fresh run from the standard perturbation",
+            Self::ResetAll => {
+                "reset all: the preset's parameters and load, normal speed, a fresh run, the default views"
+            }
             Self::LoadUp => "load up by 0.08",
             Self::LoadDown => "load down by 0.08",
             Self::Projector => "projector mode: high contrast, large text",
@@ -65,7 +71,7 @@ impl Command {
         use egui::Key;
         match self {
             Self::PlayPause => &[Key::Space],
-            Self::Step => &[],
+            Self::Step | Self::ResetAll => &[],
             Self::Kick => &[Key::K],
             Self::Reset => &[Key::R],
             Self::LoadUp => &[Key::ArrowRight, Key::ArrowUp],
@@ -98,6 +104,7 @@ impl Command {
             Self::Step => state.step(),
             Self::Kick => state.kick(),
             Self::Reset => state.reset(),
+            Self::ResetAll => state.reset_all(),
             Self::LoadUp => state.nudge_load(LOAD_KEY_STEP_P),
             Self::LoadDown => state.nudge_load(-LOAD_KEY_STEP_P),
             Self::Projector => state.set_projector(!state.settings().projector),

@@ -4,9 +4,11 @@
 //! [`View`] of it in a file of its own.
 
 mod analysis_cache;
+mod camera;
 mod command;
 mod history;
 mod layout;
+mod load_bar;
 mod notice;
 mod pace;
 mod plot_frame;
@@ -39,6 +41,9 @@ pub use tabs::map::map_picture;
 const SETTINGS_KEY: &str = "zieglerlab-settings";
 /// The key the window's layout is stored under.
 const LAYOUT_KEY: &str = "zieglerlab-layout";
+/// Below this height (in points, at the normal text size) the tab's plots
+/// would be unreadable and are not drawn.
+const MIN_PLOT_HEIGHT: f32 = 170.0;
 /// eframe's name for the app (its storage folder).
 const APP_ID: &str = "zieglerlab";
 
@@ -65,6 +70,10 @@ pub struct ZieglerApp {
     tabs: tabs::Tabs,
     /// The theme applied to the context (None: not yet).
     applied_projector: Option<bool>,
+    /// How the scene frames the column.
+    camera: camera::Camera,
+    /// The state's "reset all" count this view last followed.
+    view_generation: u64,
     /// When the window's last frame began (the headless paths never set it:
     /// their frames advance by fixed, given times).
     last_frame: Option<std::time::Instant>,
@@ -86,6 +95,8 @@ impl ZieglerApp {
             tab: Tab::default(),
             tabs: tabs::Tabs::default(),
             applied_projector: None,
+            view_generation: 0,
+            camera: camera::Camera::default(),
             last_frame: None,
         }
     }
@@ -208,6 +219,16 @@ impl ZieglerApp {
     /// only in [`ZieglerApp::advance`], so a picture depends on the state alone.
     pub fn contents_ui(&mut self, ui: &mut egui::Ui) {
         let theme = self.applied_theme(ui.ctx());
+        if self.view_generation != self.state.view_generation() {
+            self.view_generation = self.state.view_generation();
+            self.tab = Tab::default();
+            self.camera = camera::Camera::default();
+        }
+        egui::Panel::bottom("status line")
+            .exact_size(1.6 * theme.text_size + 8.0)
+            .show(ui, |ui| {
+                sidebar::status_line_ui(ui, &mut self.state, &theme);
+            });
         egui::Panel::left("controls")
             .resizable(false)
             .exact_size(320.0)
@@ -217,11 +238,24 @@ impl ZieglerApp {
             });
         egui::CentralPanel::default().show(ui, |ui| {
             let height = ui.available_height();
-            ui.allocate_ui(vec2(ui.available_width(), 0.55 * height), |ui| {
-                scene::scene_ui(ui, &self.state, &theme);
+            // In front of a class the scene gets most of the height.
+            let scene_share = if self.state.settings().projector {
+                0.6
+            } else {
+                0.5
+            };
+            ui.allocate_ui(vec2(ui.available_width(), scene_share * height), |ui| {
+                scene::scene_ui(ui, &self.state, &mut self.camera, &theme);
             });
+            load_bar::load_bar_ui(ui, &mut self.state, &theme);
             tabs::Tabs::bar_ui(ui, &mut self.tab);
-            self.tabs.view(self.tab).ui(ui, &mut self.state, &theme);
+            if ui.available_height() < MIN_PLOT_HEIGHT * theme.text_size / 14.0 {
+                ui.weak(
+                    "The plots need more room here: a taller window, or projector mode off (P).",
+                );
+            } else {
+                self.tabs.view(self.tab).ui(ui, &mut self.state, &theme);
+            }
         });
     }
 
@@ -232,7 +266,7 @@ impl ZieglerApp {
             Panel::Window => self.contents_ui(ui),
             Panel::Scene => {
                 egui::CentralPanel::default().show(ui, |ui| {
-                    scene::scene_ui(ui, &self.state, &theme);
+                    scene::scene_ui(ui, &self.state, &mut self.camera, &theme);
                 });
             }
             Panel::Tab(tab) => {

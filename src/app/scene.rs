@@ -7,9 +7,10 @@ use std::f64::consts::TAU;
 
 use eframe::egui::{
     self, Align2, Color32, FontId, Pos2, Rect, Sense, Shape, Stroke, Vec2, emath::RectTransform,
-    pos2,
+    pos2, vec2,
 };
 
+use super::camera::{Camera, FOLLOW_SECS, WorldBox, target};
 use super::state::{AppState, TRAIL_SECS};
 use super::theme::Theme;
 use crate::model::Model;
@@ -21,6 +22,8 @@ struct SceneInput<'a> {
     pub now: &'a Observables,
     pub trail: &'a VecDeque<(f64, [f64; 2])>,
     pub status: Status,
+    /// The world box the camera frames.
+    pub framed: WorldBox,
     pub theme: &'a Theme,
 }
 
@@ -46,28 +49,61 @@ impl View {
     }
 }
 
-/// Draws the scene of the app's state in the space left in `ui`.
-pub fn scene_ui(ui: &mut egui::Ui, state: &AppState, theme: &Theme) {
+/// Draws the scene of the app's state in the space left in `ui`, framed
+/// by `camera`, with the camera's "whole reach" switch in its corner.
+pub fn scene_ui(ui: &mut egui::Ui, state: &AppState, camera: &mut Camera, theme: &Theme) {
     let now = state.simulation().observe();
-    draw(
+    let model = state.model();
+    let l1 = model.column.rod1.length_m;
+    let reach_m = l1 + model.column.rod2.length_m;
+    let joint_m = [l1 * now.phi1_rad.cos(), l1 * now.phi1_rad.sin()];
+    let recent = state
+        .trail()
+        .iter()
+        .filter(|(t, _)| now.t_secs - t <= FOLLOW_SECS)
+        .map(|&(_, tip)| tip);
+    let framed = camera.frame(target(
+        reach_m,
+        joint_m,
+        now.tip_m,
+        recent,
+        camera.whole_reach,
+    ));
+    let rect = draw(
         ui,
         &SceneInput {
-            model: state.model(),
+            model,
             now: &now,
             trail: state.trail(),
             status: state.simulation().status(),
+            framed,
             theme,
         },
     );
+    let corner = Rect::from_min_size(
+        rect.left_top() + vec2(8.0, 8.0),
+        vec2(7.5 * theme.text_size, 1.6 * theme.text_size),
+    );
+    if ui
+        .put(
+            corner,
+            egui::Button::selectable(camera.whole_reach, "whole reach"),
+        )
+        .on_hover_text("frame the whole disc the tip can reach, instead of following the motion")
+        .clicked()
+    {
+        camera.whole_reach = !camera.whole_reach;
+    }
 }
 
-/// Draws `input` in the space left in `ui`.
-fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) {
+/// Draws `input` in the space left in `ui`; returns where.
+fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> Rect {
     let SceneInput {
         model,
         now,
         trail,
         status,
+        framed,
         theme,
     } = *input;
     let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::hover());
@@ -75,15 +111,17 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) {
     painter.rect_filled(rect, 0.0, theme.background);
     let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
     let reach = l1 + l2;
-    // The whole disc the tip can reach, plus a margin, with equal scales on
-    // both axes: the column stays in view in any configuration.
+    // The camera's box, with equal scales on both axes, centred.
     let margin = 0.12 * reach;
-    let (world_w, world_h) = (1.25 * reach + 2.0 * margin, 2.0 * (reach + margin));
+    let [world_w, world_h] = framed.size();
     let pixels_per_m = (f64::from(rect.width()) / world_w).min(f64::from(rect.height()) / world_h);
     let half_w = 0.5 * f64::from(rect.width()) / pixels_per_m;
     let half_h = 0.5 * f64::from(rect.height()) / pixels_per_m;
-    let center_x = 0.5 * reach;
-    let world = Rect::from_min_max(p(center_x - half_w, half_h), p(center_x + half_w, -half_h));
+    let [center_x, center_y] = framed.center();
+    let world = Rect::from_min_max(
+        p(center_x - half_w, center_y + half_h),
+        p(center_x + half_w, center_y - half_h),
+    );
     let view = View {
         screen_from_world: RectTransform::from_to(world, rect),
         pixels_per_m,
@@ -97,6 +135,7 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) {
             (reach, margin),
             roller.band_speed_m_per_s,
             now.t_secs,
+            rect,
         );
     }
     clamp(&painter, theme, &view, reach);
@@ -136,6 +175,7 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) {
         );
     }
     notes(&painter, theme, rect, status, now.stick_slip);
+    rect
 }
 
 /// The clamp at O: a wall with hatching on the far side.
@@ -224,20 +264,35 @@ fn forces(
             })
             .collect();
         painter.add(Shape::line(arc, Stroke::new(1.5 * s, theme.friction)));
-        // Beside the arrows' far ends, off to the side rod 2's normal points to.
+        // Beyond the tip, along rod 2 continued (away from the column and
+        // from the arrows, which point back along it); beside the tip when
+        // that is out of the picture.
         let normal = [-phi2.sin(), phi2.cos()];
-        let label_at = view.to(
-            b[0] + length_m * (follower[0] + 0.35 * normal[0]),
-            b[1] + length_m * (follower[1] + 0.35 * normal[1]),
-        );
+        let clip = painter.clip_rect().shrink(6.0 + 3.0 * theme.text_size);
+        let label_at = [(-0.45, 0.0), (0.0, 0.5), (0.0, -0.5)]
+            .into_iter()
+            .map(|(along, side)| {
+                view.to(
+                    b[0] + length_m * (along * follower[0] + side * normal[0]),
+                    b[1] + length_m * (along * follower[1] + side * normal[1]),
+                )
+            })
+            .find(|at| clip.contains(*at))
+            .unwrap_or_else(|| {
+                view.to(
+                    b[0] - 0.45 * length_m * follower[0],
+                    b[1] - 0.45 * length_m * follower[1],
+                )
+            });
         // Rounded first, then -0 turned into 0: no "-0.00" on screen.
         let degrees = (now.delta_rad.to_degrees() * 100.0).round() / 100.0 + 0.0;
         let text = format!("δ = {degrees:+.2}°");
-        painter.text(
+        plate(
+            painter,
+            theme,
             label_at,
             Align2::CENTER_CENTER,
             text,
-            FontId::proportional(theme.text_size),
             theme.friction,
         );
     }
@@ -298,20 +353,21 @@ fn notes(painter: &egui::Painter, theme: &Theme, rect: Rect, status: Status, sti
     for (i, (text, color)) in lines.into_iter().enumerate() {
         #[expect(clippy::cast_precision_loss, reason = "a handful of lines")]
         let y = rect.top() + 10.0 + i as f32 * (theme.text_size + 6.0);
-        painter.text(
-            pos2(rect.left() + 10.0, y),
+        plate(
+            painter,
+            theme,
+            pos2(rect.left() + 10.0, y + 2.0 * theme.text_size),
             Align2::LEFT_TOP,
             text,
-            FontId::proportional(theme.text_size),
             color,
         );
     }
 }
 
-/// The band: under the whole disc the tip can reach (the model's band is
-/// everywhere under the roller, so the roller never leaves it, even with the
-/// column folded back), with marks moving toward -x at V and an arrow
-/// saying which way it goes.
+/// The band: everywhere in the picture and at least under the whole disc
+/// the tip can reach (the model's band is everywhere under the roller, so
+/// the roller never leaves it, even with the column folded back), with
+/// marks moving toward -x at V and a label saying which way it goes.
 fn band(
     painter: &egui::Painter,
     theme: &Theme,
@@ -319,12 +375,18 @@ fn band(
     (reach, margin): (f64, f64),
     speed_m_per_s: f64,
     t_secs: f64,
+    rect: Rect,
 ) {
     let s = theme.stroke_scale;
     let to = |x, y| view.to(x, y);
-    let (x0, x1) = (-reach - 0.5 * margin, reach + margin);
-    let (y0, y1) = (-reach - 0.5 * margin, reach + 0.5 * margin);
-    painter.rect_filled(Rect::from_two_pos(to(x0, y0), to(x1, y1)), 4.0, theme.band);
+    // Everywhere the camera looks, and at least the whole reach.
+    let seen = view.screen_from_world.inverse();
+    let (corner_a, corner_b) = (seen.transform_pos(rect.min), seen.transform_pos(rect.max));
+    let x0 = f64::from(corner_a.x.min(corner_b.x)).min(-reach - 0.5 * margin);
+    let x1 = f64::from(corner_a.x.max(corner_b.x)).max(reach + margin);
+    let y0 = f64::from(corner_a.y.min(corner_b.y)).min(-reach - 0.5 * margin);
+    let y1 = f64::from(corner_a.y.max(corner_b.y)).max(reach + 0.5 * margin);
+    painter.rect_filled(Rect::from_two_pos(to(x0, y0), to(x1, y1)), 0.0, theme.band);
     let spacing = 0.08 * reach;
     let offset = (-speed_m_per_s * t_secs).rem_euclid(spacing);
     let mut x = x0 + offset;
@@ -335,23 +397,42 @@ fn band(
         );
         x += spacing;
     }
-    let label = format!(
-        "band  V = {} m/s",
-        crate::format::number_text(speed_m_per_s)
-    );
-    let start = to(x1 - 0.05 * reach, y1 - 0.06 * reach);
-    painter.arrow(
-        start,
-        to(x1 - 0.3 * reach, y1 - 0.06 * reach) - start,
-        Stroke::new(2.5 * s, theme.band_mark),
-    );
-    painter.text(
-        to(x1 - 0.05 * reach, y1 - 0.12 * reach),
+    // Where the band goes, in the scene's top right corner (the band's
+    // own corner may be far out of the camera's frame).
+    plate(
+        painter,
+        theme,
+        rect.right_top() + vec2(-10.0, 10.0),
         Align2::RIGHT_TOP,
-        label,
-        FontId::proportional(theme.text_size),
+        format!(
+            "band moving left at V = {} m/s",
+            crate::format::number_text(speed_m_per_s)
+        ),
         theme.text,
     );
+}
+
+/// `text` on a plate of the scene's background, so that no stripe or rod
+/// runs through it.
+fn plate(
+    painter: &egui::Painter,
+    theme: &Theme,
+    at: Pos2,
+    align: Align2,
+    text: String,
+    color: Color32,
+) {
+    let galley = painter.layout_no_wrap(text, FontId::proportional(theme.text_size), color);
+    let inner = align.anchor_size(at, galley.size());
+    // Kept inside the scene (a label beyond the tip may point out of it).
+    let clip = painter.clip_rect().shrink(6.0);
+    let shift = vec2(
+        (clip.left() - inner.left()).max(0.0) + (clip.right() - inner.right()).min(0.0),
+        (clip.top() - inner.top()).max(0.0) + (clip.bottom() - inner.bottom()).min(0.0),
+    );
+    let inner = inner.translate(shift);
+    painter.rect_filled(inner.expand(4.0), 4.0, theme.background);
+    painter.galley(inner.min, galley, color);
 }
 
 /// A torsion spring at `center`: a spiral whose winding follows the joint's

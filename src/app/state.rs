@@ -2,21 +2,22 @@
 //! simulation, the analysis of the current parameters, the overlay and the
 //! notices, with the only ways to change them.
 
+mod classroom;
+mod overlay;
 mod ramp;
 
 use std::collections::VecDeque;
 
-use crate::analysis::{
-    AffinePencil, AnalysisError, C64, Locus, Spectrum, Transition, critical_loads_along, locus,
-};
+use crate::analysis::{AnalysisError, C64, Spectrum};
 use crate::model::{Assignment, Axis, Key, Model, ModelError, PresetId, apply_assignments};
 use crate::sim::{
     DEFAULT_STEP_SECS, EngineKind, Observables, SimError, Simulation, Status, initial_state,
 };
 
+pub use overlay::Overlay;
 pub use ramp::{RampRun, VISIBLE_FRACTION};
 
-use super::analysis_cache::{Analysis, LOCUS_SAMPLES};
+use super::analysis_cache::Analysis;
 use super::history::History;
 use super::notice::Notice;
 use super::pace::Pace;
@@ -41,25 +42,6 @@ fn push_trail(trail: &mut VecDeque<(f64, [f64; 2])>, now: &Observables) {
     {
         trail.pop_front();
     }
-}
-
-/// Another preset's root locus, at the current model's `a`.
-pub struct Overlay {
-    pub preset: PresetId,
-    /// The group `a` the locus was computed with.
-    a: f64,
-    pub locus: Locus,
-    /// Its critical loads along the slider's range.
-    pub transitions: Vec<Transition>,
-}
-
-/// Why the overlay could not be drawn.
-#[derive(Debug, thiserror::Error)]
-enum OverlayError {
-    #[error(transparent)]
-    Model(#[from] ModelError),
-    #[error(transparent)]
-    Analysis(#[from] AnalysisError),
 }
 
 /// What the user is told when rapier cannot integrate the column.
@@ -108,6 +90,10 @@ pub struct AppState {
     overlay: Option<Overlay>,
     /// The quasi-static load ramp, under way or finished.
     ramp: Option<RampRun>,
+    /// The one-line hint of a first launch, until the first kick.
+    hint: bool,
+    /// Counts "reset all": the views go back to their defaults when it moves.
+    view_generation: u64,
 }
 
 impl AppState {
@@ -133,6 +119,8 @@ impl AppState {
             measured_at_secs: f64::NEG_INFINITY,
             overlay: None,
             ramp: None,
+            hint: false,
+            view_generation: 0,
         };
         state.refresh_analysis();
         Ok(state)
@@ -419,6 +407,7 @@ impl AppState {
 
     /// Disturbs both angles by [`KICK_RAD`] and runs on.
     pub fn kick(&mut self) {
+        self.hint = false;
         let mut x = self.sim.state();
         x[0] += KICK_RAD;
         x[1] += KICK_RAD;
@@ -496,44 +485,6 @@ impl AppState {
     /// The current model's `a = k/(m l^2)`.
     fn group_a(&self) -> f64 {
         Key::A.get(&self.settings.model)
-    }
-
-    /// Shows `name`'s locus behind the current one, at the current `a`
-    /// (`None`: no overlay).
-    pub fn set_overlay(&mut self, id: Option<PresetId>) {
-        let Some(id) = id else {
-            self.overlay = None;
-            return;
-        };
-        let a = self.group_a();
-        let build = || -> Result<(Locus, Vec<Transition>), OverlayError> {
-            let mut model = id.model();
-            apply_assignments(
-                &mut model,
-                &[Assignment {
-                    key: Key::A,
-                    value: a,
-                }],
-            )?;
-            let pencil = AffinePencil::new(&model)?;
-            let locus = locus(&pencil, 0.0, LOAD_MAX_P, LOCUS_SAMPLES)?;
-            let transitions = critical_loads_along(&pencil, &locus)?;
-            Ok((locus, transitions))
-        };
-        match build() {
-            Ok((locus, transitions)) => {
-                self.overlay = Some(Overlay {
-                    preset: id,
-                    a,
-                    locus,
-                    transitions,
-                });
-            }
-            Err(error) => {
-                self.overlay = None;
-                self.say(Notice::error(format!("overlay unavailable: {error}")));
-            }
-        }
     }
 }
 

@@ -138,7 +138,7 @@ impl AppState {
     #[must_use]
     pub fn from_stored_text(text: Option<&str>) -> Self {
         let Some(text) = text else {
-            return Self::defaults();
+            return Self::first_launch();
         };
         let (settings, note) = match read(text) {
             Ok(read) if read.ignored.is_empty() => (read.settings, None),

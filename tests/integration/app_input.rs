@@ -198,3 +198,17 @@ fn slow_normal_and_fast_set_the_speed() {
         assert_eq!(app.settings().speed, speed, "{name}");
     }
 }
+
+/// The wide load bar is the slider: a click at its middle sets the load to
+/// the middle of its range (0 to 8).
+#[test]
+fn a_click_on_the_load_bar_sets_the_load() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    {
+        let mut harness = harness(&mut app);
+        harness.get_by_label("load slider").click();
+        harness.run();
+    }
+    let load = app.settings().model.load_p();
+    assert!((load - 4.0).abs() < 0.02, "{load}");
+}

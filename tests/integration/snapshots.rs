@@ -183,3 +183,30 @@ fn the_overlay_has_a_legend_with_its_own_critical_loads() {
     harness.run_steps(4);
     harness.snapshot("locus_roller_with_overlay");
 }
+
+/// The classroom's two screens: a 1024x768 projector in projector mode and
+/// a 1920x1080 display, the tabletop column fluttering at p = 3 after 3 s
+/// (the scene follows the motion; the load bar spans the window).
+#[test]
+fn classroom_screens() {
+    let mut results = SnapshotResults::default();
+    for (name, size, projector) in [
+        ("tabletop_projector_1024x768", [1024.0, 768.0], true),
+        ("tabletop_1920x1080", [1920.0, 1080.0], false),
+    ] {
+        let mut app = app_at(
+            Settings {
+                projector,
+                ..preset_settings("tabletop")
+            },
+            3.0,
+            3,
+        );
+        let mut harness = Harness::builder()
+            .wgpu()
+            .with_size(size)
+            .build_ui(|ui| app.contents_ui(ui));
+        harness.run_steps(4);
+        results.add(harness.try_snapshot(name));
+    }
+}

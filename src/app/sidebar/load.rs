@@ -1,7 +1,7 @@
-//! The load slider, the stability ranges drawn under it, the critical
-//! loads in words, and a ramp's onsets (seen and predicted).
+//! The load typed, the critical loads in words, and a ramp's onsets (seen
+//! and predicted); the slider is the wide load bar under the scene.
 
-use eframe::egui::{self, RichText, Sense, Stroke, pos2, vec2};
+use eframe::egui::{self, RichText};
 
 use super::number_field::{NumberFields, refusal_ui};
 use crate::app::View;
@@ -10,7 +10,7 @@ use crate::app::theme::Theme;
 use crate::format::load_text;
 use crate::model::Key;
 
-/// The load's number field (the slider beside it applies live).
+/// The load's number field.
 #[derive(Default)]
 pub struct LoadSection {
     field: NumberFields,
@@ -19,22 +19,11 @@ pub struct LoadSection {
 impl View for LoadSection {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
         self.field.prune(ui, state);
-        let mut p = state.model().load_p();
-        ui.label("load p = P l/k");
         ui.horizontal(|ui| {
-            // The slider applies while dragged; the field beside it takes a
-            // typed load, also beyond the slider's range (not clamped).
-            let slider = ui
-                .add(
-                    egui::Slider::new(&mut p, 0.0..=LOAD_MAX_P)
-                        .clamping(egui::SliderClamping::Never)
-                        .show_value(false),
-                )
-                .accessible_name("load slider");
-            if slider.changed() {
-                state.enter_parameter(Key::Load, p);
-            }
+            // The wide bar under the scene is the slider; this field takes a
+            // typed load, also beyond the bar's range (not clamped).
             self.field.show(ui, state, theme, Key::Load);
+            ui.label("load p = P l/k");
         });
         refusal_ui(ui, state, theme, Key::Load);
         let p = state.model().load_p();
@@ -54,39 +43,8 @@ impl View for LoadSection {
         let Some(analysis) = state.analysis() else {
             return;
         };
-        let (rect, _) = ui.allocate_exact_size(vec2(ui.available_width(), 14.0), Sense::hover());
-        let painter = ui.painter_at(rect);
-        #[expect(clippy::cast_possible_truncation, reason = "pixels")]
-        let x_of = |load: f64| rect.left() + rect.width() * (load / LOAD_MAX_P) as f32;
-        for &(start, end, range_state) in &analysis.ranges {
-            let r = egui::Rect::from_min_max(
-                pos2(x_of(start), rect.top()),
-                pos2(x_of(end), rect.bottom()),
-            );
-            painter.rect_filled(r, 0.0, theme.state_color(range_state));
-        }
-        let x = x_of(p);
-        painter.line_segment(
-            [pos2(x, rect.top() - 2.0), pos2(x, rect.bottom() + 2.0)],
-            Stroke::new(3.0, theme.now),
-        );
         let onset = analysis.first_instability();
         let ramp = state.ramp();
-        // With a ramp: where the theory puts the onset and where the
-        // motion was seen, marked on the bar and said below it.
-        let marks = [
-            (onset.filter(|_| ramp.is_some()), theme.text),
-            (ramp.and_then(|run| run.seen_at_p), theme.measured),
-        ];
-        for (load, color) in marks {
-            if let Some(load) = load.filter(|&l| l <= LOAD_MAX_P) {
-                let x = x_of(load);
-                painter.line_segment(
-                    [pos2(x, rect.top()), pos2(x, rect.bottom())],
-                    Stroke::new(2.0, color),
-                );
-            }
-        }
         for t in &analysis.transitions {
             ui.label(RichText::new(t.to_string()).color(theme.state_color(t.to)));
         }

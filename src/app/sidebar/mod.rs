@@ -1,4 +1,4 @@
-//! The controls on the left: the notice line, then the model, the load,
+//! The controls on the left: the model, the load,
 //! the load ramp, the parameters, time, the status card, the overlay and the settings to
 //! share, each a section in a file of its own.
 
@@ -31,29 +31,39 @@ pub struct Sidebar {
 impl View for Sidebar {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
         ui.heading("zieglerlab");
-        if let Some(notice) = state.notice().cloned() {
-            ui.horizontal_wrapped(|ui| {
-                ui.colored_label(theme.notice_color(notice.level), notice.text);
-                if ui.small_button("dismiss").clicked() {
-                    state.dismiss_notice();
-                }
-            });
-        }
         ui.separator();
         model::ModelSection.ui(ui, state, theme);
         ui.separator();
-        self.load.ui(ui, state, theme);
-        self.ramp.ui(ui, state, theme);
-        ui.separator();
-        self.parameters.ui(ui, state, theme);
-        ui.separator();
-        time::TimeSection.ui(ui, state, theme);
-        ui.separator();
-        status::StatusSection.ui(ui, state, theme);
+        if state.settings().projector {
+            // In front of a class: time and the status card first, the load
+            // typed, and the parameters folded, so that everything the
+            // teacher needs fits a 1024x768 projector without scrolling.
+            time::TimeSection.ui(ui, state, theme);
+            ui.separator();
+            status::StatusSection.ui(ui, state, theme);
+            ui.separator();
+            self.load.ui(ui, state, theme);
+            self.ramp.ui(ui, state, theme);
+            egui::CollapsingHeader::new("parameters")
+                .show(ui, |ui| self.parameters.ui(ui, state, theme));
+        } else {
+            self.load.ui(ui, state, theme);
+            self.ramp.ui(ui, state, theme);
+            ui.separator();
+            self.parameters.ui(ui, state, theme);
+            ui.separator();
+            time::TimeSection.ui(ui, state, theme);
+            ui.separator();
+            status::StatusSection.ui(ui, state, theme);
+        }
         ui.separator();
         overlay_ui(ui, state);
         let mut projector = state.settings().projector;
-        if ui.checkbox(&mut projector, "projector mode (P)").changed() {
+        if ui
+            .checkbox(&mut projector, "projector mode (P)")
+            .on_hover_text(Command::Projector.tooltip())
+            .changed()
+        {
             state.set_projector(projector);
         }
         self.share.ui(ui, state, theme);
@@ -78,4 +88,31 @@ fn overlay_ui(ui: &mut egui::Ui, state: &mut AppState) {
     if chosen != current {
         state.set_overlay(chosen);
     }
+}
+
+/// The status line at the foot of the window: the latest notice (with a
+/// button to dismiss it) or the first launch's hint, always in this one
+/// place, so that a message never moves a control.
+pub fn status_line_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+    ui.horizontal(|ui| {
+        if let Some(notice) = state.notice().cloned() {
+            if ui.small_button("dismiss").clicked() {
+                state.dismiss_notice();
+            }
+            ui.add(
+                egui::Label::new(
+                    egui::RichText::new(notice.text).color(theme.notice_color(notice.level)),
+                )
+                .truncate(),
+            )
+            .on_hover_text("the latest message (the whole text)");
+        } else if let Some(hint) = state.hint() {
+            if ui.small_button("got it").clicked() {
+                state.dismiss_hint();
+            }
+            ui.label(hint);
+        } else {
+            ui.weak("ready");
+        }
+    });
 }

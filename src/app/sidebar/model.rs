@@ -30,12 +30,16 @@ impl View for ModelSection {
                     }
                 })
                 .response
-                .labelled_by(label.id);
+                .labelled_by(label.id)
+                .on_hover_text(chosen.preset().description);
         });
         if chosen != current {
             state.set_preset(chosen);
         }
-        ui.label(RichText::new(state.settings().preset.preset().description).small());
+        // In front of a class the picker's tooltip holds the description.
+        if !state.settings().projector {
+            ui.label(RichText::new(state.settings().preset.preset().description).small());
+        }
         let mut engine = state.settings().engine;
         egui::ComboBox::from_label("engine")
             .selected_text(format!("{engine:?}").to_lowercase())

@@ -22,12 +22,13 @@ pub struct TimeSection;
 
 impl View for TimeSection {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             for command in [
                 Command::PlayPause,
                 Command::Step,
                 Command::Kick,
                 Command::Reset,
+                Command::ResetAll,
             ] {
                 command.button(ui, state);
             }

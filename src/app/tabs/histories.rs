@@ -13,13 +13,13 @@ use crate::app::theme::Theme;
 /// double-click) makes them follow it again.
 #[derive(Default)]
 pub struct HistoriesTab {
-    fit: Fit<()>,
+    fit: Fit<u64>,
 }
 
 impl View for HistoriesTab {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
         self.fit.bar_ui(ui);
-        let refit = self.fit.refit(());
+        let refit = self.fit.refit(state.view_generation());
         histories_ui(ui, state.history(), refit, theme);
     }
 }

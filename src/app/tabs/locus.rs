@@ -14,10 +14,11 @@ use crate::app::theme::load_color;
 use crate::format::number_text;
 use crate::model::{Model, PresetId};
 
-/// The plots refit when the parameters (at p = 0) or the overlay change.
+/// The plots refit when the parameters (at p = 0) or the overlay change,
+/// and on "reset all".
 #[derive(Default)]
 pub struct LocusTab {
-    fit: Fit<(Model, Option<PresetId>)>,
+    fit: Fit<(u64, Model, Option<PresetId>)>,
 }
 
 impl View for LocusTab {
@@ -35,9 +36,11 @@ impl View for LocusTab {
         self.fit.bar_ui(ui);
         let overlay = state.overlay();
         legend_ui(ui, state, &analysis.locus, theme);
-        let refit = self
-            .fit
-            .refit((state.model().at_load(0.0), overlay.map(|o| o.preset)));
+        let refit = self.fit.refit((
+            state.view_generation(),
+            state.model().at_load(0.0),
+            overlay.map(|o| o.preset),
+        ));
         let load = state.model().load_p();
         let current = state.current_eigenvalues();
         let width = ui.available_width();

@@ -111,8 +111,9 @@ impl Drop for Job {
     }
 }
 
-/// What the map's view shows: the second axis, its range, the load range.
-type MapAxes = (String, (f64, f64), (f64, f64));
+/// What the map's view shows: the "reset all" count, the second axis, its
+/// range, the load range.
+type MapAxes = (u64, String, (f64, f64), (f64, f64));
 
 /// The panel's choices and its current job.
 pub struct MapPanel {
@@ -123,6 +124,8 @@ pub struct MapPanel {
     fit: Fit<MapAxes>,
     /// A click sets the load and the parameter unless it was a double-click.
     click: SingleClick<Pick>,
+    /// The state's "reset all" count this frame.
+    generation: u64,
 }
 
 impl Default for MapPanel {
@@ -133,6 +136,7 @@ impl Default for MapPanel {
             job: None,
             fit: Fit::default(),
             click: SingleClick::default(),
+            generation: 0,
         }
     }
 }
@@ -290,6 +294,7 @@ impl MapPanel {
         self.fit.bar_ui(ui);
         let spec = &job.spec;
         let refit = self.fit.refit((
+            self.generation,
             spec.axis.name().to_owned(),
             spec.axis_range,
             spec.load_range,
@@ -354,6 +359,7 @@ impl View for MapPanel {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
         let model = *state.model();
         self.follow(&model, LOAD_MAX_P);
+        self.generation = state.view_generation();
         if let Some(pick) = self.draw(ui, &model, theme) {
             state.set_map_point(&pick.axis, pick.load, pick.value);
         }

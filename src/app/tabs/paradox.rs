@@ -222,8 +222,10 @@ pub struct ParadoxPanel {
     job: Option<Job>,
     /// The current model's own point, and the model it is for.
     current: Option<(Model, Option<[f64; 2]>)>,
-    /// Refits when the curves of other parameters arrive.
-    fit: Fit<Model>,
+    /// Refits when the curves of other parameters arrive, and on "reset all".
+    fit: Fit<(u64, Model)>,
+    /// The state's "reset all" count this frame.
+    generation: u64,
 }
 
 /// The model the curves depend on: the swept parameters at a fixed value.
@@ -337,7 +339,7 @@ impl ParadoxPanel {
             _ => "The flutter load with joint dampers c1 = (c1/c2) c2 as the damping level g2 = c2 / sqrt(k m l^2) goes to zero: the limit depends on the ratio and lies below the undamped load (Ziegler's paradox).",
         });
         self.fit.bar_ui(ui);
-        let refit = self.fit.refit(job.key);
+        let refit = self.fit.refit((self.generation, job.key));
         let palette = [theme.series[0], theme.series[3], theme.series[4]];
         let highest = curves
             .lines
@@ -390,6 +392,7 @@ impl View for ParadoxPanel {
             .analysis()
             .and_then(crate::app::analysis_cache::Analysis::first_instability);
         let model = *state.model();
+        self.generation = state.view_generation();
         self.draw(ui, &model, known, theme);
     }
 }

@@ -1,0 +1,138 @@
+//! The scene's camera: it frames the column's recent motion, large in its
+//! panel, zooming out at once when the column swings wide and back in slowly
+//! as it settles; or, on request, the whole disc the tip can reach.
+
+/// A box in world coordinates (m, y up).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WorldBox {
+    pub min: [f64; 2],
+    pub max: [f64; 2],
+}
+
+impl WorldBox {
+    fn around(points: impl IntoIterator<Item = [f64; 2]>) -> Self {
+        let mut out = Self {
+            min: [f64::INFINITY; 2],
+            max: [f64::NEG_INFINITY; 2],
+        };
+        for point in points {
+            for ((min, max), value) in out.min.iter_mut().zip(&mut out.max).zip(point) {
+                *min = min.min(value);
+                *max = max.max(value);
+            }
+        }
+        out
+    }
+
+    /// Whether `other` lies inside this box.
+    #[must_use]
+    pub fn contains(&self, other: &Self) -> bool {
+        (0..2).all(|a| self.min[a] <= other.min[a] && other.max[a] <= self.max[a])
+    }
+
+    #[must_use]
+    pub fn center(&self) -> [f64; 2] {
+        [
+            0.5 * (self.min[0] + self.max[0]),
+            0.5 * (self.min[1] + self.max[1]),
+        ]
+    }
+
+    #[must_use]
+    pub fn size(&self) -> [f64; 2] {
+        [self.max[0] - self.min[0], self.max[1] - self.min[1]]
+    }
+}
+
+/// The margin around what is framed, as a fraction of the column's length.
+const MARGIN: f64 = 0.12;
+/// Seconds of the tip's trail the camera keeps in view.
+pub const FOLLOW_SECS: f64 = 4.0;
+/// Each frame the camera closes this fraction of the way in (zooming out is
+/// immediate: the column never leaves the picture).
+const SETTLE_PER_FRAME: f64 = 0.04;
+
+/// What the camera aims at: the clamp, the joint, the tip and its recent
+/// trail, at least the straight column, with a margin; for `whole_reach`
+/// the whole disc the tip can reach.
+#[must_use]
+pub fn target(
+    reach_m: f64,
+    joint_m: [f64; 2],
+    tip_m: [f64; 2],
+    trail: impl IntoIterator<Item = [f64; 2]>,
+    whole_reach: bool,
+) -> WorldBox {
+    let margin = MARGIN * reach_m;
+    let framed = if whole_reach {
+        WorldBox::around([[-reach_m, -reach_m], [reach_m, reach_m]])
+    } else {
+        let straight = [[0.0, 0.0], [reach_m, 0.0], joint_m, tip_m];
+        WorldBox::around(straight.into_iter().chain(trail))
+    };
+    WorldBox {
+        min: [framed.min[0] - margin, framed.min[1] - margin],
+        max: [framed.max[0] + margin, framed.max[1] + margin],
+    }
+}
+
+/// The camera's framing, carried from frame to frame.
+#[derive(Clone, Debug, Default)]
+pub struct Camera {
+    framed: Option<WorldBox>,
+    pub whole_reach: bool,
+}
+
+impl Camera {
+    /// The box to draw this frame when aiming at `target`: all of it at
+    /// once when it does not fit the last frame's box, otherwise a step of
+    /// [`SETTLE_PER_FRAME`] toward it.
+    pub fn frame(&mut self, target: WorldBox) -> WorldBox {
+        let framed = match self.framed {
+            Some(last) if last.contains(&target) => {
+                let step = |from: f64, to: f64| from + SETTLE_PER_FRAME * (to - from);
+                WorldBox {
+                    min: [
+                        step(last.min[0], target.min[0]),
+                        step(last.min[1], target.min[1]),
+                    ],
+                    max: [
+                        step(last.max[0], target.max[0]),
+                        step(last.max[1], target.max[1]),
+                    ],
+                }
+            }
+            _ => target,
+        };
+        self.framed = Some(framed);
+        framed
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_camera_zooms_out_at_once_and_settles_back_slowly() {
+        let still = target(2.0, [1.0, 0.0], [2.0, 0.0], [], false);
+        assert!(still.contains(&WorldBox::around([[0.0, 0.0], [2.0, 0.0]])));
+        assert!(still.size()[0] < 2.6, "the straight column fills the width");
+        let swing = target(2.0, [0.9, 0.4], [1.4, 1.3], [[1.9, -0.8]], false);
+        let mut camera = Camera::default();
+        assert_eq!(camera.frame(still), still, "the first frame frames it");
+        assert_eq!(camera.frame(swing), swing, "a wide swing is framed at once");
+        let next = camera.frame(still);
+        assert!(
+            swing.contains(&next) && next != still,
+            "settling takes frames"
+        );
+        for _ in 0..200 {
+            camera.frame(still);
+        }
+        let settled = camera.frame(still);
+        assert!((settled.size()[1] - still.size()[1]).abs() < 1e-3);
+        let whole = target(2.0, [1.0, 0.0], [2.0, 0.0], [], true);
+        assert!(whole.contains(&WorldBox::around([[-2.0, -2.0], [2.0, 2.0]])));
+    }
+}

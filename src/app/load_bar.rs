@@ -1,0 +1,155 @@
+//! The load control for a lecture hall: a bar as wide as the window, coloured
+//! by the stability ranges, that is itself the slider (click or drag it to
+//! set the load), with the critical loads and a ramp's onsets marked on it.
+
+use eframe::egui::{self, Align2, FontId, Rect, Sense, Stroke, pos2, vec2};
+
+use super::state::{AppState, LOAD_MAX_P};
+use super::theme::Theme;
+use crate::format::{load_text, number_text};
+use crate::model::Key;
+
+/// The load at horizontal position `x` of a bar spanning `left..right`
+/// (the slider's range, ends included).
+#[must_use]
+pub fn load_at_x(x: f32, left: f32, right: f32) -> f64 {
+    let fraction = if right > left {
+        ((x - left) / (right - left)).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    f64::from(fraction) * LOAD_MAX_P
+}
+
+/// The horizontal position of `load` on a bar spanning `left..right`.
+#[must_use]
+pub fn x_of_load(load: f64, left: f32, right: f32) -> f32 {
+    #[expect(clippy::cast_possible_truncation, reason = "pixels")]
+    let fraction = (load / LOAD_MAX_P).clamp(0.0, 1.0) as f32;
+    left + (right - left) * fraction
+}
+
+/// The bar across `ui`'s width: the load's value at its left, the ranges,
+/// the critical loads above, the scale below, the handle at the load.
+pub fn load_bar_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+    let text_height = theme.text_size + 4.0;
+    let bar_height = 1.4 * text_height;
+    let font = FontId::proportional(theme.text_size);
+    let p = state.model().load_p();
+    ui.horizontal(|ui| {
+        let label = ui.add_sized(
+            vec2(6.0 * theme.text_size, bar_height + 2.0 * text_height),
+            egui::Label::new(format!(
+                "load\np = {}",
+                number_text((p * 100.0).round() / 100.0)
+            )),
+        );
+        let size = vec2(ui.available_width(), bar_height + 2.0 * text_height);
+        let (rect, response) = ui.allocate_exact_size(size, Sense::click_and_drag());
+        let response = response
+            .on_hover_text("the load p = P l/k: click or drag here, or use the arrow keys")
+            .labelled_by(label.id);
+        response.widget_info(|| egui::WidgetInfo::slider(true, p, "load slider"));
+        let bar = Rect::from_min_max(
+            pos2(rect.left() + 8.0, rect.top() + text_height),
+            pos2(rect.right() - 8.0, rect.top() + text_height + bar_height),
+        );
+        if (response.clicked() || response.dragged())
+            && let Some(pointer) = response.interact_pointer_pos()
+        {
+            state.enter_parameter(Key::Load, load_at_x(pointer.x, bar.left(), bar.right()));
+        }
+        let painter = ui.painter_at(rect);
+        let x = |load: f64| x_of_load(load, bar.left(), bar.right());
+        let analysis = state.analysis();
+        match analysis {
+            Some(analysis) => {
+                for &(start, end, range) in &analysis.ranges {
+                    let r =
+                        Rect::from_min_max(pos2(x(start), bar.top()), pos2(x(end), bar.bottom()));
+                    painter.rect_filled(r, 0.0, theme.state_color(range));
+                }
+                // Each critical load's value above its tick, kept inside the
+                // bar's ends, and left out where it would cover the last one.
+                let mut free_from = f32::NEG_INFINITY;
+                for t in analysis.transitions.iter().filter(|t| t.load <= LOAD_MAX_P) {
+                    let tx = x(t.load);
+                    painter.line_segment(
+                        [pos2(tx, bar.top() - 3.0), pos2(tx, bar.bottom())],
+                        Stroke::new(1.5, theme.text),
+                    );
+                    let galley = painter.layout_no_wrap(
+                        load_text(t.load),
+                        font.clone(),
+                        theme.state_color(t.to),
+                    );
+                    let width = galley.size().x;
+                    let left = (tx - 0.5 * width).clamp(rect.left(), rect.right() - width);
+                    if left >= free_from {
+                        painter.galley(
+                            pos2(left, bar.top() - 3.0 - galley.size().y),
+                            galley,
+                            theme.text,
+                        );
+                        free_from = left + width + 6.0;
+                    }
+                }
+            }
+            None => {
+                painter.rect_filled(bar, 0.0, theme.no_data);
+            }
+        }
+        // The scale under the bar, at whole loads.
+        for whole in 0..=8_u8 {
+            let load = f64::from(whole) * LOAD_MAX_P / 8.0;
+            painter.text(
+                pos2(x(load), bar.bottom() + 2.0),
+                Align2::CENTER_TOP,
+                number_text(load),
+                font.clone(),
+                theme.axis,
+            );
+        }
+        // A ramp's onsets: the theory's (text colour) and the seen one.
+        if let Some(run) = state.ramp() {
+            let theory = analysis.and_then(crate::app::analysis_cache::Analysis::first_instability);
+            for (load, color) in [(theory, theme.text), (run.seen_at_p, theme.measured)] {
+                if let Some(load) = load.filter(|&l| l <= LOAD_MAX_P) {
+                    painter.line_segment(
+                        [pos2(x(load), bar.top()), pos2(x(load), bar.bottom())],
+                        Stroke::new(3.0 * theme.stroke_scale, color),
+                    );
+                }
+            }
+        }
+        // The handle: a bar through the scale, and a knob.
+        let hx = x(p);
+        painter.line_segment(
+            [pos2(hx, bar.top() - 4.0), pos2(hx, bar.bottom() + 4.0)],
+            Stroke::new(4.0 * theme.stroke_scale, theme.now),
+        );
+        painter.circle_filled(pos2(hx, bar.center().y), 0.45 * bar_height, theme.now);
+        painter.circle_stroke(
+            pos2(hx, bar.center().y),
+            0.45 * bar_height,
+            Stroke::new(1.5, theme.background),
+        );
+    });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_bar_maps_its_width_onto_the_slider_s_range_and_back() {
+        assert_eq!(load_at_x(100.0, 100.0, 500.0), 0.0);
+        assert_eq!(load_at_x(500.0, 100.0, 500.0), LOAD_MAX_P);
+        assert_eq!(load_at_x(300.0, 100.0, 500.0), 0.5 * LOAD_MAX_P);
+        assert_eq!(load_at_x(50.0, 100.0, 500.0), 0.0, "left of the bar");
+        for load in [0.0, 1.0, 2.54, LOAD_MAX_P] {
+            let back = load_at_x(x_of_load(load, 100.0, 500.0), 100.0, 500.0);
+            assert!((back - load).abs() < 1e-5, "{load} -> {back}");
+        }
+    }
+}
