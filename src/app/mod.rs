@@ -70,8 +70,8 @@ pub struct ZieglerApp {
     tabs: tabs::Tabs,
     /// The theme applied to the context (None: not yet).
     applied_projector: Option<bool>,
-    /// How the scene frames the column.
-    camera: camera::Camera,
+    /// How the scene frames the column, and what the mouse holds.
+    scene: scene::SceneView,
     /// The state's "reset all" count this view last followed.
     view_generation: u64,
     /// When the window's last frame began (the headless paths never set it:
@@ -96,7 +96,7 @@ impl ZieglerApp {
             tabs: tabs::Tabs::default(),
             applied_projector: None,
             view_generation: 0,
-            camera: camera::Camera::default(),
+            scene: scene::SceneView::default(),
             last_frame: None,
         }
     }
@@ -222,7 +222,7 @@ impl ZieglerApp {
         if self.view_generation != self.state.view_generation() {
             self.view_generation = self.state.view_generation();
             self.tab = Tab::default();
-            self.camera = camera::Camera::default();
+            self.scene = scene::SceneView::default();
         }
         egui::Panel::bottom("status line")
             .exact_size(1.6 * theme.text_size + 8.0)
@@ -245,7 +245,7 @@ impl ZieglerApp {
                 0.5
             };
             ui.allocate_ui(vec2(ui.available_width(), scene_share * height), |ui| {
-                scene::scene_ui(ui, &self.state, &mut self.camera, &theme);
+                scene::scene_ui(ui, &mut self.state, &mut self.scene, &theme);
             });
             load_bar::load_bar_ui(ui, &mut self.state, &theme);
             tabs::Tabs::bar_ui(ui, &mut self.tab);
@@ -266,7 +266,7 @@ impl ZieglerApp {
             Panel::Window => self.contents_ui(ui),
             Panel::Scene => {
                 egui::CentralPanel::default().show(ui, |ui| {
-                    scene::scene_ui(ui, &self.state, &mut self.camera, &theme);
+                    scene::scene_ui(ui, &mut self.state, &mut self.scene, &theme);
                 });
             }
             Panel::Tab(tab) => {

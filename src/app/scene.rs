@@ -49,9 +49,65 @@ impl View {
     }
 }
 
+/// What the scene keeps from frame to frame: its camera, and the part of
+/// the column the mouse holds.
+#[derive(Default)]
+pub struct SceneView {
+    pub camera: Camera,
+    grabbed: Option<Handle>,
+}
+
+/// A part of the column the mouse can take hold of.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Handle {
+    Joint,
+    Tip,
+}
+
+/// How near (in points) a press must be to a joint or the tip to grab it.
+const GRAB_RADIUS: f32 = 28.0;
+
+/// The angles `(phi1, phi2)` that put `handle` at `point` (m): the joint
+/// turns rod 1 toward the point and leaves rod 2's direction; the tip
+/// bends both rods (of the two ways, the one nearer `phi1_now`), stretched
+/// toward a point beyond their reach.
+#[must_use]
+pub fn grab_angles(
+    handle: Handle,
+    (l1, l2): (f64, f64),
+    (phi1_now, phi2_now): (f64, f64),
+    point: [f64; 2],
+) -> (f64, f64) {
+    let toward = point[1].atan2(point[0]);
+    match handle {
+        Handle::Joint => (toward, phi2_now),
+        Handle::Tip => {
+            let distance = point[0].hypot(point[1]).clamp((l1 - l2).abs(), l1 + l2);
+            let cos = ((l1 * l1 + distance * distance - l2 * l2)
+                / (2.0 * l1 * distance.max(1e-12)))
+            .clamp(-1.0, 1.0);
+            let bend = cos.acos();
+            let nearer = |a: f64| {
+                (a - phi1_now + std::f64::consts::PI).rem_euclid(TAU) - std::f64::consts::PI
+            };
+            let phi1 = if nearer(toward + bend).abs() <= nearer(toward - bend).abs() {
+                toward + bend
+            } else {
+                toward - bend
+            };
+            let joint = [l1 * phi1.cos(), l1 * phi1.sin()];
+            let target = [distance * toward.cos(), distance * toward.sin()];
+            (phi1, (target[1] - joint[1]).atan2(target[0] - joint[0]))
+        }
+    }
+}
+
 /// Draws the scene of the app's state in the space left in `ui`, framed
-/// by `camera`, with the camera's "whole reach" switch in its corner.
-pub fn scene_ui(ui: &mut egui::Ui, state: &AppState, camera: &mut Camera, theme: &Theme) {
+/// by the camera, with the camera's "whole reach" switch in its corner;
+/// a drag from a joint or the tip displaces the column (held at rest while
+/// the button is down), and letting go lets it move.
+pub fn scene_ui(ui: &mut egui::Ui, state: &mut AppState, scene: &mut SceneView, theme: &Theme) {
+    let camera = &mut scene.camera;
     let now = state.simulation().observe();
     let model = state.model();
     let l1 = model.column.rod1.length_m;
@@ -69,7 +125,7 @@ pub fn scene_ui(ui: &mut egui::Ui, state: &AppState, camera: &mut Camera, theme:
         recent,
         camera.whole_reach,
     ));
-    let rect = draw(
+    let (rect, view) = draw(
         ui,
         &SceneInput {
             model,
@@ -80,6 +136,39 @@ pub fn scene_ui(ui: &mut egui::Ui, state: &AppState, camera: &mut Camera, theme:
             theme,
         },
     );
+    let l2 = reach_m - l1;
+    let (phi1_now, phi2_now) = (now.phi1_rad, now.phi2_rad);
+    let tip_m = now.tip_m;
+    let drag = ui
+        .interact(rect, ui.scope_id().with("drag the column"), Sense::drag())
+        .on_hover_text("drag a joint or the tip to displace the column; let go to release it");
+    // What was under the button when it went down (the drag starts a few
+    // points later).
+    if drag.drag_started()
+        && let Some(pointer) = ui.input(|i| i.pointer.press_origin())
+    {
+        scene.grabbed = [(Handle::Tip, tip_m), (Handle::Joint, joint_m)]
+            .into_iter()
+            .map(|(handle, at)| (handle, view.to(at[0], at[1]).distance(pointer)))
+            .filter(|&(_, d)| d <= GRAB_RADIUS)
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .map(|(handle, _)| handle);
+    }
+    if let Some(handle) = scene.grabbed {
+        if drag.dragged()
+            && let Some(pointer) = drag.interact_pointer_pos()
+        {
+            let world = view.screen_from_world.inverse().transform_pos(pointer);
+            let point = [f64::from(world.x), f64::from(world.y)];
+            let (phi1, phi2) = grab_angles(handle, (l1, l2), (phi1_now, phi2_now), point);
+            state.hold(phi1, phi2);
+        }
+        if drag.drag_stopped() {
+            scene.grabbed = None;
+            state.release();
+        }
+    }
+    let camera = &mut scene.camera;
     let corner = Rect::from_min_size(
         rect.left_top() + vec2(8.0, 8.0),
         vec2(7.5 * theme.text_size, 1.6 * theme.text_size),
@@ -96,8 +185,9 @@ pub fn scene_ui(ui: &mut egui::Ui, state: &AppState, camera: &mut Camera, theme:
     }
 }
 
-/// Draws `input` in the space left in `ui`; returns where.
-fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> Rect {
+/// Draws `input` in the space left in `ui`; returns where, and the world's
+/// place on the screen.
+fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View) {
     let SceneInput {
         model,
         now,
@@ -175,7 +265,7 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> Rect {
         );
     }
     notes(&painter, theme, rect, status, now.stick_slip);
-    rect
+    (rect, view)
 }
 
 /// The clamp at O: a wall with hatching on the far side.
@@ -468,4 +558,31 @@ fn dashed_arrow(painter: &egui::Painter, origin: Pos2, vector: Vec2, stroke: Str
     let right = tip - head * dir - 0.6 * head * dir.rot90();
     painter.line_segment([tip, left], stroke);
     painter.line_segment([tip, right], stroke);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The tip dragged to a point within reach lands there; beyond reach,
+    /// the column points at it; the joint dragged turns rod 1 alone.
+    #[test]
+    fn a_grabbed_tip_or_joint_goes_where_the_mouse_is() {
+        let (l1, l2) = (1.0, 1.0);
+        let tip = |(a, b): (f64, f64)| [l1 * a.cos() + l2 * b.cos(), l1 * a.sin() + l2 * b.sin()];
+        let (phi1, phi2) = grab_angles(Handle::Tip, (l1, l2), (0.1, 0.1), [1.2, 0.9]);
+        let at = tip((phi1, phi2));
+        assert!(
+            (at[0] - 1.2).abs() < 1e-9 && (at[1] - 0.9).abs() < 1e-9,
+            "{at:?}"
+        );
+        // Of the two bends (phi1 = 0.6435 -/+ 0.7227), the one nearer 0.1.
+        assert!((phi1 - (0.6435 - 0.7227)).abs() < 1e-3, "{phi1}");
+        let (far1, far2) = grab_angles(Handle::Tip, (l1, l2), (0.0, 0.0), [0.0, 5.0]);
+        assert!((far1 - std::f64::consts::FRAC_PI_2).abs() < 1e-6 && (far2 - far1).abs() < 1e-6);
+        assert_eq!(
+            grab_angles(Handle::Joint, (l1, l2), (0.0, 0.3), [0.0, 2.0]).1,
+            0.3
+        );
+    }
 }

@@ -94,6 +94,8 @@ pub struct AppState {
     hint: bool,
     /// Counts "reset all": the views go back to their defaults when it moves.
     view_generation: u64,
+    /// The column is held by the mouse: time stands still until released.
+    held: bool,
 }
 
 impl AppState {
@@ -121,6 +123,7 @@ impl AppState {
             ramp: None,
             hint: false,
             view_generation: 0,
+            held: false,
         };
         state.refresh_analysis();
         Ok(state)
@@ -347,7 +350,7 @@ impl AppState {
     /// Advances the run by `wall_secs` of wall-clock time at the chosen speed
     /// (whole engine steps, the remainder carried; see [`Pace`]).
     pub fn advance(&mut self, wall_secs: f64) {
-        if !self.running {
+        if !self.running || self.held {
             self.pace.restart();
             return;
         }

@@ -212,3 +212,48 @@ fn a_click_on_the_load_bar_sets_the_load() {
     let load = app.settings().model.load_p();
     assert!((load - 4.0).abs() < 0.02, "{load}");
 }
+
+/// Drag to perturb: the tip of the straight roller column, pressed and
+/// moved up in the scene, is held there at rest (time stands still); let go,
+/// the column moves on from the displaced shape.
+#[test]
+fn dragging_the_tip_displaces_the_column_and_letting_go_releases_it() {
+    use zieglerlab::app::Panel;
+    let app = ZieglerApp::new(Settings::default()).unwrap();
+    let t = app.simulation().time_secs();
+    let mut harness = Harness::builder().with_size([800.0, 400.0]).build_ui_state(
+        |ui, app: &mut ZieglerApp| app.panel_ui(ui, Panel::Scene),
+        app,
+    );
+    harness.run();
+    // The camera frames the straight column, x from -0.12 to 1.12 lengths
+    // in the 784 x 384 panel: the tip is at x = 400 + 0.5 * 784 / 1.24, on
+    // the middle line.
+    let tip = egui::pos2(400.0 + 0.5 * 784.0 / 1.24, 200.0);
+    harness.drag_at(tip);
+    harness.run();
+    let up = tip - egui::vec2(0.0, 80.0);
+    for step in 1..=8_u8 {
+        harness.hover_at(tip - egui::vec2(0.0, 10.0 * f32::from(step)));
+        harness.run();
+    }
+    let app = harness.state_mut();
+    assert!(app.state().held(), "the column is held");
+    let x = app.simulation().state();
+    assert!(x[1] > 0.1, "rod 2 turned up: phi2 = {}", x[1]);
+    assert_eq!((x[3], x[4]), (0.0, 0.0), "at rest while held");
+    app.advance(0.5);
+    assert_eq!(
+        app.simulation().time_secs(),
+        t,
+        "time stands still while held"
+    );
+    harness.drop_at(up);
+    harness.run();
+    let app = harness.state_mut();
+    assert!(!app.state().held(), "let go");
+    for _ in 0..30 {
+        app.advance(1.0 / 60.0);
+    }
+    assert!(app.simulation().time_secs() > t + 0.4, "the run goes on");
+}

@@ -3,6 +3,7 @@
 //! the one-line hint of a first launch.
 
 use super::AppState;
+use crate::app::notice::Notice;
 
 /// The hint a first launch shows in the status line.
 pub const FIRST_LAUNCH_HINT: &str =
@@ -41,6 +42,39 @@ impl AppState {
         self.view_generation += 1;
     }
 
+    /// Holds the column at rest at the angles `(phi1, phi2)` (a drag in the
+    /// scene): time stands still until [`Self::release`].
+    pub fn hold(&mut self, phi1_rad: f64, phi2_rad: f64) {
+        let mut x = self.sim.state();
+        x[0] = phi1_rad;
+        x[1] = phi2_rad;
+        x[3] = 0.0;
+        x[4] = 0.0;
+        match self.sim.restart_from(self.sim.engine(), x) {
+            Ok(()) => {
+                self.held = true;
+                self.hint = false;
+            }
+            Err(error) => self.say(Notice::error(error.to_string())),
+        }
+    }
+
+    /// Lets a held column go: the run goes on from rest where it was left,
+    /// and the growth measurement starts again there.
+    pub fn release(&mut self) {
+        if self.held {
+            self.held = false;
+            self.running = true;
+            self.history.restart_measurement(self.sim.time_secs());
+            self.forget_measured();
+        }
+    }
+
+    #[must_use]
+    pub fn held(&self) -> bool {
+        self.held
+    }
+
     /// Moves on every "reset all": views that keep a zoom or a tab compare it.
     #[must_use]
     pub fn view_generation(&self) -> u64 {
@@ -72,5 +106,30 @@ mod tests {
         assert!(state.ramp().is_none());
         assert_eq!(state.simulation().time_secs(), 0.0);
         assert_eq!(state.view_generation(), generation + 1);
+    }
+
+    /// A held column stands still at the given angles, at rest; released,
+    /// it moves on from there.
+    #[test]
+    fn a_held_column_stands_still_and_moves_on_when_released() {
+        let mut state = AppState::defaults();
+        state.hold(0.2, 0.5);
+        let t = state.simulation().time_secs();
+        for _ in 0..30 {
+            state.advance(1.0 / 60.0);
+        }
+        let x = state.simulation().state();
+        assert_eq!(state.simulation().time_secs(), t);
+        assert!((x[0] - 0.2).abs() < 1e-6 && (x[1] - 0.5).abs() < 1e-6);
+        assert_eq!((x[3], x[4]), (0.0, 0.0));
+        state.release();
+        for _ in 0..30 {
+            state.advance(1.0 / 60.0);
+        }
+        assert!(state.simulation().time_secs() > t + 0.4);
+        assert!(
+            (state.simulation().state()[1] - 0.5).abs() > 1e-4,
+            "it moves"
+        );
     }
 }
