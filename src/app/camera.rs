@@ -80,16 +80,22 @@ pub fn target(
 #[derive(Clone, Debug, Default)]
 pub struct Camera {
     framed: Option<WorldBox>,
+    /// The column length the last frame was for: another column (a new
+    /// preset) is framed at once.
+    reach_m: f64,
     pub whole_reach: bool,
 }
 
 impl Camera {
-    /// The box to draw this frame when aiming at `target`: all of it at
-    /// once when it does not fit the last frame's box, otherwise a step of
+    /// The box to draw this frame when aiming at `target` for a column of
+    /// length `reach_m`: all of it at once when it does not fit the last
+    /// frame's box or the column is another, otherwise a step of
     /// [`SETTLE_PER_FRAME`] toward it.
-    pub fn frame(&mut self, target: WorldBox) -> WorldBox {
+    pub fn frame(&mut self, target: WorldBox, reach_m: f64) -> WorldBox {
+        let same_column = self.reach_m == reach_m;
+        self.reach_m = reach_m;
         let framed = match self.framed {
-            Some(last) if last.contains(&target) => {
+            Some(last) if same_column && last.contains(&target) => {
                 let step = |from: f64, to: f64| from + SETTLE_PER_FRAME * (to - from);
                 WorldBox {
                     min: [
@@ -120,18 +126,24 @@ mod tests {
         assert!(still.size()[0] < 2.6, "the straight column fills the width");
         let swing = target(2.0, [0.9, 0.4], [1.4, 1.3], [[1.9, -0.8]], false);
         let mut camera = Camera::default();
-        assert_eq!(camera.frame(still), still, "the first frame frames it");
-        assert_eq!(camera.frame(swing), swing, "a wide swing is framed at once");
-        let next = camera.frame(still);
+        assert_eq!(camera.frame(still, 2.0), still, "the first frame frames it");
+        assert_eq!(
+            camera.frame(swing, 2.0),
+            swing,
+            "a wide swing is framed at once"
+        );
+        let next = camera.frame(still, 2.0);
         assert!(
             swing.contains(&next) && next != still,
             "settling takes frames"
         );
         for _ in 0..200 {
-            camera.frame(still);
+            camera.frame(still, 2.0);
         }
-        let settled = camera.frame(still);
+        let settled = camera.frame(still, 2.0);
         assert!((settled.size()[1] - still.size()[1]).abs() < 1e-3);
+        let small = target(0.5, [0.25, 0.0], [0.5, 0.0], [], false);
+        assert_eq!(camera.frame(small, 0.5), small, "another column: at once");
         let whole = target(2.0, [1.0, 0.0], [2.0, 0.0], [], true);
         assert!(whole.contains(&WorldBox::around([[-2.0, -2.0], [2.0, 2.0]])));
     }

@@ -118,13 +118,10 @@ pub fn scene_ui(ui: &mut egui::Ui, state: &mut AppState, scene: &mut SceneView, 
         .iter()
         .filter(|(t, _)| now.t_secs - t <= FOLLOW_SECS)
         .map(|&(_, tip)| tip);
-    let framed = camera.frame(target(
+    let framed = camera.frame(
+        target(reach_m, joint_m, now.tip_m, recent, camera.whole_reach),
         reach_m,
-        joint_m,
-        now.tip_m,
-        recent,
-        camera.whole_reach,
-    ));
+    );
     let (rect, view) = draw(
         ui,
         &SceneInput {
@@ -139,9 +136,17 @@ pub fn scene_ui(ui: &mut egui::Ui, state: &mut AppState, scene: &mut SceneView, 
     let l2 = reach_m - l1;
     let (phi1_now, phi2_now) = (now.phi1_rad, now.phi2_rad);
     let tip_m = now.tip_m;
-    let drag = ui
-        .interact(rect, ui.scope_id().with("drag the column"), Sense::drag())
-        .on_hover_text("drag a joint or the tip to displace the column; let go to release it");
+    // No tooltip: the mouse rests over the scene in a lecture, and a
+    // tooltip would cover the load bar. The corner says it instead.
+    let drag = ui.interact(rect, ui.scope_id().with("drag the column"), Sense::drag());
+    plate(
+        ui.painter(),
+        theme,
+        rect.left_bottom() + vec2(10.0, -10.0),
+        Align2::LEFT_BOTTOM,
+        "drag the tip or a joint to displace the column".to_owned(),
+        theme.axis,
+    );
     // What was under the button when it went down (the drag starts a few
     // points later).
     if drag.drag_started()

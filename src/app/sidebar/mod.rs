@@ -96,7 +96,11 @@ fn overlay_ui(ui: &mut egui::Ui, state: &mut AppState) {
 pub fn status_line_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
     ui.horizontal(|ui| {
         if let Some(notice) = state.notice().cloned() {
-            if ui.small_button("dismiss").clicked() {
+            if ui
+                .small_button("dismiss")
+                .on_hover_text("clear this message")
+                .clicked()
+            {
                 state.dismiss_notice();
             }
             ui.add(
@@ -107,7 +111,11 @@ pub fn status_line_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
             )
             .on_hover_text("the latest message (the whole text)");
         } else if let Some(hint) = state.hint() {
-            if ui.small_button("got it").clicked() {
+            if ui
+                .small_button("got it")
+                .on_hover_text("hide the hint")
+                .clicked()
+            {
                 state.dismiss_hint();
             }
             ui.label(hint);

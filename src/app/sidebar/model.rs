@@ -48,7 +48,9 @@ impl View for ModelSection {
                     .on_hover_text("rapier2d multibody, the roller's spin implicit");
                 ui.selectable_value(&mut engine, EngineKind::Reference, "reference")
                     .on_hover_text("adaptive Dormand-Prince 5(4) on the exact equations");
-            });
+            })
+            .response
+            .on_hover_text("what integrates the motion: the run goes on from where it is");
         if engine != state.settings().engine {
             state.set_engine(engine);
         }

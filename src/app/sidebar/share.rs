@@ -17,7 +17,13 @@ impl View for ShareSection {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, _theme: &Theme) {
         egui::CollapsingHeader::new("share settings").show(ui, |ui| {
             ui.horizontal(|ui| {
-                if ui.button("copy settings").clicked() {
+                if ui
+                    .button("copy settings")
+                    .on_hover_text(
+                        "the model, load, engine and speed as text, to the clipboard and below",
+                    )
+                    .clicked()
+                {
                     match ron::to_string(state.settings()) {
                         Ok(text) => {
                             ui.ctx().copy_text(text.clone());

@@ -325,7 +325,8 @@ impl MapPanel {
                     }
                 })
                 .response
-                .labelled_by(label.id);
+                .labelled_by(label.id)
+                .on_hover_text("the map's second parameter (its range below restarts the map)");
             if chosen != current
                 && let Ok(axis) = Axis::parse(chosen, model)
             {
@@ -341,10 +342,12 @@ impl MapPanel {
             let (mut lo, mut hi) = self.range;
             let speed = 0.01 * (hi - lo).abs().max(1e-6);
             ui.add(range_field(&mut lo, speed))
-                .accessible_name("map range from");
+                .accessible_name("map range from")
+                .on_hover_text("where the second parameter starts");
             ui.label("to");
             ui.add(range_field(&mut hi, speed))
-                .accessible_name("map range to");
+                .accessible_name("map range to")
+                .on_hover_text("where the second parameter ends");
             // An empty or reversed range is not taken; the old one stays.
             if lo.is_finite() && hi.is_finite() && hi > lo {
                 self.range = (lo, hi);

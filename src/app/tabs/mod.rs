@@ -26,6 +26,19 @@ impl Tab {
     /// Every tab, in the order the tab bar shows them.
     pub const ALL: [Self; 4] = [Self::Locus, Self::Histories, Self::Map, Self::Paradox];
 
+    /// What the tab shows, for its tooltip.
+    #[must_use]
+    pub fn tooltip(self) -> &'static str {
+        match self {
+            Self::Locus => "the eigenvalues in the complex plane and against the load",
+            Self::Histories => "the angles, the energy and the band's power over the run",
+            Self::Map => "the stability of every load against a second parameter",
+            Self::Paradox => {
+                "the first critical load as the damping (or the roller's mass) vanishes"
+            }
+        }
+    }
+
     /// The tab bar's name for it.
     #[must_use]
     pub fn title(self) -> &'static str {
@@ -62,7 +75,8 @@ impl Tabs {
     pub fn bar_ui(ui: &mut egui::Ui, open: &mut Tab) {
         ui.horizontal(|ui| {
             for tab in Tab::ALL {
-                ui.selectable_value(open, tab, tab.title());
+                ui.selectable_value(open, tab, tab.title())
+                    .on_hover_text(tab.tooltip());
             }
         });
     }
