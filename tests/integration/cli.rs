@@ -21,6 +21,15 @@ fn stdout(args: &[&str]) -> String {
     String::from_utf8(out.stdout).expect("utf-8")
 }
 
+/// The rows of a CSV of numbers whose first line must be `header`.
+fn csv_rows(text: &str, header: &str) -> Vec<Vec<f64>> {
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some(header));
+    lines
+        .map(|l| l.split(',').map(|x| x.parse().expect("number")).collect())
+        .collect()
+}
+
 #[test]
 fn critical_json_layout_and_values() {
     let text = stdout(&["critical", "--preset", "ziegler-1952", "--json"]);
@@ -167,14 +176,10 @@ fn simulate_csv_layout() {
         "--engine",
         "reference",
     ]);
-    let mut lines = text.lines();
-    assert_eq!(
-        lines.next(),
-        Some("t,phi1,phi2,psi,phi1_dot,phi2_dot,psi_dot,delta,energy")
+    let rows = csv_rows(
+        &text,
+        "t,phi1,phi2,psi,phi1_dot,phi2_dot,psi_dot,delta,energy",
     );
-    let rows: Vec<Vec<f64>> = lines
-        .map(|l| l.split(',').map(|x| x.parse().expect("number")).collect())
-        .collect();
     assert_eq!(rows.len(), 101, "t = 0 and 100 steps");
     assert_eq!(rows[0][..3], [0.0, 0.001, 0.001]);
     assert!((rows[100][0] - 1.0).abs() < 1e-12);
@@ -432,14 +437,10 @@ fn simulate_with_a_ramp_adds_the_load_of_each_step() {
         "--ramp",
         "0.5:1.5:0.5",
     ]);
-    let mut lines = text.lines();
-    assert_eq!(
-        lines.next(),
-        Some("t,phi1,phi2,psi,phi1_dot,phi2_dot,psi_dot,delta,energy,load")
+    let rows = csv_rows(
+        &text,
+        "t,phi1,phi2,psi,phi1_dot,phi2_dot,psi_dot,delta,energy,load",
     );
-    let rows: Vec<Vec<f64>> = lines
-        .map(|l| l.split(',').map(|x| x.parse().expect("number")).collect())
-        .collect();
     assert_eq!(rows.len(), 301);
     for row in &rows {
         // The row at t closes the step that started at t - dt.

@@ -48,7 +48,7 @@ impl View for RampSection {
             ui.horizontal(|ui| {
                 let start = ui
                     .add_enabled(ramp.is_ok(), egui::Button::new("start ramp"))
-                    .on_hover_text("the load goes to 'from' and moves to 'to' at the rate, as the run goes on (a touch of the load slider ends it)");
+                    .on_hover_text("the load goes to 'from' and moves to 'to' at the rate, as the run goes on (setting the load by hand ends it)");
                 if start.clicked()
                     && let Ok(ramp) = &ramp
                 {
