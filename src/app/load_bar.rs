@@ -84,7 +84,9 @@ pub fn load_bar_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
                         theme.state_color(t.to),
                     );
                     let width = galley.size().x;
-                    let left = (tx - 0.5 * width).clamp(rect.left(), rect.right() - width);
+                    let left = (tx - 0.5 * width)
+                        .min(rect.right() - width)
+                        .max(rect.left());
                     if left >= free_from {
                         painter.galley(
                             pos2(left, bar.top() - 3.0 - galley.size().y),

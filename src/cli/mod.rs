@@ -4,10 +4,12 @@
 
 mod bench;
 mod critical;
+mod headless;
 mod locus;
 mod map;
 mod output;
 mod presets;
+mod record;
 mod simulate;
 mod snapshot;
 
@@ -111,6 +113,8 @@ enum Command {
     /// Render the app (or one panel) headlessly to a PNG after simulating
     /// `--time` seconds from the standard perturbation.
     Snapshot(snapshot::Args),
+    /// An animated GIF of a run (the app or one panel, drawn headlessly), one frame per 1/fps s of simulated time
+    Record(record::Args),
 }
 
 /// Runs the command line; status 0 on success, 2 with one line on any error.
@@ -183,6 +187,7 @@ fn execute(command: &Command) -> Result<()> {
         Command::Map(args) => map::run(args),
         Command::Bench(args) => bench::run(args, &mut out),
         Command::Snapshot(args) => snapshot::run(args),
+        Command::Record(args) => record::run(args),
     }
 }
 

@@ -65,9 +65,35 @@ pub fn write_atomically(
             .and_then(|()| buffered.flush())
             .map_err(|e| error(&e))?;
     }
+    // A temporary file is private (0600); the result gets the permissions
+    // of the file it replaces, or those of a new file (0644 on Unix).
+    let permissions = std::fs::metadata(out)
+        .map(|m| m.permissions())
+        .ok()
+        .or_else(new_file_permissions);
+    if let Some(permissions) = permissions {
+        file.as_file()
+            .set_permissions(permissions)
+            .map_err(|e| error(&e))?;
+    }
     file.as_file().sync_all().map_err(|e| error(&e))?;
     file.persist(out).map_err(|e| error(&e.error))?;
     Ok(())
+}
+
+/// The permissions of a newly made file: readable by all, writable by the
+/// owner.
+#[cfg(unix)]
+#[expect(clippy::unnecessary_wraps, reason = "None on other systems")]
+fn new_file_permissions() -> Option<std::fs::Permissions> {
+    use std::os::unix::fs::PermissionsExt as _;
+    Some(std::fs::Permissions::from_mode(0o644))
+}
+
+/// Elsewhere the temporary file's own permissions stay.
+#[cfg(not(unix))]
+fn new_file_permissions() -> Option<std::fs::Permissions> {
+    None
 }
 
 /// `image` as a PNG file at `out`, atomically.

@@ -478,3 +478,103 @@ fn simulate_with_a_ramp_adds_the_load_of_each_step() {
     assert_eq!(bad.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&bad.stderr).contains("ramp rate = 0"));
 }
+
+/// The frames of a GIF, each as RGBA pixels, and its size.
+fn gif_frames(path: &std::path::Path) -> ((u16, u16), Vec<Vec<u8>>) {
+    let mut options = gif::DecodeOptions::new();
+    options.set_color_output(gif::ColorOutput::RGBA);
+    let mut decoder = options
+        .read_info(std::fs::File::open(path).expect("the GIF opens"))
+        .expect("a GIF");
+    let size = (decoder.width(), decoder.height());
+    let mut frames = Vec::new();
+    while let Some(frame) = decoder.read_next_frame().expect("a frame") {
+        frames.push(frame.buffer.to_vec());
+    }
+    (size, frames)
+}
+
+/// `record`: one frame per 1/fps s of simulated time at the given size,
+/// the same bytes for the same arguments, frames that change while the
+/// column moves (the tabletop column fluttering at p = 3), and bad
+/// arguments refused before anything is drawn or written.
+#[test]
+fn record_writes_a_deterministic_gif_of_the_run() {
+    let folder = tempfile::tempdir().expect("a temporary folder");
+    let out = |name: &str| folder.path().join(name);
+    let record = |path: &std::path::Path| {
+        stdout(&[
+            "record",
+            "--preset",
+            "tabletop",
+            "--set",
+            "load=3",
+            "--panel",
+            "scene",
+            "--duration",
+            "3",
+            "--fps",
+            "4",
+            "--size",
+            "160x100",
+            "--out",
+            path.to_str().expect("a path"),
+        ])
+    };
+    record(&out("a.gif"));
+    record(&out("b.gif"));
+    let (a, b) = (
+        std::fs::read(out("a.gif")).expect("written"),
+        std::fs::read(out("b.gif")).expect("written"),
+    );
+    assert_eq!(a, b, "the same arguments give the same bytes");
+    let (size, frames) = gif_frames(&out("a.gif"));
+    assert_eq!(size, (160, 100));
+    assert_eq!(frames.len(), 12, "3 s at 4 frames per second");
+    assert_ne!(frames[0], frames[11], "the column moved");
+    for (args, says) in [
+        (vec!["--out", "x.png"], "name the file *.gif"),
+        (vec!["--fps", "0", "--out", "x.gif"], "fps = 0"),
+        (
+            vec!["--duration", "1000", "--out", "x.gif"],
+            "at most 3000 frames",
+        ),
+        (vec!["--scale", "9", "--out", "x.gif"], "scale = 9"),
+    ] {
+        let mut all = vec!["record", "--preset", "tabletop"];
+        all.extend(args);
+        let refused = run(&all);
+        assert_eq!(refused.status.code(), Some(2), "{all:?}");
+        assert!(
+            String::from_utf8_lossy(&refused.stderr).contains(says),
+            "{all:?}"
+        );
+    }
+    assert!(!std::path::Path::new("x.gif").exists(), "nothing written");
+}
+
+/// A file the CLI writes gets the usual permissions (readable by all), not
+/// those of the private temporary file it is written through.
+#[cfg(unix)]
+#[test]
+fn written_files_are_readable_by_all() {
+    use std::os::unix::fs::PermissionsExt as _;
+    let folder = tempfile::tempdir().expect("a temporary folder");
+    let out = folder.path().join("map.csv");
+    stdout(&[
+        "map",
+        "--preset",
+        "ziegler-1952",
+        "--x",
+        "load:0:4:3",
+        "--y",
+        "damping:0:0.5:2",
+        "--out",
+        out.to_str().expect("a path"),
+    ]);
+    let mode = std::fs::metadata(&out)
+        .expect("written")
+        .permissions()
+        .mode();
+    assert_eq!(mode & 0o777, 0o644);
+}

@@ -1,0 +1,195 @@
+//! Pictures of the app without a window: the panel and size arguments, and
+//! the headless renderer (wgpu on Mesa's CPU GL will do) with one clear
+//! error when there is none.
+
+use std::str::FromStr;
+
+use anyhow::Result;
+use clap::ValueEnum;
+
+use zieglerlab::app::{Panel, Tab, ZieglerApp};
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum PanelArg {
+    Window,
+    Locus,
+    Scene,
+    Histories,
+    Map,
+    Paradox,
+}
+
+impl From<PanelArg> for Panel {
+    fn from(panel: PanelArg) -> Self {
+        match panel {
+            PanelArg::Window => Self::Window,
+            PanelArg::Locus => Self::Tab(Tab::Locus),
+            PanelArg::Scene => Self::Scene,
+            PanelArg::Histories => Self::Tab(Tab::Histories),
+            PanelArg::Map => Self::Tab(Tab::Map),
+            PanelArg::Paradox => Self::Tab(Tab::Paradox),
+        }
+    }
+}
+
+/// A picture's size in pixels, `WIDTHxHEIGHT`, each 64 to 8192.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Size {
+    pub width: u16,
+    pub height: u16,
+}
+
+impl FromStr for Size {
+    type Err = String;
+
+    fn from_str(text: &str) -> Result<Self, String> {
+        text.split_once('x')
+            .and_then(|(w, h)| Some((w.trim().parse().ok()?, h.trim().parse().ok()?)))
+            .filter(|&(w, h)| (64..=8192).contains(&w) && (64..=8192).contains(&h))
+            .map(|(width, height)| Self { width, height })
+            .ok_or_else(|| {
+                "must be WIDTHxHEIGHT in pixels, each 64 to 8192 (e.g. 1280x800)".to_owned()
+            })
+    }
+}
+
+/// How a picture shows the app: which panel, projector mode, and pixels
+/// per point.
+#[derive(clap::Args, Debug)]
+pub struct Look {
+    /// Pixels per point, 0.5 to 8: 2 draws the same layout as 1 with
+    /// twice as many pixels each way (text for a 4K slide: `--size
+    /// 3840x2160 --scale 3` lays out a 1280x720 window).
+    #[arg(long, default_value_t = 1.0)]
+    pub scale: f32,
+    #[arg(long)]
+    pub projector: bool,
+    #[arg(long, value_enum, default_value_t = PanelArg::Window)]
+    pub panel: PanelArg,
+}
+
+/// Pixels per point must be 0.5 to 8.
+///
+/// # Errors
+/// A scale out of that range, or not a number.
+pub fn check_scale(scale: f32) -> Result<()> {
+    if !(scale.is_finite() && (0.5..=8.0).contains(&scale)) {
+        anyhow::bail!("scale = {scale}: must be 0.5 to 8 pixels per point");
+    }
+    Ok(())
+}
+
+/// Renders `panel` of `app` headlessly with wgpu, `size` pixels at `scale`
+/// pixels per point: `frames` pictures, `before(app, i)` run before picture
+/// `i` and each picture handed to `each`. One renderer serves all the
+/// frames. A missing renderer (no Mesa, no GPU) panics inside its setup:
+/// that becomes one clear error.
+///
+/// # Errors
+/// No renderer, a drawing that failed, or an error of `each`.
+pub fn render_frames(
+    app: ZieglerApp,
+    panel: Panel,
+    size: Size,
+    scale: f32,
+    frames: usize,
+    mut before: impl FnMut(&mut ZieglerApp, usize),
+    mut each: impl FnMut(usize, image::RgbaImage) -> Result<()>,
+) -> Result<()> {
+    let (width, height) = (f32::from(size.width), f32::from(size.height));
+    let previous_hook = std::panic::take_hook();
+    std::panic::set_hook(Box::new(|_| {}));
+    let rendered = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        let mut harness = egui_kittest::Harness::builder()
+            .wgpu()
+            .with_size([width / scale, height / scale])
+            .with_pixels_per_point(scale)
+            .build_ui_state(|ui, app: &mut ZieglerApp| app.panel_ui(ui, panel), app);
+        harness.run_steps(4);
+        for i in 0..frames {
+            before(harness.state_mut(), i);
+            if i > 0 {
+                harness.run_steps(2);
+            }
+            match harness.render() {
+                Ok(image) => each(i, image).map_err(Err)?,
+                Err(error) => return Err(Ok(error)),
+            }
+        }
+        Ok(())
+    }));
+    std::panic::set_hook(previous_hook);
+    match rendered {
+        Ok(Ok(())) => Ok(()),
+        Ok(Err(Err(error))) => Err(error),
+        // The renderer exists (its creation panics otherwise): this is the
+        // drawing itself failing.
+        Ok(Err(Ok(error))) => {
+            anyhow::bail!(failure_message(&Failure::Drawing(error), width, height))
+        }
+        Err(payload) => {
+            let what = payload
+                .downcast_ref::<String>()
+                .map(String::as_str)
+                .or_else(|| payload.downcast_ref::<&str>().copied())
+                .unwrap_or("")
+                .lines()
+                .next()
+                .unwrap_or("")
+                .to_owned();
+            anyhow::bail!(failure_message(&Failure::NoRenderer(what), width, height))
+        }
+    }
+}
+
+/// How a headless picture failed.
+#[derive(Debug)]
+enum Failure {
+    /// The renderer exists; drawing failed with this message.
+    Drawing(String),
+    /// The renderer could not be created (its setup panicked with this).
+    NoRenderer(String),
+}
+
+/// What the user is told: a drawing that timed out (a large picture on a
+/// busy machine's CPU renderer) says so and what to try; a missing renderer
+/// names the packages that provide one.
+fn failure_message(failure: &Failure, width: f32, height: f32) -> String {
+    match failure {
+        Failure::Drawing(error) if error.to_lowercase().contains("timeout") => format!(
+            "rendering timed out ({error}): Mesa's CPU renderer needs more time for a {width}x{height} picture on this machine; try a smaller --size or run it again when the machine is less busy"
+        ),
+        Failure::Drawing(error) => format!("rendering failed: {error}"),
+        Failure::NoRenderer(what) => format!(
+            "rendering failed ({what}); if no renderer could be created (a GPU, or Mesa's CPU GL: Debian packages libegl1 libegl-mesa0 libgl1-mesa-dri)"
+        ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A timed-out drawing is not reported as a missing renderer (it once
+    /// said "install Mesa" for a 4096x4096 picture on a busy machine).
+    #[test]
+    fn a_timeout_says_so_and_a_missing_renderer_names_the_packages() {
+        let timeout = failure_message(
+            &Failure::Drawing("Timeout waiting for the GPU".to_owned()),
+            4096.0,
+            4096.0,
+        );
+        assert!(timeout.starts_with("rendering timed out"), "{timeout}");
+        assert!(timeout.contains("4096x4096"), "{timeout}");
+        assert!(timeout.contains("smaller --size"), "{timeout}");
+        assert!(!timeout.contains("Mesa's CPU GL: Debian"), "{timeout}");
+        let other = failure_message(&Failure::Drawing("lost device".to_owned()), 64.0, 64.0);
+        assert_eq!(other, "rendering failed: lost device");
+        let missing = failure_message(&Failure::NoRenderer("no adapter".to_owned()), 1280.0, 800.0);
+        assert!(missing.contains("(no adapter)"), "{missing}");
+        assert!(
+            missing.contains("libegl1 libegl-mesa0 libgl1-mesa-dri"),
+            "{missing}"
+        );
+    }
+}

@@ -1,0 +1,136 @@
+//! `zieglerlab record`: an animated GIF of a run for slides and handouts,
+//! drawn by the same headless renderer as `snapshot`, one frame per 1/fps s
+//! of simulated time: the same arguments give the same bytes.
+
+use std::io::Write;
+
+use anyhow::Result;
+
+use zieglerlab::app::{Panel, Settings, Tab, ZieglerApp};
+use zieglerlab::model::Key;
+use zieglerlab::sim::Ramp;
+
+use super::headless::{Look, Size, check_scale, render_frames};
+use super::output::{check_output, write_atomically};
+use super::{EngineArg, ModelArgs, progress_bar};
+
+/// Most frames a recording holds (5 minutes at 10 frames per second).
+const MAX_FRAMES: f64 = 3000.0;
+/// The app's frame: the run advances in these steps between pictures, as
+/// `snapshot` and the app do.
+const APP_FRAME_SECS: f64 = 1.0 / 60.0;
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    model: ModelArgs,
+    /// A quasi-static load ramp during the recording, `FROM:TO:RATE`.
+    #[arg(long, value_name = "FROM:TO:RATE")]
+    ramp: Option<Ramp>,
+    /// Simulated seconds recorded.
+    #[arg(long, default_value_t = 10.0, allow_negative_numbers = true)]
+    duration: f64,
+    /// Frames per simulated second (1 to 50).
+    #[arg(long, default_value_t = 10)]
+    fps: u16,
+    #[arg(long, value_enum, default_value_t = EngineArg::Rapier)]
+    engine: EngineArg,
+    /// Picture size in pixels, `WIDTHxHEIGHT`.
+    #[arg(long, default_value = "800x500", allow_hyphen_values = true)]
+    size: Size,
+    #[command(flatten)]
+    look: Look,
+    /// The GIF file to write (written whole at the end, or not at all).
+    #[arg(long)]
+    out: std::path::PathBuf,
+}
+
+pub fn run(args: &Args) -> Result<()> {
+    check_output(&args.out, false)?;
+    if !args
+        .out
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("gif"))
+    {
+        anyhow::bail!(
+            "out = {}: recordings are written as GIF; name the file *.gif",
+            args.out.display()
+        );
+    }
+    check_scale(args.look.scale)?;
+    if !(1..=50).contains(&args.fps) {
+        anyhow::bail!("fps = {}: must be 1 to 50 frames per second", args.fps);
+    }
+    let duration = args.duration;
+    let frames = duration * f64::from(args.fps);
+    if !(duration.is_finite() && duration > 0.0 && frames <= MAX_FRAMES) {
+        anyhow::bail!(
+            "duration = {duration}: must be a positive number of seconds, at most {MAX_FRAMES} frames at {} fps",
+            args.fps
+        );
+    }
+    let (name, mut model) = args.model.build()?;
+    if let Some(ramp) = &args.ramp {
+        if args.model.sets(Key::Load) {
+            anyhow::bail!("--ramp sets the load (from its FROM on): leave out --set load");
+        }
+        model = model.at_load(ramp.from_p);
+    }
+    let mut app = ZieglerApp::new(Settings {
+        preset: name,
+        model,
+        engine: args.engine.into(),
+        speed: 1.0,
+        projector: args.look.projector,
+    })?;
+    if let Some(ramp) = args.ramp {
+        app.state_mut().start_ramp(ramp);
+    }
+    let panel = Panel::from(args.look.panel);
+    if matches!(panel, Panel::Tab(Tab::Map | Tab::Paradox)) {
+        app.complete_background_work();
+    }
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "frames is checked to lie in (0, MAX_FRAMES]"
+    )]
+    let frames = frames.round().max(1.0) as usize;
+    let Size { width, height } = args.size;
+    // A frame's delay in hundredths of a second (GIF's unit).
+    let delay_cs = (100 / args.fps).max(1);
+    let progress = progress_bar(frames as u64, "frames");
+    let mut encoded = Vec::new();
+    {
+        let mut encoder = gif::Encoder::new(&mut encoded, width, height, &[])?;
+        encoder.set_repeat(gif::Repeat::Infinite)?;
+        let mut app_time_secs = 0.0;
+        render_frames(
+            app,
+            panel,
+            args.size,
+            args.look.scale,
+            frames,
+            |app, i| {
+                // Whole app frames up to this picture's simulated time.
+                #[expect(clippy::cast_precision_loss, reason = "at most MAX_FRAMES")]
+                let due_secs = i as f64 / f64::from(args.fps);
+                while app_time_secs + 0.5 * APP_FRAME_SECS < due_secs {
+                    app.advance(APP_FRAME_SECS);
+                    app_time_secs += APP_FRAME_SECS;
+                }
+            },
+            |i, image| {
+                let mut pixels = image.into_raw();
+                // NeuQuant at speed 10: a palette per frame, deterministic.
+                let mut frame = gif::Frame::from_rgba_speed(width, height, &mut pixels, 10);
+                frame.delay = delay_cs;
+                encoder.write_frame(&frame)?;
+                progress.set_position(i as u64 + 1);
+                Ok(())
+            },
+        )?;
+    }
+    progress.finish_and_clear();
+    write_atomically(&args.out, |w| w.write_all(&encoded))
+}
