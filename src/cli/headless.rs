@@ -111,20 +111,18 @@ pub fn render_frames(
             if i > 0 {
                 harness.run_steps(2);
             }
-            match harness.render() {
-                Ok(image) => each(i, image).map_err(Err)?,
-                Err(error) => return Err(Ok(error)),
-            }
+            let image = harness.render().map_err(Stop::Drawing)?;
+            each(i, image).map_err(Stop::Taking)?;
         }
         Ok(())
     }));
     std::panic::set_hook(previous_hook);
     match rendered {
         Ok(Ok(())) => Ok(()),
-        Ok(Err(Err(error))) => Err(error),
+        Ok(Err(Stop::Taking(error))) => Err(error),
         // The renderer exists (its creation panics otherwise): this is the
         // drawing itself failing.
-        Ok(Err(Ok(error))) => {
+        Ok(Err(Stop::Drawing(error))) => {
             anyhow::bail!(failure_message(&Failure::Drawing(error), width, height))
         }
         Err(payload) => {
@@ -140,6 +138,14 @@ pub fn render_frames(
             anyhow::bail!(failure_message(&Failure::NoRenderer(what), width, height))
         }
     }
+}
+
+/// Why the frames stopped before the end.
+enum Stop {
+    /// The renderer could not draw a frame.
+    Drawing(String),
+    /// The one taking the frames failed (a write, an encoder).
+    Taking(anyhow::Error),
 }
 
 /// How a headless picture failed.
