@@ -12,5 +12,6 @@ pub mod analysis;
 pub mod app;
 pub mod bench;
 pub mod format;
+pub mod lesson;
 pub mod model;
 pub mod sim;

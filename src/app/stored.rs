@@ -13,8 +13,7 @@ use super::state::{AppState, Settings};
 use super::stored_model::read_model;
 use crate::model::PresetId;
 
-/// The simulated seconds per wall second the speed slider offers.
-pub const SPEED_RANGE: std::ops::RangeInclusive<f64> = 0.1..=10.0;
+use crate::sim::SPEED_RANGE;
 
 /// The fields of a RON struct (the settings, or a part of the model), each
 /// as unparsed RON, by name.

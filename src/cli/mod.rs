@@ -5,6 +5,7 @@
 mod bench;
 mod critical;
 mod headless;
+mod lesson;
 mod locus;
 mod map;
 mod output;
@@ -98,6 +99,8 @@ impl From<EngineArg> for EngineKind {
 enum Command {
     /// List the presets with every parameter, its unit and its range.
     Presets(presets::Args),
+    /// Check a lesson file (its first problem, with the line), or list the built-in lessons
+    Lesson(lesson::Args),
     /// Critical loads: every change of stability along the load axis.
     Critical(critical::Args),
     /// Root locus: every eigenvalue at evenly spaced loads, branches tracked.
@@ -181,6 +184,7 @@ fn execute(command: &Command) -> Result<()> {
     let mut out = std::io::stdout().lock();
     match command {
         Command::Presets(args) => presets::run(args, &mut out),
+        Command::Lesson(args) => lesson::run(args, &mut out),
         Command::Critical(args) => critical::run(args, &mut out),
         Command::Locus(args) => locus::run(args, &mut out),
         Command::Simulate(args) => simulate::run(args, &mut out),

@@ -5,8 +5,10 @@ use super::ModelError;
 pub use super::key_table::KEYS;
 use super::params::{Model, analysis_range_text};
 
-/// A settable parameter, by the name `--set` and the app's fields use.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+/// A settable parameter, by the name `--set` and the app's fields use (and
+/// read by that name from a file).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Deserialize)]
+#[serde(try_from = "String")]
 pub enum Key {
     Load,
     A,
@@ -125,6 +127,14 @@ impl Key {
 impl std::fmt::Display for Key {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(self.name())
+    }
+}
+
+impl TryFrom<String> for Key {
+    type Error = ModelError;
+
+    fn try_from(name: String) -> Result<Self, ModelError> {
+        name.parse()
     }
 }
 

@@ -18,6 +18,9 @@ use crate::model::{Model, ModelError, StateVec, state_derivative};
 /// the presets (about 5 s) and the roller's spin time constant at p = 1.
 pub const DEFAULT_STEP_SECS: f64 = 1.0 / 240.0;
 
+/// Simulated seconds per wall-clock second a run may be shown at.
+pub const SPEED_RANGE: std::ops::RangeInclusive<f64> = 0.1..=10.0;
+
 /// A run stops when an angle of the column leaves this range (about 160
 /// turns: a column spinning round under a huge load)...
 pub const MAX_ANGLE_RAD: f64 = 1.0e3;

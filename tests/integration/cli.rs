@@ -578,3 +578,28 @@ fn written_files_are_readable_by_all() {
         .mode();
     assert_eq!(mode & 0o777, 0o644);
 }
+
+/// `lesson --check`: every shipped lesson passes; a broken one is refused
+/// with status 2, its line and what was expected.
+#[test]
+fn lesson_check_passes_the_shipped_lessons_and_names_the_line_of_a_broken_one() {
+    for entry in std::fs::read_dir("assets/lessons").expect("the lessons folder") {
+        let path = entry.expect("an entry").path();
+        let text = stdout(&["lesson", "--check", path.to_str().expect("a path")]);
+        assert!(text.contains(": ok: "), "{text}");
+    }
+    let folder = tempfile::tempdir().expect("a temporary folder");
+    let broken = folder.path().join("broken.ron");
+    std::fs::write(
+        &broken,
+        "Lesson(\n    title: \"t\",\n    steps: [\n        Step(text: \"a\"),\n        Step(text: \"b\", speed: 50.0),\n    ],\n)\n",
+    )
+    .expect("written");
+    let refused = run(&["lesson", "--check", broken.to_str().expect("a path")]);
+    assert_eq!(refused.status.code(), Some(2));
+    let said = String::from_utf8_lossy(&refused.stderr);
+    assert!(
+        said.contains("line 5: step 2: speed = 50: expected 0.1 to 10"),
+        "{said}"
+    );
+}

@@ -5,10 +5,9 @@ use eframe::egui;
 use crate::app::View;
 use crate::app::command::Command;
 use crate::app::state::AppState;
-use crate::app::stored::SPEED_RANGE;
 use crate::app::theme::Theme;
 use crate::format::number_text;
-use crate::sim::Status;
+use crate::sim::{SPEED_RANGE, Status};
 
 /// The named speeds, as in classroom simulations: simulated seconds per
 /// wall-clock second; Normal is real time.
