@@ -112,31 +112,49 @@ pub fn load_bar_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
                 theme.axis,
             );
         }
-        // A ramp's onsets: the theory's (text colour) and the seen one.
-        if let Some(run) = state.ramp() {
-            let theory = analysis.and_then(crate::app::analysis_cache::Analysis::first_instability);
-            for (load, color) in [(theory, theme.text), (run.seen_at_p, theme.measured)] {
-                if let Some(load) = load.filter(|&l| l <= LOAD_MAX_P) {
-                    painter.line_segment(
-                        [pos2(x(load), bar.top()), pos2(x(load), bar.bottom())],
-                        Stroke::new(3.0 * theme.stroke_scale, color),
-                    );
-                }
+        marks_ui(&painter, bar, state, theme);
+    });
+}
+
+/// What is marked on the bar: a ramp's onsets (the theory's, the seen one),
+/// a lesson's predicted load, and the handle at the load.
+fn marks_ui(painter: &egui::Painter, bar: Rect, state: &AppState, theme: &Theme) {
+    let x = |load: f64| x_of_load(load, bar.left(), bar.right());
+    let bar_height = bar.height();
+    let p = state.model().load_p();
+    let analysis = state.analysis();
+    // A ramp's onsets: the theory's (text colour) and the seen one.
+    if let Some(run) = state.ramp() {
+        let theory = analysis.and_then(crate::app::analysis_cache::Analysis::first_instability);
+        for (load, color) in [(theory, theme.text), (run.seen_at_p, theme.measured)] {
+            if let Some(load) = load.filter(|&l| l <= LOAD_MAX_P) {
+                painter.line_segment(
+                    [pos2(x(load), bar.top()), pos2(x(load), bar.bottom())],
+                    Stroke::new(3.0 * theme.stroke_scale, color),
+                );
             }
         }
-        // The handle: a bar through the scale, and a knob.
-        let hx = x(p);
-        painter.line_segment(
-            [pos2(hx, bar.top() - 4.0), pos2(hx, bar.bottom() + 4.0)],
-            Stroke::new(4.0 * theme.stroke_scale, theme.now),
-        );
-        painter.circle_filled(pos2(hx, bar.center().y), 0.45 * bar_height, theme.now);
+    }
+    // A lesson's predicted load: a ring on the bar.
+    if let Some(predicted) = state.lesson().and_then(|run| run.predicted_load) {
         painter.circle_stroke(
-            pos2(hx, bar.center().y),
-            0.45 * bar_height,
-            Stroke::new(1.5, theme.background),
+            pos2(x(predicted), bar.center().y),
+            0.35 * bar_height,
+            Stroke::new(3.0 * theme.stroke_scale, theme.info),
         );
-    });
+    }
+    // The handle: a bar through the scale, and a knob.
+    let hx = x(p);
+    painter.line_segment(
+        [pos2(hx, bar.top() - 4.0), pos2(hx, bar.bottom() + 4.0)],
+        Stroke::new(4.0 * theme.stroke_scale, theme.now),
+    );
+    painter.circle_filled(pos2(hx, bar.center().y), 0.45 * bar_height, theme.now);
+    painter.circle_stroke(
+        pos2(hx, bar.center().y),
+        0.45 * bar_height,
+        Stroke::new(1.5, theme.background),
+    );
 }
 
 #[cfg(test)]

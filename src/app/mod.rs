@@ -219,6 +219,9 @@ impl ZieglerApp {
     /// only in [`ZieglerApp::advance`], so a picture depends on the state alone.
     pub fn contents_ui(&mut self, ui: &mut egui::Ui) {
         let theme = self.applied_theme(ui.ctx());
+        if let Some(tab) = self.state.take_requested_tab() {
+            self.tab = Tab::from(tab);
+        }
         if self.view_generation != self.state.view_generation() {
             self.view_generation = self.state.view_generation();
             self.tab = Tab::default();

@@ -3,6 +3,7 @@
 //! notices, with the only ways to change them.
 
 mod classroom;
+mod lesson;
 mod overlay;
 mod ramp;
 
@@ -14,6 +15,7 @@ use crate::sim::{
     DEFAULT_STEP_SECS, EngineKind, Observables, SimError, Simulation, Status, initial_state,
 };
 
+pub use lesson::LessonRun;
 pub use overlay::Overlay;
 pub use ramp::{RampRun, VISIBLE_FRACTION};
 
@@ -96,6 +98,9 @@ pub struct AppState {
     view_generation: u64,
     /// The column is held by the mouse: time stands still until released.
     held: bool,
+    /// The lesson under way, and the tab its step asks the window for.
+    lesson: Option<LessonRun>,
+    requested_tab: Option<crate::lesson::LessonTab>,
 }
 
 impl AppState {
@@ -124,6 +129,8 @@ impl AppState {
             hint: false,
             view_generation: 0,
             held: false,
+            lesson: None,
+            requested_tab: None,
         };
         state.refresh_analysis();
         Ok(state)

@@ -257,3 +257,57 @@ fn dragging_the_tip_displaces_the_column_and_letting_go_releases_it() {
     }
     assert!(app.simulation().time_secs() > t + 0.4, "the run goes on");
 }
+
+/// A lesson walked through as a class would: open the built-in "where does
+/// the column start to flutter" (it switches to the tabletop column at
+/// p = 1), go on to the prediction and click the predicted load on its
+/// slider, go on to the ramp and let it run, and read the result beside
+/// the prediction: the theory's onset (the closed form 2 (9 - sqrt 7) / 5)
+/// and where the motion showed, past it.
+#[test]
+fn a_lesson_walked_through_predict_run_reveal() {
+    let app = ZieglerApp::new(Settings::default()).unwrap();
+    let mut harness = Harness::builder()
+        .with_size([1280.0, 900.0])
+        .build_ui_state(|ui, app: &mut ZieglerApp| app.contents_ui(ui), app);
+    harness.run();
+    harness.get_by_label("lessons").click();
+    harness.run();
+    harness
+        .get_by_label("Where does the column start to flutter?")
+        .click();
+    harness.run();
+    let model = harness.state().settings().model;
+    assert_eq!(harness.state().settings().preset.name(), "tabletop");
+    assert_eq!(model.load_p(), 1.0);
+    harness.get_by_label("next").click();
+    harness.run();
+    harness.get_by_label("predicted load").click();
+    harness.run();
+    let predicted = harness.state().state().lesson().unwrap().predicted_load;
+    assert!(
+        predicted.is_some_and(|p| (p - 4.0).abs() < 0.3),
+        "{predicted:?}"
+    );
+    harness.get_by_label("next").click();
+    harness.run();
+    assert!(
+        harness.state().state().ramp().is_some(),
+        "the step starts its ramp"
+    );
+    for _ in 0..60 * 40 {
+        harness.state_mut().advance(1.0 / 60.0);
+    }
+    harness.run();
+    harness.get_by_label("next").click();
+    harness.run();
+    let onset = 2.0 * (9.0 - 7f64.sqrt()) / 5.0;
+    let seen = harness.state().state().ramp().unwrap().seen_at_p.unwrap();
+    assert!(seen > onset, "seen at {seen}, onset {onset}");
+    let said = format!(
+        "the theory: unstable from p = {}; the motion showed at p = {}",
+        zieglerlab::format::load_text(onset),
+        zieglerlab::format::load_text(seen)
+    );
+    assert!(harness.query_by_label_contains(&said).is_some(), "{said}");
+}

@@ -1,7 +1,8 @@
-//! The controls on the left: the model, the load,
+//! The controls on the left: a lesson, the model, the load,
 //! the load ramp, the parameters, time, the status card, the overlay and the settings to
 //! share, each a section in a file of its own.
 
+mod lesson;
 mod load;
 mod model;
 mod number_field;
@@ -22,6 +23,7 @@ use crate::model::{PRESETS, PresetId};
 /// The sidebar and the sections that keep something of their own.
 #[derive(Default)]
 pub struct Sidebar {
+    lesson: lesson::LessonSection,
     load: load::LoadSection,
     parameters: parameters::ParametersSection,
     ramp: ramp::RampSection,
@@ -31,6 +33,8 @@ pub struct Sidebar {
 impl View for Sidebar {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
         ui.heading("zieglerlab");
+        ui.separator();
+        self.lesson.ui(ui, state, theme);
         ui.separator();
         model::ModelSection.ui(ui, state, theme);
         ui.separator();

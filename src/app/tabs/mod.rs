@@ -22,6 +22,18 @@ pub enum Tab {
     Paradox,
 }
 
+impl From<crate::lesson::LessonTab> for Tab {
+    fn from(tab: crate::lesson::LessonTab) -> Self {
+        use crate::lesson::LessonTab;
+        match tab {
+            LessonTab::Locus => Self::Locus,
+            LessonTab::Histories => Self::Histories,
+            LessonTab::Map => Self::Map,
+            LessonTab::Paradox => Self::Paradox,
+        }
+    }
+}
+
 impl Tab {
     /// Every tab, in the order the tab bar shows them.
     pub const ALL: [Self; 4] = [Self::Locus, Self::Histories, Self::Map, Self::Paradox];

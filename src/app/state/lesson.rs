@@ -1,0 +1,177 @@
+//! A lesson under way: which step is shown, what the student predicted,
+//! and a step's actions carried out on the state (preset, parameters,
+//! speed, overlay, a kick or a ramp; the tab is asked of the window).
+
+use super::AppState;
+use crate::app::notice::Notice;
+use crate::lesson::{Lesson, LessonTab, Predict, Reveal, Run};
+use crate::model::Assignment;
+use crate::sim::Ramp;
+
+/// A lesson and where the class is in it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LessonRun {
+    pub lesson: Lesson,
+    /// The step shown (from 0).
+    pub step: usize,
+    /// The load the student marked, for a `Load` prediction.
+    pub predicted_load: Option<f64>,
+    /// The answer the student chose (from 0), for a `Choice`.
+    pub chosen: Option<usize>,
+    /// The last choice asked, to set its answer beside the reveal.
+    last_choice: Option<Vec<String>>,
+}
+
+impl LessonRun {
+    /// The step shown.
+    #[must_use]
+    pub fn current(&self) -> &crate::lesson::Step {
+        &self.lesson.steps[self.step.min(self.lesson.steps.len() - 1)]
+    }
+
+    /// The revealed result of the step shown, in words, beside what was
+    /// predicted; `first_instability` and `seen_at_p` come from the state.
+    #[must_use]
+    pub fn reveal_text(
+        &self,
+        first_instability: Option<f64>,
+        seen_at_p: Option<f64>,
+    ) -> Option<String> {
+        let load = |p: f64| crate::format::load_text(p);
+        let text = match self.current().reveal.as_ref()? {
+            Reveal::FirstInstability => {
+                let theory = first_instability.map_or_else(
+                    || "the column does not lose stability up to p = 8".to_owned(),
+                    |p| format!("the theory: unstable from p = {}", load(p)),
+                );
+                let seen = seen_at_p
+                    .map(|p| format!("; the motion showed at p = {}", load(p)))
+                    .unwrap_or_default();
+                let predicted = self
+                    .predicted_load
+                    .map(|p| format!("You predicted p = {}; ", load(p)))
+                    .unwrap_or_default();
+                format!("{predicted}{theory}{seen}.")
+            }
+            Reveal::Answer(right) => {
+                let answers = self.last_choice.as_deref().unwrap_or_default();
+                let name = |i: usize| answers.get(i).cloned().unwrap_or_default();
+                let chosen = self
+                    .chosen
+                    .map(|i| format!("You chose \"{}\". ", name(i)))
+                    .unwrap_or_default();
+                format!("{chosen}The answer: \"{}\".", name(*right))
+            }
+            Reveal::Text(text) => text.clone(),
+        };
+        Some(text)
+    }
+}
+
+impl AppState {
+    /// Opens `lesson` at its first step, carrying that step out.
+    pub fn open_lesson(&mut self, lesson: Lesson) {
+        self.lesson = Some(LessonRun {
+            lesson,
+            step: 0,
+            predicted_load: None,
+            chosen: None,
+            last_choice: None,
+        });
+        self.carry_out_step();
+    }
+
+    /// The lesson under way.
+    #[must_use]
+    pub fn lesson(&self) -> Option<&LessonRun> {
+        self.lesson.as_ref()
+    }
+
+    /// Moves to the next step (or back, `forward` false) and carries it out.
+    pub fn lesson_step(&mut self, forward: bool) {
+        let Some(run) = &mut self.lesson else {
+            return;
+        };
+        let last = run.lesson.steps.len() - 1;
+        let step = if forward {
+            (run.step + 1).min(last)
+        } else {
+            run.step.saturating_sub(1)
+        };
+        if step != run.step {
+            run.step = step;
+            self.carry_out_step();
+        }
+    }
+
+    /// The student's predicted load.
+    pub fn predict_load(&mut self, load: f64) {
+        if let Some(run) = &mut self.lesson {
+            run.predicted_load = Some(load);
+        }
+    }
+
+    /// The student's answer to the choice shown.
+    pub fn choose(&mut self, answer: usize) {
+        if let Some(run) = &mut self.lesson {
+            run.chosen = Some(answer);
+        }
+    }
+
+    pub fn close_lesson(&mut self) {
+        self.lesson = None;
+    }
+
+    /// The tab the lesson asks for, taken once by the window.
+    pub fn take_requested_tab(&mut self) -> Option<LessonTab> {
+        self.requested_tab.take()
+    }
+
+    /// What the step shown sets and starts.
+    fn carry_out_step(&mut self) {
+        let Some(run) = &mut self.lesson else {
+            return;
+        };
+        let step = run.current().clone();
+        if let Some(Predict::Choice { answers, .. }) = &step.predict {
+            run.last_choice = Some(answers.clone());
+        }
+        if let Some(preset) = step.preset {
+            self.set_preset(preset);
+        }
+        if !step.set.is_empty() {
+            let mut model = self.settings.model;
+            let assignments: Vec<Assignment> = step
+                .set
+                .iter()
+                .map(|(&key, &value)| Assignment { key, value })
+                .collect();
+            match crate::model::apply_assignments(&mut model, &assignments) {
+                Ok(()) => self.set_model(model),
+                Err(error) => self.say(Notice::error(format!("lesson: {error}"))),
+            }
+        }
+        if let Some(speed) = step.speed {
+            self.set_speed(speed);
+        }
+        if let Some(overlay) = step.overlay {
+            self.set_overlay(Some(overlay));
+        }
+        if let Some(tab) = step.tab {
+            self.requested_tab = Some(tab);
+        }
+        match step.run {
+            Some(Run::Kick) => self.kick(),
+            // A ramp starts from a quiet column: a fresh run from the
+            // standard small disturbance, whatever the class did before.
+            Some(Run::Ramp { from, to, rate }) => match Ramp::new(from, to, rate) {
+                Ok(ramp) => {
+                    self.reset();
+                    self.start_ramp(ramp);
+                }
+                Err(error) => self.say(Notice::error(format!("lesson: {error}"))),
+            },
+            None => {}
+        }
+    }
+}
