@@ -11,7 +11,9 @@
 pub mod analysis;
 pub mod app;
 pub mod bench;
+pub mod files;
 pub mod format;
 pub mod lesson;
 pub mod model;
+pub mod recording;
 pub mod sim;

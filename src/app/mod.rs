@@ -13,6 +13,7 @@ mod notice;
 mod pace;
 mod plot_frame;
 mod plots;
+mod recorder;
 mod scene;
 mod settings;
 mod sidebar;
@@ -70,6 +71,9 @@ pub struct ZieglerApp {
     tabs: tabs::Tabs,
     /// The theme applied to the context (None: not yet).
     applied_projector: Option<bool>,
+    /// The record button's choice and its work.
+    record_choice: recorder::RecordChoice,
+    recorder: recorder::Recorder,
     /// How the scene frames the column, and what the mouse holds.
     scene: scene::SceneView,
     /// The state's "reset all" count this view last followed.
@@ -97,6 +101,8 @@ impl ZieglerApp {
             applied_projector: None,
             view_generation: 0,
             scene: scene::SceneView::default(),
+            record_choice: recorder::RecordChoice::default(),
+            recorder: recorder::Recorder::default(),
             last_frame: None,
         }
     }
@@ -219,6 +225,16 @@ impl ZieglerApp {
     /// only in [`ZieglerApp::advance`], so a picture depends on the state alone.
     pub fn contents_ui(&mut self, ui: &mut egui::Ui) {
         let theme = self.applied_theme(ui.ctx());
+        match self.recorder.frame(ui.ctx()) {
+            Some(Ok(path)) => self.state.say(Notice::info(format!(
+                "recording saved to {}",
+                path.display()
+            ))),
+            Some(Err(why)) => self
+                .state
+                .say(Notice::error(format!("recording failed: {why}"))),
+            None => {}
+        }
         if let Some(tab) = self.state.take_requested_tab() {
             self.tab = Tab::from(tab);
         }
@@ -236,8 +252,10 @@ impl ZieglerApp {
             .resizable(false)
             .exact_size(320.0)
             .show(ui, |ui| {
-                egui::ScrollArea::vertical()
-                    .show(ui, |ui| self.sidebar.ui(ui, &mut self.state, &theme));
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    self.sidebar.ui(ui, &mut self.state, &theme);
+                    recorder::record_ui(ui, &mut self.record_choice, &mut self.recorder);
+                });
             });
         egui::CentralPanel::default().show(ui, |ui| {
             let height = ui.available_height();

@@ -8,6 +8,7 @@ use anyhow::Result;
 
 use zieglerlab::app::{Panel, Settings, Tab, ZieglerApp};
 use zieglerlab::model::Key;
+use zieglerlab::recording::GifRecording;
 use zieglerlab::sim::Ramp;
 
 use super::headless::{Look, Size, check_scale, render_frames};
@@ -97,40 +98,31 @@ pub fn run(args: &Args) -> Result<()> {
     )]
     let frames = frames.round().max(1.0) as usize;
     let Size { width, height } = args.size;
-    // A frame's delay in hundredths of a second (GIF's unit).
-    let delay_cs = (100 / args.fps).max(1);
     let progress = progress_bar(frames as u64, "frames");
-    let mut encoded = Vec::new();
-    {
-        let mut encoder = gif::Encoder::new(&mut encoded, width, height, &[])?;
-        encoder.set_repeat(gif::Repeat::Infinite)?;
-        let mut app_time_secs = 0.0;
-        render_frames(
-            app,
-            panel,
-            args.size,
-            args.look.scale,
-            frames,
-            |app, i| {
-                // Whole app frames up to this picture's simulated time.
-                #[expect(clippy::cast_precision_loss, reason = "at most MAX_FRAMES")]
-                let due_secs = i as f64 / f64::from(args.fps);
-                while app_time_secs + 0.5 * APP_FRAME_SECS < due_secs {
-                    app.advance(APP_FRAME_SECS);
-                    app_time_secs += APP_FRAME_SECS;
-                }
-            },
-            |i, image| {
-                let mut pixels = image.into_raw();
-                // NeuQuant at speed 10: a palette per frame, deterministic.
-                let mut frame = gif::Frame::from_rgba_speed(width, height, &mut pixels, 10);
-                frame.delay = delay_cs;
-                encoder.write_frame(&frame)?;
-                progress.set_position(i as u64 + 1);
-                Ok(())
-            },
-        )?;
-    }
+    let mut gif = GifRecording::new(width, height, args.fps)?;
+    let mut app_time_secs = 0.0;
+    render_frames(
+        app,
+        panel,
+        args.size,
+        args.look.scale,
+        frames,
+        |app, i| {
+            // Whole app frames up to this picture's simulated time.
+            #[expect(clippy::cast_precision_loss, reason = "at most MAX_FRAMES")]
+            let due_secs = i as f64 / f64::from(args.fps);
+            while app_time_secs + 0.5 * APP_FRAME_SECS < due_secs {
+                app.advance(APP_FRAME_SECS);
+                app_time_secs += APP_FRAME_SECS;
+            }
+        },
+        |i, image| {
+            gif.push(&mut image.into_raw())?;
+            progress.set_position(i as u64 + 1);
+            Ok(())
+        },
+    )?;
+    let encoded = gif.finish()?;
     progress.finish_and_clear();
     write_atomically(&args.out, |w| w.write_all(&encoded))
 }
