@@ -113,6 +113,7 @@ impl Recorder {
     /// The GIF of `frames` made on a thread and written into `folder`.
     fn encode(folder: PathBuf, frames: Vec<Arc<ColorImage>>) -> Self {
         let (sender, result) = mpsc::channel();
+        let failed = sender.clone();
         let done = Arc::new(AtomicUsize::new(0));
         let total = frames.len();
         let counter = Arc::clone(&done);
@@ -122,13 +123,7 @@ impl Recorder {
                 drop(sender.send(write_gif(&folder, &frames, &counter)));
             });
         if let Err(error) = spawned {
-            let (sender, result) = mpsc::channel();
-            drop(sender.send(Err(format!("no thread for the recording: {error}"))));
-            return Self::Encoding {
-                done,
-                total,
-                result,
-            };
+            drop(failed.send(Err(format!("no thread for the recording: {error}"))));
         }
         Self::Encoding {
             done,
