@@ -82,13 +82,14 @@ pub fn check_scale(scale: f32) -> Result<()> {
 /// Renders `panel` of `app` headlessly with wgpu, `size` pixels at `scale`
 /// pixels per point: `frames` pictures, `before(app, i)` run before picture
 /// `i` and each picture handed to `each`. One renderer serves all the
-/// frames. A missing renderer (no Mesa, no GPU) panics inside its setup:
+/// frames. The map's and the paradox's background work is completed before
+/// each picture of theirs, so a picture depends on the arguments alone. A missing renderer (no Mesa, no GPU) panics inside its setup:
 /// that becomes one clear error.
 ///
 /// # Errors
 /// No renderer, a drawing that failed, or an error of `each`.
 pub fn render_frames(
-    app: ZieglerApp,
+    mut app: ZieglerApp,
     panel: Panel,
     size: Size,
     scale: f32,
@@ -97,6 +98,10 @@ pub fn render_frames(
     mut each: impl FnMut(usize, image::RgbaImage) -> Result<()>,
 ) -> Result<()> {
     let (width, height) = (f32::from(size.width), f32::from(size.height));
+    let background = matches!(panel, Panel::Tab(Tab::Map | Tab::Paradox));
+    if background {
+        app.complete_background_work();
+    }
     let previous_hook = std::panic::take_hook();
     std::panic::set_hook(Box::new(|_| {}));
     let rendered = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
@@ -105,12 +110,12 @@ pub fn render_frames(
             .with_size([width / scale, height / scale])
             .with_pixels_per_point(scale)
             .build_ui_state(|ui, app: &mut ZieglerApp| app.panel_ui(ui, panel), app);
-        harness.run_steps(4);
         for i in 0..frames {
             before(harness.state_mut(), i);
-            if i > 0 {
-                harness.run_steps(2);
+            if background && i > 0 {
+                harness.state_mut().complete_background_work();
             }
+            harness.run_steps(if i == 0 { 4 } else { 2 });
             let image = harness.render().map_err(Stop::Drawing)?;
             each(i, image).map_err(Stop::Taking)?;
         }

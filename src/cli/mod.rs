@@ -21,6 +21,7 @@ use clap::{Parser, Subcommand, ValueEnum};
 
 use zieglerlab::model::{Key, Model, ModelError, PresetId, apply_assignments, parse_assignment};
 use zieglerlab::sim::EngineKind;
+use zieglerlab::sim::Ramp;
 
 /// The load axis, as printed in every output.
 const LOAD_AXIS: &str = "p = P l/k";
@@ -77,6 +78,19 @@ impl ModelArgs {
         let mut model = self.preset.model();
         apply_assignments(&mut model, &assignments).map_err(in_preset)?;
         Ok((self.preset, model))
+    }
+
+    /// [`Self::build`] at the start of `ramp`, if there is one: the ramp
+    /// sets the load, so a `--set load` beside it is refused.
+    fn build_ramped(&self, ramp: Option<&Ramp>) -> Result<(PresetId, Model)> {
+        let (preset, model) = self.build()?;
+        let Some(ramp) = ramp else {
+            return Ok((preset, model));
+        };
+        if self.sets(Key::Load) {
+            anyhow::bail!("--ramp sets the load (from its FROM on): leave out --set load");
+        }
+        Ok((preset, model.at_load(ramp.from_p)))
     }
 }
 

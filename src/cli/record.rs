@@ -6,8 +6,7 @@ use std::io::Write;
 
 use anyhow::Result;
 
-use zieglerlab::app::{Panel, Settings, Tab, ZieglerApp};
-use zieglerlab::model::Key;
+use zieglerlab::app::{Panel, Settings, ZieglerApp};
 use zieglerlab::recording::GifRecording;
 use zieglerlab::sim::Ramp;
 
@@ -70,13 +69,7 @@ pub fn run(args: &Args) -> Result<()> {
             args.fps
         );
     }
-    let (name, mut model) = args.model.build()?;
-    if let Some(ramp) = &args.ramp {
-        if args.model.sets(Key::Load) {
-            anyhow::bail!("--ramp sets the load (from its FROM on): leave out --set load");
-        }
-        model = model.at_load(ramp.from_p);
-    }
+    let (name, model) = args.model.build_ramped(args.ramp.as_ref())?;
     let mut app = ZieglerApp::new(Settings {
         preset: name,
         model,
@@ -88,9 +81,6 @@ pub fn run(args: &Args) -> Result<()> {
         app.state_mut().start_ramp(ramp);
     }
     let panel = Panel::from(args.look.panel);
-    if matches!(panel, Panel::Tab(Tab::Map | Tab::Paradox)) {
-        app.complete_background_work();
-    }
     #[expect(
         clippy::cast_possible_truncation,
         clippy::cast_sign_loss,

@@ -6,7 +6,6 @@ use std::io::Write;
 use anyhow::Result;
 use clap::ValueEnum;
 
-use zieglerlab::model::Key;
 use zieglerlab::sim::{DEFAULT_STEP_SECS, Observables, Ramp, Simulation, Status, initial_state};
 
 use super::{EngineArg, ModelArgs};
@@ -45,13 +44,7 @@ pub struct Args {
 
 pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     let Format::Csv = args.format;
-    let (_, mut model) = args.model.build()?;
-    if let Some(ramp) = &args.ramp {
-        if args.model.sets(Key::Load) {
-            anyhow::bail!("--ramp sets the load (from its FROM on): leave out --set load");
-        }
-        model = model.at_load(ramp.from_p);
-    }
+    let (_, model) = args.model.build_ramped(args.ramp.as_ref())?;
     let (duration, perturb, dt) = (args.duration, args.perturb, args.dt);
     if !(duration.is_finite() && duration > 0.0) {
         anyhow::bail!("duration = {duration}: must be a positive number of seconds");

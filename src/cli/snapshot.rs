@@ -3,7 +3,7 @@
 
 use anyhow::Result;
 
-use zieglerlab::app::{Panel, Settings, Tab, ZieglerApp};
+use zieglerlab::app::{Panel, Settings, ZieglerApp};
 
 use super::headless::{Look, Size, check_scale, render_frames};
 use super::output::{check_output, write_png};
@@ -59,9 +59,6 @@ pub fn run(args: &Args) -> Result<()> {
     }
     progress.finish_and_clear();
     let panel = Panel::from(args.look.panel);
-    if matches!(panel, Panel::Tab(Tab::Map | Tab::Paradox)) {
-        app.complete_background_work();
-    }
     let mut image = None;
     render_frames(
         app,

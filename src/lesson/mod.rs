@@ -59,6 +59,17 @@ pub struct Step {
     pub reveal: Option<Reveal>,
 }
 
+impl Step {
+    /// The step's parameters as `--set` assignments.
+    #[must_use]
+    pub fn assignments(&self) -> Vec<Assignment> {
+        self.set
+            .iter()
+            .map(|(&key, &value)| Assignment { key, value })
+            .collect()
+    }
+}
+
 /// The app's tabs, by the names a lesson uses: "locus", "histories",
 /// "map", "paradox".
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
@@ -169,12 +180,7 @@ impl Lesson {
             if let Some(preset) = step.preset {
                 model = preset.model().at_load(model.load_p());
             }
-            let assignments: Vec<Assignment> = step
-                .set
-                .iter()
-                .map(|(&key, &value)| Assignment { key, value })
-                .collect();
-            apply_assignments(&mut model, &assignments)
+            apply_assignments(&mut model, &step.assignments())
                 .map_err(|e| at_step(index, e.to_string()))?;
             if let Some(speed) = step.speed
                 && !SPEED_RANGE.contains(&speed)

@@ -6,8 +6,8 @@
 use rapier2d::prelude::*;
 
 use crate::model::{
-    Column, Load, Model, Roller, SLIP_REGULARIZATION_M_PER_S, StateVec, friction, joint_torques_nm,
-    tip_load, tip_m, tip_response,
+    Column, Load, Model, Roller, SLIP_REGULARIZATION_M_PER_S, StateVec, TipResponse, friction,
+    joint_torques_nm, tip_load, tip_m, tip_response,
 };
 
 /// The rapier world of one column, and the roller's spin (f64, ours).
@@ -197,8 +197,11 @@ impl RapierEngine {
                 vec2(f.x, f.y)
             }
             Load::Roller(roller) => {
-                let (force, psi_dot) = if friction_is_stiff(model, &roller, &now, dt) {
-                    implicit_roller_step(model, &roller, &now, dt)
+                // How the tip answers a force this step: for the stiffness
+                // test and, near stick, the implicit step.
+                let response = tip_response(model, &now, dt);
+                let (force, psi_dot) = if friction_is_stiff(model, &roller, &now, &response, dt) {
+                    implicit_roller_step(model, &roller, &now, &response, dt)
                 } else {
                     roller_step(&model.column, &roller, &x, dt)
                 };
@@ -227,8 +230,13 @@ impl RapierEngine {
 /// the contact's mobility (the rods' and the spin's) and `w` the slip. Near
 /// stick (|w| small) an explicit friction reverses the slip every step and
 /// the force chatters; there the step is taken implicitly.
-fn friction_is_stiff(model: &Model, roller: &Roller, x: &StateVec, dt: f64) -> bool {
-    let response = tip_response(model, x, dt);
+fn friction_is_stiff(
+    model: &Model,
+    roller: &Roller,
+    x: &StateVec,
+    response: &TipResponse,
+    dt: f64,
+) -> bool {
     let spin_inertia = roller.spin_inertia_kg_m2(model.column.rod2.length_m);
     let spin_mobility = if spin_inertia > 0.0 {
         roller.radius_m * roller.radius_m / spin_inertia
@@ -250,10 +258,15 @@ fn friction_is_stiff(model: &Model, roller: &Roller, x: &StateVec, dt: f64) -> b
 /// regime below `eps`) or slides with it, and never reverses it. A massless
 /// roller slips only along rod 2. Returns the force `(Fx, Fy)` and the new
 /// spin rate.
-fn implicit_roller_step(model: &Model, roller: &Roller, x: &StateVec, dt: f64) -> ([f64; 2], f64) {
+fn implicit_roller_step(
+    model: &Model,
+    roller: &Roller,
+    x: &StateVec,
+    response: &TipResponse,
+    dt: f64,
+) -> ([f64; 2], f64) {
     let column = &model.column;
     let (l1, l2, r) = (column.rod1.length_m, column.rod2.length_m, roller.radius_m);
-    let response = tip_response(model, x, dt);
     let [v1, v2] = response.free_rates;
     let (phi1, phi2) = (x[0], x[1]);
     let t1 = nalgebra::Vector2::new(-phi1.sin(), phi1.cos());

@@ -5,7 +5,6 @@
 use super::AppState;
 use crate::app::notice::Notice;
 use crate::lesson::{Lesson, LessonTab, Predict, Reveal, Run};
-use crate::model::Assignment;
 use crate::sim::Ramp;
 
 /// A lesson and where the class is in it.
@@ -141,12 +140,7 @@ impl AppState {
         }
         if !step.set.is_empty() {
             let mut model = self.settings.model;
-            let assignments: Vec<Assignment> = step
-                .set
-                .iter()
-                .map(|(&key, &value)| Assignment { key, value })
-                .collect();
-            match crate::model::apply_assignments(&mut model, &assignments) {
+            match crate::model::apply_assignments(&mut model, &step.assignments()) {
                 Ok(()) => self.set_model(model),
                 Err(error) => self.say(Notice::error(format!("lesson: {error}"))),
             }
