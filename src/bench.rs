@@ -265,6 +265,8 @@ fn x_realtime(engine: EngineKind) -> Result<f64> {
 pub fn frame_times_ms(frames: usize, tab: Tab) -> Result<Vec<f64>> {
     let ctx = egui::Context::default();
     let mut app = ZieglerApp::new(Settings::default())?;
+    // As in the window: new parameters are analysed on their own thread.
+    app.state_mut().analyse_in_background();
     app.show_tab(tab);
     let mut times_ms = Vec::with_capacity(frames);
     for frame in 0..frames + WARMUP_FRAMES {
@@ -282,6 +284,7 @@ pub fn frame_times_ms(frames: usize, tab: Tab) -> Result<Vec<f64>> {
             .set_parameter(Key::Nu, nu)
             .context("setting nu")?;
         app.advance(1.0 / 60.0);
+        app.state_mut().receive_analysis();
         let mut output = ctx.run_ui(input, |ui| app.contents_ui(ui));
         // No renderer takes the font atlas here.
         output.textures_delta.clear();

@@ -4,6 +4,7 @@
 //! [`View`] of it in a file of its own.
 
 mod analysis_cache;
+mod analysis_worker;
 mod camera;
 mod command;
 mod history;
@@ -199,10 +200,11 @@ impl ZieglerApp {
         self.state.advance(wall_secs);
     }
 
-    /// Computes the stability map and the paradox curves of the current
-    /// parameters and waits until they are complete (for pictures and tests;
+    /// Computes the analysis, the stability map and the paradox curves of
+    /// the current parameters and waits until they are complete (for pictures and tests;
     /// the window never waits).
     pub fn complete_background_work(&mut self) {
+        self.state.settle_analysis();
         self.tabs.complete_background_work(&self.state);
     }
 
@@ -312,7 +314,8 @@ impl eframe::App for ZieglerApp {
             .map_or(0.0, |last| now.duration_since(last).as_secs_f64());
         self.last_frame = Some(now);
         self.state.advance(wall_secs);
-        if self.state.running() {
+        self.state.receive_analysis();
+        if self.state.running() || self.state.analysis_pending() {
             ctx.request_repaint();
         }
     }
@@ -359,6 +362,7 @@ pub fn run() -> eframe::Result {
         options,
         Box::new(move |cc| {
             let mut app = ZieglerApp::from_storage(cc.storage);
+            app.state.analyse_in_background();
             if let Some(notice) = notice {
                 app.state.tell(Notice::warning(notice));
             }

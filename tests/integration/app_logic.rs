@@ -417,3 +417,54 @@ fn extreme_stored_values_start_the_app_with_an_answer_or_a_refusal() {
         assert!(app.simulation().state().iter().all(|x| x.is_finite()));
     }
 }
+
+/// The inline analysis of the default parameters with nu set to `nu`.
+fn inline_app(nu: f64) -> ZieglerApp {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.state_mut().set_parameter(Key::Nu, nu).unwrap();
+    app
+}
+
+/// The analysis thread gives what the inline analysis gives; parameters
+/// dragged past are overtaken by the newest; the spectrum at the current
+/// load is exact at once, before the locus is in.
+#[test]
+fn the_analysis_thread_follows_the_newest_parameters() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.state_mut().analyse_in_background();
+    for nu in [0.2, 0.3] {
+        app.state_mut().set_parameter(Key::Nu, nu).unwrap();
+    }
+    let expected = inline_app(0.3);
+    // Not waited for: the spectrum is already the new parameters'.
+    assert_eq!(
+        app.state().current_eigenvalues(),
+        expected.state().current_eigenvalues()
+    );
+    app.state_mut().settle_analysis();
+    assert!(!app.state().analysis_pending());
+    let (got, want) = (app.state().analysis(), expected.state().analysis());
+    assert_eq!(got.unwrap().transitions, want.unwrap().transitions);
+    assert_ne!(
+        want.unwrap().transitions,
+        inline_app(0.2).state().analysis().unwrap().transitions,
+        "nu must move the critical loads for this test to mean anything"
+    );
+}
+
+/// Dragged away and back before the thread answers: its late answer for the
+/// parameters left behind does not replace the analysis already shown.
+#[test]
+fn a_late_analysis_of_parameters_left_behind_is_dropped() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.state_mut().analyse_in_background();
+    app.state_mut().set_parameter(Key::Nu, 0.2).unwrap();
+    app.state_mut().settle_analysis();
+    app.state_mut().set_parameter(Key::Nu, 0.3).unwrap();
+    app.state_mut().set_parameter(Key::Nu, 0.2).unwrap();
+    app.state_mut().settle_analysis();
+    assert_eq!(
+        app.state().analysis().unwrap().transitions,
+        inline_app(0.2).state().analysis().unwrap().transitions
+    );
+}
