@@ -145,7 +145,6 @@ fn read_load(raw: &RawValue, base: &Model, entries: &mut Vec<Entry>, ignored: &m
     };
     let expected = match base.load {
         Load::Follower { .. } => "Follower",
-        Load::Dead { .. } => "Dead",
         Load::Roller(_) => "Roller",
     };
     if kind != expected {
@@ -168,10 +167,18 @@ fn read_load(raw: &RawValue, base: &Model, entries: &mut Vec<Entry>, ignored: &m
         }
         numbers(load, "model.load", &ROLLER, entries, ignored);
     } else {
-        let force: [(&str, Setter); 1] = [("force_n", |m, v| match &mut m.load {
-            Load::Follower { force_n } | Load::Dead { force_n } => *force_n = v,
-            Load::Roller(_) => {}
-        })];
+        let force: [(&str, Setter); 2] = [
+            ("force_n", |m, v| {
+                if let Load::Follower { force_n, .. } = &mut m.load {
+                    *force_n = v;
+                }
+            }),
+            ("eta", |m, v| {
+                if let Load::Follower { eta, .. } = &mut m.load {
+                    *eta = v;
+                }
+            }),
+        ];
         numbers(load, "model.load", &force, entries, ignored);
     }
 }

@@ -118,8 +118,7 @@ pub fn tip_load(model: &Model, x: &StateVec) -> TipLoad {
         regularized: false,
     };
     match model.load {
-        Load::Follower { force_n } => ideal(-force_n * unit(x[1])),
-        Load::Dead { force_n } => ideal(Vector2::new(-force_n, 0.0)),
+        Load::Follower { force_n, eta } => ideal(-force_n * unit(eta * x[1])),
         Load::Roller(roller) => {
             let f = friction(&model.column, &roller, x);
             TipLoad {

@@ -37,7 +37,7 @@ fn set_mass(model: &mut Model, rod: usize, mass_kg: f64) {
 fn roller_mut(model: &mut Model) -> Option<&mut Roller> {
     match &mut model.load {
         Load::Roller(roller) => Some(roller),
-        Load::Follower { .. } | Load::Dead { .. } => None,
+        Load::Follower { .. } => None,
     }
 }
 
@@ -46,7 +46,7 @@ fn roller_value(model: &Model, get: fn(&Roller) -> f64) -> f64 {
 }
 
 /// Every settable key, in the order `zieglerlab presets` lists them.
-pub const KEYS: [KeySpec; 23] = [
+pub const KEYS: [KeySpec; 24] = [
     KeySpec {
         key: Key::Load,
         unit: "",
@@ -313,8 +313,24 @@ pub const KEYS: [KeySpec; 23] = [
         stage: 5,
         get: Model::follower_force_n,
         set: |m, v| {
-            if let Load::Follower { force_n } | Load::Dead { force_n } = &mut m.load {
+            if let Load::Follower { force_n, .. } = &mut m.load {
                 *force_n = v;
+            }
+        },
+    },
+    KeySpec {
+        key: Key::Eta,
+        unit: "",
+        description: "tangency of the tip force: its direction turns by eta times rod 2's angle (1: follower force, 0: dead load)",
+        range: "in [0, 1]",
+        scope: Scope::Force,
+        is_group: true,
+        sign: Sign::NonNegative,
+        stage: 2,
+        get: |m| m.load.eta().unwrap_or(f64::NAN),
+        set: |m, v| {
+            if let Load::Follower { eta, .. } = &mut m.load {
+                *eta = v;
             }
         },
     },

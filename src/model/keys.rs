@@ -30,6 +30,7 @@ pub enum Key {
     C1,
     C2,
     P,
+    Eta,
     M3,
     RollerRadius,
     NormalForce,
@@ -37,7 +38,7 @@ pub enum Key {
 
 impl Key {
     /// Every key, in the order of [`KEYS`].
-    pub const ALL: [Self; 23] = [
+    pub const ALL: [Self; 24] = [
         Self::Load,
         Self::A,
         Self::Nu,
@@ -58,6 +59,7 @@ impl Key {
         Self::C1,
         Self::C2,
         Self::P,
+        Self::Eta,
         Self::M3,
         Self::RollerRadius,
         Self::NormalForce,
@@ -87,6 +89,7 @@ impl Key {
             Self::C1 => "c1",
             Self::C2 => "c2",
             Self::P => "P",
+            Self::Eta => "eta",
             Self::M3 => "m3",
             Self::RollerRadius => "r",
             Self::NormalForce => "R",
@@ -110,6 +113,18 @@ impl Key {
     #[must_use]
     pub fn applies_to(self, model: &Model) -> bool {
         self.spec().applies_to(model)
+    }
+
+    /// Why the key is not a parameter of `model`, where that needs saying
+    /// (beyond listing the keys that are).
+    #[must_use]
+    pub fn why_absent(self, model: &Model) -> Option<&'static str> {
+        match self {
+            Self::Eta if model.roller().is_some() => Some(
+                "the roller has no eta: the band's friction sets the force's direction, against the contact's slip, and its angle delta from rod 2 is an outcome of the motion, not a parameter",
+            ),
+            _ => None,
+        }
     }
 
     /// The names of the keys that apply to `model`, for messages.
@@ -261,6 +276,9 @@ pub fn apply_assignments(model: &mut Model, assignments: &[Assignment]) -> Resul
     for assignment in assignments {
         let key = assignment.key;
         if !key.applies_to(model) {
+            if let Some(why) = key.why_absent(model) {
+                return Err(ModelError::invalid(key.name(), assignment.value, why));
+            }
             return Err(ModelError::UnknownKey {
                 key: key.name().to_owned(),
                 known: Key::names_for(model),

@@ -3,7 +3,7 @@
 use nalgebra::DMatrix;
 
 use super::ModelError;
-use super::params::{Column, Load, Model};
+use super::params::{Column, Model};
 
 /// `M x'' + D x' + K x = 0` about the straight column, `x = (phi1, phi2[, psi])`.
 #[derive(Clone, Debug, PartialEq)]
@@ -68,16 +68,13 @@ pub fn linearize(model: &Model) -> Result<LinearModel, ModelError> {
     stiffness[(1, 0)] = -k2;
     stiffness[(1, 1)] = k2;
     let force_n = model.follower_force_n();
-    match model.load {
-        Load::Dead { .. } => {
-            stiffness[(0, 0)] -= force_n * l1;
-            stiffness[(1, 1)] -= force_n * l2;
-        }
-        Load::Follower { .. } | Load::Roller(_) if roller.is_none() => {
-            stiffness[(0, 0)] -= force_n * l1;
-            stiffness[(0, 1)] += force_n * l1;
-        }
-        Load::Follower { .. } | Load::Roller(_) => {}
+    // A massless roller is the ideal follower force (eta = 1).
+    let eta = model.load.eta().or(roller.is_none().then_some(1.0));
+    if let Some(eta) = eta {
+        // Q_i = P l_i sin(phi_i - eta phi2) (physics.md section 2), linearized.
+        stiffness[(0, 0)] -= force_n * l1;
+        stiffness[(0, 1)] += eta * force_n * l1;
+        stiffness[(1, 1)] -= (1.0 - eta) * force_n * l2;
     }
     if let Some(roller) = roller {
         let r = roller.radius_m;

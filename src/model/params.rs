@@ -123,12 +123,47 @@ impl Roller {
 /// What pushes on the tip.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Load {
-    /// Ideal follower force of magnitude P along rod 2, toward A.
-    Follower { force_n: f64 },
-    /// Dead force of magnitude P in the fixed direction -x (conservative).
-    Dead { force_n: f64 },
+    /// A tip force of magnitude P whose direction turns with the last rod
+    /// by `eta` times its angle: `F = -P (cos(eta phi2), sin(eta phi2))`.
+    /// `eta = 1` is the ideal follower force (along rod 2, toward A),
+    /// `eta = 0` the dead load (fixed direction -x, conservative).
+    Follower {
+        force_n: f64,
+        /// The tangency: 0 (dead load) to 1 (follower).
+        #[serde(default = "full_tangency")]
+        eta: f64,
+    },
     /// Coulomb friction of the moving band on the roller.
     Roller(Roller),
+}
+
+/// Settings stored before the key `eta` existed held follower forces.
+fn full_tangency() -> f64 {
+    1.0
+}
+
+impl Load {
+    /// The ideal follower force of magnitude `force_n`.
+    #[must_use]
+    pub fn follower(force_n: f64) -> Self {
+        Self::Follower { force_n, eta: 1.0 }
+    }
+
+    /// The dead load of magnitude `force_n`, in the fixed direction -x.
+    #[must_use]
+    pub fn dead(force_n: f64) -> Self {
+        Self::Follower { force_n, eta: 0.0 }
+    }
+
+    /// The tangency `eta` of a tip force (none for the roller, whose
+    /// force's direction follows the slip).
+    #[must_use]
+    pub fn eta(&self) -> Option<f64> {
+        match *self {
+            Self::Follower { eta, .. } => Some(eta),
+            Self::Roller(_) => None,
+        }
+    }
 }
 
 /// A complete model: the column and its load.
@@ -155,7 +190,7 @@ impl Model {
     pub fn dof(&self) -> usize {
         match self.load {
             Load::Roller(_) => 3,
-            Load::Follower { .. } | Load::Dead { .. } => 2,
+            Load::Follower { .. } => 2,
         }
     }
 
@@ -164,7 +199,7 @@ impl Model {
     pub fn roller(&self) -> Option<&Roller> {
         match &self.load {
             Load::Roller(roller) => Some(roller),
-            Load::Follower { .. } | Load::Dead { .. } => None,
+            Load::Follower { .. } => None,
         }
     }
 
@@ -193,7 +228,7 @@ impl Model {
     #[must_use]
     pub fn follower_force_n(&self) -> f64 {
         match self.load {
-            Load::Follower { force_n } | Load::Dead { force_n } => force_n,
+            Load::Follower { force_n, .. } => force_n,
             Load::Roller(roller) => roller.friction_force_n(),
         }
     }
@@ -209,7 +244,7 @@ impl Model {
     pub fn set_load_p(&mut self, p: f64) {
         let force_n = p * self.reference_stiffness_nm_per_rad() / self.reference_length_m();
         match &mut self.load {
-            Load::Follower { force_n: f } | Load::Dead { force_n: f } => *f = force_n,
+            Load::Follower { force_n: f, .. } => *f = force_n,
             Load::Roller(roller) => roller.normal_force_n = force_n / roller.mu,
         }
     }
@@ -315,7 +350,17 @@ impl Model {
         non_negative("c1", c1_nms_per_rad)?;
         non_negative("c2", c2_nms_per_rad)?;
         match self.load {
-            Load::Follower { force_n } | Load::Dead { force_n } => non_negative("P", force_n)?,
+            Load::Follower { force_n, eta } => {
+                non_negative("P", force_n)?;
+                finite("eta", eta)?;
+                if !(0.0..=1.0).contains(&eta) {
+                    return Err(ModelError::invalid(
+                        "eta",
+                        eta,
+                        "must lie between 0 (dead load) and 1 (follower force)",
+                    ));
+                }
+            }
             Load::Roller(roller) => {
                 let Roller {
                     mass_kg,

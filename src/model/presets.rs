@@ -192,7 +192,7 @@ fn column(rod1: Rod, rod2: Rod, tip_mass_kg: f64) -> Column {
 fn follower(column: Column) -> Model {
     let mut model = Model {
         column,
-        load: Load::Follower { force_n: 0.0 },
+        load: Load::follower(0.0),
     };
     model.set_load_p(DEFAULT_LOAD_P);
     model

@@ -192,7 +192,7 @@ impl RapierEngine {
         let tip = tip_m(&model.column, &x);
         let tip = vec2(tip.x, tip.y);
         let force_n = match model.load {
-            Load::Follower { .. } | Load::Dead { .. } => {
+            Load::Follower { .. } => {
                 let f = tip_load(model, &x).force_n;
                 vec2(f.x, f.y)
             }

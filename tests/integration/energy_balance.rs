@@ -43,7 +43,7 @@ fn dead_load_is_conservative() {
     for preset in ["ziegler-1952", "uniform-rods", "midpoint-masses"] {
         let mut model = common::model(preset, &["load=2.2", "c1=0.02", "c2=0.05"]);
         let force_n = model.follower_force_n();
-        model.load = Load::Dead { force_n };
+        model.load = Load::dead(force_n);
         let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
         // The force -P x has the potential P x_tip.
         let potential = |y: &StateVec| force_n * (l1 * y[0].cos() + l2 * y[1].cos());

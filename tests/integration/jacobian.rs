@@ -73,11 +73,20 @@ fn analytic_linearization_matches_finite_differences() {
 #[test]
 fn dead_load_linearization_matches_finite_differences() {
     let mut model = common::model("uniform-rods", &["load=1.5"]);
-    model.load = zieglerlab::model::Load::Dead {
-        force_n: model.follower_force_n(),
-    };
+    model.load = zieglerlab::model::Load::dead(model.follower_force_n());
     let error = (analytic(&model) - finite_difference(&model)).abs().max();
     assert!(error < 1e-7, "{error:e}");
     let lin = linearize(&model).unwrap();
     assert_eq!(lin.stiffness, lin.stiffness.transpose());
+}
+
+/// A partially tangential force: its stiffness `P l_i` off the diagonal
+/// by `eta` (physics.md section 2) is the nonlinear equations' Jacobian.
+#[test]
+fn partial_follower_linearization_matches_finite_differences() {
+    for eta in ["eta=0.25", "eta=0.7"] {
+        let model = common::model("uniform-rods", &[eta, "load=2.2", "c2=0.02"]);
+        let error = (analytic(&model) - finite_difference(&model)).abs().max();
+        assert!(error < 1e-7, "{eta}: {error:e}");
+    }
 }

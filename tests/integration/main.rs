@@ -15,6 +15,7 @@ mod jacobian;
 mod lecture_pace;
 mod locus_tracking;
 mod massless_roller;
+mod partial_follower;
 mod properties;
 mod ramp;
 mod sim_energy;

@@ -14,11 +14,11 @@ use zieglerlab::sim::{DEFAULT_STEP_SECS, EngineKind, Observables, Simulation, in
 /// the non-conservative load, over `duration_secs` from a 0.3 rad kick.
 fn run(model: &Model, engine: EngineKind, step_secs: f64, duration_secs: f64) -> Vec<(f64, f64)> {
     let potential = |o: &Observables| match model.load {
-        Load::Dead { force_n } => force_n * o.tip_m[0],
+        Load::Follower { force_n, eta: 0.0 } => force_n * o.tip_m[0],
         Load::Follower { .. } | Load::Roller(_) => 0.0,
     };
     let power = |o: &Observables| match model.load {
-        Load::Dead { .. } => 0.0,
+        Load::Follower { eta: 0.0, .. } => 0.0,
         Load::Follower { .. } | Load::Roller(_) => o.band_power_w,
     };
     let mut sim = Simulation::new(*model, engine, initial_state(model, 0.3), step_secs).unwrap();
@@ -46,9 +46,7 @@ fn energy_error(samples: &[(f64, f64)]) -> f64 {
 
 fn dead(name: &str, load: f64) -> Model {
     let mut m = model(name, &[&format!("load={load}")]);
-    m.load = Load::Dead {
-        force_n: m.follower_force_n(),
-    };
+    m.load = Load::dead(m.follower_force_n());
     m
 }
 

@@ -40,6 +40,19 @@ impl View for ModelSection {
         if !state.settings().projector {
             ui.label(RichText::new(state.settings().preset.preset().description).small());
         }
+        // The preset's words name its force; a changed eta changes that force.
+        match state.model().load.eta() {
+            Some(0.0) => {
+                ui.label("tip force: a dead load (eta = 0), fixed in direction");
+            }
+            Some(eta) if eta < 1.0 => {
+                ui.label(format!(
+                    "tip force: partly tangential, turned by eta = {} of rod 2's angle",
+                    crate::format::Shown(eta)
+                ));
+            }
+            Some(_) | None => {}
+        }
         let mut engine = state.settings().engine;
         egui::ComboBox::from_label("engine")
             .selected_text(format!("{engine:?}").to_lowercase())

@@ -113,6 +113,13 @@ fn empty_reason(failures: impl IntoIterator<Item = Option<String>>) -> String {
 pub fn curves(model: &Model, cancel: &AtomicBool) -> Curves {
     let first = |m: &Model| first_instability(m, LOAD_MAX).ok().flatten();
     match model.load {
+        Load::Follower { eta: 0.0, .. } => Curves {
+            note: Some(
+                "A dead load (eta = 0) is conservative: it never flutters, so there is no paradox to show."
+                    .to_owned(),
+            ),
+            ..Curves::default()
+        },
         Load::Follower { .. } => {
             let undamped = Axis::DampingLevel
                 .apply(model, 0.0)
@@ -166,13 +173,6 @@ pub fn curves(model: &Model, cancel: &AtomicBool) -> Curves {
                 massless.map(|p| ("nu = 0: the ideal follower".to_owned(), p)),
             )
         }
-        Load::Dead { .. } => Curves {
-            note: Some(
-                "A dead load is conservative: it never flutters, so there is no paradox to show."
-                    .to_owned(),
-            ),
-            ..Curves::default()
-        },
     }
 }
 
@@ -232,7 +232,7 @@ pub struct ParadoxPanel {
 fn curve_key(model: &Model) -> Model {
     let zero = match model.load {
         Load::Roller(_) => Axis::Key(Key::Nu).apply(model, 0.0),
-        _ => Axis::DampingLevel.apply(model, 0.0),
+        Load::Follower { .. } => Axis::DampingLevel.apply(model, 0.0),
     };
     zero.unwrap_or(*model).at_load(0.0)
 }
@@ -303,7 +303,7 @@ impl ParadoxPanel {
             _ if model.column.c2_nms_per_rad > 0.0 => {
                 model.column.c1_nms_per_rad / model.column.c2_nms_per_rad
             }
-            _ => f64::NAN,
+            Load::Follower { .. } => f64::NAN,
         };
         let point = (x > 0.0 && x.is_finite())
             .then(|| known.or_else(|| first_instability(&key, LOAD_MAX).ok().flatten()))
@@ -336,7 +336,7 @@ impl ParadoxPanel {
         }
         ui.label(match model.load {
             Load::Roller(_) => "The load at which the roller column first loses stability, against the roller's mass, for three band speeds (the slip damping is mu R / V). As nu -> 0 it goes to zero, not to the massless roller's (ideal follower's) value.",
-            _ => "The flutter load with joint dampers c1 = (c1/c2) c2 as the damping level g2 = c2 / sqrt(k m l^2) goes to zero: the limit depends on the ratio and lies below the undamped load (Ziegler's paradox).",
+            Load::Follower { .. } => "The flutter load with joint dampers c1 = (c1/c2) c2 as the damping level g2 = c2 / sqrt(k m l^2) goes to zero: the limit depends on the ratio and lies below the undamped load (Ziegler's paradox).",
         });
         self.fit.bar_ui(ui);
         let refit = self.fit.refit((self.generation, job.key));
