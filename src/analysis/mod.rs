@@ -16,7 +16,9 @@ pub use critical::{
 };
 pub use locus::{Locus, load_grid, locus};
 pub use map::{Cell, MapSpec, Row, RowResult, compute as compute_map};
-pub use paradox::{first_instability, first_loss_of_stability, flutter_load_damped};
+pub use paradox::{
+    first_instability, first_loss_of_stability, flutter_load_damped, flutter_load_external,
+};
 pub use pencil::{AffinePencil, Spectrum, spectrum};
 pub use resolution::resolution_warning;
 pub use roots::{Poly, aberth};

@@ -11,12 +11,13 @@ use crate::model::{Load, Model, SpinInertia, analysis_range_text};
 type Setter = fn(&mut Model, f64);
 
 /// Every number of a column, by its name in the stored text.
-const COLUMN: [(&str, Setter); 5] = [
+const COLUMN: [(&str, Setter); 6] = [
     ("tip_mass_kg", |m, v| m.column.tip_mass_kg = v),
     ("k1_nm_per_rad", |m, v| m.column.k1_nm_per_rad = v),
     ("k2_nm_per_rad", |m, v| m.column.k2_nm_per_rad = v),
     ("c1_nms_per_rad", |m, v| m.column.c1_nms_per_rad = v),
     ("c2_nms_per_rad", |m, v| m.column.c2_nms_per_rad = v),
+    ("drag_ns_per_m2", |m, v| m.column.drag_ns_per_m2 = v),
 ];
 
 /// Every number of rod 1 and rod 2 (lengths first: a centre of mass is

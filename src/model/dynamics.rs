@@ -131,6 +131,46 @@ pub fn tip_load(model: &Model, x: &StateVec) -> TipLoad {
     }
 }
 
+/// The external drag on one rod, reduced to its inner joint.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RodDrag {
+    /// The resultant of the drag along the rod, in N.
+    pub force_n: Vector2<f64>,
+    /// Its moment about the rod's inner joint, in N m.
+    pub moment_nm: f64,
+}
+
+/// The external viscous drag `-c_ext v_perp(s) t_i` per unit length on each
+/// rod in state `x`, where `v_perp(s) = u_i + s phi_i'` is the velocity
+/// across rod i at distance s from its inner joint (`u_1 = 0`,
+/// `u_2 = l1 cos(phi2 - phi1) phi1'`).
+#[must_use]
+pub fn rod_drag(column: &Column, x: &StateVec) -> [RodDrag; 2] {
+    let c = column.drag_ns_per_m2;
+    let (l1, l2) = (column.rod1.length_m, column.rod2.length_m);
+    let across = [0.0, l1 * (x[1] - x[0]).cos() * x[3]];
+    let drag = |i: usize, l: f64| {
+        let (u, w) = (across[i], x[3 + i]);
+        // The integrals over the rod of v_perp and of s v_perp.
+        let total = l * u + l * l / 2.0 * w;
+        let moment = l * l / 2.0 * u + l.powi(3) / 3.0 * w;
+        RodDrag {
+            force_n: -c * total * normal(x[i]),
+            moment_nm: -c * moment,
+        }
+    };
+    [drag(0, l1), drag(1, l2)]
+}
+
+/// The generalized forces of the drag on `(phi1, phi2)`: each rod's moment
+/// about its joint, and rod 2's force working through rod 1's swing.
+#[must_use]
+pub fn drag_generalized_n_m(column: &Column, x: &StateVec) -> [f64; 2] {
+    let [rod1, rod2] = rod_drag(column, x);
+    let swing = column.rod1.length_m * normal(x[0]);
+    [rod1.moment_nm + rod2.force_n.dot(&swing), rod2.moment_nm]
+}
+
 /// Torques of the joints' springs and dampers `(at O on phi1, at A on
 /// phi2 - phi1)`, in N m.
 #[must_use]
@@ -186,9 +226,10 @@ fn column_accelerations(model: &Model, x: &StateVec, [q1, q2]: [f64; 2]) -> [f64
     let (sin_d, cos_d) = (x[1] - x[0]).sin_cos();
     // The torque at A acts on rod 2, and back on rod 1.
     let [torque_o, torque_a] = joint_torques_nm(&model.column, x);
+    let [drag1, drag2] = drag_generalized_n_m(&model.column, x);
     let b = inertia.b_kg_m2;
-    let rhs1 = q1 + b * sin_d * phi2_dot * phi2_dot + torque_o - torque_a;
-    let rhs2 = q2 - b * sin_d * phi1_dot * phi1_dot + torque_a;
+    let rhs1 = q1 + drag1 + b * sin_d * phi2_dot * phi2_dot + torque_o - torque_a;
+    let rhs2 = q2 + drag2 - b * sin_d * phi1_dot * phi1_dot + torque_a;
     // 2x2 mass matrix [[A, B cos d], [B cos d, C]]; its determinant is at
     // least A C - B^2 > 0, which `Model::validate` guarantees.
     let (a, c, b_cos) = (inertia.a_kg_m2, inertia.c_kg_m2, b * cos_d);

@@ -46,7 +46,7 @@ fn roller_value(model: &Model, get: fn(&Roller) -> f64) -> f64 {
 }
 
 /// Every settable key, in the order `zieglerlab presets` lists them.
-pub const KEYS: [KeySpec; 24] = [
+pub const KEYS: [KeySpec; 25] = [
     KeySpec {
         key: Key::Load,
         unit: "",
@@ -301,6 +301,18 @@ pub const KEYS: [KeySpec; 24] = [
         stage: 2,
         get: |m| m.column.c2_nms_per_rad,
         set: |m, v| m.column.c2_nms_per_rad = v,
+    },
+    KeySpec {
+        key: Key::CExt,
+        unit: "N s/m^2",
+        description: "external viscous drag along both rods (air drag, linearized): a force per unit length of c_ext times the local velocity across the rod",
+        range: ">= 0",
+        scope: Scope::All,
+        is_group: false,
+        sign: Sign::NonNegative,
+        stage: 2,
+        get: |m| m.column.drag_ns_per_m2,
+        set: |m, v| m.column.drag_ns_per_m2 = v,
     },
     KeySpec {
         key: Key::P,

@@ -29,6 +29,7 @@ pub enum Key {
     K2,
     C1,
     C2,
+    CExt,
     P,
     Eta,
     M3,
@@ -38,7 +39,7 @@ pub enum Key {
 
 impl Key {
     /// Every key, in the order of [`KEYS`].
-    pub const ALL: [Self; 24] = [
+    pub const ALL: [Self; 25] = [
         Self::Load,
         Self::A,
         Self::Nu,
@@ -58,6 +59,7 @@ impl Key {
         Self::K2,
         Self::C1,
         Self::C2,
+        Self::CExt,
         Self::P,
         Self::Eta,
         Self::M3,
@@ -88,6 +90,7 @@ impl Key {
             Self::K2 => "k2",
             Self::C1 => "c1",
             Self::C2 => "c2",
+            Self::CExt => "c_ext",
             Self::P => "P",
             Self::Eta => "eta",
             Self::M3 => "m3",

@@ -36,6 +36,7 @@ pub fn linearize(model: &Model) -> Result<LinearModel, ModelError> {
         k2_nm_per_rad: k2,
         c1_nms_per_rad: c1,
         c2_nms_per_rad: c2,
+        drag_ns_per_m2: drag,
         ..
     } = model.column;
     let (l1, l2) = (rod1.length_m, rod2.length_m);
@@ -63,6 +64,12 @@ pub fn linearize(model: &Model) -> Result<LinearModel, ModelError> {
     damping[(0, 1)] = -c2;
     damping[(1, 0)] = -c2;
     damping[(1, 1)] = c2;
+    // The drag on the rods, by its Rayleigh function: rod 1 moves with
+    // s phi1', rod 2 with l1 phi1' + s phi2' (physics.md section 4).
+    damping[(0, 0)] += drag * (l1.powi(3) / 3.0 + l1 * l1 * l2);
+    damping[(0, 1)] += drag * l1 * l2 * l2 / 2.0;
+    damping[(1, 0)] += drag * l1 * l2 * l2 / 2.0;
+    damping[(1, 1)] += drag * l2.powi(3) / 3.0;
     stiffness[(0, 0)] = k1 + k2;
     stiffness[(0, 1)] = -k2;
     stiffness[(1, 0)] = -k2;

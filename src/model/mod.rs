@@ -16,8 +16,9 @@ mod presets;
 pub use crate::format::Shown;
 pub use axis::{Axis, DAMPER_RATIO, DAMPING_LEVEL, MASS_RATIO};
 pub use dynamics::{
-    Friction, SLIP_REGULARIZATION_M_PER_S, StateVec, TipLoad, TipResponse, energy_j, friction,
-    joint_torques_nm, state_derivative, tip_load, tip_m, tip_response,
+    Friction, RodDrag, SLIP_REGULARIZATION_M_PER_S, StateVec, TipLoad, TipResponse,
+    drag_generalized_n_m, energy_j, friction, joint_torques_nm, rod_drag, state_derivative,
+    tip_load, tip_m, tip_response,
 };
 pub use keys::{Assignment, KEYS, Key, KeySpec, apply_assignments, parse_assignment};
 pub use linear::{LinearModel, linearize};

@@ -63,6 +63,10 @@ pub struct Column {
     pub c1_nms_per_rad: f64,
     /// Viscous damper at A on `phi2 - phi1`.
     pub c2_nms_per_rad: f64,
+    /// External viscous drag along both rods (air drag, linearized): a
+    /// force per unit length of `-c_ext` times the local transverse velocity.
+    #[serde(default)]
+    pub drag_ns_per_m2: f64,
 }
 
 /// The roller at the tip, dragged by the moving band (Fig. 1c, Fig. 7).
@@ -302,6 +306,16 @@ impl Model {
             ("the stiffness k2", self.column.k2_nm_per_rad),
             ("the damper c1", self.column.c1_nms_per_rad),
             ("the damper c2", self.column.c2_nms_per_rad),
+            (
+                "the drag c_ext l^3",
+                self.column.drag_ns_per_m2
+                    * self
+                        .column
+                        .rod1
+                        .length_m
+                        .max(self.column.rod2.length_m)
+                        .powi(3),
+            ),
         ];
         if let Some(roller) = self.roller()
             && roller.band_speed_m_per_s > 0.0
@@ -337,6 +351,7 @@ impl Model {
             k2_nm_per_rad,
             c1_nms_per_rad,
             c2_nms_per_rad,
+            drag_ns_per_m2,
         } = self.column;
         for (i, rod) in [(1, rod1), (2, rod2)] {
             positive(&format!("l{i}"), rod.length_m)?;
@@ -349,6 +364,7 @@ impl Model {
         positive("k2", k2_nm_per_rad)?;
         non_negative("c1", c1_nms_per_rad)?;
         non_negative("c2", c2_nms_per_rad)?;
+        non_negative("c_ext", drag_ns_per_m2)?;
         match self.load {
             Load::Follower { force_n, eta } => {
                 non_negative("P", force_n)?;

@@ -7,7 +7,7 @@ use rapier2d::prelude::*;
 
 use crate::model::{
     Column, Load, Model, Roller, SLIP_REGULARIZATION_M_PER_S, StateVec, TipResponse, friction,
-    joint_torques_nm, tip_load, tip_m, tip_response,
+    joint_torques_nm, rod_drag, tip_load, tip_m, tip_response,
 };
 
 /// The rapier world of one column, and the roller's spin (f64, ours).
@@ -209,16 +209,30 @@ impl RapierEngine {
                 vec2(force[0], force[1])
             }
         };
+        // The drag on each rod: its resultant at the rod's inner joint and
+        // its moment about that joint.
+        let [drag1, drag2] = rod_drag(&model.column, &x);
+        let joint_a = model.column.rod1.length_m * nalgebra::Vector2::new(x[0].cos(), x[0].sin());
         let [rod1, rod2] = self.rods;
         let body1 = self.world.bodies.get_mut(rod1)?;
         body1.reset_forces(false);
         body1.reset_torques(false);
-        body1.add_torque(f32_of(torque_o - torque_a), false);
+        body1.add_torque(f32_of(torque_o - torque_a + drag1.moment_nm), false);
+        body1.add_force_at_point(
+            vec2(drag1.force_n.x, drag1.force_n.y),
+            vec2(0.0, 0.0),
+            false,
+        );
         let body2 = self.world.bodies.get_mut(rod2)?;
         body2.reset_forces(false);
         body2.reset_torques(false);
-        body2.add_torque(f32_of(torque_a), false);
+        body2.add_torque(f32_of(torque_a + drag2.moment_nm), false);
         body2.add_force_at_point(force_n, tip, false);
+        body2.add_force_at_point(
+            vec2(drag2.force_n.x, drag2.force_n.y),
+            vec2(joint_a.x, joint_a.y),
+            false,
+        );
         self.world.step();
         self.psi_rad += dt * self.psi_dot_rad_per_s;
         Some(())

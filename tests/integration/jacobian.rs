@@ -90,3 +90,15 @@ fn partial_follower_linearization_matches_finite_differences() {
         assert!(error < 1e-7, "{eta}: {error:e}");
     }
 }
+
+/// The external drag's damping matrix is the nonlinear drag's Jacobian, on
+/// every preset (the roller's included) with unequal rods.
+#[test]
+fn external_drag_linearization_matches_finite_differences() {
+    for name in ["ziegler-1952", "uniform-rods", "midpoint-masses", "roller"] {
+        let model = common::model(name, &["c_ext=0.05", "l2=0.7", "load=1.3"]);
+        let analytic = analytic(&model);
+        let error = (&analytic - finite_difference(&model)).abs().max() / analytic.abs().max();
+        assert!(error < 1e-7, "{name}: {error:e}");
+    }
+}

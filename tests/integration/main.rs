@@ -11,6 +11,7 @@ mod common;
 mod damped_ziegler;
 mod eigen_solver;
 mod energy_balance;
+mod external_damping;
 mod jacobian;
 mod lecture_pace;
 mod locus_tracking;

@@ -131,3 +131,14 @@ fn both_engines_run_a_partially_tangential_force() {
         check_modes(&column, EngineKind::Rapier, 0.03, modes);
     }
 }
+
+/// External drag on the uniform rods (stable and damped at p = 1.5, flutter
+/// at p = 3.2) decays and grows on both engines at the eigenvalues' rates.
+#[test]
+fn both_engines_run_external_drag() {
+    for p in ["load=1.5", "load=3.2"] {
+        let column = model("uniform-rods", &[p, "c_ext=0.02"]);
+        check(&column, EngineKind::Reference, 0.005);
+        check(&column, EngineKind::Rapier, 0.03);
+    }
+}

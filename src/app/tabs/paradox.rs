@@ -1,7 +1,8 @@
 //! The Ziegler paradox explorer: the load at which the column first loses
-//! stability as the damping vanishes (joint dampers of a given ratio; the
-//! roller's mass at several band speeds), next to the undamped value,
-//! computed off the UI thread.
+//! stability as the damping vanishes (joint dampers of a given ratio, or
+//! external drag and equal joint dampers in a given ratio; the roller's mass
+//! at several band speeds), next to the undamped value, computed off the UI
+//! thread.
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, mpsc};
@@ -9,7 +10,7 @@ use std::sync::{Arc, mpsc};
 use eframe::egui;
 use egui_plot::{Corner, HLine, Legend, Line, Plot, PlotPoints, Points, log_grid_spacer};
 
-use crate::analysis::{first_instability, flutter_load_damped};
+use crate::analysis::{first_instability, flutter_load_damped, flutter_load_external};
 use crate::app::View;
 use crate::app::plot_frame::{Fit, axes, refit_if};
 use crate::app::state::AppState;
@@ -23,7 +24,8 @@ const LOAD_MAX: f64 = 10.0;
 const POINTS: usize = 41;
 /// Joint damping levels g2 of the column curves, down to "vanishing".
 const LEVELS: [f64; 3] = [0.1, 0.01, 1e-4];
-/// log10 of the damper ratio c1/c2 shown.
+/// log10 of the damper ratio c1/c2, and of the external to internal
+/// damping ratio `c_ext l^3 / c`, shown.
 const RATIO_DECADES: (f64, f64) = (-2.0, 2.0);
 /// log10 of the roller's mass ratio nu shown.
 const NU_DECADES: (f64, f64) = (-6.0, 1.0);
@@ -31,6 +33,39 @@ const NU_DECADES: (f64, f64) = (-6.0, 1.0);
 const SAME_CURVE: f64 = 1e-6;
 /// The plot's height over its highest point: room for the legend above the data.
 const HEADROOM: f64 = 1.5;
+
+/// Which damping of a column with a tip force vanishes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum DampingKind {
+    /// The joint dampers, in the ratio c1/c2.
+    #[default]
+    Joints,
+    /// External drag along the rods and equal joint dampers (internal
+    /// damping), in the ratio `c_ext l^3 / c`.
+    External,
+}
+
+impl DampingKind {
+    /// The x axis's quantity, for the axis and the menu.
+    fn ratio_name(self) -> &'static str {
+        match self {
+            Self::Joints => "c1/c2",
+            Self::External => "c_ext l^3 / c (external / internal)",
+        }
+    }
+
+    /// The current model's ratio, when it has this kind of damping.
+    fn ratio(self, model: &Model) -> f64 {
+        let c = &model.column;
+        match self {
+            Self::Joints if c.c2_nms_per_rad > 0.0 => c.c1_nms_per_rad / c.c2_nms_per_rad,
+            Self::External if c.c2_nms_per_rad > 0.0 && c.c1_nms_per_rad == c.c2_nms_per_rad => {
+                c.drag_ns_per_m2 * model.reference_length_m().powi(3) / c.c2_nms_per_rad
+            }
+            Self::Joints | Self::External => f64::NAN,
+        }
+    }
+}
 
 /// What the explorer draws: curves of the first critical load against
 /// log10 of the swept ratio, and the undamped (or massless) reference.
@@ -110,7 +145,7 @@ fn empty_reason(failures: impl IntoIterator<Item = Option<String>>) -> String {
 /// set by the curves themselves). Once `cancel` is set the curves end early:
 /// a cancelled result is for no one.
 #[must_use]
-pub fn curves(model: &Model, cancel: &AtomicBool) -> Curves {
+pub fn curves(model: &Model, kind: DampingKind, cancel: &AtomicBool) -> Curves {
     let first = |m: &Model| first_instability(m, LOAD_MAX).ok().flatten();
     match model.load {
         Load::Follower { eta: 0.0, .. } => Curves {
@@ -128,8 +163,11 @@ pub fn curves(model: &Model, cancel: &AtomicBool) -> Curves {
             let (lines, failures): (Vec<_>, Vec<_>) = LEVELS
                 .iter()
                 .map(|&level| {
-                    let (points, failure) = curve(RATIO_DECADES, cancel, |ratio| {
-                        flutter_load_damped(model, ratio, level, LOAD_MAX)
+                    let (points, failure) = curve(RATIO_DECADES, cancel, |ratio| match kind {
+                        DampingKind::Joints => flutter_load_damped(model, ratio, level, LOAD_MAX),
+                        DampingKind::External => {
+                            flutter_load_external(model, ratio, level, LOAD_MAX)
+                        }
                     });
                     (
                         (format!("damping g2 = {}", number_text(level)), points),
@@ -138,7 +176,7 @@ pub fn curves(model: &Model, cancel: &AtomicBool) -> Curves {
                 })
                 .unzip();
             Curves::new(
-                "c1/c2",
+                kind.ratio_name(),
                 lines,
                 failures,
                 undamped.map(|p| ("undamped".to_owned(), p)),
@@ -203,7 +241,7 @@ fn merge_if_one_curve(
 /// The curves of one model, computed or being computed. Dropping the job
 /// (the parameters moved on) cancels its computation within one point.
 struct Job {
-    key: Model,
+    key: CurveKey,
     receiver: mpsc::Receiver<Curves>,
     curves: Option<Curves>,
     cancel: Arc<AtomicBool>,
@@ -220,27 +258,39 @@ impl Drop for Job {
 #[derive(Default)]
 pub struct ParadoxPanel {
     job: Option<Job>,
-    /// The current model's own point, and the model it is for.
-    current: Option<(Model, Option<[f64; 2]>)>,
+    /// Which damping of a column with a tip force vanishes.
+    kind: DampingKind,
+    /// The current model's own point, and the model and kind it is for.
+    current: Option<(CurveKey, Option<[f64; 2]>)>,
     /// Refits when the curves of other parameters arrive, and on "reset all".
-    fit: Fit<(u64, Model)>,
+    fit: Fit<(u64, CurveKey)>,
     /// The state's "reset all" count this frame.
     generation: u64,
 }
 
-/// The model the curves depend on: the swept parameters at a fixed value.
-fn curve_key(model: &Model) -> Model {
+/// What the curves depend on: the model with the swept parameters at a
+/// fixed value, and the kind of damping swept.
+type CurveKey = (Model, DampingKind);
+
+/// The curves' key of `model`.
+fn curve_key(model: &Model, kind: DampingKind) -> CurveKey {
     let zero = match model.load {
         Load::Roller(_) => Axis::Key(Key::Nu).apply(model, 0.0),
         Load::Follower { .. } => Axis::DampingLevel.apply(model, 0.0),
     };
-    zero.unwrap_or(*model).at_load(0.0)
+    let mut key = zero.unwrap_or(*model).at_load(0.0);
+    if kind == DampingKind::External {
+        key.column.c1_nms_per_rad = 0.0;
+        key.column.drag_ns_per_m2 = 0.0;
+    }
+    (key, kind)
 }
 
 impl ParadoxPanel {
     /// Starts the curves for `model` when they are not those of its key.
     fn follow(&mut self, model: &Model) {
-        let key = curve_key(model);
+        let kind = self.kind;
+        let key = curve_key(model, kind);
         if self.job.as_ref().is_some_and(|job| job.key == key) {
             return;
         }
@@ -257,7 +307,7 @@ impl ParadoxPanel {
                 if let Some(previous) = previous {
                     drop(previous.join());
                 }
-                drop(sender.send(curves(&model_copy, &flag)));
+                drop(sender.send(curves(&model_copy, kind, &flag)));
             });
         let (thread, curves) = match spawned {
             Ok(handle) => (Some(handle), None),
@@ -294,22 +344,19 @@ impl ParadoxPanel {
     fn current_point(&mut self, model: &Model, known: Option<f64>) -> Option<[f64; 2]> {
         let key = model.at_load(0.0);
         if let Some((cached, point)) = &self.current
-            && *cached == key
+            && *cached == (key, self.kind)
         {
             return *point;
         }
         let x = match model.load {
             Load::Roller(_) => Axis::Key(Key::Nu).get(model),
-            _ if model.column.c2_nms_per_rad > 0.0 => {
-                model.column.c1_nms_per_rad / model.column.c2_nms_per_rad
-            }
-            Load::Follower { .. } => f64::NAN,
+            Load::Follower { .. } => self.kind.ratio(model),
         };
         let point = (x > 0.0 && x.is_finite())
             .then(|| known.or_else(|| first_instability(&key, LOAD_MAX).ok().flatten()))
             .flatten()
             .map(|p| [x.log10(), p]);
-        self.current = Some((key, point));
+        self.current = Some(((key, self.kind), point));
         point
     }
 
@@ -334,9 +381,10 @@ impl ParadoxPanel {
             ui.colored_label(theme.warning, note);
             return;
         }
-        ui.label(match model.load {
-            Load::Roller(_) => "The load at which the roller column first loses stability, against the roller's mass, for three band speeds (the slip damping is mu R / V). As nu -> 0 it goes to zero, not to the massless roller's (ideal follower's) value.",
-            Load::Follower { .. } => "The flutter load with joint dampers c1 = (c1/c2) c2 as the damping level g2 = c2 / sqrt(k m l^2) goes to zero: the limit depends on the ratio and lies below the undamped load (Ziegler's paradox).",
+        ui.label(match (model.load, self.kind) {
+            (Load::Roller(_), _) => "The load at which the roller column first loses stability, against the roller's mass, for three band speeds (the slip damping is mu R / V). As nu -> 0 it goes to zero, not to the massless roller's (ideal follower's) value.",
+            (Load::Follower { .. }, DampingKind::Joints) => "The flutter load with joint dampers c1 = (c1/c2) c2 as the damping level g2 = c2 / sqrt(k m l^2) goes to zero: the limit depends on the ratio and lies below the undamped load (Ziegler's paradox).",
+            (Load::Follower { .. }, DampingKind::External) => "The flutter load with equal joint dampers c1 = c2 = c (internal damping) and drag c_ext = (c_ext l^3 / c) c / l^3 along the rods (external damping) as the level g2 = c / sqrt(k m l^2) goes to zero: external damping destabilizes too, and the limit depends on the ratio.",
         });
         self.fit.bar_ui(ui);
         let refit = self.fit.refit((self.generation, job.key));
@@ -393,7 +441,29 @@ impl View for ParadoxPanel {
             .and_then(crate::app::analysis_cache::Analysis::first_instability);
         let model = *state.model();
         self.generation = state.view_generation();
+        if matches!(model.load, Load::Follower { eta, .. } if eta > 0.0) {
+            self.kind_ui(ui);
+        }
         self.draw(ui, &model, known, theme);
+    }
+}
+
+impl ParadoxPanel {
+    /// The choice of the damping that vanishes.
+    fn kind_ui(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal(|ui| {
+            ui.label("damping that vanishes:");
+            ui.selectable_value(&mut self.kind, DampingKind::Joints, "joint dampers")
+                .on_hover_text("the joint dampers c1 and c2 in the ratio c1/c2");
+            ui.selectable_value(
+                &mut self.kind,
+                DampingKind::External,
+                "external drag and internal",
+            )
+            .on_hover_text(
+                "drag c_ext along the rods (external) and equal joint dampers c1 = c2 = c (internal) in the ratio c_ext l^3 / c",
+            );
+        });
     }
 }
 
@@ -413,7 +483,11 @@ mod tests {
     /// legend says so; curves that differ stay apart.
     #[test]
     fn the_roller_s_band_speeds_draw_one_curve_and_say_why() {
-        let curves = curves(&PresetId::Roller.model(), &AtomicBool::new(false));
+        let curves = curves(
+            &PresetId::Roller.model(),
+            DampingKind::Joints,
+            &AtomicBool::new(false),
+        );
         assert_eq!(curves.lines.len(), 1, "{:?}", curves.lines);
         let (name, points) = &curves.lines[0];
         assert!(name.contains("does not depend on V"), "{name}");
@@ -429,8 +503,45 @@ mod tests {
     /// claiming that the column never loses stability.
     #[test]
     fn a_stopped_band_leaves_the_plot_empty_with_the_reason() {
-        let curves = curves(&roller_with(Key::V, 0.0), &AtomicBool::new(false));
+        let curves = curves(
+            &roller_with(Key::V, 0.0),
+            DampingKind::Joints,
+            &AtomicBool::new(false),
+        );
         let note = curves.note.unwrap();
         assert!(note.contains("V = 0"), "{note}");
+    }
+
+    /// External and internal damping vanishing together: the curve of the
+    /// smallest level follows the Routh-Hurwitz limit (physics.md section
+    /// 7), from near internal damping's 41/28 at small ratios toward
+    /// external damping's 2 at large ones, below the undamped 7/2 - sqrt 2
+    /// that the reference line shows.
+    #[test]
+    fn external_damping_curves_follow_the_vanishing_damping_limit() {
+        let limit = |r: f64| {
+            let a = 15.0 * r * r + 210.0 * r;
+            let b = -(104.0 * r * r + 1467.0 * r + 504.0);
+            let c = 148.0 * r * r + 2214.0 * r + 738.0;
+            (-b - (b * b - 4.0 * a * c).sqrt()) / (2.0 * a)
+        };
+        let curves = curves(
+            &PresetId::Ziegler1952.model(),
+            DampingKind::External,
+            &AtomicBool::new(false),
+        );
+        let (_, vanishing) = curves.lines.last().unwrap();
+        assert_eq!(vanishing.len(), POINTS);
+        for point in vanishing {
+            let expected = limit(10f64.powf(point[0]));
+            assert!(
+                (point[1] - expected).abs() < 1e-3,
+                "{point:?} vs {expected}"
+            );
+        }
+        assert!((vanishing[0][1] - 41.0 / 28.0).abs() < 0.02);
+        assert!((vanishing[POINTS - 1][1] - 2.0).abs() < 0.03);
+        let undamped = curves.reference.unwrap().1;
+        assert!((undamped - (3.5 - 2f64.sqrt())).abs() < 1e-9);
     }
 }
