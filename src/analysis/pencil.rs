@@ -113,10 +113,43 @@ fn balance(a: &mut DMatrix<f64>) {
 fn schur_eigenvalues(a: DMatrix<f64>) -> Option<Vec<C64>> {
     let schur = Schur::try_new(a, f64::EPSILON, 10_000)?;
     let eigenvalues: Vec<C64> = schur.complex_eigenvalues().iter().copied().collect();
+    all_finite(eigenvalues)
+}
+
+/// Largest companion matrix given to nalgebra's QR iteration first (the
+/// two- and three-rod columns, bit for bit as before); larger ones, and any
+/// it cannot finish, go to faer's, whose shifts do not stall on the many
+/// imaginary pairs of a long undamped chain.
+const NALGEBRA_MAX_ORDER: usize = 8;
+
+/// The eigenvalues of `a` by faer's real Hessenberg QR algorithm.
+fn faer_eigenvalues(a: &DMatrix<f64>) -> Option<Vec<C64>> {
+    let matrix = faer::Mat::from_fn(a.nrows(), a.ncols(), |i, j| a[(i, j)]);
+    let eigenvalues = matrix.eigenvalues().ok()?;
+    all_finite(
+        eigenvalues
+            .into_iter()
+            .map(|z| C64::new(z.re, z.im))
+            .collect(),
+    )
+}
+
+fn all_finite(eigenvalues: Vec<C64>) -> Option<Vec<C64>> {
     eigenvalues
         .iter()
         .all(|z| z.re.is_finite() && z.im.is_finite())
         .then_some(eigenvalues)
+}
+
+/// The eigenvalues of the balanced companion matrix `balanced` (or, when
+/// no iteration finishes on it, of the unbalanced `a`).
+fn eigenvalues_of(balanced: &DMatrix<f64>, a: &DMatrix<f64>) -> Option<Vec<C64>> {
+    if balanced.nrows() > NALGEBRA_MAX_ORDER {
+        return faer_eigenvalues(balanced).or_else(|| faer_eigenvalues(a));
+    }
+    schur_eigenvalues(balanced.clone())
+        .or_else(|| faer_eigenvalues(balanced))
+        .or_else(|| schur_eigenvalues(a.clone()))
 }
 
 /// All eigenvalues of the pencil by a balanced real Schur decomposition of its
@@ -139,9 +172,7 @@ pub fn spectrum(lin: &LinearModel, load: f64) -> Result<Spectrum, AnalysisError>
     let a = companion(lin, &cyclic).ok_or(not_converged.clone())?;
     let mut balanced = a.clone();
     balance(&mut balanced);
-    let eigenvalues = schur_eigenvalues(balanced)
-        .or_else(|| schur_eigenvalues(a))
-        .ok_or(not_converged)?;
+    let eigenvalues = eigenvalues_of(&balanced, &a).ok_or(not_converged)?;
     Ok(Spectrum {
         eigenvalues,
         structural_zeros: cyclic.len() + lin.extra_zero_roots,

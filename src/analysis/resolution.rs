@@ -31,7 +31,10 @@ const SLOWEST_MODE_FRACTION: f64 = 1e-3;
 ///   whose dominant eigenvalue is within 1e-3 of its size of another are
 ///   left out: near a double root rounding moves eigenvalues by more than
 ///   either tolerance, and the critical loads there come from bisection on
-///   the robust path, not from these samples.
+///   the robust path, not from these samples. So are the samples beside a
+///   change of state, where the growth rate passes through zero (in a long
+///   chain a mode there can be isolated to 1e-3 and still carry rounding of
+///   1e-12 of the frequency scale).
 ///
 /// # Errors
 /// A failed eigenvalue computation.
@@ -93,11 +96,20 @@ pub fn resolution_warning(
             }
         })
         .collect();
-    let undecided: Vec<f64> = samples
-        .iter()
-        .zip(&locus.loads)
-        .filter(|(sample, _)| sample.state != sample.fine_state && sample.isolated)
-        .map(|(_, &p)| p)
+    // A sample beside a change of state has a growth rate passing through
+    // zero by definition: it is the crossing (found by bisection on the
+    // robust path), not a range that rounding decides.
+    let at_crossing = |i: usize| {
+        let state = samples[i].state;
+        (i > 0 && samples[i - 1].state != state)
+            || samples.get(i + 1).is_some_and(|next| next.state != state)
+    };
+    let undecided: Vec<f64> = (0..samples.len())
+        .filter(|&i| {
+            let sample = &samples[i];
+            sample.state != sample.fine_state && sample.isolated && !at_crossing(i)
+        })
+        .map(|i| locus.loads[i])
         .collect();
     if let Some(p) = methods_disagree(pencil, locus, &samples)? {
         return Ok(Some(format!(

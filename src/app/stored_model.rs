@@ -11,13 +11,27 @@ use crate::model::{Load, Model, SpinInertia, analysis_range_text};
 type Setter = fn(&mut Model, f64);
 
 /// Every number of a column, by its name in the stored text.
-const COLUMN: [(&str, Setter); 6] = [
+const COLUMN: [(&str, Setter); 7] = [
     ("tip_mass_kg", |m, v| m.column.tip_mass_kg = v),
     ("k1_nm_per_rad", |m, v| m.column.k1_nm_per_rad = v),
     ("k2_nm_per_rad", |m, v| m.column.k2_nm_per_rad = v),
     ("c1_nms_per_rad", |m, v| m.column.c1_nms_per_rad = v),
     ("c2_nms_per_rad", |m, v| m.column.c2_nms_per_rad = v),
     ("drag_ns_per_m2", |m, v| m.column.drag_ns_per_m2 = v),
+    ("rods", |m, v| {
+        // A count that is no whole number in range fails validation (0 rods).
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "a whole number within the chain's range"
+        )]
+        let rods = if v.fract() == 0.0 && (0.0..=1e6).contains(&v) {
+            v as usize
+        } else {
+            0
+        };
+        m.column.rods = rods;
+    }),
 ];
 
 /// Every number of rod 1 and rod 2 (lengths first: a centre of mass is

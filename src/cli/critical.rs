@@ -18,16 +18,23 @@ pub struct Args {
     /// Lower end of the load range searched.
     #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
     load_min: f64,
-    /// Upper end of the load range searched.
-    #[arg(long, default_value_t = DEFAULT_LOAD_MAX, allow_negative_numbers = true)]
-    load_max: f64,
+    /// Upper end of the load range searched [default: 10 for two rods; for
+    /// a chain of N rods 10 (2/N)^2, the same range in the continuous
+    /// column's units P L^2/EI (0 to 40)].
+    #[arg(long, allow_negative_numbers = true)]
+    load_max: Option<f64>,
     #[arg(long)]
     json: bool,
 }
 
 pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
-    let (load_min, load_max) = (args.load_min, args.load_max);
     let (name, model) = args.model.build()?;
+    #[expect(clippy::cast_precision_loss, reason = "at most 64 rods")]
+    let rods = model.column.rods as f64;
+    let load_min = args.load_min;
+    let load_max = args
+        .load_max
+        .unwrap_or(DEFAULT_LOAD_MAX * (2.0 / rods).powi(2));
     let pencil = AffinePencil::new(&model)?;
     let bracket = bracketing_locus(&pencil, load_min, load_max)?;
     let transitions = critical_loads_along(&pencil, &bracket)?;
@@ -42,6 +49,8 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
             "load_min": load_min,
             "load_max": load_max,
             "transitions": transitions,
+            "rods": model.column.rods,
+            "beck_loads": transitions.iter().map(|t| model.beck_load(t.load)).collect::<Vec<_>>(),
             "resolved": warning.is_none(),
             "warning": warning,
         });
@@ -62,7 +71,12 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
         let q = mu
             .map(|mu| format!("  (q = R l/k = {:.9})", t.load / mu))
             .unwrap_or_default();
-        writeln!(out, "  p = {:<22} {from} -> {to}{q}", t.load)?;
+        // A chain of equal rods discretizes a beam: its load in the beam's units.
+        let beck = model
+            .beck_load(t.load)
+            .map(|beck| format!("  (P L^2/EI = {beck:.6})"))
+            .unwrap_or_default();
+        writeln!(out, "  p = {:<22} {from} -> {to}{q}{beck}", t.load)?;
     }
     Ok(())
 }

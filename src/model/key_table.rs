@@ -3,7 +3,7 @@
 //! values it stands for).
 
 use super::keys::{Key, KeySpec, Scope, Sign};
-use super::params::{Load, Model, Rod, Roller};
+use super::params::{Load, MAX_RODS, Model, Rod, Roller};
 
 /// Rod 1 or rod 2 of the model.
 fn rod_mut(model: &mut Model, rod: usize) -> &mut Rod {
@@ -46,7 +46,7 @@ fn roller_value(model: &Model, get: fn(&Roller) -> f64) -> f64 {
 }
 
 /// Every settable key, in the order `zieglerlab presets` lists them.
-pub const KEYS: [KeySpec; 25] = [
+pub const KEYS: [KeySpec; 26] = [
     KeySpec {
         key: Key::Load,
         unit: "",
@@ -313,6 +313,24 @@ pub const KEYS: [KeySpec; 25] = [
         stage: 2,
         get: |m| m.column.drag_ns_per_m2,
         set: |m, v| m.column.drag_ns_per_m2 = v,
+    },
+    KeySpec {
+        key: Key::Rods,
+        unit: "",
+        description: "rods in the chain: rod 1, then copies of rod 2 with joint A's spring and damper at every joint; the tip mass and load at the last rod's end",
+        range: "from 2 to 64",
+        scope: Scope::All,
+        is_group: false,
+        sign: Sign::Count(2, MAX_RODS),
+        stage: 1,
+        #[expect(clippy::cast_precision_loss, reason = "at most 64 rods")]
+        get: |m| m.column.rods as f64,
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "a whole number from 2 to 64, checked before it is set"
+        )]
+        set: |m, v| m.column.rods = v as usize,
     },
     KeySpec {
         key: Key::P,

@@ -30,6 +30,7 @@ pub enum Key {
     C1,
     C2,
     CExt,
+    Rods,
     P,
     Eta,
     M3,
@@ -39,7 +40,7 @@ pub enum Key {
 
 impl Key {
     /// Every key, in the order of [`KEYS`].
-    pub const ALL: [Self; 25] = [
+    pub const ALL: [Self; 26] = [
         Self::Load,
         Self::A,
         Self::Nu,
@@ -60,6 +61,7 @@ impl Key {
         Self::C1,
         Self::C2,
         Self::CExt,
+        Self::Rods,
         Self::P,
         Self::Eta,
         Self::M3,
@@ -91,6 +93,7 @@ impl Key {
             Self::C1 => "c1",
             Self::C2 => "c2",
             Self::CExt => "c_ext",
+            Self::Rods => "rods",
             Self::P => "P",
             Self::Eta => "eta",
             Self::M3 => "m3",
@@ -186,6 +189,8 @@ pub enum Scope {
 pub(super) enum Sign {
     Positive,
     NonNegative,
+    /// A whole number from the first to the second, inclusive.
+    Count(usize, usize),
 }
 
 /// One settable parameter.
@@ -322,11 +327,20 @@ pub fn apply_assignments(model: &mut Model, assignments: &[Assignment]) -> Resul
 }
 
 fn check_sign(spec: &KeySpec, value: f64) -> Result<(), ModelError> {
-    let allowed = format!("must be a finite number {} {}", spec.range, spec.unit);
+    let allowed = match spec.sign {
+        Sign::Count(..) => format!("must be a whole number {}", spec.range),
+        Sign::Positive | Sign::NonNegative => {
+            format!("must be a finite number {} {}", spec.range, spec.unit)
+        }
+    };
+    #[expect(clippy::cast_precision_loss, reason = "small counts")]
     let ok = value.is_finite()
         && match spec.sign {
             Sign::Positive => value > 0.0,
             Sign::NonNegative => value >= 0.0,
+            Sign::Count(min, max) => {
+                value.fract() == 0.0 && (min as f64..=max as f64).contains(&value)
+            }
         };
     if ok {
         Ok(())

@@ -3,9 +3,9 @@
 use nalgebra::DMatrix;
 
 use super::ModelError;
-use super::params::{Column, Model};
+use super::params::Model;
 
-/// `M x'' + D x' + K x = 0` about the straight column, `x = (phi1, phi2[, psi])`.
+/// `M x'' + D x' + K x = 0` about the straight column, `x = (phi_1 .. phi_N[, psi])`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LinearModel {
     pub mass: DMatrix<f64>,
@@ -16,6 +16,62 @@ pub struct LinearModel {
     /// Zero roots of the model that the matrices above do not carry: a massless
     /// roller's free spin angle, whose rate is slaved (see [`linearize`]).
     pub extra_zero_roots: usize,
+}
+
+/// The chain's mass matrix about the straight column, on the rods' angles
+/// `(phi_1 .. phi_N)`: with rod i's points at `sum_{j<i} l_j e_j + s e_i`,
+/// `M_jk = sum_i m_i c_ij c_ik + delta_jk I_j + m_end l_j l_k`, where
+/// `c_ij = l_j` (j < i), `s_i` (j = i), 0 (j > i), and the end mass (tip
+/// mass and roller) with the roller's yaw inertia on the last rod.
+#[must_use]
+pub fn chain_mass_matrix(model: &Model) -> DMatrix<f64> {
+    let column = &model.column;
+    let n = column.rods;
+    let (roller_kg, yaw_kg_m2) = model
+        .roller()
+        .map_or((0.0, 0.0), |r| (r.mass_kg, r.yaw_inertia_kg_m2()));
+    let end_kg = column.tip_mass_kg + roller_kg;
+    let length = |i: usize| column.rod(i).length_m;
+    // The mass of the rods beyond rod i, for i from the tip down.
+    let mut beyond_kg = vec![0.0; n];
+    for i in (0..n.saturating_sub(1)).rev() {
+        beyond_kg[i] = beyond_kg[i + 1] + column.rod(i + 1).mass_kg;
+    }
+    DMatrix::from_fn(n, n, |j, k| {
+        let (lo, hi) = (j.min(k), j.max(k));
+        let rod = column.rod(hi);
+        let end = end_kg * length(j) * length(k);
+        if j == k {
+            beyond_kg[j] * length(j).powi(2)
+                + rod.inertia_about_joint_kg_m2()
+                + end
+                + if j + 1 == n { yaw_kg_m2 } else { 0.0 }
+        } else {
+            beyond_kg[hi] * length(lo) * length(hi) + rod.mass_kg * rod.com_m * length(lo) + end
+        }
+    })
+}
+
+/// The external drag's damping matrix on the rods' angles, from its
+/// Rayleigh function: `D_jk = c_ext sum_i int_0^l_i a_ij a_ik ds` with
+/// `a_ij = l_j` (j < i), `s` (j = i), 0 (j > i) (physics.md section 4).
+fn drag_matrix(column: &crate::model::Column) -> DMatrix<f64> {
+    let n = column.rods;
+    let length = |i: usize| column.rod(i).length_m;
+    // The length of the rods beyond rod i.
+    let mut beyond_m = vec![0.0; n];
+    for i in (0..n.saturating_sub(1)).rev() {
+        beyond_m[i] = beyond_m[i + 1] + length(i + 1);
+    }
+    DMatrix::from_fn(n, n, |j, k| {
+        let (lo, hi) = (j.min(k), j.max(k));
+        let own = if j == k {
+            length(j).powi(3) / 3.0
+        } else {
+            length(lo) * length(hi).powi(2) / 2.0
+        };
+        column.drag_ns_per_m2 * (own + beyond_m[hi] * length(lo) * length(hi))
+    })
 }
 
 /// The analytic linearization of `model` about `phi = 0` at rest.
@@ -29,18 +85,7 @@ pub struct LinearModel {
 /// friction is not differentiable about the state of rest.
 pub fn linearize(model: &Model) -> Result<LinearModel, ModelError> {
     model.validate()?;
-    let Column {
-        rod1,
-        rod2,
-        k1_nm_per_rad: k1,
-        k2_nm_per_rad: k2,
-        c1_nms_per_rad: c1,
-        c2_nms_per_rad: c2,
-        drag_ns_per_m2: drag,
-        ..
-    } = model.column;
-    let (l1, l2) = (rod1.length_m, rod2.length_m);
-    let inertia = model.inertia();
+    let column = &model.column;
     if let Some(roller) = model.roller()
         && roller.band_speed_m_per_s <= 0.0
     {
@@ -52,52 +97,59 @@ pub fn linearize(model: &Model) -> Result<LinearModel, ModelError> {
     }
     // A massless roller is linearized as the ideal follower column it equals.
     let roller = model.roller().filter(|roller| roller.mass_kg > 0.0);
-    let n = if roller.is_some() { 3 } else { 2 };
+    let rods = column.rods;
+    let last = rods - 1;
+    let n = rods + usize::from(roller.is_some());
+    let length = |i: usize| column.rod(i).length_m;
     let mut mass = DMatrix::zeros(n, n);
+    mass.view_mut((0, 0), (rods, rods))
+        .copy_from(&chain_mass_matrix(model));
     let mut damping = DMatrix::zeros(n, n);
+    damping
+        .view_mut((0, 0), (rods, rods))
+        .copy_from(&drag_matrix(column));
     let mut stiffness = DMatrix::zeros(n, n);
-    mass[(0, 0)] = inertia.a_kg_m2;
-    mass[(0, 1)] = inertia.b_kg_m2;
-    mass[(1, 0)] = inertia.b_kg_m2;
-    mass[(1, 1)] = inertia.c_kg_m2;
-    damping[(0, 0)] = c1 + c2;
-    damping[(0, 1)] = -c2;
-    damping[(1, 0)] = -c2;
-    damping[(1, 1)] = c2;
-    // The drag on the rods, by its Rayleigh function: rod 1 moves with
-    // s phi1', rod 2 with l1 phi1' + s phi2' (physics.md section 4).
-    damping[(0, 0)] += drag * (l1.powi(3) / 3.0 + l1 * l1 * l2);
-    damping[(0, 1)] += drag * l1 * l2 * l2 / 2.0;
-    damping[(1, 0)] += drag * l1 * l2 * l2 / 2.0;
-    damping[(1, 1)] += drag * l2.powi(3) / 3.0;
-    stiffness[(0, 0)] = k1 + k2;
-    stiffness[(0, 1)] = -k2;
-    stiffness[(1, 0)] = -k2;
-    stiffness[(1, 1)] = k2;
+    // Joint i's spring and damper act on phi_i - phi_{i-1} (phi_0 = 0).
+    for i in 0..rods {
+        let (k, c) = (column.spring_nm_per_rad(i), column.damper_nms_per_rad(i));
+        stiffness[(i, i)] += k;
+        damping[(i, i)] += c;
+        if i > 0 {
+            stiffness[(i - 1, i - 1)] += k;
+            stiffness[(i - 1, i)] -= k;
+            stiffness[(i, i - 1)] -= k;
+            damping[(i - 1, i - 1)] += c;
+            damping[(i - 1, i)] -= c;
+            damping[(i, i - 1)] -= c;
+        }
+    }
     let force_n = model.follower_force_n();
+    // Every tip force pushes each rod by P l_i sin(phi_i - ...): the -P l_i
+    // on the diagonal; a follower (eta) or the friction adds the rest.
+    for i in 0..rods {
+        stiffness[(i, i)] -= force_n * length(i);
+    }
     // A massless roller is the ideal follower force (eta = 1).
     let eta = model.load.eta().or(roller.is_none().then_some(1.0));
     if let Some(eta) = eta {
-        // Q_i = P l_i sin(phi_i - eta phi2) (physics.md section 2), linearized.
-        stiffness[(0, 0)] -= force_n * l1;
-        stiffness[(0, 1)] += eta * force_n * l1;
-        stiffness[(1, 1)] -= (1.0 - eta) * force_n * l2;
+        // Q_i = P l_i sin(phi_i - eta phi_N) (physics.md section 2), linearized.
+        for i in 0..rods {
+            stiffness[(i, last)] += eta * force_n * length(i);
+        }
     }
     if let Some(roller) = roller {
         let r = roller.radius_m;
-        mass[(2, 2)] = inertia.spin_kg_m2;
-        // G = (mu R / V) g g^T with g = (l1, l2, -r): the transverse slip acts
-        // as a viscous damper of coefficient mu R / V at the contact point.
-        let g = [l1, l2, -r];
+        mass[(rods, rods)] = model.inertia().spin_kg_m2;
+        // G = (mu R / V) g g^T with g = (l_1 .. l_N, -r): the transverse slip
+        // acts as a viscous damper of coefficient mu R / V at the contact point.
+        let g: Vec<f64> = (0..rods).map(length).chain([-r]).collect();
         let coefficient = force_n / roller.band_speed_m_per_s;
-        for i in 0..3 {
-            for j in 0..3 {
+        for i in 0..n {
+            for j in 0..n {
                 damping[(i, j)] += coefficient * g[i] * g[j];
             }
         }
-        stiffness[(0, 0)] -= force_n * l1;
-        stiffness[(1, 1)] -= force_n * l2;
-        stiffness[(2, 1)] = force_n * r;
+        stiffness[(rods, last)] = force_n * r;
     }
     let extra_zero_roots = usize::from(model.roller().is_some() && roller.is_none());
     Ok(LinearModel {

@@ -21,9 +21,9 @@ pub use dynamics::{
     tip_load, tip_m, tip_response,
 };
 pub use keys::{Assignment, KEYS, Key, KeySpec, apply_assignments, parse_assignment};
-pub use linear::{LinearModel, linearize};
+pub use linear::{LinearModel, chain_mass_matrix, linearize};
 pub(crate) use params::analysis_range_text;
-pub use params::{Column, Inertia, Load, Model, Rod, Roller, SpinInertia};
+pub use params::{Column, Inertia, Load, MAX_RODS, Model, Rod, Roller, SpinInertia};
 pub use presets::{PRESETS, Preset, PresetId, preset};
 
 /// A parameter value that makes no model, named so the user can fix it.

@@ -48,11 +48,16 @@ impl Rod {
     }
 }
 
-/// The two-rod column without its load: rods, tip mass, springs, dampers.
+/// The column without its load: rods, tip mass, springs, dampers. A chain
+/// of more than two rods repeats rod 2, with joint A's spring and damper at
+/// every joint beyond the clamp.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Column {
     pub rod1: Rod,
     pub rod2: Rod,
+    /// How many rods: 2 (rod 1 and rod 2) up to [`MAX_RODS`].
+    #[serde(default = "two_rods")]
+    pub rods: usize,
     /// Point mass at the free end B (the roller's mass is not included here).
     pub tip_mass_kg: f64,
     /// Rotary spring at the clamp O, acting on `phi1`.
@@ -67,6 +72,50 @@ pub struct Column {
     /// force per unit length of `-c_ext` times the local transverse velocity.
     #[serde(default)]
     pub drag_ns_per_m2: f64,
+}
+
+/// The most rods a chain may have.
+pub const MAX_RODS: usize = 64;
+
+/// Settings stored before chains existed held two rods.
+fn two_rods() -> usize {
+    2
+}
+
+impl Column {
+    /// Rod `i` of the chain, from 0 at the clamp: rod 1, then copies of rod 2.
+    #[must_use]
+    pub fn rod(&self, i: usize) -> &Rod {
+        if i == 0 { &self.rod1 } else { &self.rod2 }
+    }
+
+    /// The spring at joint `i` (0: the clamp O, on the first rod's angle;
+    /// then between rods i - 1 and i), in N m/rad.
+    #[must_use]
+    pub fn spring_nm_per_rad(&self, i: usize) -> f64 {
+        if i == 0 {
+            self.k1_nm_per_rad
+        } else {
+            self.k2_nm_per_rad
+        }
+    }
+
+    /// The damper at joint `i`, in N m s/rad.
+    #[must_use]
+    pub fn damper_nms_per_rad(&self, i: usize) -> f64 {
+        if i == 0 {
+            self.c1_nms_per_rad
+        } else {
+            self.c2_nms_per_rad
+        }
+    }
+
+    /// Whether every rod is the same and so is every spring: the chain that
+    /// discretizes a uniform beam of stiffness `EI = k l`.
+    #[must_use]
+    pub fn has_equal_rods(&self) -> bool {
+        self.rod1 == self.rod2 && self.k1_nm_per_rad == self.k2_nm_per_rad
+    }
 }
 
 /// The roller at the tip, dragged by the moving band (Fig. 1c, Fig. 7).
@@ -189,13 +238,23 @@ pub struct Inertia {
 }
 
 impl Model {
-    /// Degrees of freedom: 3 with the roller (its spin), 2 otherwise.
+    /// Degrees of freedom: one angle per rod, and the roller's spin.
     #[must_use]
     pub fn dof(&self) -> usize {
         match self.load {
-            Load::Roller(_) => 3,
-            Load::Follower { .. } => 2,
+            Load::Roller(_) => self.column.rods + 1,
+            Load::Follower { .. } => self.column.rods,
         }
+    }
+
+    /// The load in the units of a continuous column, `P L^2 / EI` with
+    /// `L = N l` and `EI = k l` (Beck's 20.05 for a follower force), for a
+    /// chain of equal rods; `None` otherwise.
+    #[must_use]
+    pub fn beck_load(&self, p: f64) -> Option<f64> {
+        #[expect(clippy::cast_precision_loss, reason = "at most 64 rods")]
+        let n = self.column.rods as f64;
+        self.column.has_equal_rods().then_some(n * n * p)
     }
 
     /// The roller, if the load is one.
@@ -352,7 +411,16 @@ impl Model {
             c1_nms_per_rad,
             c2_nms_per_rad,
             drag_ns_per_m2,
+            rods,
         } = self.column;
+        if !(2..=MAX_RODS).contains(&rods) {
+            #[expect(clippy::cast_precision_loss, reason = "a count shown in a message")]
+            return Err(ModelError::invalid(
+                "rods",
+                rods as f64,
+                &format!("must be a whole number from 2 to {MAX_RODS}"),
+            ));
+        }
         for (i, rod) in [(1, rod1), (2, rod2)] {
             positive(&format!("l{i}"), rod.length_m)?;
             non_negative(&format!("m{i}"), rod.mass_kg)?;
@@ -415,6 +483,23 @@ impl Model {
                 det,
                 "the column needs mass beyond the joint A (rod 2, tip or roller) and mass or inertia that moves with rod 1 on its own; the mass matrix is singular",
             ));
+        }
+        if rods > 2 {
+            // Every copy of rod 2 must carry mass or inertia of its own: the
+            // Cholesky factor's pivots stay well away from zero.
+            let mass = super::linear::chain_mass_matrix(self);
+            let pivots_ok = mass.clone().cholesky().is_some_and(|factor| {
+                let l = factor.l();
+                (0..rods).all(|i| l[(i, i)].powi(2) > 1e-12 * mass[(i, i)])
+            });
+            if !pivots_ok {
+                #[expect(clippy::cast_precision_loss, reason = "a count shown in a message")]
+                return Err(ModelError::invalid(
+                    "rods",
+                    rods as f64,
+                    "a chain needs mass or inertia on every copy of rod 2 (m2 or I2 > 0): with rod 2 massless the chain's mass matrix is singular",
+                ));
+            }
         }
         Ok(())
     }

@@ -187,6 +187,7 @@ fn column(rod1: Rod, rod2: Rod, tip_mass_kg: f64) -> Column {
         c1_nms_per_rad: 0.0,
         c2_nms_per_rad: 0.0,
         drag_ns_per_m2: 0.0,
+        rods: 2,
     }
 }
 

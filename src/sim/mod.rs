@@ -119,6 +119,19 @@ pub enum SimError {
         "the rapier2d world could not be built for this column (its joints were refused); use the reference engine"
     )]
     RapierWorld,
+    #[error(
+        "rods = {rods}: chains of more than two rods are analysed (critical, locus, map) but not yet simulated; the animation and the engines take rods = 2"
+    )]
+    ChainNotSimulated { rods: usize },
+}
+
+/// A valid model of two rods: what the engines integrate.
+fn simulable(model: &Model) -> Result<(), SimError> {
+    model.validate()?;
+    match model.column.rods {
+        2 => Ok(()),
+        rods => Err(SimError::ChainNotSimulated { rods }),
+    }
 }
 
 impl SimError {
@@ -130,6 +143,7 @@ impl SimError {
             Self::Bad { what, .. } => Some(what),
             Self::TooStiffForRapier { .. } => Some("dt"),
             Self::RapierWorld => None,
+            Self::ChainNotSimulated { .. } => Some("rods"),
         }
     }
 }
@@ -245,7 +259,7 @@ impl Simulation {
         x0: StateVec,
         step_secs: f64,
     ) -> Result<Self, SimError> {
-        model.validate()?;
+        simulable(&model)?;
         if !(step_secs.is_finite() && step_secs > 0.0 && step_secs <= 1.0) {
             return Err(SimError::Bad {
                 what: "dt",
@@ -281,7 +295,7 @@ impl Simulation {
     /// An invalid model, or one too stiff for the rapier engine at this step
     /// (the run keeps its previous one).
     pub fn set_model(&mut self, model: Model) -> Result<(), SimError> {
-        model.validate()?;
+        simulable(&model)?;
         if self.engine() == EngineKind::Rapier {
             check_rapier_step(&model, self.step_secs)?;
         }
