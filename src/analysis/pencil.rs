@@ -117,10 +117,10 @@ fn schur_eigenvalues(a: DMatrix<f64>) -> Option<Vec<C64>> {
 }
 
 /// Largest companion matrix given to nalgebra's QR iteration first (the
-/// two- and three-rod columns, bit for bit as before); larger ones, and any
-/// it cannot finish, go to faer's, whose shifts do not stall on the many
-/// imaginary pairs of a long undamped chain.
-const NALGEBRA_MAX_ORDER: usize = 8;
+/// two-rod columns and the roller, bit for bit as before); larger ones, and
+/// any it cannot finish, go to faer's, whose shifts do not stall on the
+/// many imaginary pairs of a long undamped chain.
+const NALGEBRA_MAX_ORDER: usize = 6;
 
 /// The eigenvalues of `a` by faer's real Hessenberg QR algorithm.
 fn faer_eigenvalues(a: &DMatrix<f64>) -> Option<Vec<C64>> {
@@ -139,6 +139,24 @@ fn all_finite(eigenvalues: Vec<C64>) -> Option<Vec<C64>> {
         .iter()
         .all(|z| z.re.is_finite() && z.im.is_finite())
         .then_some(eigenvalues)
+}
+
+/// The eigenvalues of an undamped pencil `lambda^2 M + K` of a long chain:
+/// `lambda = +/- sqrt(-mu)` for the eigenvalues mu of `M^-1 K`, a matrix of
+/// half the companion's order (an eighth of its cost).
+fn undamped_eigenvalues(lin: &LinearModel) -> Option<Vec<C64>> {
+    let mut a = lin.mass.clone().cholesky()?.solve(&lin.stiffness);
+    balance(&mut a);
+    let squares = faer_eigenvalues(&a)?;
+    Some(
+        squares
+            .into_iter()
+            .flat_map(|mu| {
+                let root = (-mu).sqrt();
+                [root, -root]
+            })
+            .collect(),
+    )
 }
 
 /// The eigenvalues of the balanced companion matrix `balanced` (or, when
@@ -169,10 +187,15 @@ pub fn spectrum(lin: &LinearModel, load: f64) -> Result<Spectrum, AnalysisError>
         return Err(not_converged);
     }
     let cyclic = cyclic_coordinates(&lin.stiffness);
-    let a = companion(lin, &cyclic).ok_or(not_converged.clone())?;
-    let mut balanced = a.clone();
-    balance(&mut balanced);
-    let eigenvalues = eigenvalues_of(&balanced, &a).ok_or(not_converged)?;
+    let undamped = cyclic.is_empty() && lin.damping.iter().all(|&d| d == 0.0);
+    let eigenvalues = if undamped && 2 * lin.mass.nrows() > NALGEBRA_MAX_ORDER {
+        undamped_eigenvalues(lin).ok_or(not_converged)?
+    } else {
+        let a = companion(lin, &cyclic).ok_or(not_converged.clone())?;
+        let mut balanced = a.clone();
+        balance(&mut balanced);
+        eigenvalues_of(&balanced, &a).ok_or(not_converged)?
+    };
     Ok(Spectrum {
         eigenvalues,
         structural_zeros: cyclic.len() + lin.extra_zero_roots,
@@ -443,6 +466,42 @@ impl NormQuadratics {
             stiffness: quadratic(&at_zero.stiffness, &per_unit_load.stiffness),
             damping: quadratic(&at_zero.damping, &per_unit_load.damping),
             mass: at_zero.mass.norm(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{Assignment, Key, PresetId, apply_assignments};
+
+    /// The half-order path of an undamped chain gives the companion
+    /// matrix's eigenvalues, pair for pair, in flutter and before it.
+    #[test]
+    fn an_undamped_chain_s_half_order_eigenvalues_are_the_companion_s() {
+        let mut chain = PresetId::UniformRods.model();
+        let rods = Assignment {
+            key: Key::Rods,
+            value: 6.0,
+        };
+        apply_assignments(&mut chain, &[rods]).unwrap();
+        for p in [0.0, 0.3, 0.9] {
+            let lin = linearize(&chain.at_load(p)).unwrap();
+            let half = undamped_eigenvalues(&lin).unwrap();
+            let a = companion(&lin, &[]).unwrap();
+            let full = faer_eigenvalues(&a).unwrap();
+            let scale = full.iter().map(|z| z.norm()).fold(0.0, f64::max);
+            assert_eq!(half.len(), full.len());
+            for z in &half {
+                let nearest = full
+                    .iter()
+                    .map(|w| (w - z).norm())
+                    .fold(f64::INFINITY, f64::min);
+                assert!(
+                    nearest < 1e-9 * scale,
+                    "p = {p}: {z} is {nearest:e} from the companion's"
+                );
+            }
         }
     }
 }
