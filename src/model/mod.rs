@@ -6,6 +6,7 @@
 #![doc = include_str!("physics.md")]
 
 mod axis;
+mod chain;
 mod dynamics;
 mod key_table;
 mod keys;
@@ -15,6 +16,7 @@ mod presets;
 
 pub use crate::format::Shown;
 pub use axis::{Axis, DAMPER_RATIO, DAMPING_LEVEL, MASS_RATIO};
+pub use chain::{ChainState, chain_accelerations, chain_energy_j};
 pub use dynamics::{
     Friction, RodDrag, SLIP_REGULARIZATION_M_PER_S, StateVec, TipLoad, TipResponse,
     drag_generalized_n_m, energy_j, friction, joint_torques_nm, rod_drag, state_derivative,

@@ -9,7 +9,10 @@ use crate::common;
 
 use common::{assert_close, eigenvalues, model, transitions};
 use zieglerlab::analysis::{State, first_instability};
-use zieglerlab::model::{StateVec, apply_assignments, chain_mass_matrix, parse_assignment};
+use zieglerlab::model::{
+    ChainState, StateVec, apply_assignments, chain_accelerations, chain_energy_j,
+    chain_mass_matrix, parse_assignment, state_derivative,
+};
 use zieglerlab::sim::{EngineKind, SimError, Simulation, initial_state};
 
 /// The uniform-rod chain of `rods` rods and its first loss of stability in
@@ -115,21 +118,11 @@ fn the_chain_mass_matrix_is_its_kinetic_energy() {
     let velocity = |rod: usize, s: f64| -> f64 {
         (0..rod).map(|j| lengths[j] * rates[j]).sum::<f64>() + s * rates[rod]
     };
-    let steps = 200;
-    let mut kinetic = 0.0;
-    for rod in 0..3 {
-        let h = lengths[rod] / f64::from(steps);
-        for i in 0..=steps {
-            let w = if i == 0 || i == steps {
-                1.0
-            } else if i % 2 == 1 {
-                4.0
-            } else {
-                2.0
-            };
-            kinetic += 0.5 * densities[rod] * w * h / 3.0 * velocity(rod, h * f64::from(i)).powi(2);
-        }
-    }
+    let mut kinetic: f64 = (0..3)
+        .map(|rod| {
+            0.5 * densities[rod] * common::simpson(|s| velocity(rod, s).powi(2), lengths[rod])
+        })
+        .sum();
     kinetic += 0.5 * 0.7 * velocity(2, lengths[2]).powi(2);
     let mass = chain_mass_matrix(&chain);
     let q = nalgebra::DVector::from_column_slice(&rates);
@@ -183,5 +176,144 @@ fn a_chain_is_analysed_but_not_yet_simulated() {
             refused,
             Err(SimError::ChainNotSimulated { rods: 4 })
         ));
+    }
+}
+
+/// A chain state from the angles and rates of a 2-rod state.
+fn chain_state(x: &StateVec) -> ChainState {
+    ChainState {
+        angles_rad: vec![x[0], x[1]],
+        rates_rad_per_s: vec![x[3], x[4]],
+    }
+}
+
+/// Two rods: the chain's equations are the column's, with every force.
+#[test]
+fn the_two_rod_chain_moves_as_the_column() {
+    let column = model(
+        "uniform-rods",
+        &[
+            "load=2.2",
+            "eta=0.6",
+            "c1=0.02",
+            "c2=0.05",
+            "c_ext=0.03",
+            "l2=0.7",
+        ],
+    );
+    for x in common::states() {
+        let column_rates = state_derivative(&column, &x);
+        let chain = chain_accelerations(&column, &chain_state(&x)).unwrap();
+        for (a, b) in chain.iter().zip([column_rates[3], column_rates[4]]) {
+            assert!((a - b).abs() <= 1e-12 * b.abs().max(1.0), "{a} vs {b}");
+        }
+    }
+}
+
+/// A large-amplitude state of `rods` rods, every angle and rate different.
+fn wild_state(rods: u32) -> ChainState {
+    let wave = |i: u32, a: f64, b: f64| a * (b * (f64::from(i) + 1.0)).sin();
+    ChainState {
+        angles_rad: (0..rods).map(|i| wave(i, 0.9, 1.3)).collect(),
+        rates_rad_per_s: (0..rods).map(|i| wave(i, 1.7, 2.1)).collect(),
+    }
+}
+
+/// dE/dt along the flow of a chain, by central differences.
+fn chain_energy_rate(model: &zieglerlab::model::Model, x: &ChainState) -> f64 {
+    let a = chain_accelerations(model, x).unwrap();
+    let h = 1e-6;
+    let step = |sign: f64| {
+        let y = ChainState {
+            angles_rad: (0..a.len())
+                .map(|i| x.angles_rad[i] + sign * h * x.rates_rad_per_s[i])
+                .collect(),
+            rates_rad_per_s: (0..a.len())
+                .map(|i| x.rates_rad_per_s[i] + sign * h * a[i])
+                .collect(),
+        };
+        let (kinetic, spring) = chain_energy_j(model, &y);
+        kinetic + spring
+    };
+    (step(1.0) - step(-1.0)) / (2.0 * h)
+}
+
+/// Unloaded and undamped, a chain of 8 rods keeps its energy at large
+/// amplitude (the mass matrix and the velocity-squared terms); with drag it
+/// loses the drag's integral over the rods, summed point by point.
+#[test]
+fn a_free_chain_keeps_its_energy_and_drag_takes_its_integral() {
+    let free = model("uniform-rods", &["rods=8", "load=0", "m_tip=0.3"]);
+    let x = wild_state(8);
+    let (kinetic, spring) = chain_energy_j(&free, &x);
+    let rate = chain_energy_rate(&free, &x);
+    assert!(rate.abs() < 1e-7 * (kinetic + spring), "{rate}");
+
+    let c = 0.04;
+    let dragged = model("uniform-rods", &["rods=5", "load=0", "c_ext=0.04"]);
+    let x = wild_state(5);
+    // Velocity across rod i at s: sum_{j<i} l_j cos(phi_i - phi_j) phi_j' + s phi_i'.
+    let dissipated: f64 = (0..5)
+        .map(|i| {
+            let across: f64 = (0..i)
+                .map(|j| (x.angles_rad[i] - x.angles_rad[j]).cos() * x.rates_rad_per_s[j])
+                .sum();
+            c * common::simpson(|s| (across + s * x.rates_rad_per_s[i]).powi(2), 1.0)
+        })
+        .sum();
+    let rate = chain_energy_rate(&dragged, &x);
+    assert!(
+        (rate + dissipated).abs() < 1e-6 * dissipated,
+        "{rate} vs {dissipated}"
+    );
+}
+
+/// At rest, the Jacobian of the chain's equations is the linearization's
+/// `[[0, I], [-M^-1 K, -M^-1 D]]` for 4 rods with a partial follower force,
+/// dampers and drag.
+#[test]
+fn the_chain_s_jacobian_at_rest_is_its_linearization() {
+    let chain = model(
+        "uniform-rods",
+        &[
+            "rods=4",
+            "load=0.7",
+            "eta=0.8",
+            "c2=0.03",
+            "c1=0.01",
+            "c_ext=0.02",
+            "m_tip=0.2",
+        ],
+    );
+    let lin = zieglerlab::model::linearize(&chain).unwrap();
+    let minv = lin.mass.clone().try_inverse().unwrap();
+    let (k, d) = (-&minv * &lin.stiffness, -&minv * &lin.damping);
+    let h = 1e-7;
+    for column in 0..8 {
+        let at = |sign: f64| {
+            let mut x = ChainState {
+                angles_rad: vec![0.0; 4],
+                rates_rad_per_s: vec![0.0; 4],
+            };
+            if column < 4 {
+                x.angles_rad[column] = sign * h;
+            } else {
+                x.rates_rad_per_s[column - 4] = sign * h;
+            }
+            chain_accelerations(&chain, &x).unwrap()
+        };
+        let (plus, minus) = (at(1.0), at(-1.0));
+        for row in 0..4 {
+            let numeric = (plus[row] - minus[row]) / (2.0 * h);
+            let analytic = if column < 4 {
+                k[(row, column)]
+            } else {
+                d[(row, column - 4)]
+            };
+            assert!(
+                (numeric - analytic).abs() < 1e-6 * analytic.abs().max(1e-3),
+                "row {row} column {column}: {numeric} vs {analytic}"
+            );
+        }
     }
 }

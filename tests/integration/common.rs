@@ -2,7 +2,9 @@
 
 #![allow(dead_code, reason = "each test module uses a different subset")]
 use zieglerlab::analysis::{AffinePencil, C64, Transition, critical_loads};
-use zieglerlab::model::{Model, apply_assignments, parse_assignment, preset};
+use zieglerlab::model::{
+    Model, StateVec, apply_assignments, energy_j, parse_assignment, preset, state_derivative,
+};
 use zieglerlab::sim::{EngineKind, Simulation, identify, initial_state};
 
 /// The preset `name` with `key=value` overrides.
@@ -88,4 +90,40 @@ pub fn predicted(model: &Model, fastest_per_s: f64) -> Vec<C64> {
         .into_iter()
         .filter(|z| z.im != 0.0 || z.re.abs() < fastest_per_s)
         .collect()
+}
+
+/// A few large-amplitude states (angles up to about a radian, fast rates).
+pub fn states() -> Vec<StateVec> {
+    vec![
+        StateVec::from([0.4, -0.9, 0.3, 1.1, -0.7, 2.0]),
+        StateVec::from([-1.2, 0.5, -2.0, -0.3, 1.9, -0.5]),
+        StateVec::from([0.05, 0.8, 0.0, 0.02, -0.01, 0.4]),
+    ]
+}
+
+/// dE/dt along the flow by central differences of the energy.
+pub fn energy_rate(model: &Model, x: &StateVec, potential: impl Fn(&StateVec) -> f64) -> f64 {
+    let f = state_derivative(model, x);
+    let h = 1e-6;
+    let energy = |y: &StateVec| {
+        let (kinetic, spring) = energy_j(model, y);
+        kinetic + spring + potential(y)
+    };
+    (energy(&(x + h * f)) - energy(&(x - h * f))) / (2.0 * h)
+}
+
+/// `int_0^length f(s) ds` by Simpson's rule on 200 intervals.
+pub fn simpson(f: impl Fn(f64) -> f64, length: f64) -> f64 {
+    let n = 200;
+    let h = length / f64::from(n);
+    let weight = |i: u32| match i {
+        0 | 200 => 1.0,
+        _ if i % 2 == 1 => 4.0,
+        _ => 2.0,
+    };
+    (0..=n)
+        .map(|i| weight(i) * f(h * f64::from(i)))
+        .sum::<f64>()
+        * h
+        / 3.0
 }

@@ -6,27 +6,8 @@
 
 use crate::common;
 
-use zieglerlab::model::{Load, Model, StateVec, energy_j, friction, state_derivative};
-
-/// A few large-amplitude states (angles up to about a radian, fast rates).
-fn states() -> Vec<StateVec> {
-    vec![
-        StateVec::from([0.4, -0.9, 0.3, 1.1, -0.7, 2.0]),
-        StateVec::from([-1.2, 0.5, -2.0, -0.3, 1.9, -0.5]),
-        StateVec::from([0.05, 0.8, 0.0, 0.02, -0.01, 0.4]),
-    ]
-}
-
-/// dE/dt along the flow by central differences of the energy.
-fn energy_rate(model: &Model, x: &StateVec, potential: impl Fn(&StateVec) -> f64) -> f64 {
-    let f = state_derivative(model, x);
-    let h = 1e-6;
-    let energy = |y: &StateVec| {
-        let (kinetic, spring) = energy_j(model, y);
-        kinetic + spring + potential(y)
-    };
-    (energy(&(x + h * f)) - energy(&(x - h * f))) / (2.0 * h)
-}
+use common::{energy_rate, states};
+use zieglerlab::model::{Load, Model, StateVec, friction};
 
 fn damper_power(model: &Model, x: &StateVec) -> f64 {
     let c = &model.column;

@@ -9,7 +9,7 @@ use crate::common;
 
 use common::{assert_close, model};
 use zieglerlab::analysis::{first_instability, flutter_load_external};
-use zieglerlab::model::{StateVec, energy_j, state_derivative};
+use zieglerlab::model::StateVec;
 
 /// The drag's power `-c_ext sum_i int_0^l_i v_perp(s)^2 ds` by Simpson's
 /// rule from the rods' velocity field, not from the code's resultants.
@@ -27,25 +27,7 @@ fn drag_power_by_quadrature(model: &zieglerlab::model::Model, x: &StateVec) -> f
         ];
         across(p2, v)
     };
-    let simpson = |f: &dyn Fn(f64) -> f64, l: f64| {
-        let n = 200;
-        let h = l / f64::from(n);
-        (0..=n)
-            .map(|i| {
-                let weight = if i == 0 || i == n {
-                    1.0
-                } else if i % 2 == 1 {
-                    4.0
-                } else {
-                    2.0
-                };
-                weight * f(h * f64::from(i)).powi(2)
-            })
-            .sum::<f64>()
-            * h
-            / 3.0
-    };
-    -c * (simpson(&on_rod1, l1) + simpson(&on_rod2, l2))
+    -c * (common::simpson(|s| on_rod1(s).powi(2), l1) + common::simpson(|s| on_rod2(s).powi(2), l2))
 }
 
 /// Along the flow, dE/dt = the drag's power plus the joint dampers' at
@@ -54,17 +36,9 @@ fn drag_power_by_quadrature(model: &zieglerlab::model::Model, x: &StateVec) -> f
 fn the_drag_dissipates_its_integral_over_the_rods() {
     for preset in ["ziegler-1952", "uniform-rods", "midpoint-masses"] {
         let model = model(preset, &["load=0", "c_ext=0.07", "c2=0.01", "l2=0.6"]);
-        for x in [
-            StateVec::from([0.4, -0.9, 0.0, 1.1, -0.7, 0.0]),
-            StateVec::from([-1.2, 0.5, 0.0, -0.3, 1.9, 0.0]),
-        ] {
-            let f = state_derivative(&model, &x);
-            let h = 1e-6;
-            let energy = |y: &StateVec| {
-                let (kinetic, spring) = energy_j(&model, y);
-                kinetic + spring
-            };
-            let rate = (energy(&(x + h * f)) - energy(&(x - h * f))) / (2.0 * h);
+        for x in common::states() {
+            let x = StateVec::from([x[0], x[1], 0.0, x[3], x[4], 0.0]);
+            let rate = common::energy_rate(&model, &x, |_| 0.0);
             let joints = -0.01 * (x[4] - x[3]).powi(2);
             let power = drag_power_by_quadrature(&model, &x) + joints;
             assert!(power < 0.0);

@@ -8,9 +8,7 @@ use crate::common;
 
 use common::{assert_close, model, transitions};
 use zieglerlab::analysis::State;
-use zieglerlab::model::{
-    Key, StateVec, apply_assignments, energy_j, parse_assignment, state_derivative,
-};
+use zieglerlab::model::{Key, StateVec, apply_assignments, parse_assignment};
 
 /// The smallest root of Ziegler's 1952 column's divergence condition
 /// `p^2 - 3 p + 1/(1 - eta) = 0`, when it has real roots.
@@ -102,17 +100,9 @@ fn the_partial_force_s_power_balances_the_energy() {
         let model = model(preset, &["load=2.7", "eta=0.4"]);
         let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
         let force_n = model.follower_force_n();
-        for x in [
-            StateVec::from([0.4, -0.9, 0.0, 1.1, -0.7, 0.0]),
-            StateVec::from([-1.2, 0.5, 0.0, -0.3, 1.9, 0.0]),
-        ] {
-            let f = state_derivative(&model, &x);
-            let h = 1e-6;
-            let energy = |y: &StateVec| {
-                let (kinetic, spring) = energy_j(&model, y);
-                kinetic + spring
-            };
-            let rate = (energy(&(x + h * f)) - energy(&(x - h * f))) / (2.0 * h);
+        for x in common::states() {
+            let x = StateVec::from([x[0], x[1], 0.0, x[3], x[4], 0.0]);
+            let rate = common::energy_rate(&model, &x, |_| 0.0);
             let eta_phi2 = 0.4 * x[1];
             let power = force_n
                 * (l1 * (x[0] - eta_phi2).sin() * x[3] + l2 * (x[1] - eta_phi2).sin() * x[4]);
