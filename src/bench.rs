@@ -25,7 +25,7 @@ use nalgebra::DMatrix;
 
 use crate::analysis::{AffinePencil, MapSpec, compute_map, critical_loads, load_grid, locus};
 use crate::app::{Settings, Tab, ZieglerApp};
-use crate::model::{Axis, Key, Model, PresetId};
+use crate::model::{Assignment, Axis, Key, Model, PresetId, apply_assignments};
 use crate::sim::{DEFAULT_STEP_SECS, EngineKind, Simulation, initial_state};
 
 /// Loads of the benchmarked root loci, over `p` in `[0, LOCUS_LOAD_MAX]`.
@@ -54,6 +54,9 @@ pub struct Report {
     pub eig_us_per_pencil: f64,
     /// Critical loads of `roller` for p in [0, 10]: ms.
     pub critical_ms: f64,
+    /// Critical loads of a chain of 32 uniform rods over `critical`'s
+    /// default range (P L^2/EI from 0 to 40), locus and all: ms.
+    pub critical_chain32_ms: f64,
     /// Simulated seconds per wall second, reference engine, app's step.
     pub sim_reference_x_realtime: f64,
     /// The same for the rapier engine.
@@ -92,6 +95,7 @@ pub fn run(frames: usize) -> Result<Report> {
         locus2_us_per_load: locus_us_per_load(&midpoint)?,
         eig_us_per_pencil: eig_us_per_pencil(&roller)?,
         critical_ms: critical_ms(&roller)?,
+        critical_chain32_ms: critical_chain32_ms()?,
         sim_reference_x_realtime: x_realtime(EngineKind::Reference)?,
         sim_rapier_x_realtime: x_realtime(EngineKind::Rapier)?,
         frame_ms_p50: quantile(&frame_ms, 0.5),
@@ -236,6 +240,27 @@ fn eig_us_per_pencil(pencil: &AffinePencil) -> Result<f64> {
 fn critical_ms(pencil: &AffinePencil) -> Result<f64> {
     let secs = median_secs(31, || {
         black_box(critical_loads(pencil, 0.0, LOCUS_LOAD_MAX)?);
+        Ok(())
+    })?;
+    Ok(secs * 1e3)
+}
+
+/// Rods of the benchmarked chain.
+const CHAIN_RODS: f64 = 32.0;
+
+fn critical_chain32_ms() -> Result<f64> {
+    let mut chain = PresetId::UniformRods.model();
+    apply_assignments(
+        &mut chain,
+        &[Assignment {
+            key: Key::Rods,
+            value: CHAIN_RODS,
+        }],
+    )?;
+    let pencil = AffinePencil::new(&chain)?;
+    let load_max = LOCUS_LOAD_MAX * (2.0 / CHAIN_RODS).powi(2);
+    let secs = median_secs(3, || {
+        black_box(critical_loads(&pencil, 0.0, load_max)?);
         Ok(())
     })?;
     Ok(secs * 1e3)

@@ -31,7 +31,7 @@ type Figure = fn(&Report) -> f64;
 
 /// The table: each line's JSON key, figure, unit, what was measured and the
 /// target, if there is one.
-const LINES: [(&str, Figure, &str, &str, Option<Target>); 13] = [
+const LINES: [(&str, Figure, &str, &str, Option<Target>); 14] = [
     (
         "locus_us_per_load",
         |r| r.locus_us_per_load,
@@ -59,6 +59,13 @@ const LINES: [(&str, Figure, &str, &str, Option<Target>); 13] = [
         "ms",
         "critical loads, roller, p in [0, 10]",
         None,
+    ),
+    (
+        "critical_chain32_ms",
+        |r| r.critical_chain32_ms,
+        "ms",
+        "critical loads, 32 uniform rods, P L^2/EI in [0, 40]",
+        Some(Target::AtMost(1000.0)),
     ),
     (
         "sim_reference_x_realtime",
