@@ -8,7 +8,7 @@ use crate::analysis::{
 };
 use crate::model::Model;
 
-use super::state::LOAD_MAX_P;
+use super::state::load_max_p;
 
 /// Evenly spaced loads of the plotted locus (plus the refinement). The same
 /// locus brackets the critical loads, with the sample count `critical` uses.
@@ -21,7 +21,7 @@ pub struct Analysis {
     pub(super) pencil: AffinePencil,
     pub locus: Locus,
     pub transitions: Vec<Transition>,
-    /// The stability ranges `(from, to, state)` that cover `[0, LOAD_MAX_P]`.
+    /// The stability ranges `(from, to, state)` that cover the slider's range.
     pub ranges: Vec<(f64, f64, State)>,
     /// Why the transitions cannot be trusted, when they cannot.
     pub warning: Option<String>,
@@ -31,12 +31,13 @@ impl Analysis {
     pub(super) fn new(model: &Model) -> Result<Self, AnalysisError> {
         let key = model.at_load(0.0);
         let pencil = AffinePencil::new(&key)?;
-        let locus = locus(&pencil, 0.0, LOAD_MAX_P, LOCUS_SAMPLES)?;
+        let load_max = load_max_p(model);
+        let locus = locus(&pencil, 0.0, load_max, LOCUS_SAMPLES)?;
         let transitions = critical_loads_along(&pencil, &locus)?;
         let warning = resolution_warning(&pencil, &locus)?;
         let at_zero = pencil.spectrum(0.0)?;
         let first = classify(&at_zero.eigenvalues, at_zero.scale_per_s).state;
-        let ranges = ranges(&transitions, first, LOAD_MAX_P);
+        let ranges = ranges(&transitions, first, load_max);
         Ok(Self {
             key,
             pencil,

@@ -4,7 +4,7 @@
 
 use eframe::egui;
 
-use super::state::{AppState, LOAD_KEY_STEP_P};
+use super::state::{AppState, LOAD_KEY_STEP};
 
 /// An action of the user.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -105,8 +105,8 @@ impl Command {
             Self::Kick => state.kick(),
             Self::Reset => state.reset(),
             Self::ResetAll => state.reset_all(),
-            Self::LoadUp => state.nudge_load(LOAD_KEY_STEP_P),
-            Self::LoadDown => state.nudge_load(-LOAD_KEY_STEP_P),
+            Self::LoadUp => state.nudge_load(LOAD_KEY_STEP * state.load_max()),
+            Self::LoadDown => state.nudge_load(-LOAD_KEY_STEP * state.load_max()),
             Self::Projector => state.set_projector(!state.settings().projector),
         }
     }

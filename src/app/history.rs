@@ -39,11 +39,12 @@ impl History {
     }
 
     pub fn push(&mut self, now: Observables) {
+        let t_secs = now.t_secs;
         self.samples.push_back(now);
         while self
             .samples
             .front()
-            .is_some_and(|o| now.t_secs - o.t_secs > HISTORY_SECS)
+            .is_some_and(|o| t_secs - o.t_secs > HISTORY_SECS)
         {
             self.samples.pop_front();
         }

@@ -4,7 +4,7 @@
 
 use eframe::egui::{self, Align2, FontId, Rect, Sense, Stroke, pos2, vec2};
 
-use super::state::{AppState, LOAD_MAX_P};
+use super::state::AppState;
 use super::theme::Theme;
 use crate::format::{load_text, number_text};
 use crate::model::Key;
@@ -12,20 +12,30 @@ use crate::model::Key;
 /// The load at horizontal position `x` of a bar spanning `left..right`
 /// (the slider's range, ends included).
 #[must_use]
-pub fn load_at_x(x: f32, left: f32, right: f32) -> f64 {
+pub fn load_at_x(x: f32, (left, right): (f32, f32), load_max: f64) -> f64 {
     let fraction = if right > left {
         ((x - left) / (right - left)).clamp(0.0, 1.0)
     } else {
         0.0
     };
-    f64::from(fraction) * LOAD_MAX_P
+    f64::from(fraction) * load_max
+}
+
+/// The nearest of 1, 2, 5 times a power of ten at or below `step`.
+fn round_step(step: f64) -> f64 {
+    let decade = 10f64.powf(step.log10().floor());
+    [5.0, 2.0, 1.0]
+        .into_iter()
+        .map(|m| m * decade)
+        .find(|&s| s <= step * (1.0 + 1e-9))
+        .unwrap_or(decade)
 }
 
 /// The horizontal position of `load` on a bar spanning `left..right`.
 #[must_use]
-pub fn x_of_load(load: f64, left: f32, right: f32) -> f32 {
+pub fn x_of_load(load: f64, (left, right): (f32, f32), load_max: f64) -> f32 {
     #[expect(clippy::cast_possible_truncation, reason = "pixels")]
-    let fraction = (load / LOAD_MAX_P).clamp(0.0, 1.0) as f32;
+    let fraction = (load / load_max).clamp(0.0, 1.0) as f32;
     left + (right - left) * fraction
 }
 
@@ -57,10 +67,12 @@ pub fn load_bar_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
         if (response.clicked() || response.dragged())
             && let Some(pointer) = response.interact_pointer_pos()
         {
-            state.enter_parameter(Key::Load, load_at_x(pointer.x, bar.left(), bar.right()));
+            let load = load_at_x(pointer.x, (bar.left(), bar.right()), state.load_max());
+            state.enter_parameter(Key::Load, load);
         }
         let painter = ui.painter_at(rect);
-        let x = |load: f64| x_of_load(load, bar.left(), bar.right());
+        let load_max = state.load_max();
+        let x = |load: f64| x_of_load(load, (bar.left(), bar.right()), load_max);
         let analysis = state.analysis();
         match analysis {
             Some(analysis) => {
@@ -72,7 +84,7 @@ pub fn load_bar_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
                 // Each critical load's value above its tick, kept inside the
                 // bar's ends, and left out where it would cover the last one.
                 let mut free_from = f32::NEG_INFINITY;
-                for t in analysis.transitions.iter().filter(|t| t.load <= LOAD_MAX_P) {
+                for t in analysis.transitions.iter().filter(|t| t.load <= load_max) {
                     let tx = x(t.load);
                     painter.line_segment(
                         [pos2(tx, bar.top() - 3.0), pos2(tx, bar.bottom())],
@@ -101,9 +113,12 @@ pub fn load_bar_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
                 painter.rect_filled(bar, 0.0, theme.no_data);
             }
         }
-        // The scale under the bar, at whole loads.
-        for whole in 0..=8_u8 {
-            let load = f64::from(whole) * LOAD_MAX_P / 8.0;
+        // The scale under the bar, at about eight round loads.
+        let step = round_step(load_max / 8.0);
+        for load in (0..).map_while(|i: u32| {
+            let load = f64::from(i) * step;
+            (load <= load_max * (1.0 + 1e-9)).then_some(load)
+        }) {
             painter.text(
                 pos2(x(load), bar.bottom() + 2.0),
                 Align2::CENTER_TOP,
@@ -119,7 +134,8 @@ pub fn load_bar_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
 /// What is marked on the bar: a ramp's onsets (the theory's, the seen one),
 /// a lesson's predicted load, and the handle at the load.
 fn marks_ui(painter: &egui::Painter, bar: Rect, state: &AppState, theme: &Theme) {
-    let x = |load: f64| x_of_load(load, bar.left(), bar.right());
+    let load_max = state.load_max();
+    let x = |load: f64| x_of_load(load, (bar.left(), bar.right()), load_max);
     let bar_height = bar.height();
     let p = state.model().load_p();
     let analysis = state.analysis();
@@ -127,7 +143,7 @@ fn marks_ui(painter: &egui::Painter, bar: Rect, state: &AppState, theme: &Theme)
     if let Some(run) = state.ramp() {
         let theory = analysis.and_then(crate::app::analysis_cache::Analysis::first_instability);
         for (load, color) in [(theory, theme.text), (run.seen_at_p, theme.measured)] {
-            if let Some(load) = load.filter(|&l| l <= LOAD_MAX_P) {
+            if let Some(load) = load.filter(|&l| l <= load_max) {
                 painter.line_segment(
                     [pos2(x(load), bar.top()), pos2(x(load), bar.bottom())],
                     Stroke::new(3.0 * theme.stroke_scale, color),
@@ -163,13 +179,25 @@ mod tests {
 
     #[test]
     fn the_bar_maps_its_width_onto_the_slider_s_range_and_back() {
-        assert_eq!(load_at_x(100.0, 100.0, 500.0), 0.0);
-        assert_eq!(load_at_x(500.0, 100.0, 500.0), LOAD_MAX_P);
-        assert_eq!(load_at_x(300.0, 100.0, 500.0), 0.5 * LOAD_MAX_P);
-        assert_eq!(load_at_x(50.0, 100.0, 500.0), 0.0, "left of the bar");
-        for load in [0.0, 1.0, 2.54, LOAD_MAX_P] {
-            let back = load_at_x(x_of_load(load, 100.0, 500.0), 100.0, 500.0);
-            assert!((back - load).abs() < 1e-5, "{load} -> {back}");
+        let bar = (100.0, 500.0);
+        for max in [8.0, 0.125] {
+            assert_eq!(load_at_x(100.0, bar, max), 0.0);
+            assert_eq!(load_at_x(500.0, bar, max), max);
+            assert_eq!(load_at_x(300.0, bar, max), 0.5 * max);
+            assert_eq!(load_at_x(50.0, bar, max), 0.0, "left of the bar");
+            for fraction in [0.0, 0.125, 0.3175, 1.0] {
+                let load = fraction * max;
+                let back = load_at_x(x_of_load(load, bar, max), bar, max);
+                assert!((back - load).abs() < 1e-5 * max, "{load} -> {back}");
+            }
         }
+    }
+
+    #[test]
+    fn the_scale_steps_are_round() {
+        assert_eq!(round_step(1.0), 1.0);
+        assert_eq!(round_step(0.015_625), 0.01);
+        assert_eq!(round_step(0.03), 0.02);
+        assert_eq!(round_step(0.6), 0.5);
     }
 }

@@ -20,6 +20,8 @@ use crate::sim::{Observables, Status};
 struct SceneInput<'a> {
     pub model: &'a Model,
     pub now: &'a Observables,
+    /// Every rod's angle, from the clamp out.
+    pub angles_rad: &'a [f64],
     pub trail: &'a VecDeque<(f64, [f64; 2])>,
     pub status: Status,
     /// The world box the camera frames.
@@ -111,7 +113,15 @@ pub fn scene_ui(ui: &mut egui::Ui, state: &mut AppState, scene: &mut SceneView, 
     let now = state.simulation().observe();
     let model = state.model();
     let l1 = model.column.rod1.length_m;
-    let reach_m = l1 + model.column.rod2.length_m;
+    let reach_m = model.column.reach_m();
+    let rods = model.column.rods;
+    let angles_rad: Vec<f64> = state
+        .simulation()
+        .state()
+        .rows(0, rods)
+        .iter()
+        .copied()
+        .collect();
     let joint_m = [l1 * now.phi1_rad.cos(), l1 * now.phi1_rad.sin()];
     let recent = state
         .trail()
@@ -127,6 +137,7 @@ pub fn scene_ui(ui: &mut egui::Ui, state: &mut AppState, scene: &mut SceneView, 
         &SceneInput {
             model,
             now: &now,
+            angles_rad: &angles_rad,
             trail: state.trail(),
             status: state.simulation().status(),
             framed,
@@ -138,6 +149,11 @@ pub fn scene_ui(ui: &mut egui::Ui, state: &mut AppState, scene: &mut SceneView, 
     let tip_m = now.tip_m;
     // No tooltip: the mouse rests over the scene in a lecture, and a
     // tooltip would cover the load bar. The corner says it instead.
+    if rods != 2 {
+        // The drag bends two rods; a chain is not grabbed (yet).
+        camera_corner_ui(ui, &mut scene.camera, rect, theme);
+        return;
+    }
     let drag = ui.interact(rect, ui.scope_id().with("drag the column"), Sense::drag());
     plate(
         ui.painter(),
@@ -173,7 +189,11 @@ pub fn scene_ui(ui: &mut egui::Ui, state: &mut AppState, scene: &mut SceneView, 
             state.release();
         }
     }
-    let camera = &mut scene.camera;
+    camera_corner_ui(ui, &mut scene.camera, rect, theme);
+}
+
+/// The camera's "whole reach" switch in the scene's corner.
+fn camera_corner_ui(ui: &mut egui::Ui, camera: &mut Camera, rect: Rect, theme: &Theme) {
     let corner = Rect::from_min_size(
         rect.left_top() + vec2(8.0, 8.0),
         vec2(7.5 * theme.text_size, 1.6 * theme.text_size),
@@ -196,6 +216,7 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View) {
     let SceneInput {
         model,
         now,
+        angles_rad,
         trail,
         status,
         framed,
@@ -204,8 +225,7 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View) {
     let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::hover());
     let rect = response.rect;
     painter.rect_filled(rect, 0.0, theme.background);
-    let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
-    let reach = l1 + l2;
+    let reach = model.column.reach_m();
     // The camera's box, with equal scales on both axes, centred.
     let margin = 0.12 * reach;
     let [world_w, world_h] = framed.size();
@@ -235,31 +255,43 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View) {
     }
     clamp(&painter, theme, &view, reach);
     trail_ui(&painter, theme, &view, trail);
-    let (phi1, phi2) = (now.phi1_rad, now.phi2_rad);
-    let a = [l1 * phi1.cos(), l1 * phi1.sin()];
-    let b = now.tip_m;
-    let spring_stroke = Stroke::new(1.5 * s, theme.spring);
-    spring(
-        &painter,
-        view.to(0.0, 0.0),
-        view.px(0.06 * reach),
-        phi1,
-        spring_stroke,
-    );
-    spring(
-        &painter,
-        view.to(a[0], a[1]),
-        view.px(0.06 * reach),
-        phi2 - phi1,
-        spring_stroke,
-    );
-    let rod = Stroke::new(5.0 * s, theme.rod);
-    painter.line_segment([view.to(0.0, 0.0), view.to(a[0], a[1])], rod);
-    painter.line_segment([view.to(a[0], a[1]), view.to(b[0], b[1])], rod);
-    for joint in [view.to(0.0, 0.0), view.to(a[0], a[1])] {
-        painter.circle_filled(joint, 6.0 * s, theme.joint);
+    // The joints from the clamp out; the last is the tip.
+    let mut joints = vec![[0.0, 0.0]];
+    for (i, angle) in angles_rad.iter().enumerate() {
+        let [x, y] = joints[i];
+        let l = model.column.rod(i).length_m;
+        joints.push([x + l * angle.cos(), y + l * angle.sin()]);
     }
-    forces(&painter, theme, &view, model, now, 0.35 * reach);
+    let last = joints.len() - 1;
+    joints[last] = now.tip_m;
+    let spring_stroke = Stroke::new(1.5 * s, theme.spring);
+    let spring_size = view.px(0.06 * (model.column.rod1.length_m + model.column.rod2.length_m));
+    for (i, angle) in angles_rad.iter().enumerate() {
+        let bend = if i == 0 {
+            *angle
+        } else {
+            angle - angles_rad[i - 1]
+        };
+        let [x, y] = joints[i];
+        spring(&painter, view.to(x, y), spring_size, bend, spring_stroke);
+    }
+    let rod = Stroke::new(5.0 * s, theme.rod);
+    for pair in joints.windows(2) {
+        painter.line_segment(
+            [
+                view.to(pair[0][0], pair[0][1]),
+                view.to(pair[1][0], pair[1][1]),
+            ],
+            rod,
+        );
+    }
+    for &[x, y] in &joints[..last] {
+        painter.circle_filled(view.to(x, y), 6.0 * s, theme.joint);
+    }
+    let last_rod_rad = angles_rad[angles_rad.len() - 1];
+    // The force arrows at a length of the first two rods.
+    let arrow_m = 0.35 * (model.column.rod1.length_m + model.column.rod2.length_m);
+    forces(&painter, theme, &view, (model, now, last_rod_rad), arrow_m);
     if let Some(roller) = model.roller() {
         roller_ui(
             &painter,
@@ -325,12 +357,11 @@ fn forces(
     painter: &egui::Painter,
     theme: &Theme,
     view: &View,
-    model: &Model,
-    now: &Observables,
+    (model, now, phi2): (&Model, &Observables, f64),
     length_m: f64,
 ) {
     let s = theme.stroke_scale;
-    let (b, phi2) = (now.tip_m, now.phi2_rad);
+    let b = now.tip_m;
     let follower = [-phi2.cos(), -phi2.sin()];
     let force = now.tip_force_n;
     let magnitude = force[0].hypot(force[1]);

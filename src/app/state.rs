@@ -26,12 +26,23 @@ use super::notice::Notice;
 use super::pace::Pace;
 pub use super::settings::Settings;
 
-/// The load slider's range and the locus's, on the common axis p.
+/// The load slider's range and the locus's, on the common axis p, for two
+/// rods (see [`load_max_p`]).
 pub const LOAD_MAX_P: f64 = 8.0;
+
+/// The load slider's range for `model`: [`LOAD_MAX_P`] for two rods; for a
+/// chain of N rods `LOAD_MAX_P (2/N)^2`, the same range in the continuous
+/// column's units `P L^2 / EI` (0 to 32).
+#[must_use]
+pub fn load_max_p(model: &Model) -> f64 {
+    #[expect(clippy::cast_precision_loss, reason = "at most 64 rods")]
+    let rods = model.column.rods as f64;
+    LOAD_MAX_P * (2.0 / rods).powi(2)
+}
 /// The size of a kick, in rad on both angles.
 const KICK_RAD: f64 = 0.01;
-/// The step of the load keys, on the common axis p.
-pub const LOAD_KEY_STEP_P: f64 = 0.01 * LOAD_MAX_P;
+/// The step of the load keys, as a fraction of the slider's range.
+pub const LOAD_KEY_STEP: f64 = 0.01;
 
 /// How long the tip's trail lasts, in simulated seconds.
 pub const TRAIL_SECS: f64 = 6.0;
@@ -47,8 +58,17 @@ fn push_trail(trail: &mut VecDeque<(f64, [f64; 2])>, now: &Observables) {
     }
 }
 
-/// What the user is told when rapier cannot integrate the column.
-const SWITCHED_TO_REFERENCE: &str = "the column is too stiff for the rapier engine at its 1/240 s step (huge damping or stiffness against little mass); switched to the reference engine";
+/// What the user is told when rapier cannot integrate the column: why, and
+/// that the reference engine took over.
+fn switched_to_reference(why: &SimError) -> Notice {
+    let reason = match why {
+        SimError::RapierChain { .. } => {
+            "the rapier engine takes two rods so far".to_owned()
+        }
+        _ => "the column is too stiff for the rapier engine at its 1/240 s step (huge damping or stiffness against little mass)".to_owned(),
+    };
+    Notice::warning(format!("{reason}; switched to the reference engine"))
+}
 
 /// A run of the settings' model from the standard kick. When rapier cannot
 /// integrate it the reference engine runs instead, the settings say so, and
@@ -56,12 +76,12 @@ const SWITCHED_TO_REFERENCE: &str = "the column is too stiff for the rapier engi
 fn start(settings: &mut Settings) -> Result<(Simulation, Option<Notice>), SimError> {
     let model = settings.model;
     let x0 = initial_state(&model, 1e-3);
-    match Simulation::new(model, settings.engine, x0, DEFAULT_STEP_SECS) {
+    match Simulation::new(model, settings.engine, x0.clone(), DEFAULT_STEP_SECS) {
         Ok(sim) => Ok((sim, None)),
-        Err(SimError::TooStiffForRapier { .. }) => {
+        Err(error) if error.reference_runs_it() => {
             settings.engine = EngineKind::Reference;
             Simulation::new(model, EngineKind::Reference, x0, DEFAULT_STEP_SECS)
-                .map(|sim| (sim, Some(Notice::warning(SWITCHED_TO_REFERENCE))))
+                .map(|sim| (sim, Some(switched_to_reference(&error))))
         }
         Err(error) => Err(error),
     }
@@ -271,12 +291,18 @@ impl AppState {
         self.refused.retain(|(k, _)| *k != key);
     }
 
+    /// The load slider's range for the current model (see [`load_max_p`]).
+    #[must_use]
+    pub fn load_max(&self) -> f64 {
+        load_max_p(&self.settings.model)
+    }
+
     /// Moves the load by `delta_p`, within the slider's range (or toward it
     /// from beyond).
     pub fn nudge_load(&mut self, delta_p: f64) {
         let p = self.settings.model.load_p();
         let moved = if delta_p > 0.0 {
-            (p + delta_p).min(LOAD_MAX_P.max(p))
+            (p + delta_p).min(self.load_max().max(p))
         } else {
             (p + delta_p).max(0.0)
         };
@@ -316,8 +342,9 @@ impl AppState {
     /// Applies a changed model to the running simulation; the analysis and
     /// the overlay follow.
     pub fn set_model(&mut self, model: Model) {
+        let rods_before = self.sim.model().column.rods;
         let result = match self.sim.set_model(model) {
-            Err(SimError::TooStiffForRapier { .. }) => {
+            Err(error) if error.reference_runs_it() => {
                 // rapier cannot follow: the reference engine takes over, and says so.
                 let state = self.sim.state();
                 let switched = self
@@ -326,7 +353,7 @@ impl AppState {
                     .and_then(|()| self.sim.set_model(model));
                 if switched.is_ok() {
                     self.settings.engine = EngineKind::Reference;
-                    self.say(Notice::warning(SWITCHED_TO_REFERENCE));
+                    self.say(switched_to_reference(&error));
                 }
                 switched
             }
@@ -334,6 +361,11 @@ impl AppState {
         };
         match result {
             Ok(()) => {
+                if model.column.rods != rods_before {
+                    // Another chain started afresh: its trail and history too.
+                    self.trail.clear();
+                    self.history.clear();
+                }
                 if model != self.settings.model {
                     // The run goes on with another column: what was measured
                     // belongs to the old one, and so do the samples before now.

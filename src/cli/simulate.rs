@@ -1,4 +1,4 @@
-//! `zieglerlab simulate`: a time simulation from phi1 = phi2 = perturb at
+//! `zieglerlab simulate`: a time simulation from every angle = perturb at
 //! rest, one CSV row per step.
 
 use std::io::Write;
@@ -66,20 +66,31 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     )?;
     let mut out = std::io::BufWriter::new(out);
     let load_column = if args.ramp.is_some() { ",load" } else { "" };
+    // Every rod's angle and rate: phi1, phi2 for two rods, phi1..phiN for a chain.
+    let rods = model.column.rods;
+    let angles: Vec<String> = (1..=rods).map(|i| format!("phi{i}")).collect();
+    let rates: Vec<String> = (1..=rods).map(|i| format!("phi{i}_dot")).collect();
     writeln!(
         out,
-        "t,phi1,phi2,psi,phi1_dot,phi2_dot,psi_dot,delta,energy{load_column}"
+        "t,{},psi,{},psi_dot,delta,energy{load_column}",
+        angles.join(","),
+        rates.join(",")
     )?;
     let mut row = |o: &Observables, load: Option<f64>| {
+        let join = |values: &[f64]| {
+            values
+                .iter()
+                .map(f64::to_string)
+                .collect::<Vec<_>>()
+                .join(",")
+        };
         write!(
             out,
-            "{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{}",
             o.t_secs,
-            o.phi1_rad,
-            o.phi2_rad,
+            join(&o.angles_rad),
             o.psi_rad,
-            o.phi1_dot_rad_per_s,
-            o.phi2_dot_rad_per_s,
+            join(&o.rates_rad_per_s),
             o.psi_dot_rad_per_s,
             o.delta_rad,
             o.energy_j()

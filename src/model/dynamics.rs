@@ -1,13 +1,30 @@
 //! The full nonlinear equations of motion (physics.md section 3) as a pure
 //! function state -> state derivative, with the roller's Coulomb friction.
 
-use nalgebra::{Matrix2, SVector, Vector2};
+use nalgebra::{DVector, Matrix2, Vector2};
 
+use super::chain::{ChainState, chain_accelerations, chain_energy_j};
 use super::params::{Column, Load, Model, Roller};
 
-/// `(phi1, phi2, psi, phi1', phi2', psi')` in rad and rad/s. The spin entries
-/// stay zero for the 2-DOF loads.
-pub type StateVec = SVector<f64, 6>;
+/// `(phi_1 .. phi_N, psi, phi_1' .. phi_N', psi')` in rad and rad/s: for
+/// two rods `(phi1, phi2, psi, phi1', phi2', psi')`. The spin entries stay
+/// zero without a roller.
+pub type StateVec = DVector<f64>;
+
+/// The state of rest of `column`'s chain (all angles and rates zero).
+#[must_use]
+pub fn rest_state(column: &Column) -> StateVec {
+    StateVec::zeros(2 * (column.rods + 1))
+}
+
+/// The rods' angles and rates of a chain's state.
+fn chain_state(column: &Column, x: &StateVec) -> ChainState {
+    let n = column.rods;
+    ChainState {
+        angles_rad: x.rows(0, n).iter().copied().collect(),
+        rates_rad_per_s: x.rows(n + 1, n).iter().copied().collect(),
+    }
+}
 
 /// Below this slip speed |w| the Coulomb law `F = -mu R w/|w|` is replaced by
 /// the viscous law `F = -mu R w/eps` (continuous at |w| = eps). Above it the
@@ -97,10 +114,38 @@ pub struct TipLoad {
     pub regularized: bool,
 }
 
+/// Positions of the joints from the clamp O to the tip B in state `x`, in m
+/// (`rods + 1` points).
+#[must_use]
+pub fn joints_m(column: &Column, x: &StateVec) -> Vec<Vector2<f64>> {
+    let mut at = Vector2::zeros();
+    let mut joints = vec![at];
+    for i in 0..column.rods {
+        at += column.rod(i).length_m * unit(x[i]);
+        joints.push(at);
+    }
+    joints
+}
+
 /// Position of the tip B in state `x`, in m.
 #[must_use]
 pub fn tip_m(column: &Column, x: &StateVec) -> Vector2<f64> {
-    column.rod1.length_m * unit(x[0]) + column.rod2.length_m * unit(x[1])
+    if column.rods == 2 {
+        return column.rod1.length_m * unit(x[0]) + column.rod2.length_m * unit(x[1]);
+    }
+    (0..column.rods).fold(Vector2::zeros(), |tip, i| {
+        tip + column.rod(i).length_m * unit(x[i])
+    })
+}
+
+/// Velocity of the tip B in state `x` (the rods' swing, not the roller's
+/// spin), in m/s.
+#[must_use]
+pub fn tip_velocity_m_per_s(column: &Column, x: &StateVec) -> Vector2<f64> {
+    let n = column.rods;
+    (0..n).fold(Vector2::zeros(), |v, i| {
+        v + column.rod(i).length_m * x[n + 1 + i] * normal(x[i])
+    })
 }
 
 /// The tip load of `model` in state `x` (section 2).
@@ -118,7 +163,7 @@ pub fn tip_load(model: &Model, x: &StateVec) -> TipLoad {
         regularized: false,
     };
     match model.load {
-        Load::Follower { force_n, eta } => ideal(-force_n * unit(eta * x[1])),
+        Load::Follower { force_n, eta } => ideal(-force_n * unit(eta * x[model.column.rods - 1])),
         Load::Roller(roller) => {
             let f = friction(&model.column, &roller, x);
             TipLoad {
@@ -192,8 +237,24 @@ pub fn joint_torques_nm(column: &Column, x: &StateVec) -> [f64; 2] {
 /// eqs 29-30 corrected), with the joint dampers. For a massless roller the
 /// spin follows its slaved rate: `psi''` is that rate's time derivative, so a
 /// state that starts consistent stays so.
+///
+/// A chain of more than two rods (no roller) moves by
+/// [`chain_accelerations`]; a state it cannot move (a roller on a chain)
+/// gets NaN, which the engines stop on.
 #[must_use]
 pub fn state_derivative(model: &Model, x: &StateVec) -> StateVec {
+    let n = model.column.rods;
+    if n != 2 {
+        let mut derivative = StateVec::from_element(x.len(), f64::NAN);
+        if let Some(accelerations) = chain_accelerations(model, &chain_state(&model.column, x)) {
+            derivative.fill(0.0);
+            for i in 0..n {
+                derivative[i] = x[n + 1 + i];
+                derivative[n + 1 + i] = accelerations[i];
+            }
+        }
+        return derivative;
+    }
     let (phi1, phi2, phi1_dot, phi2_dot) = (x[0], x[1], x[3], x[4]);
     let [q1, q2, q3] = tip_load(model, x).generalized_n_m;
     let [phi1_ddot, phi2_ddot] = column_accelerations(model, x, [q1, q2]);
@@ -215,7 +276,9 @@ pub fn state_derivative(model: &Model, x: &StateVec) -> StateVec {
             )
         }
     };
-    StateVec::from([phi1_dot, phi2_dot, psi_dot, phi1_ddot, phi2_ddot, psi_ddot])
+    StateVec::from_vec(vec![
+        phi1_dot, phi2_dot, psi_dot, phi1_ddot, phi2_ddot, psi_ddot,
+    ])
 }
 
 /// The rods' angular accelerations `(phi1'', phi2'')` under the joints'
@@ -271,6 +334,9 @@ pub fn tip_response(model: &Model, x: &StateVec, dt: f64) -> TipResponse {
 /// Kinetic energy (13) and spring energy (14), in joules.
 #[must_use]
 pub fn energy_j(model: &Model, x: &StateVec) -> (f64, f64) {
+    if model.column.rods != 2 {
+        return chain_energy_j(model, &chain_state(&model.column, x));
+    }
     let inertia = model.inertia();
     let (phi1, phi2, phi1_dot, phi2_dot, psi_dot) = (x[0], x[1], x[3], x[4], x[5]);
     let kinetic = 0.5 * inertia.a_kg_m2 * phi1_dot * phi1_dot

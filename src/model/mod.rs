@@ -19,8 +19,8 @@ pub use axis::{Axis, DAMPER_RATIO, DAMPING_LEVEL, MASS_RATIO};
 pub use chain::{ChainState, chain_accelerations, chain_energy_j};
 pub use dynamics::{
     Friction, RodDrag, SLIP_REGULARIZATION_M_PER_S, StateVec, TipLoad, TipResponse,
-    drag_generalized_n_m, energy_j, friction, joint_torques_nm, rod_drag, state_derivative,
-    tip_load, tip_m, tip_response,
+    drag_generalized_n_m, energy_j, friction, joint_torques_nm, joints_m, rest_state, rod_drag,
+    state_derivative, tip_load, tip_m, tip_response, tip_velocity_m_per_s,
 };
 pub use keys::{Assignment, KEYS, Key, KeySpec, apply_assignments, parse_assignment};
 pub use linear::{LinearModel, chain_mass_matrix, linearize};

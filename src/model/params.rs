@@ -110,6 +110,14 @@ impl Column {
         }
     }
 
+    /// The length of the straight column, from the clamp to the tip, in m.
+    #[must_use]
+    pub fn reach_m(&self) -> f64 {
+        #[expect(clippy::cast_precision_loss, reason = "at most 64 rods")]
+        let copies = (self.rods - 1) as f64;
+        self.rod1.length_m + copies * self.rod2.length_m
+    }
+
     /// Whether every rod is the same and so is every spring: the chain that
     /// discretizes a uniform beam of stiffness `EI = k l`.
     #[must_use]

@@ -12,7 +12,7 @@ pub use observe::{Observables, observe};
 pub use ramp::Ramp;
 pub use reference::{Advance, MAX_STEPS_PER_ADVANCE, Reference};
 
-use crate::model::{Model, ModelError, StateVec, state_derivative};
+use crate::model::{Model, ModelError, StateVec, joints_m, rest_state, state_derivative};
 
 /// The app's simulation step: small against the fastest column period of
 /// the presets (about 5 s) and the roller's spin time constant at p = 1.
@@ -120,21 +120,45 @@ pub enum SimError {
     )]
     RapierWorld,
     #[error(
-        "rods = {rods}: chains of more than two rods are analysed (critical, locus, map) but not yet simulated; the animation and the engines take rods = 2"
+        "rods = {rods}: a roller on a chain of more than two rods is analysed (critical, locus, map) but not yet simulated"
     )]
     ChainNotSimulated { rods: usize },
+    #[error(
+        "rods = {rods}: the rapier engine takes two rods so far; the reference engine runs chains"
+    )]
+    RapierChain { rods: usize },
 }
 
-/// A valid model of two rods: what the engines integrate.
-fn simulable(model: &Model) -> Result<(), SimError> {
+/// The perturbation a run starts from when the number of rods changes, in rad.
+const CHAIN_CHANGE_PERTURBATION_RAD: f64 = 1e-3;
+
+/// A valid model that `kind` integrates: any chain on the reference engine
+/// (without a roller beyond two rods), two rods on rapier.
+fn simulable(model: &Model, kind: EngineKind) -> Result<(), SimError> {
     model.validate()?;
-    match model.column.rods {
-        2 => Ok(()),
-        rods => Err(SimError::ChainNotSimulated { rods }),
+    let rods = model.column.rods;
+    if rods == 2 {
+        return Ok(());
+    }
+    if model.roller().is_some() {
+        return Err(SimError::ChainNotSimulated { rods });
+    }
+    match kind {
+        EngineKind::Reference => Ok(()),
+        EngineKind::Rapier => Err(SimError::RapierChain { rods }),
     }
 }
 
 impl SimError {
+    /// Whether the reference engine runs what rapier refused here.
+    #[must_use]
+    pub fn reference_runs_it(&self) -> bool {
+        matches!(
+            self,
+            Self::TooStiffForRapier { .. } | Self::RapierChain { .. }
+        )
+    }
+
     /// The parameter (or argument) the error is about, when it is about one.
     #[must_use]
     pub fn parameter(&self) -> Option<&str> {
@@ -143,7 +167,7 @@ impl SimError {
             Self::Bad { what, .. } => Some(what),
             Self::TooStiffForRapier { .. } => Some("dt"),
             Self::RapierWorld => None,
-            Self::ChainNotSimulated { .. } => Some("rods"),
+            Self::ChainNotSimulated { .. } | Self::RapierChain { .. } => Some("rods"),
         }
     }
 }
@@ -192,14 +216,15 @@ fn check_rapier_step(model: &Model, step_secs: f64) -> Result<(), SimError> {
     Ok(())
 }
 
-/// The standard start: `phi1 = phi2 = perturb_rad`, at rest (a massless
+/// The standard start: every rod's angle `perturb_rad`, at rest (a massless
 /// roller spins at its slaved rate, so the state is consistent).
 #[must_use]
 pub fn initial_state(model: &Model, perturb_rad: f64) -> StateVec {
-    let mut x = StateVec::zeros();
-    x[0] = perturb_rad;
-    x[1] = perturb_rad;
-    if model.roller().is_some_and(|roller| roller.mass_kg == 0.0) {
+    let mut x = rest_state(&model.column);
+    for angle in x.rows_mut(0, model.column.rods).iter_mut() {
+        *angle = perturb_rad;
+    }
+    if model.column.rods == 2 && model.roller().is_some_and(|roller| roller.mass_kg == 0.0) {
         // psi' is slaved: state_derivative returns it as d(psi)/dt.
         x[5] = state_derivative(model, &x)[2];
     }
@@ -215,10 +240,10 @@ fn time_of(steps: u64, step_secs: f64) -> f64 {
 }
 
 fn within_bounds(x: &StateVec) -> bool {
+    let half = x.len() / 2;
     x.iter().all(|v| v.is_finite())
-        && x[0].abs() <= MAX_ANGLE_RAD
-        && x[1].abs() <= MAX_ANGLE_RAD
-        && [x[3], x[4], x[5]]
+        && x.rows(0, half - 1).iter().all(|v| v.abs() <= MAX_ANGLE_RAD)
+        && x.rows(half, half)
             .iter()
             .all(|v| v.abs() <= MAX_RATE_RAD_PER_S)
 }
@@ -259,7 +284,15 @@ impl Simulation {
         x0: StateVec,
         step_secs: f64,
     ) -> Result<Self, SimError> {
-        simulable(&model)?;
+        simulable(&model, kind)?;
+        if x0.len() != 2 * (model.column.rods + 1) {
+            #[expect(clippy::cast_precision_loss, reason = "a state's length")]
+            return Err(SimError::Bad {
+                what: "the state's length",
+                value: x0.len() as f64,
+                allowed: "must be 2 (rods + 1): the angles, the spin and their rates",
+            });
+        }
         if !(step_secs.is_finite() && step_secs > 0.0 && step_secs <= 1.0) {
             return Err(SimError::Bad {
                 what: "dt",
@@ -295,7 +328,18 @@ impl Simulation {
     /// An invalid model, or one too stiff for the rapier engine at this step
     /// (the run keeps its previous one).
     pub fn set_model(&mut self, model: Model) -> Result<(), SimError> {
-        simulable(&model)?;
+        simulable(&model, self.engine())?;
+        if model.column.rods != self.model.column.rods {
+            // Another chain needs another state: it starts afresh from the
+            // standard perturbation.
+            let previous = std::mem::replace(&mut self.model, model);
+            let x = initial_state(&model, CHAIN_CHANGE_PERTURBATION_RAD);
+            if let Err(error) = self.restart_from(self.engine(), x) {
+                self.model = previous;
+                return Err(error);
+            }
+            return Ok(());
+        }
         if self.engine() == EngineKind::Rapier {
             check_rapier_step(&model, self.step_secs)?;
         }
@@ -313,13 +357,22 @@ impl Simulation {
         self.step_secs
     }
 
-    /// The current state `(phi1, phi2, psi, phi1', phi2', psi')`.
+    /// The current state (see [`StateVec`]).
     #[must_use]
     pub fn state(&self) -> StateVec {
         match &self.engine {
             Engine::Rapier(engine) => engine.state(),
-            Engine::Reference(engine) => engine.x,
+            Engine::Reference(engine) => engine.x.clone(),
         }
+    }
+
+    /// The joints from the clamp to the tip now, in m.
+    #[must_use]
+    pub fn joints_m(&self) -> Vec<[f64; 2]> {
+        joints_m(&self.model.column, &self.state())
+            .iter()
+            .map(|p| [p.x, p.y])
+            .collect()
     }
 
     /// Simulated time.

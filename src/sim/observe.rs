@@ -3,12 +3,16 @@
 
 use serde::Serialize;
 
-use crate::model::{Model, StateVec, energy_j, tip_load, tip_m};
+use crate::model::{Model, StateVec, energy_j, tip_load, tip_m, tip_velocity_m_per_s};
 
 /// The observables of one state.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Observables {
     pub t_secs: f64,
+    /// Every rod's angle and rate, from the clamp out (rods 1 and 2 of a
+    /// two-rod column are also `phi1_rad`, `phi2_rad` below).
+    pub angles_rad: Vec<f64>,
+    pub rates_rad_per_s: Vec<f64>,
     pub phi1_rad: f64,
     pub phi2_rad: f64,
     /// The roller's spin angle (0 without a roller).
@@ -44,24 +48,30 @@ impl Observables {
 /// The observables of `model` in state `x` at time `t_secs`.
 #[must_use]
 pub fn observe(model: &Model, t_secs: f64, x: &StateVec) -> Observables {
-    let (phi1, phi2) = (x[0], x[1]);
+    let n = model.column.rods;
     let tip = tip_m(&model.column, x);
     let (kinetic_j, spring_j) = energy_j(model, x);
     let load = tip_load(model, x);
-    let band_power_w = load
-        .generalized_n_m
-        .iter()
-        .zip([x[3], x[4], x[5]])
-        .map(|(q, v)| q * v)
-        .sum();
+    let band_power_w = if n == 2 {
+        load.generalized_n_m
+            .iter()
+            .zip([x[3], x[4], x[5]])
+            .map(|(q, v)| q * v)
+            .sum()
+    } else {
+        // A chain carries no roller: the force works through the tip's swing.
+        load.force_n.dot(&tip_velocity_m_per_s(&model.column, x))
+    };
     Observables {
         t_secs,
-        phi1_rad: phi1,
-        phi2_rad: phi2,
-        psi_rad: x[2],
-        phi1_dot_rad_per_s: x[3],
-        phi2_dot_rad_per_s: x[4],
-        psi_dot_rad_per_s: x[5],
+        angles_rad: x.rows(0, n).iter().copied().collect(),
+        rates_rad_per_s: x.rows(n + 1, n).iter().copied().collect(),
+        phi1_rad: x[0],
+        phi2_rad: x[1],
+        psi_rad: x[n],
+        phi1_dot_rad_per_s: x[n + 1],
+        phi2_dot_rad_per_s: x[n + 2],
+        psi_dot_rad_per_s: x[2 * n + 1],
         delta_rad: load.delta_rad,
         tip_force_n: [load.force_n.x, load.force_n.y],
         kinetic_j,

@@ -160,7 +160,7 @@ impl RapierEngine {
                 .unwrap_or((f64::NAN, f64::NAN))
         };
         let ((a1, w1), (a2, w2)) = (joint(0), joint(1));
-        StateVec::from([
+        StateVec::from_vec(vec![
             a1,
             a1 + a2,
             self.psi_rad,
@@ -181,7 +181,7 @@ impl RapierEngine {
         // velocity-dependent ones (dampers, friction) that is first order and
         // shifts growth rates by O(dt); the rates extrapolated to mid-step
         // make them second order.
-        let mut x = now;
+        let mut x = now.clone();
         if let Some([w1, w2]) = self.previous_rates {
             x[3] = 1.5 * now[3] - 0.5 * w1;
             x[4] = 1.5 * now[4] - 0.5 * w2;

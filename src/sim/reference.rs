@@ -146,27 +146,33 @@ impl Reference {
 
 /// One Dormand-Prince step: the fifth-order solution and the scaled error norm.
 fn dormand_prince_step(model: &Model, x: &StateVec, h: f64) -> (StateVec, f64) {
-    let mut k = [StateVec::zeros(); 7];
-    k[0] = state_derivative(model, x);
-    for stage in 1..7 {
-        let mut y = *x;
-        for (j, kj) in k.iter().enumerate().take(stage) {
-            y += h * A[stage][j] * kj;
+    let n = x.len();
+    let mut k: Vec<StateVec> = Vec::with_capacity(7);
+    k.push(state_derivative(model, x));
+    // One buffer for every stage's point, then the solution.
+    let mut y = x.clone();
+    for row in &A[1..] {
+        y.copy_from(x);
+        for (a, kj) in row.iter().zip(&k) {
+            y.axpy(h * a, kj, 1.0);
         }
-        k[stage] = state_derivative(model, &y);
+        k.push(state_derivative(model, &y));
     }
-    let mut x5 = *x;
-    let mut err = StateVec::zeros();
+    let mut x5 = y;
+    x5.copy_from(x);
+    let mut err = StateVec::zeros(n);
     for (i, ki) in k.iter().enumerate() {
-        x5 += h * B5[i] * ki;
-        err += h * (B5[i] - B4[i]) * ki;
+        x5.axpy(h * B5[i], ki, 1.0);
+        err.axpy(h * (B5[i] - B4[i]), ki, 1.0);
     }
     let mut sum = 0.0;
-    for i in 0..6 {
+    for i in 0..n {
         let scale = ABSOLUTE_TOLERANCE + RELATIVE_TOLERANCE * x[i].abs().max(x5[i].abs());
         sum += (err[i] / scale).powi(2);
     }
-    (x5, (sum / 6.0).sqrt())
+    #[expect(clippy::cast_precision_loss, reason = "a state's length")]
+    let mean = sum / n as f64;
+    (x5, mean.sqrt())
 }
 
 #[cfg(test)]

@@ -239,7 +239,7 @@ fn snapshot_writes_a_png_of_the_asked_size() {
 }
 
 /// `bench --json` (a debug build here, so the figures are slow; only their
-/// layout and sanity are checked): the thirteen keys in the documented order,
+/// layout and sanity are checked): the fourteen keys in the documented order,
 /// each a positive finite number, with the frame quantiles ordered.
 #[test]
 fn bench_json_has_every_figure() {
@@ -261,6 +261,7 @@ fn bench_json_has_every_figure() {
             "locus2_us_per_load",
             "eig_us_per_pencil",
             "critical_ms",
+            "critical_chain32_ms",
             "sim_reference_x_realtime",
             "sim_rapier_x_realtime",
             "frame_ms_p50",

@@ -95,9 +95,9 @@ pub fn predicted(model: &Model, fastest_per_s: f64) -> Vec<C64> {
 /// A few large-amplitude states (angles up to about a radian, fast rates).
 pub fn states() -> Vec<StateVec> {
     vec![
-        StateVec::from([0.4, -0.9, 0.3, 1.1, -0.7, 2.0]),
-        StateVec::from([-1.2, 0.5, -2.0, -0.3, 1.9, -0.5]),
-        StateVec::from([0.05, 0.8, 0.0, 0.02, -0.01, 0.4]),
+        StateVec::from_row_slice(&[0.4, -0.9, 0.3, 1.1, -0.7, 2.0]),
+        StateVec::from_row_slice(&[-1.2, 0.5, -2.0, -0.3, 1.9, -0.5]),
+        StateVec::from_row_slice(&[0.05, 0.8, 0.0, 0.02, -0.01, 0.4]),
     ]
 }
 
@@ -109,7 +109,7 @@ pub fn energy_rate(model: &Model, x: &StateVec, potential: impl Fn(&StateVec) ->
         let (kinetic, spring) = energy_j(model, y);
         kinetic + spring + potential(y)
     };
-    (energy(&(x + h * f)) - energy(&(x - h * f))) / (2.0 * h)
+    (energy(&(x + h * &f)) - energy(&(x - h * &f))) / (2.0 * h)
 }
 
 /// `int_0^length f(s) ds` by Simpson's rule on 200 intervals.

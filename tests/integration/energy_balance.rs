@@ -29,7 +29,7 @@ fn dead_load_is_conservative() {
         // The force -P x has the potential P x_tip.
         let potential = |y: &StateVec| force_n * (l1 * y[0].cos() + l2 * y[1].cos());
         for x in states() {
-            let x = StateVec::from([x[0], x[1], 0.0, x[3], x[4], 0.0]);
+            let x = StateVec::from_row_slice(&[x[0], x[1], 0.0, x[3], x[4], 0.0]);
             assert_balance(energy_rate(&model, &x, potential), damper_power(&model, &x));
         }
     }
@@ -41,7 +41,7 @@ fn follower_force_power() {
         let model = common::model(preset, &["load=3.1", "c1=0.01"]);
         let l1 = model.column.rod1.length_m;
         for x in states() {
-            let x = StateVec::from([x[0], x[1], 0.0, x[3], x[4], 0.0]);
+            let x = StateVec::from_row_slice(&[x[0], x[1], 0.0, x[3], x[4], 0.0]);
             let load_power = -model.follower_force_n() * l1 * (x[1] - x[0]).sin() * x[3];
             let power = load_power + damper_power(&model, &x);
             assert_balance(energy_rate(&model, &x, |_| 0.0), power);

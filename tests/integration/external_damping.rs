@@ -37,7 +37,7 @@ fn the_drag_dissipates_its_integral_over_the_rods() {
     for preset in ["ziegler-1952", "uniform-rods", "midpoint-masses"] {
         let model = model(preset, &["load=0", "c_ext=0.07", "c2=0.01", "l2=0.6"]);
         for x in common::states() {
-            let x = StateVec::from([x[0], x[1], 0.0, x[3], x[4], 0.0]);
+            let x = StateVec::from_row_slice(&[x[0], x[1], 0.0, x[3], x[4], 0.0]);
             let rate = common::energy_rate(&model, &x, |_| 0.0);
             let joints = -0.01 * (x[4] - x[3]).powi(2);
             let power = drag_power_by_quadrature(&model, &x) + joints;

@@ -32,8 +32,8 @@ fn finite_difference(model: &Model) -> DMatrix<f64> {
     let h = 1e-6;
     let mut j = DMatrix::zeros(2 * n, 2 * n);
     for (col, &e) in entries.iter().enumerate() {
-        let mut plus = StateVec::zeros();
-        let mut minus = StateVec::zeros();
+        let mut plus = StateVec::zeros(6);
+        let mut minus = StateVec::zeros(6);
         plus[e] = h;
         minus[e] = -h;
         let df = (state_derivative(model, &plus) - state_derivative(model, &minus)) / (2.0 * h);

@@ -34,8 +34,8 @@ fn massless_roller_equations_of_motion_are_the_follower_column() {
     let follower = model("uniform-rods", &["load=2.7"]);
     let roller = model("roller", &["load=2.7", "m3=0"]);
     for x in [
-        StateVec::from([0.3, -0.4, 0.0, 0.02, -0.05, 0.0]),
-        StateVec::from([-0.8, 0.6, 1.0, -0.01, 0.03, 7.0]),
+        StateVec::from_row_slice(&[0.3, -0.4, 0.0, 0.02, -0.05, 0.0]),
+        StateVec::from_row_slice(&[-0.8, 0.6, 1.0, -0.01, 0.03, 7.0]),
     ] {
         let a = state_derivative(&follower, &x);
         let b = state_derivative(&roller, &x);
@@ -51,7 +51,7 @@ fn massless_roller_equations_of_motion_are_the_follower_column() {
 #[test]
 fn massless_roller_friction_reverses_when_the_tip_outruns_the_band() {
     let roller = model("roller", &["load=2.7", "m3=0"]);
-    let x = StateVec::from([0.3, -0.4, 0.0, 0.2, -0.5, 0.0]);
+    let x = StateVec::from_row_slice(&[0.3, -0.4, 0.0, 0.2, -0.5, 0.0]);
     let f = friction(&roller.column, roller.roller().unwrap(), &x);
     let e2 = nalgebra::Vector2::new(x[1].cos(), x[1].sin());
     assert!(f.slip_m_per_s.dot(&e2) < 0.0);

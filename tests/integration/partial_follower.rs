@@ -101,7 +101,7 @@ fn the_partial_force_s_power_balances_the_energy() {
         let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
         let force_n = model.follower_force_n();
         for x in common::states() {
-            let x = StateVec::from([x[0], x[1], 0.0, x[3], x[4], 0.0]);
+            let x = StateVec::from_row_slice(&[x[0], x[1], 0.0, x[3], x[4], 0.0]);
             let rate = common::energy_rate(&model, &x, |_| 0.0);
             let eta_phi2 = 0.4 * x[1];
             let power = force_n

@@ -127,7 +127,7 @@ fn the_load_changes_mid_run_without_a_reset() {
             "time goes on"
         );
         assert!(
-            (sim.state() - before).norm() < 1e-4,
+            (sim.state() - &before).norm() < 1e-4,
             "state goes on: {}",
             (sim.state() - before).norm()
         );

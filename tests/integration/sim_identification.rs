@@ -142,3 +142,14 @@ fn both_engines_run_external_drag() {
         check(&column, EngineKind::Rapier, 0.03);
     }
 }
+
+/// A chain of 4 rods (flutter from p = 0.9371) on the reference engine:
+/// before the onset its slowest mode, past it the growing one, at the
+/// eigenvalues' frequency and growth rate.
+#[test]
+fn the_reference_engine_runs_a_chain_as_its_eigenvalues_predict() {
+    for (p, modes) in [("load=0.5", Modes::Dominant), ("load=1.1", Modes::Dominant)] {
+        let chain = model("uniform-rods", &[p, "rods=4"]);
+        check_modes(&chain, EngineKind::Reference, 0.005, modes);
+    }
+}

@@ -4,7 +4,7 @@
 
 use eframe::egui::{self, RichText};
 
-use crate::app::state::{AppState, LOAD_MAX_P};
+use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::app::{Notice, View};
 use crate::format::load_text;
@@ -88,7 +88,7 @@ fn step_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
             ui.label(RichText::new(prompt).color(theme.info));
             let mut load = run.predicted_load.unwrap_or(0.0);
             let response = ui
-                .add(egui::Slider::new(&mut load, 0.0..=LOAD_MAX_P).text("your prediction p"))
+                .add(egui::Slider::new(&mut load, 0.0..=state.load_max()).text("your prediction p"))
                 .accessible_name("predicted load")
                 .on_hover_text("where you expect it; the load bar marks it");
             if response.changed() {

@@ -5,9 +5,9 @@ use eframe::egui::{self, RichText};
 
 use super::number_field::{NumberFields, refusal_ui};
 use crate::app::View;
-use crate::app::state::{AppState, LOAD_MAX_P, VISIBLE_FRACTION};
+use crate::app::state::{AppState, VISIBLE_FRACTION};
 use crate::app::theme::Theme;
-use crate::format::load_text;
+use crate::format::{load_text, number_text};
 use crate::model::Key;
 
 /// The load's number field.
@@ -36,10 +36,13 @@ impl View for LoadSection {
                 roller.mu
             ));
         }
-        if p > LOAD_MAX_P {
+        if p > state.load_max() {
             ui.colored_label(
                 theme.warning,
-                format!("p = {p} is beyond the plotted range (0 to {LOAD_MAX_P}); the status below is at p"),
+                format!(
+                    "p = {p} is beyond the plotted range (0 to {}); the status below is at p",
+                    number_text(state.load_max())
+                ),
             );
         }
         let Some(analysis) = state.analysis() else {

@@ -23,9 +23,8 @@ impl View for ParametersSection {
         let model = *state.model();
         let applicable: Vec<&'static KeySpec> = KEYS
             .iter()
-            // The load has its own bar; a chain of rods is analysed by the
-            // command line but not yet simulated, so the window keeps two.
-            .filter(|k| k.applies_to(&model) && !matches!(k.key, Key::Load | Key::Rods))
+            // The load has its own bar.
+            .filter(|k| k.applies_to(&model) && k.key != Key::Load)
             .collect();
         let (groups, si): (Vec<_>, Vec<_>) = applicable.into_iter().partition(|k| k.is_group);
         ui.label("dimensionless groups");

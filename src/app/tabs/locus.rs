@@ -14,8 +14,8 @@ use crate::app::theme::load_color;
 use crate::format::number_text;
 use crate::model::{Model, PresetId};
 
-/// The plots refit when the parameters (at p = 0) or the overlay change,
-/// and on "reset all".
+/// The plots refit when the analysis drawn (of other parameters) or the
+/// overlay changes, and on "reset all".
 #[derive(Default)]
 pub struct LocusTab {
     fit: Fit<(u64, Model, Option<PresetId>)>,
@@ -36,9 +36,10 @@ impl View for LocusTab {
         self.fit.bar_ui(ui);
         let overlay = state.overlay();
         legend_ui(ui, state, &analysis.locus, theme);
+        // The analysis drawn (it may come in a frame after the parameters).
         let refit = self.fit.refit((
             state.view_generation(),
-            state.model().at_load(0.0),
+            analysis.key,
             overlay.map(|o| o.preset),
         ));
         let load = state.model().load_p();

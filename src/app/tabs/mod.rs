@@ -10,7 +10,7 @@ mod paradox;
 use eframe::egui;
 
 use super::View;
-use super::state::{AppState, LOAD_MAX_P};
+use super::state::{AppState, load_max_p};
 
 /// The choice of plots in the lower half of the window.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
@@ -108,7 +108,7 @@ impl Tabs {
     /// parameters and waits until they are complete (for pictures and tests).
     pub fn complete_background_work(&mut self, state: &AppState) {
         let model = state.model();
-        self.map.follow(model, LOAD_MAX_P);
+        self.map.follow(model, load_max_p(model));
         self.map.wait();
         self.paradox.wait(model);
     }
