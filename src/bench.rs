@@ -68,6 +68,8 @@ pub struct Report {
     pub frame_ms_p99_map: f64,
     /// The same drag with the paradox tab open: 99th percentile.
     pub frame_ms_p99_paradox: f64,
+    /// The `beck` preset (16 rods, reference engine), its load dragged: p99.
+    pub frame_ms_p99_chain16: f64,
     /// The 256x256 roller map (load 0-8 against nu 0.005-1) on every core: ms.
     pub map_ms: f64,
     /// numpy's batched `eigvals` on the roller's 6x6 companion matrices at
@@ -88,6 +90,7 @@ pub fn run(frames: usize) -> Result<Report> {
     let frame_ms = frame_times_ms(frames, Tab::Locus)?;
     let frame_ms_map = frame_times_ms(frames, Tab::Map)?;
     let frame_ms_paradox = frame_times_ms(frames, Tab::Paradox)?;
+    let frame_ms_chain = chain_frame_times_ms(frames)?;
     let locus_us = locus_us_per_load(&roller)?;
     let numpy_us = numpy_eig_us_per_pencil(&roller)?;
     Ok(Report {
@@ -102,6 +105,7 @@ pub fn run(frames: usize) -> Result<Report> {
         frame_ms_p99: quantile(&frame_ms, 0.99),
         frame_ms_p99_map: quantile(&frame_ms_map, 0.99),
         frame_ms_p99_paradox: quantile(&frame_ms_paradox, 0.99),
+        frame_ms_p99_chain16: quantile(&frame_ms_chain, 0.99),
         map_ms: map_ms()?,
         numpy_eig_us_per_pencil: numpy_us,
         locus_speedup_vs_numpy: numpy_us.map(|numpy| numpy / locus_us),
@@ -288,15 +292,43 @@ fn x_realtime(engine: EngineKind) -> Result<f64> {
 /// # Errors
 /// The app refusing its defaults or a nu value (neither should happen).
 pub fn frame_times_ms(frames: usize, tab: Tab) -> Result<Vec<f64>> {
+    drag_frame_times_ms(frames, Settings::default(), tab, (Key::Nu, 0.05, 0.35))
+}
+
+/// The same for the `beck` preset (16 rods on the reference engine) with
+/// the load swept over its slider as a dragged load bar does.
+///
+/// # Errors
+/// The app refusing the preset or a load (neither should happen).
+pub fn chain_frame_times_ms(frames: usize) -> Result<Vec<f64>> {
+    let model = PresetId::Beck.model();
+    let settings = Settings {
+        preset: PresetId::Beck,
+        model,
+        engine: EngineKind::Reference,
+        ..Settings::default()
+    };
+    let load_max = crate::app::load_max_p(&model);
+    drag_frame_times_ms(frames, settings, Tab::Locus, (Key::Load, 0.0, load_max))
+}
+
+/// Frame times of the app from `settings` with `tab` open, with `key`
+/// swept from `low` to `high` and back over 120 frames.
+fn drag_frame_times_ms(
+    frames: usize,
+    settings: Settings,
+    tab: Tab,
+    (key, low, high): (Key, f64, f64),
+) -> Result<Vec<f64>> {
     let ctx = egui::Context::default();
-    let mut app = ZieglerApp::new(Settings::default())?;
+    let mut app = ZieglerApp::new(settings)?;
     // As in the window: new parameters are analysed on their own thread.
     app.state_mut().analyse_in_background();
     app.show_tab(tab);
     let mut times_ms = Vec::with_capacity(frames);
     for frame in 0..frames + WARMUP_FRAMES {
         let phase = (frame % 120) as f64 / 120.0;
-        let nu = 0.05 + 0.3 * (1.0 - (2.0 * phase - 1.0).abs());
+        let value = low + (high - low) * (1.0 - (2.0 * phase - 1.0).abs());
         let input = RawInput {
             screen_rect: Some(Rect::from_min_max(
                 pos2(0.0, 0.0),
@@ -306,8 +338,8 @@ pub fn frame_times_ms(frames: usize, tab: Tab) -> Result<Vec<f64>> {
         };
         let start = Instant::now();
         app.state_mut()
-            .set_parameter(Key::Nu, nu)
-            .context("setting nu")?;
+            .set_parameter(key, value)
+            .with_context(|| format!("setting {key}"))?;
         app.advance(1.0 / 60.0);
         app.state_mut().receive_analysis();
         let mut output = ctx.run_ui(input, |ui| app.contents_ui(ui));

@@ -446,15 +446,17 @@ mod tests {
     }
 
     /// The polynomial path only speeds the bisection up: at every change of
-    /// stability of every preset, of a damped column and of a light roller,
+    /// stability of every two-rod preset (a chain has no polynomial path),
+    /// of a damped column and of a light roller,
     /// the brackets are those of the bisection on the Schur path alone.
     #[test]
     fn the_fast_bisection_gives_the_schur_paths_brackets() {
         let mut checked = 0;
-        for p in PRESETS {
+        let two_rods = PRESETS.iter().filter(|p| p.model().column.rods == 2);
+        for p in two_rods.clone() {
             checked += assert_fast_bisection_matches_schur(p.name, &p.model());
         }
-        assert!(checked >= 2 * PRESETS.len(), "{checked} changes checked");
+        assert!(checked >= 2 * two_rods.count(), "{checked} changes checked");
         let column = PresetId::Ziegler1952.model();
         let damped = Axis::DampingLevel.apply(&column, 1e-3).unwrap();
         assert!(assert_fast_bisection_matches_schur("damped", &damped) >= 2);

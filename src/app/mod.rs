@@ -35,7 +35,7 @@ use theme::Theme;
 pub use layout::Layout;
 pub use notice::{Level, Notice};
 pub use pace::{MAX_FRAME_SECS, MAX_STEPS_PER_FRAME};
-pub use state::{AppState, LOAD_MAX_P, Settings};
+pub use state::{AppState, LOAD_MAX_P, Settings, load_max_p};
 pub use tabs::Tab;
 pub use tabs::map::map_picture;
 

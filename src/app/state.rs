@@ -309,12 +309,21 @@ impl AppState {
         self.enter_parameter(Key::Load, moved);
     }
 
-    /// Switches to the preset `id` at the current load: its parameters,
-    /// a fresh run, the overlay at its `a`.
+    /// Switches to the preset `id` at the current load (or, beyond its
+    /// slider, its own): its parameters, a fresh run, the overlay at its `a`.
     pub fn set_preset(&mut self, id: PresetId) {
         self.settings.preset = id;
         self.refused.clear();
-        self.set_model(id.model().at_load(self.settings.model.load_p()));
+        // The load stays where it is, unless it is beyond the new preset's
+        // slider (a chain's is shorter): then the preset's own.
+        let model = id.model();
+        let p = self.settings.model.load_p();
+        let load = if p <= load_max_p(&model) {
+            p
+        } else {
+            model.load_p()
+        };
+        self.set_model(model.at_load(load));
         self.reset();
     }
 

@@ -31,7 +31,7 @@ type Figure = fn(&Report) -> f64;
 
 /// The table: each line's JSON key, figure, unit, what was measured and the
 /// target, if there is one.
-const LINES: [(&str, Figure, &str, &str, Option<Target>); 14] = [
+const LINES: [(&str, Figure, &str, &str, Option<Target>); 15] = [
     (
         "locus_us_per_load",
         |r| r.locus_us_per_load,
@@ -108,6 +108,13 @@ const LINES: [(&str, Figure, &str, &str, Option<Target>); 14] = [
         "ms",
         "the same drag with the paradox tab open: p99",
         Some(Target::AtMost(8.0)),
+    ),
+    (
+        "frame_ms_p99_chain16",
+        |r| r.frame_ms_p99_chain16,
+        "ms",
+        "beck preset (16 rods, reference engine), load dragged: p99 (interactive: a 60 Hz frame)",
+        Some(Target::AtMost(16.0)),
     ),
     (
         "map_ms",

@@ -14,11 +14,13 @@ pub enum PresetId {
     RollerAsPrinted,
     Tabletop,
     TabletopRoller,
+    Beck,
+    Pflueger,
 }
 
 impl PresetId {
     /// Every preset, in the order of [`PRESETS`].
-    pub const ALL: [Self; 7] = [
+    pub const ALL: [Self; 9] = [
         Self::Ziegler1952,
         Self::UniformRods,
         Self::MidpointMasses,
@@ -26,6 +28,8 @@ impl PresetId {
         Self::RollerAsPrinted,
         Self::Tabletop,
         Self::TabletopRoller,
+        Self::Beck,
+        Self::Pflueger,
     ];
 
     /// The preset's name, as typed.
@@ -39,6 +43,8 @@ impl PresetId {
             Self::RollerAsPrinted => "roller-as-printed",
             Self::Tabletop => "tabletop",
             Self::TabletopRoller => "tabletop-roller",
+            Self::Beck => "beck",
+            Self::Pflueger => "pflueger",
         }
     }
 
@@ -109,7 +115,7 @@ impl Preset {
 }
 
 /// Every preset, in the order the UI and `zieglerlab presets` show them.
-pub const PRESETS: [Preset; 7] = [
+pub const PRESETS: [Preset; 9] = [
     Preset {
         id: PresetId::Ziegler1952,
         name: "ziegler-1952",
@@ -158,6 +164,20 @@ pub const PRESETS: [Preset; 7] = [
         source: "lecture pace",
         description: "The tabletop column pushed by a 10 g roller of radius 2.5 cm on a band at 0.1 m/s (nu = rho = mu = 0.1): a weak flutter from p = 0.024 that takes minutes to grow, a strong one near the ideal column's load",
         build: tabletop_roller,
+    },
+    Preset {
+        id: PresetId::Beck,
+        name: "beck",
+        source: "Beck 1952, a chain of 16 rods",
+        description: "Beck's column as a chain of 16 uniform rods with springs k at every joint (a beam of EI = k l, L = 16 l), follower force: flutter at P L^2/EI = 18.78 (Beck's continuous column: 20.05); runs on the reference engine",
+        build: beck,
+    },
+    Preset {
+        id: PresetId::Pflueger,
+        name: "pflueger",
+        source: "Pflueger's column, a chain of 16 rods",
+        description: "Pflueger's column: Beck's chain of 16 rods with a tip mass of half the column's mass, follower force: the tip mass lowers the flutter load to P L^2/EI = 15.06; runs on the reference engine",
+        build: pflueger,
     },
 ];
 
@@ -222,6 +242,30 @@ fn midpoint_masses() -> Model {
         Rod::point_mass(LENGTH_M, MASS_KG, LENGTH_M / 2.0),
         0.0,
     ))
+}
+
+/// Rods of the Beck and Pflueger chains: the flutter load is within 7% of
+/// the continuous column's, and the analysis takes 0.07 s.
+const CHAIN_RODS: usize = 16;
+
+/// Beck's chain at half its flutter load.
+fn beck() -> Model {
+    let mut model = uniform_rods();
+    model.column.rods = CHAIN_RODS;
+    #[expect(clippy::cast_precision_loss, reason = "16 rods")]
+    let n2 = (CHAIN_RODS * CHAIN_RODS) as f64;
+    // P L^2/EI = 10: stable, half Beck's load.
+    model.set_load_p(10.0 / n2);
+    model
+}
+
+/// Pflueger's chain: Beck's with a tip mass of half the rods' mass.
+fn pflueger() -> Model {
+    let mut model = beck();
+    #[expect(clippy::cast_precision_loss, reason = "16 rods")]
+    let rods_kg = CHAIN_RODS as f64 * MASS_KG;
+    model.column.tip_mass_kg = 0.5 * rods_kg;
+    model
 }
 
 fn roller_with_spin(spin: SpinInertia) -> Model {

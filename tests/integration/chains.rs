@@ -344,3 +344,21 @@ fn the_chain_s_jacobian_at_rest_is_its_linearization() {
         }
     }
 }
+
+/// The Beck preset is the uniform-rod chain of 16 rods; Pflueger's, the
+/// same with a tip mass of half the rods' mass, flutters at a lower load
+/// (in the beam's units, 15.06 against 18.78).
+#[test]
+fn the_beck_and_pflueger_presets_are_the_chains_they_say() {
+    let first = |name: &str| {
+        let model = model(name, &[]);
+        assert_eq!(model.column.rods, 16);
+        let t = transitions(&model, 40.0 / 256.0)[0];
+        assert_eq!(t.to, State::Flutter);
+        model.beck_load(t.load).unwrap()
+    };
+    let (beck_load, pflueger_load) = (first("beck"), first("pflueger"));
+    assert_close(beck_load, beck(16, &[]).0, 1e-9);
+    assert!((pflueger_load - 15.06).abs() < 0.01, "{pflueger_load}");
+    assert!((beck_load - 18.78).abs() < 0.01, "{beck_load}");
+}

@@ -152,6 +152,8 @@ fn presets_lists_every_preset_with_units() {
         "roller-as-printed",
         "tabletop",
         "tabletop-roller",
+        "beck",
+        "pflueger",
     ] {
         assert!(text.contains(name), "{name}");
     }
@@ -160,7 +162,7 @@ fn presets_lists_every_preset_with_units() {
     }
     let json: serde_json::Value =
         serde_json::from_str(&stdout(&["presets", "--json"])).expect("json");
-    assert_eq!(json.as_array().expect("array").len(), 7);
+    assert_eq!(json.as_array().expect("array").len(), 9);
 }
 
 #[test]
@@ -239,7 +241,7 @@ fn snapshot_writes_a_png_of_the_asked_size() {
 }
 
 /// `bench --json` (a debug build here, so the figures are slow; only their
-/// layout and sanity are checked): the fourteen keys in the documented order,
+/// layout and sanity are checked): the fifteen keys in the documented order,
 /// each a positive finite number, with the frame quantiles ordered.
 #[test]
 fn bench_json_has_every_figure() {
@@ -268,6 +270,7 @@ fn bench_json_has_every_figure() {
             "frame_ms_p99",
             "frame_ms_p99_map",
             "frame_ms_p99_paradox",
+            "frame_ms_p99_chain16",
             "map_ms",
             "numpy_eig_us_per_pencil",
             "locus_speedup_vs_numpy",
