@@ -39,6 +39,7 @@ pub fn load_max_p(model: &Model) -> f64 {
     let rods = model.column.rods as f64;
     LOAD_MAX_P * (2.0 / rods).powi(2)
 }
+
 /// The size of a kick, in rad on both angles.
 const KICK_RAD: f64 = 0.01;
 /// The step of the load keys, as a fraction of the slider's range.
@@ -61,11 +62,10 @@ fn push_trail(trail: &mut VecDeque<(f64, [f64; 2])>, now: &Observables) {
 /// What the user is told when rapier cannot integrate the column: why, and
 /// that the reference engine took over.
 fn switched_to_reference(why: &SimError) -> Notice {
-    let reason = match why {
-        SimError::RapierChain { .. } => {
-            "the rapier engine takes two rods so far".to_owned()
-        }
-        _ => "the column is too stiff for the rapier engine at its 1/240 s step (huge damping or stiffness against little mass)".to_owned(),
+    let reason = if matches!(why, SimError::RapierChain { .. }) {
+        "the rapier engine takes two rods so far"
+    } else {
+        "the column is too stiff for the rapier engine at its 1/240 s step (huge damping or stiffness against little mass)"
     };
     Notice::warning(format!("{reason}; switched to the reference engine"))
 }

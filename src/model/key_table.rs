@@ -351,7 +351,7 @@ pub const KEYS: [KeySpec; 26] = [
     KeySpec {
         key: Key::Eta,
         unit: "",
-        description: "tangency of the tip force: its direction turns by eta times rod 2's angle (1: follower force, 0: dead load)",
+        description: "tangency of the tip force: its direction turns by eta times the last rod's angle (1: follower force, 0: dead load)",
         range: "in [0, 1]",
         scope: Scope::Force,
         is_group: true,

@@ -185,8 +185,8 @@ impl Roller {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Load {
     /// A tip force of magnitude P whose direction turns with the last rod
-    /// by `eta` times its angle: `F = -P (cos(eta phi2), sin(eta phi2))`.
-    /// `eta = 1` is the ideal follower force (along rod 2, toward A),
+    /// by `eta` times its angle: `F = -P (cos(eta phi_N), sin(eta phi_N))`.
+    /// `eta = 1` is the ideal follower force (along the last rod, inward),
     /// `eta = 0` the dead load (fixed direction -x, conservative).
     Follower {
         force_n: f64,

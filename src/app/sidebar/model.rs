@@ -47,7 +47,7 @@ impl View for ModelSection {
             }
             Some(eta) if eta < 1.0 => {
                 ui.label(format!(
-                    "tip force: partly tangential, turned by eta = {} of rod 2's angle",
+                    "tip force: partly tangential, turned by eta = {} of the last rod's angle",
                     crate::format::Shown(eta)
                 ));
             }
