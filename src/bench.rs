@@ -262,7 +262,7 @@ fn critical_chain32_ms() -> Result<f64> {
         }],
     )?;
     let pencil = AffinePencil::new(&chain)?;
-    let load_max = LOCUS_LOAD_MAX * (2.0 / CHAIN_RODS).powi(2);
+    let load_max = LOCUS_LOAD_MAX * chain.column.load_range_scale();
     let secs = median_secs(3, || {
         black_box(critical_loads(&pencil, 0.0, load_max)?);
         Ok(())

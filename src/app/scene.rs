@@ -20,8 +20,8 @@ use crate::sim::{Observables, Status};
 struct SceneInput<'a> {
     pub model: &'a Model,
     pub now: &'a Observables,
-    /// Every rod's angle, from the clamp out.
-    pub angles_rad: &'a [f64],
+    /// The joints from the clamp to the tip.
+    pub joints_m: &'a [[f64; 2]],
     pub trail: &'a VecDeque<(f64, [f64; 2])>,
     pub status: Status,
     /// The world box the camera frames.
@@ -115,14 +115,8 @@ pub fn scene_ui(ui: &mut egui::Ui, state: &mut AppState, scene: &mut SceneView, 
     let l1 = model.column.rod1.length_m;
     let reach_m = model.column.reach_m();
     let rods = model.column.rods;
-    let angles_rad: Vec<f64> = state
-        .simulation()
-        .state()
-        .rows(0, rods)
-        .iter()
-        .copied()
-        .collect();
-    let joint_m = [l1 * now.phi1_rad.cos(), l1 * now.phi1_rad.sin()];
+    let joints_m = state.simulation().joints_m();
+    let joint_m = joints_m[1];
     let recent = state
         .trail()
         .iter()
@@ -137,7 +131,7 @@ pub fn scene_ui(ui: &mut egui::Ui, state: &mut AppState, scene: &mut SceneView, 
         &SceneInput {
             model,
             now: &now,
-            angles_rad: &angles_rad,
+            joints_m: &joints_m,
             trail: state.trail(),
             status: state.simulation().status(),
             framed,
@@ -216,7 +210,7 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View) {
     let SceneInput {
         model,
         now,
-        angles_rad,
+        joints_m: joints,
         trail,
         status,
         framed,
@@ -255,15 +249,8 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View) {
     }
     clamp(&painter, theme, &view, reach);
     trail_ui(&painter, theme, &view, trail);
-    // The joints from the clamp out; the last is the tip.
-    let mut joints = vec![[0.0, 0.0]];
-    for (i, angle) in angles_rad.iter().enumerate() {
-        let [x, y] = joints[i];
-        let l = model.column.rod(i).length_m;
-        joints.push([x + l * angle.cos(), y + l * angle.sin()]);
-    }
+    let angles_rad = &now.angles_rad;
     let last = joints.len() - 1;
-    joints[last] = now.tip_m;
     let spring_stroke = Stroke::new(1.5 * s, theme.spring);
     let spring_size = view.px(0.06 * (model.column.rod1.length_m + model.column.rod2.length_m));
     for (i, angle) in angles_rad.iter().enumerate() {

@@ -35,9 +35,7 @@ pub const LOAD_MAX_P: f64 = 8.0;
 /// column's units `P L^2 / EI` (0 to 32).
 #[must_use]
 pub fn load_max_p(model: &Model) -> f64 {
-    #[expect(clippy::cast_precision_loss, reason = "at most 64 rods")]
-    let rods = model.column.rods as f64;
-    LOAD_MAX_P * (2.0 / rods).powi(2)
+    LOAD_MAX_P * model.column.load_range_scale()
 }
 
 /// The size of a kick, in rad on both angles.

@@ -29,12 +29,10 @@ pub struct Args {
 
 pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     let (name, model) = args.model.build()?;
-    #[expect(clippy::cast_precision_loss, reason = "at most 64 rods")]
-    let rods = model.column.rods as f64;
     let load_min = args.load_min;
     let load_max = args
         .load_max
-        .unwrap_or(DEFAULT_LOAD_MAX * (2.0 / rods).powi(2));
+        .unwrap_or(DEFAULT_LOAD_MAX * model.column.load_range_scale());
     let pencil = AffinePencil::new(&model)?;
     let bracket = bracketing_locus(&pencil, load_min, load_max)?;
     let transitions = critical_loads_along(&pencil, &bracket)?;

@@ -4,6 +4,7 @@
 
 use nalgebra::{DMatrix, DVector, Vector2};
 
+use super::dynamics::rods_drag;
 use super::linear::chain_mass_matrix;
 use super::params::{Load, Model};
 
@@ -46,19 +47,14 @@ fn generalized_forces(model: &Model, x: &ChainState) -> Vec<f64> {
             *qi += force_n * length(i) * (phi[i] - direction).sin();
         }
     }
-    let c = column.drag_ns_per_m2;
-    if c != 0.0 {
-        // Rod i's drag: resultant at its inner joint, moment about it.
+    if column.drag_ns_per_m2 != 0.0 {
+        // Each rod's drag moment about its joint, and the resultants of the
+        // rods beyond it working through its swing.
+        let drag = rods_drag(column, phi, rate);
         let mut resultant_beyond = Vector2::zeros();
         for i in (0..n).rev() {
-            let l = length(i);
-            let across: f64 = (0..i)
-                .map(|j| length(j) * (phi[i] - phi[j]).cos() * rate[j])
-                .sum();
-            let total = l * across + l * l / 2.0 * rate[i];
-            let moment = l * l / 2.0 * across + l.powi(3) / 3.0 * rate[i];
-            q[i] += -c * moment + resultant_beyond.dot(&(l * normal(phi[i])));
-            resultant_beyond += -c * total * normal(phi[i]);
+            q[i] += drag[i].moment_nm + resultant_beyond.dot(&(length(i) * normal(phi[i])));
+            resultant_beyond += drag[i].force_n;
         }
     }
     q

@@ -130,9 +130,6 @@ pub fn joints_m(column: &Column, x: &StateVec) -> Vec<Vector2<f64>> {
 /// Position of the tip B in state `x`, in m.
 #[must_use]
 pub fn tip_m(column: &Column, x: &StateVec) -> Vector2<f64> {
-    if column.rods == 2 {
-        return column.rod1.length_m * unit(x[0]) + column.rod2.length_m * unit(x[1]);
-    }
     (0..column.rods).fold(Vector2::zeros(), |tip, i| {
         tip + column.rod(i).length_m * unit(x[i])
     })
@@ -186,25 +183,36 @@ pub struct RodDrag {
 }
 
 /// The external viscous drag `-c_ext v_perp(s) t_i` per unit length on each
-/// rod in state `x`, where `v_perp(s) = u_i + s phi_i'` is the velocity
-/// across rod i at distance s from its inner joint (`u_1 = 0`,
-/// `u_2 = l1 cos(phi2 - phi1) phi1'`).
+/// rod of a chain with these angles and rates, where
+/// `v_perp(s) = u_i + s phi_i'` is the velocity across rod i at distance s
+/// from its inner joint (`u_i = sum_{j<i} l_j cos(phi_i - phi_j) phi_j'`).
+#[must_use]
+pub fn rods_drag(column: &Column, angles_rad: &[f64], rates_rad_per_s: &[f64]) -> Vec<RodDrag> {
+    let c = column.drag_ns_per_m2;
+    let (phi, rate) = (angles_rad, rates_rad_per_s);
+    let length = |i: usize| column.rod(i).length_m;
+    (0..phi.len())
+        .map(|i| {
+            let l = length(i);
+            let across: f64 = (0..i)
+                .map(|j| length(j) * (phi[i] - phi[j]).cos() * rate[j])
+                .sum();
+            // The integrals over the rod of v_perp and of s v_perp.
+            let total = l * across + l * l / 2.0 * rate[i];
+            let moment = l * l / 2.0 * across + l.powi(3) / 3.0 * rate[i];
+            RodDrag {
+                force_n: -c * total * normal(phi[i]),
+                moment_nm: -c * moment,
+            }
+        })
+        .collect()
+}
+
+/// [`rods_drag`] on the two rods of state `x`.
 #[must_use]
 pub fn rod_drag(column: &Column, x: &StateVec) -> [RodDrag; 2] {
-    let c = column.drag_ns_per_m2;
-    let (l1, l2) = (column.rod1.length_m, column.rod2.length_m);
-    let across = [0.0, l1 * (x[1] - x[0]).cos() * x[3]];
-    let drag = |i: usize, l: f64| {
-        let (u, w) = (across[i], x[3 + i]);
-        // The integrals over the rod of v_perp and of s v_perp.
-        let total = l * u + l * l / 2.0 * w;
-        let moment = l * l / 2.0 * u + l.powi(3) / 3.0 * w;
-        RodDrag {
-            force_n: -c * total * normal(x[i]),
-            moment_nm: -c * moment,
-        }
-    };
-    [drag(0, l1), drag(1, l2)]
+    let drag = rods_drag(column, &[x[0], x[1]], &[x[3], x[4]]);
+    [drag[0], drag[1]]
 }
 
 /// The generalized forces of the drag on `(phi1, phi2)`: each rod's moment
@@ -245,13 +253,13 @@ pub fn joint_torques_nm(column: &Column, x: &StateVec) -> [f64; 2] {
 pub fn state_derivative(model: &Model, x: &StateVec) -> StateVec {
     let n = model.column.rods;
     if n != 2 {
-        let mut derivative = StateVec::from_element(x.len(), f64::NAN);
-        if let Some(accelerations) = chain_accelerations(model, &chain_state(&model.column, x)) {
-            derivative.fill(0.0);
-            for i in 0..n {
-                derivative[i] = x[n + 1 + i];
-                derivative[n + 1 + i] = accelerations[i];
-            }
+        let Some(accelerations) = chain_accelerations(model, &chain_state(&model.column, x)) else {
+            return StateVec::from_element(x.len(), f64::NAN);
+        };
+        let mut derivative = StateVec::zeros(x.len());
+        for i in 0..n {
+            derivative[i] = x[n + 1 + i];
+            derivative[n + 1 + i] = accelerations[i];
         }
         return derivative;
     }

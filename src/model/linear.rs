@@ -139,7 +139,7 @@ pub fn linearize(model: &Model) -> Result<LinearModel, ModelError> {
     }
     if let Some(roller) = roller {
         let r = roller.radius_m;
-        mass[(rods, rods)] = model.inertia().spin_kg_m2;
+        mass[(rods, rods)] = roller.spin_inertia_kg_m2(column.rod2.length_m);
         // G = (mu R / V) g g^T with g = (l_1 .. l_N, -r): the transverse slip
         // acts as a viscous damper of coefficient mu R / V at the contact point.
         let g: Vec<f64> = (0..rods).map(length).chain([-r]).collect();

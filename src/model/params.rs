@@ -118,6 +118,15 @@ impl Column {
         self.rod1.length_m + copies * self.rod2.length_m
     }
 
+    /// The factor that takes a load range of two rods on the axis p to the
+    /// same range of `P L^2 / EI` for this chain: `(2/N)^2` (1 for two rods).
+    #[must_use]
+    pub fn load_range_scale(&self) -> f64 {
+        #[expect(clippy::cast_precision_loss, reason = "at most 64 rods")]
+        let rods = self.rods as f64;
+        (2.0 / rods).powi(2)
+    }
+
     /// Whether every rod is the same and so is every spring: the chain that
     /// discretizes a uniform beam of stiffness `EI = k l`.
     #[must_use]
