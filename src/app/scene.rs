@@ -284,7 +284,7 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View) {
             &painter,
             theme,
             &view,
-            now,
+            (now, last_rod_rad),
             roller.radius_m.max(0.02 * reach),
         );
     }
@@ -337,19 +337,19 @@ fn trail_ui(
     }
 }
 
-/// Forces at the tip: the ideal follower direction along rod 2 (dashed) and
-/// the actual force (the band's friction for the roller), at one length, and
-/// the angle delta between them (eq. 23).
+/// Forces at the tip: the ideal follower direction along the last rod (at
+/// `last_rad`; dashed) and the actual force (the band's friction for the
+/// roller), at one length, and the angle delta between them (eq. 23).
 fn forces(
     painter: &egui::Painter,
     theme: &Theme,
     view: &View,
-    (model, now, phi2): (&Model, &Observables, f64),
+    (model, now, last_rad): (&Model, &Observables, f64),
     length_m: f64,
 ) {
     let s = theme.stroke_scale;
     let b = now.tip_m;
-    let follower = [-phi2.cos(), -phi2.sin()];
+    let follower = [-last_rad.cos(), -last_rad.sin()];
     let force = now.tip_force_n;
     let magnitude = force[0].hypot(force[1]);
     if magnitude == 0.0 {
@@ -380,7 +380,7 @@ fn forces(
         // Beyond the tip, along rod 2 continued (away from the column and
         // from the arrows, which point back along it); beside the tip when
         // that is out of the picture.
-        let normal = [-phi2.sin(), phi2.cos()];
+        let normal = [-last_rad.sin(), last_rad.cos()];
         let clip = painter.clip_rect().shrink(6.0 + 3.0 * theme.text_size);
         let label_at = [(-0.45, 0.0), (0.0, 0.5), (0.0, -0.5)]
             .into_iter()
@@ -411,19 +411,19 @@ fn forces(
     }
 }
 
-/// The roller: a disc standing across rod 2, seen from above as a
-/// rectangle; marks on its rim turn with psi.
+/// The roller: a disc standing across the last rod (at `last_rad`), seen
+/// from above as a rectangle; marks on its rim turn with psi.
 fn roller_ui(
     painter: &egui::Painter,
     theme: &Theme,
     view: &View,
-    now: &Observables,
+    (now, last_rad): (&Observables, f64),
     radius_m: f64,
 ) {
     let s = theme.stroke_scale;
-    let (b, phi2, psi) = (now.tip_m, now.phi2_rad, now.psi_rad);
-    let t2 = [-phi2.sin(), phi2.cos()];
-    let e2 = [phi2.cos(), phi2.sin()];
+    let (b, psi) = (now.tip_m, now.psi_rad);
+    let t2 = [-last_rad.sin(), last_rad.cos()];
+    let e2 = [last_rad.cos(), last_rad.sin()];
     let half_thick = 0.25 * radius_m;
     let corner =
         |u: f64, v: f64| view.to(b[0] + u * t2[0] + v * e2[0], b[1] + u * t2[1] + v * e2[1]);

@@ -59,13 +59,10 @@ fn push_trail(trail: &mut VecDeque<(f64, [f64; 2])>, now: &Observables) {
 
 /// What the user is told when rapier cannot integrate the column: why, and
 /// that the reference engine took over.
-fn switched_to_reference(why: &SimError) -> Notice {
-    let reason = if matches!(why, SimError::RapierChain { .. }) {
-        "the rapier engine takes two rods so far"
-    } else {
-        "the column is too stiff for the rapier engine at its 1/240 s step (huge damping or stiffness against little mass)"
-    };
-    Notice::warning(format!("{reason}; switched to the reference engine"))
+fn switched_to_reference() -> Notice {
+    Notice::warning(
+        "the column is too stiff for the rapier engine at its 1/240 s step (huge damping or stiffness against little mass); switched to the reference engine",
+    )
 }
 
 /// A run of the settings' model from the standard kick. When rapier cannot
@@ -79,7 +76,7 @@ fn start(settings: &mut Settings) -> Result<(Simulation, Option<Notice>), SimErr
         Err(error) if error.reference_runs_it() => {
             settings.engine = EngineKind::Reference;
             Simulation::new(model, EngineKind::Reference, x0, DEFAULT_STEP_SECS)
-                .map(|sim| (sim, Some(switched_to_reference(&error))))
+                .map(|sim| (sim, Some(switched_to_reference())))
         }
         Err(error) => Err(error),
     }
@@ -360,7 +357,7 @@ impl AppState {
                     .and_then(|()| self.sim.set_model(model));
                 if switched.is_ok() {
                     self.settings.engine = EngineKind::Reference;
-                    self.say(switched_to_reference(&error));
+                    self.say(switched_to_reference());
                 }
                 switched
             }

@@ -1,63 +1,62 @@
-//! The nonlinear equations of motion of a chain of N rods under a tip force
-//! (follower, partial or dead), with the joints' springs and dampers and the
-//! drag along the rods: angles and rates in, angular accelerations out.
+//! The nonlinear equations of motion of a chain of N rods under any tip load
+//! (follower, partial, dead or the roller), with the joints' springs and
+//! dampers and the drag along the rods: state in, state derivative out.
 
 use nalgebra::{DMatrix, DVector, Vector2};
 
-use super::dynamics::rods_drag;
+use super::dynamics::{StateVec, joint_torques_nm, rods_drag, slaved_spin_rate, tip_load};
 use super::linear::chain_mass_matrix;
-use super::params::{Load, Model};
-
-/// The state of a chain: each rod's absolute angle and its rate.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ChainState {
-    pub angles_rad: Vec<f64>,
-    pub rates_rad_per_s: Vec<f64>,
-}
+use super::params::{Column, Model};
 
 fn normal(angle_rad: f64) -> Vector2<f64> {
     Vector2::new(-angle_rad.sin(), angle_rad.cos())
 }
 
-/// The generalized forces on the rods' angles: the joints' springs and
-/// dampers, the tip force `Q_i = P l_i sin(phi_i - eta phi_N)` and the drag
-/// (each rod's moment about its inner joint, and the resultants of the rods
-/// beyond it working through its swing; physics.md sections 2, 3).
-fn generalized_forces(model: &Model, x: &ChainState) -> Vec<f64> {
-    let column = &model.column;
-    let (phi, rate) = (&x.angles_rad, &x.rates_rad_per_s);
+/// The rods' angles and rates of a chain's state.
+fn angles_and_rates(column: &Column, x: &StateVec) -> (Vec<f64>, Vec<f64>) {
+    let n = column.rods;
+    (
+        x.rows(0, n).iter().copied().collect(),
+        x.rows(n + 1, n).iter().copied().collect(),
+    )
+}
+
+/// The generalized forces on the rods' angles of everything but the tip
+/// load: the joints' springs and dampers (joint i's torque acts on rod i,
+/// and back on rod i - 1), and the drag (each rod's moment about its inner
+/// joint, and the resultants of the rods beyond it working through its
+/// swing; physics.md sections 2, 3).
+fn joint_and_drag_forces(column: &Column, x: &StateVec, phi: &[f64], rate: &[f64]) -> Vec<f64> {
     let n = phi.len();
-    let length = |i: usize| column.rod(i).length_m;
-    let mut q = vec![0.0; n];
-    for i in 0..n {
-        let (bend, bend_rate) = if i == 0 {
-            (phi[0], rate[0])
-        } else {
-            (phi[i] - phi[i - 1], rate[i] - rate[i - 1])
-        };
-        let torque = -column.spring_nm_per_rad(i) * bend - column.damper_nms_per_rad(i) * bend_rate;
-        q[i] += torque;
-        if i > 0 {
-            q[i - 1] -= torque;
-        }
-    }
-    if let Load::Follower { force_n, eta } = model.load {
-        let direction = eta * phi[n - 1];
-        for (i, qi) in q.iter_mut().enumerate() {
-            *qi += force_n * length(i) * (phi[i] - direction).sin();
-        }
+    let torques = joint_torques_nm(column, x);
+    let mut q = torques.clone();
+    for i in 1..n {
+        q[i - 1] -= torques[i];
     }
     if column.drag_ns_per_m2 != 0.0 {
-        // Each rod's drag moment about its joint, and the resultants of the
-        // rods beyond it working through its swing.
         let drag = rods_drag(column, phi, rate);
         let mut resultant_beyond = Vector2::zeros();
         for i in (0..n).rev() {
-            q[i] += drag[i].moment_nm + resultant_beyond.dot(&(length(i) * normal(phi[i])));
+            q[i] += drag[i].moment_nm
+                + resultant_beyond.dot(&(column.rod(i).length_m * normal(phi[i])));
             resultant_beyond += drag[i].force_n;
         }
     }
     q
+}
+
+/// The chain's mass matrix in state `x`: `M(phi)_jk = mu_jk cos(phi_j - phi_k)`
+/// with `mu` the mass matrix at rest (every point's velocity is
+/// `sum_j c_j phi_j' t_j`, and `t_j . t_k = cos(phi_j - phi_k)`).
+#[must_use]
+pub fn chain_mass_at(model: &Model, angles_rad: &[f64]) -> DMatrix<f64> {
+    mass_at(&chain_mass_matrix(model), angles_rad)
+}
+
+fn mass_at(mu: &DMatrix<f64>, phi: &[f64]) -> DMatrix<f64> {
+    DMatrix::from_fn(phi.len(), phi.len(), |j, k| {
+        mu[(j, k)] * (phi[j] - phi[k]).cos()
+    })
 }
 
 /// The rods' angular accelerations from Lagrange's equations
@@ -66,33 +65,73 @@ fn generalized_forces(model: &Model, x: &ChainState) -> Vec<f64> {
 /// sum_k mu_jk [cos(phi_j - phi_k) phi_k'' + sin(phi_j - phi_k) phi_k'^2] = Q_j
 /// ```
 ///
-/// with `mu` the chain's mass matrix at rest (every point's velocity is
-/// `sum_j c_j phi_j' t_j`, and `t_j . t_k = cos(phi_j - phi_k)`). `None`
-/// for a roller (its chain is not built yet) or a mass matrix that cannot
-/// be factored.
+/// with `Q` the springs, dampers and drag plus `tip_q`, the tip load's
+/// generalized forces on the rods. `None` for a mass matrix that cannot be
+/// factored.
 #[must_use]
-pub fn chain_accelerations(model: &Model, x: &ChainState) -> Option<Vec<f64>> {
-    if model.roller().is_some() {
-        return None;
-    }
-    let (phi, rate) = (&x.angles_rad, &x.rates_rad_per_s);
+pub fn rod_accelerations(model: &Model, x: &StateVec, tip_q: &[f64]) -> Option<DVector<f64>> {
+    let (phi, rate) = angles_and_rates(&model.column, x);
     let n = phi.len();
     let mu = chain_mass_matrix(model);
-    let mass = DMatrix::from_fn(n, n, |j, k| mu[(j, k)] * (phi[j] - phi[k]).cos());
-    let q = generalized_forces(model, x);
+    let mass = mass_at(&mu, &phi);
+    let q = joint_and_drag_forces(&model.column, x, &phi, &rate);
     let rhs = DVector::from_fn(n, |j, _| {
-        q[j] - (0..n)
-            .map(|k| mu[(j, k)] * (phi[j] - phi[k]).sin() * rate[k] * rate[k])
-            .sum::<f64>()
+        q[j] + tip_q[j]
+            - (0..n)
+                .map(|k| mu[(j, k)] * (phi[j] - phi[k]).sin() * rate[k] * rate[k])
+                .sum::<f64>()
     });
-    let accelerations = mass.cholesky()?.solve(&rhs);
-    Some(accelerations.iter().copied().collect())
+    Some(mass.cholesky()?.solve(&rhs))
 }
 
-/// Kinetic and spring energy of the chain, in joules.
+/// The state derivative of a chain of any length under any tip load. The
+/// roller's spin obeys `J psi'' = Q_psi`; a massless roller's spin follows
+/// its slaved rate, and `psi''` is that rate's time derivative. `None` for
+/// a mass matrix that cannot be factored.
 #[must_use]
-pub fn chain_energy_j(model: &Model, x: &ChainState) -> (f64, f64) {
-    let (phi, rate) = (&x.angles_rad, &x.rates_rad_per_s);
+pub fn chain_derivative(model: &Model, x: &StateVec) -> Option<StateVec> {
+    let column = &model.column;
+    let n = column.rods;
+    let tip = tip_load(model, x);
+    let accelerations = rod_accelerations(model, x, &tip.generalized_n_m[..n])?;
+    let (psi_dot, psi_ddot) = match model.roller() {
+        None => (0.0, 0.0),
+        Some(roller) if roller.mass_kg > 0.0 => (
+            x[2 * n + 1],
+            tip.generalized_n_m[n] / roller.spin_inertia_kg_m2(column.rod2.length_m),
+        ),
+        Some(roller) => {
+            // r psi' = l_N phi_N' + sum_{i<N} l_i phi_i' cos(phi_N - phi_i)
+            // - V sin(phi_N), differentiated along the motion.
+            let last = n - 1;
+            let (phi_n, rate_n) = (x[last], x[n + 1 + last]);
+            let mut slip_rate = column.rod(last).length_m * accelerations[last]
+                - roller.band_speed_m_per_s * phi_n.cos() * rate_n;
+            for i in 0..last {
+                let (angle, rate) = (phi_n - x[i], x[n + 1 + i]);
+                slip_rate += column.rod(i).length_m
+                    * (accelerations[i] * angle.cos() - rate * angle.sin() * (rate_n - rate));
+            }
+            (
+                slaved_spin_rate(column, roller, x),
+                slip_rate / roller.radius_m,
+            )
+        }
+    };
+    let mut derivative = StateVec::zeros(x.len());
+    for i in 0..n {
+        derivative[i] = x[n + 1 + i];
+        derivative[n + 1 + i] = accelerations[i];
+    }
+    derivative[n] = psi_dot;
+    derivative[2 * n + 1] = psi_ddot;
+    Some(derivative)
+}
+
+/// Kinetic (rods and roller's spin) and spring energy of the chain, in joules.
+#[must_use]
+pub fn chain_energy_j(model: &Model, x: &StateVec) -> (f64, f64) {
+    let (phi, rate) = angles_and_rates(&model.column, x);
     let n = phi.len();
     let mu = chain_mass_matrix(model);
     let mut kinetic = 0.0;
@@ -100,6 +139,11 @@ pub fn chain_energy_j(model: &Model, x: &ChainState) -> (f64, f64) {
         for k in 0..n {
             kinetic += 0.5 * mu[(j, k)] * (phi[j] - phi[k]).cos() * rate[j] * rate[k];
         }
+    }
+    if let Some(roller) = model.roller() {
+        let spin_rate = x[2 * n + 1];
+        kinetic +=
+            0.5 * roller.spin_inertia_kg_m2(model.column.rod2.length_m) * spin_rate * spin_rate;
     }
     let spring = (0..n)
         .map(|i| {

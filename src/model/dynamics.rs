@@ -1,9 +1,9 @@
 //! The full nonlinear equations of motion (physics.md section 3) as a pure
 //! function state -> state derivative, with the roller's Coulomb friction.
 
-use nalgebra::{DVector, Matrix2, Vector2};
+use nalgebra::{DMatrix, DVector, Matrix2, Vector2};
 
-use super::chain::{ChainState, chain_accelerations, chain_energy_j};
+use super::chain::{chain_derivative, chain_energy_j, chain_mass_at, rod_accelerations};
 use super::params::{Column, Load, Model, Roller};
 
 /// `(phi_1 .. phi_N, psi, phi_1' .. phi_N', psi')` in rad and rad/s: for
@@ -17,15 +17,6 @@ pub fn rest_state(column: &Column) -> StateVec {
     StateVec::zeros(2 * (column.rods + 1))
 }
 
-/// The rods' angles and rates of a chain's state.
-fn chain_state(column: &Column, x: &StateVec) -> ChainState {
-    let n = column.rods;
-    ChainState {
-        angles_rad: x.rows(0, n).iter().copied().collect(),
-        rates_rad_per_s: x.rows(n + 1, n).iter().copied().collect(),
-    }
-}
-
 /// Below this slip speed |w| the Coulomb law `F = -mu R w/|w|` is replaced by
 /// the viscous law `F = -mu R w/eps` (continuous at |w| = eps). Above it the
 /// friction is exactly Coulomb's. The model is singular at w = 0 (physics.md
@@ -37,7 +28,7 @@ fn chain_state(column: &Column, x: &StateVec) -> ChainState {
 pub const SLIP_REGULARIZATION_M_PER_S: f64 = 1e-4;
 
 /// The friction of the band on the roller in one state.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Friction {
     /// Slip velocity of the contact point K relative to the band, eq. (21).
     pub slip_m_per_s: Vector2<f64>,
@@ -45,9 +36,9 @@ pub struct Friction {
     pub force_n: Vector2<f64>,
     /// Angle of the force from the ideal follower direction (-rod 2), eq. (23).
     pub delta_rad: f64,
-    /// Generalized forces on `(phi1, phi2, psi)` by virtual power, eq. (28)
-    /// with the erratum `Q3 = -(r/l2) Q2`.
-    pub generalized_n_m: [f64; 3],
+    /// Generalized forces on `(phi_1 .. phi_N, psi)` by virtual power, eq.
+    /// (28) with the erratum `Q_psi = -(r/l_N) Q_N`.
+    pub generalized_n_m: Vec<f64>,
     /// True when |w| fell below [`SLIP_REGULARIZATION_M_PER_S`]: stick-slip,
     /// outside the model's validity.
     pub regularized: bool,
@@ -61,53 +52,69 @@ fn normal(angle_rad: f64) -> Vector2<f64> {
     Vector2::new(-angle_rad.sin(), angle_rad.cos())
 }
 
-/// The slip speed `l2 phi2' - r psi'` that makes the transverse friction
-/// vanish: what a massless roller spins up to instantly (`Q3 = 0` forces `Q2 = 0`).
-fn massless_roller_spin_rate(column: &Column, roller: &Roller, x: &StateVec) -> f64 {
-    let (l1, l2) = (column.rod1.length_m, column.rod2.length_m);
-    let slip_along_normal =
-        roller.band_speed_m_per_s * x[1].sin() - l1 * x[3] * (x[1] - x[0]).cos();
-    (l2 * x[4] - slip_along_normal) / roller.radius_m
+/// The spin rate that makes the friction across the last rod vanish: what a
+/// massless roller spins up to instantly (`Q_psi = 0` forces `Q_N = 0`),
+/// `r psi' = l_N phi_N' + sum_{i<N} l_i phi_i' cos(phi_N - phi_i) - V sin(phi_N)`.
+pub(super) fn slaved_spin_rate(column: &Column, roller: &Roller, x: &StateVec) -> f64 {
+    let n = column.rods;
+    let last = x[n - 1];
+    let slip_along_normal = (0..n - 1).fold(roller.band_speed_m_per_s * last.sin(), |slip, i| {
+        slip - column.rod(i).length_m * x[n + 1 + i] * (last - x[i]).cos()
+    });
+    (column.rod(n - 1).length_m * x[2 * n] - slip_along_normal) / roller.radius_m
 }
 
-/// Friction of the band on the roller, eqs (15)-(28). For a massless roller the
-/// spin rate in `x` is ignored and replaced by the slaved one, so the force is
-/// exactly the ideal follower force `P = mu R` while the contact slips forward.
+/// Friction of the band on the roller at the end of the last rod, eqs
+/// (15)-(28) for a chain of any length. For a massless roller the spin rate
+/// in `x` is ignored and replaced by the slaved one, so the force is exactly
+/// the ideal follower force `P = mu R` while the contact slips forward.
 #[must_use]
 pub fn friction(column: &Column, roller: &Roller, x: &StateVec) -> Friction {
-    let (l1, l2, r) = (column.rod1.length_m, column.rod2.length_m, roller.radius_m);
-    let (phi1, phi2) = (x[0], x[1]);
+    let n = column.rods;
+    let (last, r) = (n - 1, roller.radius_m);
+    let l_last = column.rod(last).length_m;
     let psi_dot = if roller.mass_kg > 0.0 {
-        x[5]
+        x[2 * n + 1]
     } else {
-        massless_roller_spin_rate(column, roller, x)
+        slaved_spin_rate(column, roller, x)
     };
-    let (t1, t2) = (normal(phi1), normal(phi2));
+    let t_last = normal(x[last]);
     let band = Vector2::new(roller.band_speed_m_per_s, 0.0);
-    let slip = l1 * x[3] * t1 + (l2 * x[4] - r * psi_dot) * t2 + band;
+    let inner = (0..last).fold(Vector2::zeros(), |v, i| {
+        v + column.rod(i).length_m * x[n + 1 + i] * normal(x[i])
+    });
+    let slip = inner + (l_last * x[2 * n] - r * psi_dot) * t_last + band;
     let speed = slip.norm();
     let regularized = speed < SLIP_REGULARIZATION_M_PER_S;
     let force_n = -roller.friction_force_n() * slip / speed.max(SLIP_REGULARIZATION_M_PER_S);
-    let e2 = unit(phi2);
-    let delta_rad = slip.dot(&t2).atan2(slip.dot(&e2));
-    let q1 = force_n.dot(&(l1 * t1));
-    let q2 = force_n.dot(&(l2 * t2));
+    let delta_rad = slip.dot(&t_last).atan2(slip.dot(&unit(x[last])));
+    let mut generalized_n_m = rods_generalized(column, x, force_n);
+    generalized_n_m.push(-r / l_last * generalized_n_m[last]);
     Friction {
         slip_m_per_s: slip,
         force_n,
         delta_rad,
-        generalized_n_m: [q1, q2, -r / l2 * q2],
+        generalized_n_m,
         regularized,
     }
 }
 
+/// The generalized forces on the rods' angles of a force at the tip:
+/// `Q_i = F . l_i t_i`.
+fn rods_generalized(column: &Column, x: &StateVec, force_n: Vector2<f64>) -> Vec<f64> {
+    // Room for the spin's entry, which the callers push.
+    let mut q = Vec::with_capacity(column.rods + 1);
+    q.extend((0..column.rods).map(|i| force_n.dot(&(column.rod(i).length_m * normal(x[i])))));
+    q
+}
+
 /// The load at the tip in one state, whatever its kind.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct TipLoad {
     /// Force on the tip (for the roller: of the band on the roller), in N.
     pub force_n: Vector2<f64>,
-    /// Generalized forces on `(phi1, phi2, psi)`.
-    pub generalized_n_m: [f64; 3],
+    /// Generalized forces on `(phi_1 .. phi_N, psi)`.
+    pub generalized_n_m: Vec<f64>,
     /// Angle from the ideal follower direction, eq. (23) (0 for ideal loads).
     pub delta_rad: f64,
     /// The roller's slip was regularized (stick-slip).
@@ -135,32 +142,21 @@ pub fn tip_m(column: &Column, x: &StateVec) -> Vector2<f64> {
     })
 }
 
-/// Velocity of the tip B in state `x` (the rods' swing, not the roller's
-/// spin), in m/s.
-#[must_use]
-pub fn tip_velocity_m_per_s(column: &Column, x: &StateVec) -> Vector2<f64> {
-    let n = column.rods;
-    (0..n).fold(Vector2::zeros(), |v, i| {
-        v + column.rod(i).length_m * x[n + 1 + i] * normal(x[i])
-    })
-}
-
 /// The tip load of `model` in state `x` (section 2).
 #[must_use]
 pub fn tip_load(model: &Model, x: &StateVec) -> TipLoad {
-    let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
-    let ideal = |force_n: Vector2<f64>| TipLoad {
-        force_n,
-        generalized_n_m: [
-            force_n.dot(&(l1 * normal(x[0]))),
-            force_n.dot(&(l2 * normal(x[1]))),
-            0.0,
-        ],
-        delta_rad: 0.0,
-        regularized: false,
-    };
     match model.load {
-        Load::Follower { force_n, eta } => ideal(-force_n * unit(eta * x[model.column.rods - 1])),
+        Load::Follower { force_n, eta } => {
+            let force_n = -force_n * unit(eta * x[model.column.rods - 1]);
+            let mut generalized_n_m = rods_generalized(&model.column, x, force_n);
+            generalized_n_m.push(0.0);
+            TipLoad {
+                force_n,
+                generalized_n_m,
+                delta_rad: 0.0,
+                regularized: false,
+            }
+        }
         Load::Roller(roller) => {
             let f = friction(&model.column, &roller, x);
             TipLoad {
@@ -208,37 +204,37 @@ pub fn rods_drag(column: &Column, angles_rad: &[f64], rates_rad_per_s: &[f64]) -
         .collect()
 }
 
-/// [`rods_drag`] on the two rods of state `x`.
-#[must_use]
-pub fn rod_drag(column: &Column, x: &StateVec) -> [RodDrag; 2] {
-    let drag = rods_drag(column, &[x[0], x[1]], &[x[3], x[4]]);
-    [drag[0], drag[1]]
-}
-
 /// The generalized forces of the drag on `(phi1, phi2)`: each rod's moment
 /// about its joint, and rod 2's force working through rod 1's swing.
 #[must_use]
 pub fn drag_generalized_n_m(column: &Column, x: &StateVec) -> [f64; 2] {
-    let [rod1, rod2] = rod_drag(column, x);
+    if column.drag_ns_per_m2 == 0.0 {
+        return [0.0, 0.0];
+    }
+    let drag = rods_drag(column, &[x[0], x[1]], &[x[3], x[4]]);
+    let (rod1, rod2) = (drag[0], drag[1]);
     let swing = column.rod1.length_m * normal(x[0]);
     [rod1.moment_nm + rod2.force_n.dot(&swing), rod2.moment_nm]
 }
 
-/// Torques of the joints' springs and dampers `(at O on phi1, at A on
-/// phi2 - phi1)`, in N m.
+/// The torque of joint i's spring and damper on `phi_i - phi_{i-1}`
+/// (`phi_0 = 0`: joint 0 is the clamp O, then A, ...), in N m.
+fn joint_torque_nm(column: &Column, x: &StateVec, i: usize) -> f64 {
+    let n = column.rods;
+    let (bend, bend_rate) = if i == 0 {
+        (x[0], x[n + 1])
+    } else {
+        (x[i] - x[i - 1], x[n + 1 + i] - x[n + i])
+    };
+    -column.spring_nm_per_rad(i) * bend - column.damper_nms_per_rad(i) * bend_rate
+}
+
+/// Every joint's torque ([`joint_torque_nm`]), from the clamp out.
 #[must_use]
-pub fn joint_torques_nm(column: &Column, x: &StateVec) -> [f64; 2] {
-    let Column {
-        k1_nm_per_rad: k1,
-        k2_nm_per_rad: k2,
-        c1_nms_per_rad: c1,
-        c2_nms_per_rad: c2,
-        ..
-    } = *column;
-    [
-        -k1 * x[0] - c1 * x[3],
-        -k2 * (x[1] - x[0]) - c2 * (x[4] - x[3]),
-    ]
+pub fn joint_torques_nm(column: &Column, x: &StateVec) -> Vec<f64> {
+    (0..column.rods)
+        .map(|i| joint_torque_nm(column, x, i))
+        .collect()
 }
 
 /// The state derivative of the nonlinear equations of motion (section 3,
@@ -246,35 +242,28 @@ pub fn joint_torques_nm(column: &Column, x: &StateVec) -> [f64; 2] {
 /// spin follows its slaved rate: `psi''` is that rate's time derivative, so a
 /// state that starts consistent stays so.
 ///
-/// A chain of more than two rods (no roller) moves by
-/// [`chain_accelerations`]; a state it cannot move (a roller on a chain)
-/// gets NaN, which the engines stop on.
+/// Two rods take the closed-form 2x2 solve below; a chain of any other
+/// length moves by [`chain_derivative`], the same equations for N rods
+/// (a test holds the two to each other for two rods). A state whose mass
+/// matrix cannot be factored gets NaN, which the engines stop on.
 #[must_use]
 pub fn state_derivative(model: &Model, x: &StateVec) -> StateVec {
-    let n = model.column.rods;
-    if n != 2 {
-        let Some(accelerations) = chain_accelerations(model, &chain_state(&model.column, x)) else {
-            return StateVec::from_element(x.len(), f64::NAN);
-        };
-        let mut derivative = StateVec::zeros(x.len());
-        for i in 0..n {
-            derivative[i] = x[n + 1 + i];
-            derivative[n + 1 + i] = accelerations[i];
-        }
-        return derivative;
+    if model.column.rods != 2 {
+        return chain_derivative(model, x)
+            .unwrap_or_else(|| StateVec::from_element(x.len(), f64::NAN));
     }
     let (phi1, phi2, phi1_dot, phi2_dot) = (x[0], x[1], x[3], x[4]);
-    let [q1, q2, q3] = tip_load(model, x).generalized_n_m;
-    let [phi1_ddot, phi2_ddot] = column_accelerations(model, x, [q1, q2]);
+    let q = tip_load(model, x).generalized_n_m;
+    let [phi1_ddot, phi2_ddot] = column_accelerations(model, x, [q[0], q[1]]);
     let inertia = model.inertia();
     let d = phi2 - phi1;
     let (sin_d, cos_d) = d.sin_cos();
     let (psi_dot, psi_ddot) = match model.roller() {
         None => (0.0, 0.0),
-        Some(roller) if roller.mass_kg > 0.0 => (x[5], q3 / inertia.spin_kg_m2),
+        Some(roller) if roller.mass_kg > 0.0 => (x[5], q[2] / inertia.spin_kg_m2),
         Some(roller) => {
             let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
-            let rate = massless_roller_spin_rate(&model.column, roller, x);
+            let rate = slaved_spin_rate(&model.column, roller, x);
             let slip_along_normal_dot = roller.band_speed_m_per_s * phi2.cos() * phi2_dot
                 - l1 * phi1_ddot * cos_d
                 + l1 * phi1_dot * sin_d * (phi2_dot - phi1_dot);
@@ -296,7 +285,10 @@ fn column_accelerations(model: &Model, x: &StateVec, [q1, q2]: [f64; 2]) -> [f64
     let (phi1_dot, phi2_dot) = (x[3], x[4]);
     let (sin_d, cos_d) = (x[1] - x[0]).sin_cos();
     // The torque at A acts on rod 2, and back on rod 1.
-    let [torque_o, torque_a] = joint_torques_nm(&model.column, x);
+    let (torque_o, torque_a) = (
+        joint_torque_nm(&model.column, x, 0),
+        joint_torque_nm(&model.column, x, 1),
+    );
     let [drag1, drag2] = drag_generalized_n_m(&model.column, x);
     let b = inertia.b_kg_m2;
     let rhs1 = q1 + drag1 + b * sin_d * phi2_dot * phi2_dot + torque_o - torque_a;
@@ -312,30 +304,42 @@ fn column_accelerations(model: &Model, x: &StateVec, [q1, q2]: [f64; 2]) -> [f64
 }
 
 /// How the tip's velocity answers a force at the tip, for a step of `dt`.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct TipResponse {
     /// `J M^-1 J^T`: the change of the tip's velocity per unit impulse
-    /// there, in (m/s) / (N s), with `J` the tip's Jacobian `[l1 t1, l2 t2]`.
+    /// there, in (m/s) / (N s), with `J` the tip's Jacobian `[l_i t_i]`.
     pub mobility: Matrix2<f64>,
-    /// The rates `(phi1', phi2')` after `dt` with no tip load (explicit).
-    pub free_rates: [f64; 2],
+    /// The rods' rates after `dt` with no tip load (explicit).
+    pub free_rates: Vec<f64>,
 }
 
 /// The tip's response in state `x` over a step `dt` (for a friction force
 /// that is solved implicitly with the rods' motion).
 #[must_use]
 pub fn tip_response(model: &Model, x: &StateVec, dt: f64) -> TipResponse {
-    let inertia = model.inertia();
-    let (l1, l2) = (model.column.rod1.length_m, model.column.rod2.length_m);
-    let b_cos = inertia.b_kg_m2 * (x[1] - x[0]).cos();
-    let mass = Matrix2::new(inertia.a_kg_m2, b_cos, b_cos, inertia.c_kg_m2);
-    let jacobian = Matrix2::from_columns(&[l1 * normal(x[0]), l2 * normal(x[1])]);
-    // `Model::validate` keeps the mass matrix positive definite.
-    let inverse = mass.try_inverse().unwrap_or_else(Matrix2::zeros);
-    let [a1, a2] = column_accelerations(model, x, [0.0, 0.0]);
+    let column = &model.column;
+    let n = column.rods;
+    let angles: Vec<f64> = x.rows(0, n).iter().copied().collect();
+    let jacobian = DMatrix::from_fn(2, n, |row, i| {
+        column.rod(i).length_m * normal(angles[i])[row]
+    });
+    let mobility = chain_mass_at(model, &angles)
+        .cholesky()
+        .map_or_else(Matrix2::zeros, |factor| {
+            let solved = factor.solve(&jacobian.transpose());
+            let product = &jacobian * solved;
+            Matrix2::new(
+                product[(0, 0)],
+                product[(0, 1)],
+                product[(1, 0)],
+                product[(1, 1)],
+            )
+        });
+    let free = rod_accelerations(model, x, &vec![0.0; n])
+        .unwrap_or_else(|| DVector::from_element(n, f64::NAN));
     TipResponse {
-        mobility: jacobian * inverse * jacobian.transpose(),
-        free_rates: [x[3] + dt * a1, x[4] + dt * a2],
+        mobility,
+        free_rates: (0..n).map(|i| x[n + 1 + i] + dt * free[i]).collect(),
     }
 }
 
@@ -343,7 +347,7 @@ pub fn tip_response(model: &Model, x: &StateVec, dt: f64) -> TipResponse {
 #[must_use]
 pub fn energy_j(model: &Model, x: &StateVec) -> (f64, f64) {
     if model.column.rods != 2 {
-        return chain_energy_j(model, &chain_state(&model.column, x));
+        return chain_energy_j(model, x);
     }
     let inertia = model.inertia();
     let (phi1, phi2, phi1_dot, phi2_dot, psi_dot) = (x[0], x[1], x[3], x[4], x[5]);

@@ -3,7 +3,7 @@
 use nalgebra::DMatrix;
 
 use super::ModelError;
-use super::params::Model;
+use super::params::{Column, Model};
 
 /// `M x'' + D x' + K x = 0` about the straight column, `x = (phi_1 .. phi_N[, psi])`.
 #[derive(Clone, Debug, PartialEq)]
@@ -55,7 +55,7 @@ pub fn chain_mass_matrix(model: &Model) -> DMatrix<f64> {
 /// The external drag's damping matrix on the rods' angles, from its
 /// Rayleigh function: `D_jk = c_ext sum_i int_0^l_i a_ij a_ik ds` with
 /// `a_ij = l_j` (j < i), `s` (j = i), 0 (j > i) (physics.md section 4).
-fn drag_matrix(column: &crate::model::Column) -> DMatrix<f64> {
+fn drag_matrix(column: &Column) -> DMatrix<f64> {
     let n = column.rods;
     let length = |i: usize| column.rod(i).length_m;
     // The length of the rods beyond rod i.
@@ -72,6 +72,29 @@ fn drag_matrix(column: &crate::model::Column) -> DMatrix<f64> {
         };
         column.drag_ns_per_m2 * (own + beyond_m[hi] * length(lo) * length(hi))
     })
+}
+
+/// The joints' springs and dampers on the rods' angles: joint i acts on
+/// `phi_i - phi_{i-1}` (`phi_0 = 0`), so both matrices are tridiagonal.
+#[must_use]
+pub fn joint_matrices(column: &Column) -> (DMatrix<f64>, DMatrix<f64>) {
+    let n = column.rods;
+    let mut stiffness = DMatrix::zeros(n, n);
+    let mut damping = DMatrix::zeros(n, n);
+    for i in 0..n {
+        let (k, c) = (column.spring_nm_per_rad(i), column.damper_nms_per_rad(i));
+        stiffness[(i, i)] += k;
+        damping[(i, i)] += c;
+        if i > 0 {
+            stiffness[(i - 1, i - 1)] += k;
+            stiffness[(i - 1, i)] -= k;
+            stiffness[(i, i - 1)] -= k;
+            damping[(i - 1, i - 1)] += c;
+            damping[(i - 1, i)] -= c;
+            damping[(i, i - 1)] -= c;
+        }
+    }
+    (stiffness, damping)
 }
 
 /// The analytic linearization of `model` about `phi = 0` at rest.
@@ -108,21 +131,13 @@ pub fn linearize(model: &Model) -> Result<LinearModel, ModelError> {
     damping
         .view_mut((0, 0), (rods, rods))
         .copy_from(&drag_matrix(column));
+    let (joint_stiffness, joint_damping) = joint_matrices(column);
+    let mut rods_damping = damping.view_mut((0, 0), (rods, rods));
+    rods_damping += &joint_damping;
     let mut stiffness = DMatrix::zeros(n, n);
-    // Joint i's spring and damper act on phi_i - phi_{i-1} (phi_0 = 0).
-    for i in 0..rods {
-        let (k, c) = (column.spring_nm_per_rad(i), column.damper_nms_per_rad(i));
-        stiffness[(i, i)] += k;
-        damping[(i, i)] += c;
-        if i > 0 {
-            stiffness[(i - 1, i - 1)] += k;
-            stiffness[(i - 1, i)] -= k;
-            stiffness[(i, i - 1)] -= k;
-            damping[(i - 1, i - 1)] += c;
-            damping[(i - 1, i)] -= c;
-            damping[(i, i - 1)] -= c;
-        }
-    }
+    stiffness
+        .view_mut((0, 0), (rods, rods))
+        .copy_from(&joint_stiffness);
     let force_n = model.follower_force_n();
     // Every tip force pushes each rod by P l_i sin(phi_i - ...): the -P l_i
     // on the diagonal; a follower (eta) or the friction adds the rest.

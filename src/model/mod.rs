@@ -16,14 +16,14 @@ mod presets;
 
 pub use crate::format::Shown;
 pub use axis::{Axis, DAMPER_RATIO, DAMPING_LEVEL, MASS_RATIO};
-pub use chain::{ChainState, chain_accelerations, chain_energy_j};
+pub use chain::{chain_derivative, chain_energy_j, chain_mass_at, rod_accelerations};
 pub use dynamics::{
     Friction, RodDrag, SLIP_REGULARIZATION_M_PER_S, StateVec, TipLoad, TipResponse,
-    drag_generalized_n_m, energy_j, friction, joint_torques_nm, joints_m, rest_state, rod_drag,
-    state_derivative, tip_load, tip_m, tip_response, tip_velocity_m_per_s,
+    drag_generalized_n_m, energy_j, friction, joint_torques_nm, joints_m, rest_state, rods_drag,
+    state_derivative, tip_load, tip_m, tip_response,
 };
 pub use keys::{Assignment, KEYS, Key, KeySpec, apply_assignments, parse_assignment};
-pub use linear::{LinearModel, chain_mass_matrix, linearize};
+pub use linear::{LinearModel, chain_mass_matrix, joint_matrices, linearize};
 pub(crate) use params::analysis_range_text;
 pub use params::{Column, Inertia, Load, MAX_RODS, Model, Rod, Roller, SpinInertia};
 pub use presets::{PRESETS, Preset, PresetId, preset};

@@ -16,11 +16,13 @@ pub enum PresetId {
     TabletopRoller,
     Beck,
     Pflueger,
+    BeckRoller,
+    PfluegerRoller,
 }
 
 impl PresetId {
     /// Every preset, in the order of [`PRESETS`].
-    pub const ALL: [Self; 9] = [
+    pub const ALL: [Self; 11] = [
         Self::Ziegler1952,
         Self::UniformRods,
         Self::MidpointMasses,
@@ -30,6 +32,8 @@ impl PresetId {
         Self::TabletopRoller,
         Self::Beck,
         Self::Pflueger,
+        Self::BeckRoller,
+        Self::PfluegerRoller,
     ];
 
     /// The preset's name, as typed.
@@ -45,6 +49,8 @@ impl PresetId {
             Self::TabletopRoller => "tabletop-roller",
             Self::Beck => "beck",
             Self::Pflueger => "pflueger",
+            Self::BeckRoller => "beck-roller",
+            Self::PfluegerRoller => "pflueger-roller",
         }
     }
 
@@ -115,7 +121,7 @@ impl Preset {
 }
 
 /// Every preset, in the order the UI and `zieglerlab presets` show them.
-pub const PRESETS: [Preset; 9] = [
+pub const PRESETS: [Preset; 11] = [
     Preset {
         id: PresetId::Ziegler1952,
         name: "ziegler-1952",
@@ -178,6 +184,20 @@ pub const PRESETS: [Preset; 9] = [
         source: "Pflueger's column, a chain of 16 rods",
         description: "Pflueger's column: Beck's chain of 16 rods with a tip mass of half the column's mass, follower force: the tip mass lowers the flutter load to P L^2/EI = 15.06; runs on the reference engine",
         build: pflueger,
+    },
+    Preset {
+        id: PresetId::BeckRoller,
+        name: "beck-roller",
+        source: "Beck's chain loaded as in Bigoni et al. 2018",
+        description: "Beck's chain of 16 rods loaded by the roller on the moving band (the paper's groups on each rod: roller mass 0.1 m, radius 0.1 l, mu = 0.1, V = 0.1 m/s): the slip's damping makes it flutter weakly from P L^2/EI = 0.025 (growth below 3e-4 1/s), and strongly from about 18.8, where the follower chain flutters",
+        build: beck_roller,
+    },
+    Preset {
+        id: PresetId::PfluegerRoller,
+        name: "pflueger-roller",
+        source: "Pflueger's chain loaded as in Bigoni et al. 2018",
+        description: "Pflueger's chain of 16 rods (tip mass half the rods' mass) loaded by the same roller on the moving band: weak flutter from P L^2/EI = 0.008 (growth below 4e-5 1/s), strong flutter from 15.06, where the follower chain flutters",
+        build: pflueger_roller,
     },
 ];
 
@@ -266,6 +286,24 @@ fn pflueger() -> Model {
     let rods_kg = CHAIN_RODS as f64 * MASS_KG;
     model.column.tip_mass_kg = 0.5 * rods_kg;
     model
+}
+
+/// A chain loaded by the roller preset's roller at the chain's load.
+fn with_roller(chain: Model) -> Model {
+    let mut model = Model {
+        load: roller().load,
+        ..chain
+    };
+    model.set_load_p(chain.load_p());
+    model
+}
+
+fn beck_roller() -> Model {
+    with_roller(beck())
+}
+
+fn pflueger_roller() -> Model {
+    with_roller(pflueger())
 }
 
 fn roller_with_spin(spin: SpinInertia) -> Model {

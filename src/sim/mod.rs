@@ -12,7 +12,10 @@ pub use observe::{Observables, observe};
 pub use ramp::Ramp;
 pub use reference::{Advance, MAX_STEPS_PER_ADVANCE, Reference};
 
-use crate::model::{Model, ModelError, StateVec, joints_m, rest_state, state_derivative};
+use crate::model::{
+    Model, ModelError, StateVec, chain_mass_matrix, joint_matrices, joints_m, rest_state,
+    state_derivative,
+};
 
 /// The app's simulation step: small against the fastest column period of
 /// the presets (about 5 s) and the roller's spin time constant at p = 1.
@@ -119,44 +122,16 @@ pub enum SimError {
         "the rapier2d world could not be built for this column (its joints were refused); use the reference engine"
     )]
     RapierWorld,
-    #[error(
-        "rods = {rods}: a roller on a chain of more than two rods is analysed (critical, locus, map) but not yet simulated"
-    )]
-    ChainNotSimulated { rods: usize },
-    #[error(
-        "rods = {rods}: the rapier engine takes two rods so far; the reference engine runs chains"
-    )]
-    RapierChain { rods: usize },
 }
 
 /// The perturbation a run starts from when the number of rods changes, in rad.
 const CHAIN_CHANGE_PERTURBATION_RAD: f64 = 1e-3;
 
-/// A valid model that `kind` integrates: any chain on the reference engine
-/// (without a roller beyond two rods), two rods on rapier.
-fn simulable(model: &Model, kind: EngineKind) -> Result<(), SimError> {
-    model.validate()?;
-    let rods = model.column.rods;
-    if rods == 2 {
-        return Ok(());
-    }
-    if model.roller().is_some() {
-        return Err(SimError::ChainNotSimulated { rods });
-    }
-    match kind {
-        EngineKind::Reference => Ok(()),
-        EngineKind::Rapier => Err(SimError::RapierChain { rods }),
-    }
-}
-
 impl SimError {
     /// Whether the reference engine runs what rapier refused here.
     #[must_use]
     pub fn reference_runs_it(&self) -> bool {
-        matches!(
-            self,
-            Self::TooStiffForRapier { .. } | Self::RapierChain { .. }
-        )
+        matches!(self, Self::TooStiffForRapier { .. })
     }
 
     /// The parameter (or argument) the error is about, when it is about one.
@@ -167,7 +142,6 @@ impl SimError {
             Self::Bad { what, .. } => Some(what),
             Self::TooStiffForRapier { .. } => Some("dt"),
             Self::RapierWorld => None,
-            Self::ChainNotSimulated { .. } | Self::RapierChain { .. } => Some("rods"),
         }
     }
 }
@@ -186,22 +160,11 @@ pub const RAPIER_MAX_RATE_STEP: f64 = 1.0;
 /// the run says so.
 #[must_use]
 pub fn column_rate_bound_per_s(model: &Model) -> f64 {
-    let inertia = model.inertia();
-    let mass = nalgebra::Matrix2::new(
-        inertia.a_kg_m2,
-        inertia.b_kg_m2,
-        inertia.b_kg_m2,
-        inertia.c_kg_m2,
-    );
-    let Some(inverse) = mass.try_inverse() else {
+    let Some(inverse) = chain_mass_matrix(model).try_inverse() else {
         return f64::INFINITY;
     };
-    let c = &model.column;
-    let pair =
-        |first: f64, second: f64| nalgebra::Matrix2::new(first + second, -second, -second, second);
-    let stiffness = pair(c.k1_nm_per_rad, c.k2_nm_per_rad);
-    let damping = pair(c.c1_nms_per_rad, c.c2_nms_per_rad);
-    (inverse * stiffness).norm().sqrt() + (inverse * damping).norm()
+    let (stiffness, damping) = joint_matrices(&model.column);
+    (&inverse * stiffness).norm().sqrt() + (&inverse * damping).norm()
 }
 
 /// Refuses a rapier run whose step is too long for the column's own rates.
@@ -224,9 +187,10 @@ pub fn initial_state(model: &Model, perturb_rad: f64) -> StateVec {
     for angle in x.rows_mut(0, model.column.rods).iter_mut() {
         *angle = perturb_rad;
     }
-    if model.column.rods == 2 && model.roller().is_some_and(|roller| roller.mass_kg == 0.0) {
+    if model.roller().is_some_and(|roller| roller.mass_kg == 0.0) {
         // psi' is slaved: state_derivative returns it as d(psi)/dt.
-        x[5] = state_derivative(model, &x)[2];
+        let n = model.column.rods;
+        x[2 * n + 1] = state_derivative(model, &x)[n];
     }
     x
 }
@@ -284,7 +248,7 @@ impl Simulation {
         x0: StateVec,
         step_secs: f64,
     ) -> Result<Self, SimError> {
-        simulable(&model, kind)?;
+        model.validate()?;
         if x0.len() != 2 * (model.column.rods + 1) {
             #[expect(clippy::cast_precision_loss, reason = "a state's length")]
             return Err(SimError::Bad {
@@ -328,7 +292,7 @@ impl Simulation {
     /// An invalid model, or one too stiff for the rapier engine at this step
     /// (the run keeps its previous one).
     pub fn set_model(&mut self, model: Model) -> Result<(), SimError> {
-        simulable(&model, self.engine())?;
+        model.validate()?;
         if model.column.rods != self.model.column.rods {
             // Another chain needs another state: it starts afresh from the
             // standard perturbation.
@@ -408,7 +372,8 @@ impl Simulation {
         }
         let t_secs = self.time_secs();
         let x = self.state();
-        let rate_rad_per_s = x[3].abs().max(x[4].abs());
+        let n = self.model.column.rods;
+        let rate_rad_per_s = x.rows(n + 1, n).amax();
         let too_fast = self.engine() == EngineKind::Rapier
             && rate_rad_per_s * self.step_secs > MAX_TURN_PER_STEP_RAD;
         self.status = match advance {

@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use crate::model::{Model, StateVec, energy_j, tip_load, tip_m, tip_velocity_m_per_s};
+use crate::model::{Model, StateVec, energy_j, tip_load, tip_m};
 
 /// The observables of one state.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -52,16 +52,13 @@ pub fn observe(model: &Model, t_secs: f64, x: &StateVec) -> Observables {
     let tip = tip_m(&model.column, x);
     let (kinetic_j, spring_j) = energy_j(model, x);
     let load = tip_load(model, x);
-    let band_power_w = if n == 2 {
-        load.generalized_n_m
-            .iter()
-            .zip([x[3], x[4], x[5]])
-            .map(|(q, v)| q * v)
-            .sum()
-    } else {
-        // A chain carries no roller: the force works through the tip's swing.
-        load.force_n.dot(&tip_velocity_m_per_s(&model.column, x))
-    };
+    // F . v_K = sum Q_j q_j' over the rods' angles and the spin.
+    let band_power_w = load
+        .generalized_n_m
+        .iter()
+        .zip(x.rows(n + 1, n + 1).iter())
+        .map(|(q, v)| q * v)
+        .sum();
     Observables {
         t_secs,
         angles_rad: x.rows(0, n).iter().copied().collect(),

@@ -1,25 +1,28 @@
-//! The rapier2d engine: the two rods as rigid bodies on multibody revolute
-//! joints, with the springs, dampers and tip force applied as explicit forces
-//! every step, and the roller's spin advanced implicitly beside them. The only
-//! module that knows rapier2d: glam f32 here, nalgebra f64 everywhere else.
+//! The rapier2d engine: the rods of the chain as rigid bodies on multibody
+//! revolute joints, with the springs, dampers, drag and tip force applied as
+//! explicit forces every step, and the roller's spin advanced implicitly
+//! beside them. The only module that knows rapier2d: glam f32 here,
+//! nalgebra f64 everywhere else.
 
+use nalgebra::Vector2;
 use rapier2d::prelude::*;
 
 use crate::model::{
     Column, Load, Model, Roller, SLIP_REGULARIZATION_M_PER_S, StateVec, TipResponse, friction,
-    joint_torques_nm, rod_drag, tip_load, tip_m, tip_response,
+    joint_torques_nm, joints_m, rods_drag, tip_load, tip_response,
 };
 
 /// The rapier world of one column, and the roller's spin (f64, ours).
 pub struct RapierEngine {
     world: PhysicsWorld,
-    rods: [RigidBodyHandle; 2],
-    joints: [MultibodyJointHandle; 2],
+    /// The rods from the clamp out, and the joints at their inner ends.
+    rods: Vec<RigidBodyHandle>,
+    joints: Vec<MultibodyJointHandle>,
     psi_rad: f64,
     psi_dot_rad_per_s: f64,
-    /// The column's rates one step ago, to evaluate the velocity-dependent
+    /// The rods' rates one step ago, to evaluate the velocity-dependent
     /// forces at mid-step (second order instead of first).
-    previous_rates: Option<[f64; 2]>,
+    previous_rates: Option<Vec<f64>>,
     /// The model whose geometry and masses the world was built with.
     built_for: Model,
 }
@@ -41,8 +44,16 @@ fn vec2(x: f64, y: f64) -> Vector {
     Vector::new(f32_of(x), f32_of(y))
 }
 
-/// Mass properties of rod 2 with the tip mass and the roller at its end:
-/// mass, centre of mass along the rod, inertia about that centre (the
+fn unit(angle_rad: f64) -> Vector2<f64> {
+    Vector2::new(angle_rad.cos(), angle_rad.sin())
+}
+
+fn normal(angle_rad: f64) -> Vector2<f64> {
+    Vector2::new(-angle_rad.sin(), angle_rad.cos())
+}
+
+/// Mass properties of the last rod with the tip mass and the roller at its
+/// end: mass, centre of mass along the rod, inertia about that centre (the
 /// roller's yaw inertia included; its spin inertia is the engine's own).
 fn outer_body(model: &Model) -> (f64, f64, f64) {
     let Column {
@@ -65,9 +76,20 @@ fn outer_body(model: &Model) -> (f64, f64, f64) {
     (mass, com, inertia)
 }
 
+/// Mass, centre of mass along the rod and inertia about it of rod `i`.
+fn body(model: &Model, i: usize) -> (f64, f64, f64) {
+    if i + 1 == model.column.rods {
+        outer_body(model)
+    } else {
+        let rod = model.column.rod(i);
+        (rod.mass_kg, rod.com_m, rod.inertia_kg_m2)
+    }
+}
+
 /// Whether two models give the same rapier world (geometry and masses).
 fn same_bodies(a: &Model, b: &Model) -> bool {
-    a.column.rod1 == b.column.rod1
+    a.column.rods == b.column.rods
+        && a.column.rod1 == b.column.rod1
         && a.column.rod2 == b.column.rod2
         && outer_body(a) == outer_body(b)
 }
@@ -76,6 +98,7 @@ impl RapierEngine {
     /// A world for `model` in state `x`, stepping `step_secs`.
     #[must_use]
     pub fn new(model: &Model, x: &StateVec, step_secs: f64) -> Option<Self> {
+        let n = model.column.rods;
         let mut world = PhysicsWorld::new();
         world.gravity = Vector::ZERO;
         world.integration_parameters.dt = f32_of(step_secs);
@@ -84,40 +107,38 @@ impl RapierEngine {
         // fixed while positions move, and pump energy in).
         world.integration_parameters.num_solver_iterations = 1;
         let ground = world.insert_body(RigidBodyBuilder::fixed());
-        let rod1 = model.column.rod1;
-        let body1 = RigidBodyBuilder::dynamic()
-            .can_sleep(false)
-            .additional_mass_properties(MassProperties::new(
-                vec2(rod1.com_m, 0.0),
-                f32_of(rod1.mass_kg),
-                f32_of(rod1.inertia_kg_m2),
-            ));
-        let (mass2, com2, inertia2) = outer_body(model);
-        let body2 = RigidBodyBuilder::dynamic()
-            .can_sleep(false)
-            .translation(vec2(rod1.length_m, 0.0))
-            .additional_mass_properties(MassProperties::new(
-                vec2(com2, 0.0),
-                f32_of(mass2),
-                f32_of(inertia2),
-            ));
-        let rods = [world.insert_body(body1), world.insert_body(body2)];
-        let joint1 = RevoluteJointBuilder::new()
-            .local_anchor1(Vector::ZERO)
-            .local_anchor2(Vector::ZERO);
-        let joint2 = RevoluteJointBuilder::new()
-            .local_anchor1(vec2(rod1.length_m, 0.0))
-            .local_anchor2(Vector::ZERO);
-        let joints = [
-            world.insert_multibody_joint(ground, rods[0], joint1)?,
-            world.insert_multibody_joint(rods[0], rods[1], joint2)?,
-        ];
+        let mut rods = Vec::with_capacity(n);
+        let mut joints = Vec::with_capacity(n);
+        let mut inner_joint_m = 0.0;
+        for i in 0..n {
+            let (mass, com, inertia) = body(model, i);
+            let rod = world.insert_body(
+                RigidBodyBuilder::dynamic()
+                    .can_sleep(false)
+                    .translation(vec2(inner_joint_m, 0.0))
+                    .additional_mass_properties(MassProperties::new(
+                        vec2(com, 0.0),
+                        f32_of(mass),
+                        f32_of(inertia),
+                    )),
+            );
+            let (parent, anchor) = match rods.last() {
+                Some(&parent) => (parent, vec2(model.column.rod(i - 1).length_m, 0.0)),
+                None => (ground, Vector::ZERO),
+            };
+            let joint = RevoluteJointBuilder::new()
+                .local_anchor1(anchor)
+                .local_anchor2(Vector::ZERO);
+            joints.push(world.insert_multibody_joint(parent, rod, joint)?);
+            rods.push(rod);
+            inner_joint_m += model.column.rod(i).length_m;
+        }
         let mut engine = Self {
             world,
             rods,
             joints,
-            psi_rad: x[2],
-            psi_dot_rad_per_s: x[5],
+            psi_rad: x[n],
+            psi_dot_rad_per_s: x[2 * n + 1],
             previous_rates: None,
             built_for: *model,
         };
@@ -125,49 +146,61 @@ impl RapierEngine {
         Some(engine)
     }
 
-    /// Puts the joints at the angles and rates of `x` (relative angle at A).
+    /// Puts the joints at the angles and rates of `x` (each joint's angle
+    /// relative to the rod before it).
     fn set_joints(&mut self, x: &StateVec) -> Option<()> {
+        let n = self.rods.len();
         let (multibody, _) = self.world.multibody_joints.get_mut(self.joints[0])?;
         // Settles the fixed root (no degrees of freedom) before anything else.
         multibody.forward_kinematics(&self.world.bodies, false);
-        if multibody.ndofs() != 2 {
+        if multibody.ndofs() != n {
             return None;
         }
         // rapier's multibody joints carry a default damping of 0.1: none here.
         multibody.damping_mut().fill(0.0);
-        let current = [x[0], x[1] - x[0]];
-        multibody.apply_displacements(&current.map(f32_of));
+        let relative = |i: usize, first: usize| {
+            if i == 0 {
+                x[first]
+            } else {
+                x[first + i] - x[first + i - 1]
+            }
+        };
+        let displacements: Vec<f32> = (0..n).map(|i| f32_of(relative(i, 0))).collect();
+        multibody.apply_displacements(&displacements);
         let mut velocity = multibody.generalized_velocity_mut();
-        velocity[0] = f32_of(x[3]);
-        velocity[1] = f32_of(x[4] - x[3]);
+        for i in 0..n {
+            velocity[i] = f32_of(relative(i, n + 1));
+        }
         multibody.forward_kinematics(&self.world.bodies, false);
         multibody.update_rigid_bodies(&mut self.world.bodies, true);
         Some(())
     }
 
-    /// `(phi1, phi2, psi, phi1', phi2', psi')` in f64.
+    /// `(phi_1 .. phi_N, psi, phi_1' .. phi_N', psi')` in f64.
     #[must_use]
     pub fn state(&self) -> StateVec {
-        let joint = |i: usize| -> (f64, f64) {
-            self.world
+        let n = self.rods.len();
+        let mut x = StateVec::zeros(2 * n + 2);
+        let (mut angle, mut rate) = (0.0, 0.0);
+        for (i, &handle) in self.joints.iter().enumerate() {
+            let (relative_angle, relative_rate) = self
+                .world
                 .multibody_joints
-                .get(self.joints[i])
+                .get(handle)
                 .and_then(|(multibody, id)| {
                     let link = multibody.link(id)?;
                     let rate = multibody.joint_velocity(link)[0];
                     Some((f64::from(link.joint.coords()[2]), f64::from(rate)))
                 })
-                .unwrap_or((f64::NAN, f64::NAN))
-        };
-        let ((a1, w1), (a2, w2)) = (joint(0), joint(1));
-        StateVec::from_vec(vec![
-            a1,
-            a1 + a2,
-            self.psi_rad,
-            w1,
-            w1 + w2,
-            self.psi_dot_rad_per_s,
-        ])
+                .unwrap_or((f64::NAN, f64::NAN));
+            angle += relative_angle;
+            rate += relative_rate;
+            x[i] = angle;
+            x[n + 1 + i] = rate;
+        }
+        x[n] = self.psi_rad;
+        x[2 * n + 1] = self.psi_dot_rad_per_s;
+        x
     }
 
     /// Advances one step of the world's dt with `model`'s forces; rebuilds
@@ -177,25 +210,25 @@ impl RapierEngine {
         if !same_bodies(model, &self.built_for) {
             *self = Self::new(model, &now, f64::from(self.world.integration_parameters.dt))?;
         }
+        let n = self.rods.len();
         // Symplectic Euler takes the forces at the start of the step. For the
         // velocity-dependent ones (dampers, friction) that is first order and
         // shifts growth rates by O(dt); the rates extrapolated to mid-step
         // make them second order.
         let mut x = now.clone();
-        if let Some([w1, w2]) = self.previous_rates {
-            x[3] = 1.5 * now[3] - 0.5 * w1;
-            x[4] = 1.5 * now[4] - 0.5 * w2;
-        }
-        self.previous_rates = Some([now[3], now[4]]);
-        let dt = f64::from(self.world.integration_parameters.dt);
-        let [torque_o, torque_a] = joint_torques_nm(&model.column, &x);
-        let tip = tip_m(&model.column, &x);
-        let tip = vec2(tip.x, tip.y);
-        let force_n = match model.load {
-            Load::Follower { .. } => {
-                let f = tip_load(model, &x).force_n;
-                vec2(f.x, f.y)
+        let rates: Vec<f64> = now.rows(n + 1, n).iter().copied().collect();
+        if let Some(previous) = &self.previous_rates {
+            for (i, before) in previous.iter().enumerate() {
+                x[n + 1 + i] = 1.5 * rates[i] - 0.5 * before;
             }
+        }
+        self.previous_rates = Some(rates);
+        let dt = f64::from(self.world.integration_parameters.dt);
+        let torques = joint_torques_nm(&model.column, &x);
+        let joints = joints_m(&model.column, &x);
+        let tip = joints[n];
+        let force_n = match model.load {
+            Load::Follower { .. } => tip_load(model, &x).force_n,
             Load::Roller(roller) => {
                 // How the tip answers a force this step: for the stiffness
                 // test and, near stick, the implicit step.
@@ -206,33 +239,35 @@ impl RapierEngine {
                     roller_step(&model.column, &roller, &x, dt)
                 };
                 self.psi_dot_rad_per_s = psi_dot;
-                vec2(force[0], force[1])
+                force
             }
         };
         // The drag on each rod: its resultant at the rod's inner joint and
         // its moment about that joint.
-        let [drag1, drag2] = rod_drag(&model.column, &x);
-        let joint_a = model.column.rod1.length_m * nalgebra::Vector2::new(x[0].cos(), x[0].sin());
-        let [rod1, rod2] = self.rods;
-        let body1 = self.world.bodies.get_mut(rod1)?;
-        body1.reset_forces(false);
-        body1.reset_torques(false);
-        body1.add_torque(f32_of(torque_o - torque_a + drag1.moment_nm), false);
-        body1.add_force_at_point(
-            vec2(drag1.force_n.x, drag1.force_n.y),
-            vec2(0.0, 0.0),
-            false,
-        );
-        let body2 = self.world.bodies.get_mut(rod2)?;
-        body2.reset_forces(false);
-        body2.reset_torques(false);
-        body2.add_torque(f32_of(torque_a + drag2.moment_nm), false);
-        body2.add_force_at_point(force_n, tip, false);
-        body2.add_force_at_point(
-            vec2(drag2.force_n.x, drag2.force_n.y),
-            vec2(joint_a.x, joint_a.y),
-            false,
-        );
+        let drag = (model.column.drag_ns_per_m2 != 0.0).then(|| {
+            let angles: Vec<f64> = x.rows(0, n).iter().copied().collect();
+            let drag_rates: Vec<f64> = x.rows(n + 1, n).iter().copied().collect();
+            rods_drag(&model.column, &angles, &drag_rates)
+        });
+        for i in 0..n {
+            // Joint i's torque turns rod i, and rod i - 1 back.
+            let outer_torque = torques.get(i + 1).copied().unwrap_or(0.0);
+            let rod = self.world.bodies.get_mut(self.rods[i])?;
+            rod.reset_forces(false);
+            rod.reset_torques(false);
+            let drag_moment_nm = drag.as_ref().map_or(0.0, |drag| drag[i].moment_nm);
+            rod.add_torque(f32_of(torques[i] - outer_torque + drag_moment_nm), false);
+            if i + 1 == n {
+                rod.add_force_at_point(vec2(force_n.x, force_n.y), vec2(tip.x, tip.y), false);
+            }
+            if let Some(drag) = &drag {
+                rod.add_force_at_point(
+                    vec2(drag[i].force_n.x, drag[i].force_n.y),
+                    vec2(joints[i].x, joints[i].y),
+                    false,
+                );
+            }
+        }
         self.world.step();
         self.psi_rad += dt * self.psi_dot_rad_per_s;
         Some(())
@@ -270,36 +305,37 @@ fn friction_is_stiff(
 /// that is a 2x2 linear system, and `|w(s)|` grows with `s`, so the root in
 /// `s` is found by bisection: the friction stops the slip (the viscous
 /// regime below `eps`) or slides with it, and never reverses it. A massless
-/// roller slips only along rod 2. Returns the force `(Fx, Fy)` and the new
-/// spin rate.
+/// roller slips only along the last rod. Returns the force and the new spin
+/// rate.
 fn implicit_roller_step(
     model: &Model,
     roller: &Roller,
     x: &StateVec,
     response: &TipResponse,
     dt: f64,
-) -> ([f64; 2], f64) {
+) -> (Vector2<f64>, f64) {
     let column = &model.column;
-    let (l1, l2, r) = (column.rod1.length_m, column.rod2.length_m, roller.radius_m);
-    let [v1, v2] = response.free_rates;
-    let (phi1, phi2) = (x[0], x[1]);
-    let t1 = nalgebra::Vector2::new(-phi1.sin(), phi1.cos());
-    let (e2, t2) = (
-        nalgebra::Vector2::new(phi2.cos(), phi2.sin()),
-        nalgebra::Vector2::new(-phi2.sin(), phi2.cos()),
-    );
-    let band = nalgebra::Vector2::new(roller.band_speed_m_per_s, 0.0);
-    let spin_inertia = roller.spin_inertia_kg_m2(l2);
-    let without_spin = l1 * v1 * t1 + l2 * v2 * t2 + band;
+    let n = column.rods;
+    let (l_last, r) = (column.rod2.length_m, roller.radius_m);
+    let (e_last, t_last) = (unit(x[n - 1]), normal(x[n - 1]));
+    let band = Vector2::new(roller.band_speed_m_per_s, 0.0);
+    let spin_inertia = roller.spin_inertia_kg_m2(l_last);
+    let swing = (0..n).fold(Vector2::zeros(), |v, i| {
+        v + column.rod(i).length_m * response.free_rates[i] * normal(x[i])
+    });
+    let without_spin = swing + band;
     let (w_free, mobility) = if spin_inertia > 0.0 {
         (
-            without_spin - r * x[5] * t2,
-            response.mobility + (r * r / spin_inertia) * t2 * t2.transpose(),
+            without_spin - r * x[2 * n + 1] * t_last,
+            response.mobility + (r * r / spin_inertia) * t_last * t_last.transpose(),
         )
     } else {
-        // The massless roller's spin cancels the slip across rod 2.
-        let along = e2.dot(&(response.mobility * e2));
-        (without_spin.dot(&e2) * e2, along * e2 * e2.transpose())
+        // The massless roller's spin cancels the slip across the last rod.
+        let along = e_last.dot(&(response.mobility * e_last));
+        (
+            without_spin.dot(&e_last) * e_last,
+            along * e_last * e_last.transpose(),
+        )
     };
     let mu_r = roller.friction_force_n();
     let impulse = dt * mu_r;
@@ -325,33 +361,40 @@ fn implicit_roller_step(
     };
     let force = -mu_r / s * slip_at(s);
     let psi_dot = if spin_inertia > 0.0 {
-        x[5] - dt * r * t2.dot(&force) / spin_inertia
+        x[2 * n + 1] - dt * r * t_last.dot(&force) / spin_inertia
     } else {
         // The slaved spin of the rods' velocities at the step's end.
         let mobility_force = response.mobility * force * dt;
-        (without_spin + mobility_force).dot(&t2) / r
+        (without_spin + mobility_force).dot(&t_last) / r
     };
-    ([force.x, force.y], psi_dot)
+    (force, psi_dot)
 }
 
 /// One implicit (backward Euler) step of the roller's spin, and the friction
-/// force that goes with it. With `u` the slip of the contact across rod 2
-/// (along its normal t2) and `b` the slip along it, the spin equation
-/// `J psi'' = -r F . t2` becomes `u (1 + kappa / |w|) = u_n` with
+/// force that goes with it. With `u` the slip of the contact across the last
+/// rod (along its normal) and `b` the slip along it, the spin equation
+/// `J psi'' = -r F . t_N` becomes `u (1 + kappa / |w|) = u_n` with
 /// `kappa = mu R r^2 dt / J`: monotone in `u`, so one root between 0 and
 /// `u_n`, stable for any roller mass. A massless roller (J = 0) gives u = 0
-/// exactly: the friction is then along rod 2, the ideal follower force.
-/// Returns the force `(Fx, Fy)` and the new spin rate.
-fn roller_step(column: &Column, roller: &Roller, x: &StateVec, dt: f64) -> ([f64; 2], f64) {
-    let (l1, l2, r) = (column.rod1.length_m, column.rod2.length_m, roller.radius_m);
-    let (phi2, d) = (x[1], x[1] - x[0]);
+/// exactly: the friction is then along the last rod, the ideal follower
+/// force. Returns the force and the new spin rate.
+fn roller_step(column: &Column, roller: &Roller, x: &StateVec, dt: f64) -> (Vector2<f64>, f64) {
+    let n = column.rods;
+    let last = n - 1;
+    let (l_last, r) = (column.rod2.length_m, roller.radius_m);
+    let phi_last = x[last];
     let v = roller.band_speed_m_per_s;
     let mu_r = roller.friction_force_n();
-    // Slip across rod 2 without the spin's part, and along rod 2.
-    let across_without_spin = l1 * x[3] * d.cos() + l2 * x[4] - v * phi2.sin();
-    let along = l1 * x[3] * d.sin() + v * phi2.cos();
-    let spin_inertia = roller.spin_inertia_kg_m2(l2);
-    let u_n = across_without_spin - r * x[5];
+    // Slip across the last rod without the spin's part, and along it: the
+    // inner rods' swing seen from the last rod, its own swing, the band.
+    let (across_inner, along_inner) = (0..last).fold((0.0, 0.0), |(across, along), i| {
+        let (bend, swing) = (phi_last - x[i], column.rod(i).length_m * x[n + 1 + i]);
+        (across + swing * bend.cos(), along + swing * bend.sin())
+    });
+    let across_without_spin = across_inner + l_last * x[2 * n] - v * phi_last.sin();
+    let along = along_inner + v * phi_last.cos();
+    let spin_inertia = roller.spin_inertia_kg_m2(l_last);
+    let u_n = across_without_spin - r * x[2 * n + 1];
     let u = if spin_inertia > 0.0 {
         let kappa = mu_r * r * r * dt / spin_inertia;
         let residual = |u: f64| {
@@ -375,16 +418,12 @@ fn roller_step(column: &Column, roller: &Roller, x: &StateVec, dt: f64) -> ([f64
         0.0
     };
     let psi_dot = (across_without_spin - u) / r;
-    let (e2, t2) = ([phi2.cos(), phi2.sin()], [-phi2.sin(), phi2.cos()]);
     let slip = (u * u + along * along)
         .sqrt()
         .max(SLIP_REGULARIZATION_M_PER_S);
     let scale = -mu_r / slip;
     (
-        [
-            scale * (u * t2[0] + along * e2[0]),
-            scale * (u * t2[1] + along * e2[1]),
-        ],
+        scale * (u * normal(phi_last) + along * unit(phi_last)),
         psi_dot,
     )
 }

@@ -10,10 +10,10 @@ use crate::common;
 use common::{assert_close, eigenvalues, model, transitions};
 use zieglerlab::analysis::{State, first_instability};
 use zieglerlab::model::{
-    ChainState, StateVec, apply_assignments, chain_accelerations, chain_energy_j,
-    chain_mass_matrix, parse_assignment, state_derivative,
+    Model, StateVec, apply_assignments, chain_derivative, chain_energy_j, chain_mass_matrix,
+    parse_assignment, state_derivative,
 };
-use zieglerlab::sim::{EngineKind, SimError, Simulation, initial_state};
+use zieglerlab::sim::{EngineKind, Simulation, initial_state};
 
 /// The uniform-rod chain of `rods` rods and its first loss of stability in
 /// the beam's units, searched over the same range of them (0 to 40).
@@ -165,29 +165,6 @@ fn rods_must_be_a_whole_number_from_2_to_64() {
     );
 }
 
-/// The reference engine runs chains; rapier (two rods so far) and a roller
-/// on a chain are refused with the reason, not run.
-#[test]
-fn rapier_and_a_roller_on_a_chain_are_refused_with_the_reason() {
-    let chain = model("uniform-rods", &["rods=4"]);
-    let x0 = initial_state(&chain, 1e-3);
-    assert_eq!(x0.len(), 10);
-    assert!(Simulation::new(chain, EngineKind::Reference, x0.clone(), 1.0 / 240.0).is_ok());
-    let refused = Simulation::new(chain, EngineKind::Rapier, x0, 1.0 / 240.0);
-    assert!(matches!(refused, Err(SimError::RapierChain { rods: 4 })));
-    let roller = model("roller", &["rods=4"]);
-    let refused = Simulation::new(
-        roller,
-        EngineKind::Reference,
-        initial_state(&roller, 1e-3),
-        1.0 / 240.0,
-    );
-    assert!(matches!(
-        refused,
-        Err(SimError::ChainNotSimulated { rods: 4 })
-    ));
-}
-
 /// Unloaded, a chain of 8 rods on the reference engine keeps its energy
 /// over 20 s from a 0.3 rad kick (large amplitude: the nonlinear terms).
 #[test]
@@ -206,60 +183,58 @@ fn the_reference_engine_keeps_a_free_chain_s_energy() {
     assert!(worst < 1e-8 * start, "drift {worst:e} of {start:e}");
 }
 
-/// A chain state from the angles and rates of a 2-rod state.
-fn chain_state(x: &StateVec) -> ChainState {
-    ChainState {
-        angles_rad: vec![x[0], x[1]],
-        rates_rad_per_s: vec![x[3], x[4]],
-    }
-}
-
-/// Two rods: the chain's equations are the column's, with every force.
+/// Two rods: the chain's equations are the closed-form 2x2 column's, with
+/// every force and every load (partial follower, roller with and without
+/// mass, the printed spin inertia).
 #[test]
 fn the_two_rod_chain_moves_as_the_column() {
-    let column = model(
-        "uniform-rods",
-        &[
-            "load=2.2",
-            "eta=0.6",
-            "c1=0.02",
-            "c2=0.05",
-            "c_ext=0.03",
-            "l2=0.7",
-        ],
-    );
-    for x in common::states() {
-        let column_rates = state_derivative(&column, &x);
-        let chain = chain_accelerations(&column, &chain_state(&x)).unwrap();
-        for (a, b) in chain.iter().zip([column_rates[3], column_rates[4]]) {
-            assert!((a - b).abs() <= 1e-12 * b.abs().max(1.0), "{a} vs {b}");
+    let follower = &[
+        "load=2.2",
+        "eta=0.6",
+        "c1=0.02",
+        "c2=0.05",
+        "c_ext=0.03",
+        "l2=0.7",
+    ][..];
+    let cases = [
+        ("uniform-rods", follower),
+        ("roller", &["load=2.2", "c2=0.05", "c_ext=0.03"][..]),
+        ("roller", &["load=1.7", "m3=0", "c1=0.02"][..]),
+        ("roller-as-printed", &["load=3.1"][..]),
+    ];
+    for (name, sets) in cases {
+        let column = model(name, sets);
+        for x in common::states() {
+            let closed_form = state_derivative(&column, &x);
+            let chain = chain_derivative(&column, &x).unwrap();
+            for (a, b) in chain.iter().zip(closed_form.iter()) {
+                assert!(
+                    (a - b).abs() <= 1e-12 * b.abs().max(1.0),
+                    "{name}: {a} vs {b}"
+                );
+            }
         }
     }
 }
 
-/// A large-amplitude state of `rods` rods, every angle and rate different.
-fn wild_state(rods: u32) -> ChainState {
+/// A large-amplitude state of `rods` rods, every angle and rate different
+/// (the spin at rest).
+fn wild_state(rods: u32) -> StateVec {
     let wave = |i: u32, a: f64, b: f64| a * (b * (f64::from(i) + 1.0)).sin();
-    ChainState {
-        angles_rad: (0..rods).map(|i| wave(i, 0.9, 1.3)).collect(),
-        rates_rad_per_s: (0..rods).map(|i| wave(i, 1.7, 2.1)).collect(),
-    }
+    let angles = (0..rods).map(|i| wave(i, 0.9, 1.3));
+    let rates = (0..rods).map(|i| wave(i, 1.7, 2.1));
+    StateVec::from_iterator(
+        2 * rods as usize + 2,
+        angles.chain([0.0]).chain(rates).chain([0.0]),
+    )
 }
 
 /// dE/dt along the flow of a chain, by central differences.
-fn chain_energy_rate(model: &zieglerlab::model::Model, x: &ChainState) -> f64 {
-    let a = chain_accelerations(model, x).unwrap();
+fn chain_energy_rate(model: &Model, x: &StateVec) -> f64 {
+    let derivative = chain_derivative(model, x).unwrap();
     let h = 1e-6;
     let step = |sign: f64| {
-        let y = ChainState {
-            angles_rad: (0..a.len())
-                .map(|i| x.angles_rad[i] + sign * h * x.rates_rad_per_s[i])
-                .collect(),
-            rates_rad_per_s: (0..a.len())
-                .map(|i| x.rates_rad_per_s[i] + sign * h * a[i])
-                .collect(),
-        };
-        let (kinetic, spring) = chain_energy_j(model, &y);
+        let (kinetic, spring) = chain_energy_j(model, &(x + sign * h * &derivative));
         kinetic + spring
     };
     (step(1.0) - step(-1.0)) / (2.0 * h)
@@ -282,10 +257,8 @@ fn a_free_chain_keeps_its_energy_and_drag_takes_its_integral() {
     // Velocity across rod i at s: sum_{j<i} l_j cos(phi_i - phi_j) phi_j' + s phi_i'.
     let dissipated: f64 = (0..5)
         .map(|i| {
-            let across: f64 = (0..i)
-                .map(|j| (x.angles_rad[i] - x.angles_rad[j]).cos() * x.rates_rad_per_s[j])
-                .sum();
-            c * common::simpson(|s| (across + s * x.rates_rad_per_s[i]).powi(2), 1.0)
+            let across: f64 = (0..i).map(|j| (x[i] - x[j]).cos() * x[6 + j]).sum();
+            c * common::simpson(|s| (across + s * x[6 + i]).powi(2), 1.0)
         })
         .sum();
     let rate = chain_energy_rate(&dragged, &x);
@@ -296,11 +269,49 @@ fn a_free_chain_keeps_its_energy_and_drag_takes_its_integral() {
 }
 
 /// At rest, the Jacobian of the chain's equations is the linearization's
-/// `[[0, I], [-M^-1 K, -M^-1 D]]` for 4 rods with a partial follower force,
-/// dampers and drag.
+/// `[[0, I], [-M^-1 K, -M^-1 D]]` on its coordinates: the rods' angles,
+/// and the roller's spin when it has mass.
+fn assert_jacobian_is_linearization(chain: &Model) {
+    let n = chain.column.rods;
+    let lin = zieglerlab::model::linearize(chain).unwrap();
+    let dof = lin.mass.nrows();
+    let minv = lin.mass.clone().try_inverse().unwrap();
+    let (k, d) = (-&minv * &lin.stiffness, -&minv * &lin.damping);
+    // The state is (phi_1 .. phi_N, psi, their rates); without a spin
+    // coordinate the linearization skips psi.
+    let (position, rate) = (|j: usize| j, |j: usize| n + 1 + j);
+    let h = 1e-7;
+    for column in 0..2 * dof {
+        let at = |sign: f64| {
+            let mut x = StateVec::zeros(2 * n + 2);
+            x[if column < dof {
+                position(column)
+            } else {
+                rate(column - dof)
+            }] = sign * h;
+            chain_derivative(chain, &x).unwrap()
+        };
+        let (plus, minus) = (at(1.0), at(-1.0));
+        for row in 0..dof {
+            let numeric = (plus[rate(row)] - minus[rate(row)]) / (2.0 * h);
+            let analytic = if column < dof {
+                k[(row, column)]
+            } else {
+                d[(row, column - dof)]
+            };
+            assert!(
+                (numeric - analytic).abs() < 1e-6 * analytic.abs().max(1e-3),
+                "row {row} column {column}: {numeric} vs {analytic}"
+            );
+        }
+    }
+}
+
+/// 4 rods with a partial follower force, dampers, drag and a tip mass; and
+/// 4 rods with the roller (its spin a coordinate) and dampers.
 #[test]
 fn the_chain_s_jacobian_at_rest_is_its_linearization() {
-    let chain = model(
+    assert_jacobian_is_linearization(&model(
         "uniform-rods",
         &[
             "rods=4",
@@ -311,37 +322,34 @@ fn the_chain_s_jacobian_at_rest_is_its_linearization() {
             "c_ext=0.02",
             "m_tip=0.2",
         ],
-    );
-    let lin = zieglerlab::model::linearize(&chain).unwrap();
-    let minv = lin.mass.clone().try_inverse().unwrap();
-    let (k, d) = (-&minv * &lin.stiffness, -&minv * &lin.damping);
-    let h = 1e-7;
-    for column in 0..8 {
-        let at = |sign: f64| {
-            let mut x = ChainState {
-                angles_rad: vec![0.0; 4],
-                rates_rad_per_s: vec![0.0; 4],
-            };
-            if column < 4 {
-                x.angles_rad[column] = sign * h;
-            } else {
-                x.rates_rad_per_s[column - 4] = sign * h;
-            }
-            chain_accelerations(&chain, &x).unwrap()
+    ));
+    assert_jacobian_is_linearization(&model(
+        "roller",
+        &["rods=4", "load=0.7", "c2=0.03", "m_tip=0.2"],
+    ));
+}
+
+/// The band's friction on a roller at the end of a chain of 4 rods changes
+/// the energy (rods and spin) by exactly its power `sum Q_j q_j'` (the
+/// spin's `Q_psi = -(r/l_N) Q_N` included), for a roller with and without
+/// mass, in large-amplitude states with the roller spinning.
+#[test]
+fn a_roller_chain_s_energy_changes_by_the_friction_s_power() {
+    for roller_mass in ["m3=0.1", "m3=0"] {
+        let chain = model("roller", &["rods=4", "load=2.0", roller_mass]);
+        let Some(roller) = chain.roller() else {
+            panic!("no roller")
         };
-        let (plus, minus) = (at(1.0), at(-1.0));
-        for row in 0..4 {
-            let numeric = (plus[row] - minus[row]) / (2.0 * h);
-            let analytic = if column < 4 {
-                k[(row, column)]
-            } else {
-                d[(row, column - 4)]
-            };
-            assert!(
-                (numeric - analytic).abs() < 1e-6 * analytic.abs().max(1e-3),
-                "row {row} column {column}: {numeric} vs {analytic}"
-            );
-        }
+        let mut x = wild_state(4);
+        x[4] = 0.3;
+        x[9] = -1.4;
+        let q = zieglerlab::model::friction(&chain.column, roller, &x).generalized_n_m;
+        let power: f64 = (0..5).map(|j| q[j] * x[5 + j]).sum();
+        let rate = chain_energy_rate(&chain, &x);
+        assert!(
+            (rate - power).abs() < 1e-6 * power.abs().max(1e-3),
+            "{roller_mass}: {rate} vs {power}"
+        );
     }
 }
 
@@ -361,4 +369,31 @@ fn the_beck_and_pflueger_presets_are_the_chains_they_say() {
     assert_close(beck_load, beck(16, &[]).0, 1e-9);
     assert!((pflueger_load - 15.06).abs() < 0.01, "{pflueger_load}");
     assert!((beck_load - 18.78).abs() < 0.01, "{beck_load}");
+}
+
+/// The roller versions of the Beck and Pflueger chains: the slip's damping
+/// makes them flutter weakly from small loads (growth below 5e-4 1/s at 90%
+/// of the follower chain's flutter load), and strongly just past the load
+/// where the follower chain flutters (above 1e-3 1/s at 105% of it).
+#[test]
+fn the_roller_chains_flutter_strongly_where_the_follower_chains_do() {
+    for (roller_name, follower_name) in [("beck-roller", "beck"), ("pflueger-roller", "pflueger")] {
+        let roller = model(roller_name, &[]);
+        let follower = model(follower_name, &[]);
+        assert_eq!(roller.column, follower.column);
+        assert!(roller.roller().is_some());
+        let onset = transitions(&follower, 40.0 / 256.0)[0].load;
+        let weak = transitions(&roller, 40.0 / 256.0)[0];
+        assert_eq!(weak.to, State::Flutter);
+        assert!(weak.load < 0.01 * onset, "{roller_name}: {}", weak.load);
+        let growth = |factor: f64| {
+            eigenvalues(&roller.at_load(factor * onset))
+                .iter()
+                .map(|z| z.re)
+                .fold(f64::NEG_INFINITY, f64::max)
+        };
+        let (below, past) = (growth(0.9), growth(1.05));
+        assert!(below > 0.0 && below < 5e-4, "{roller_name}: {below}");
+        assert!(past > 1e-3, "{roller_name}: {past}");
+    }
 }

@@ -154,6 +154,8 @@ fn presets_lists_every_preset_with_units() {
         "tabletop-roller",
         "beck",
         "pflueger",
+        "beck-roller",
+        "pflueger-roller",
     ] {
         assert!(text.contains(name), "{name}");
     }
@@ -162,7 +164,7 @@ fn presets_lists_every_preset_with_units() {
     }
     let json: serde_json::Value =
         serde_json::from_str(&stdout(&["presets", "--json"])).expect("json");
-    assert_eq!(json.as_array().expect("array").len(), 9);
+    assert_eq!(json.as_array().expect("array").len(), 11);
 }
 
 #[test]

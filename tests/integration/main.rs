@@ -5,6 +5,7 @@ mod app_input;
 mod app_logic;
 mod as_printed;
 mod bad_input;
+mod chain_engines;
 mod chains;
 mod cli;
 mod closed_form_loads;
