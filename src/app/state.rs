@@ -452,8 +452,12 @@ impl AppState {
     fn refresh_measured(&mut self) {
         let t = self.sim.time_secs();
         if t - self.measured_at_secs >= 1.0 {
-            // Two exponentials per oscillating mode of the column.
-            self.measured = self.history.measured(4);
+            // Two exponentials per oscillating mode of the two-rod column. A
+            // chain's many modes, some with periods far beyond the history,
+            // are not measured: a fit of a few would show made-up values.
+            self.measured = (self.sim.model().column.rods == 2)
+                .then(|| self.history.measured(4))
+                .flatten();
             self.measured_at_secs = t;
         }
     }
@@ -616,6 +620,21 @@ mod tests {
         assert!(!state.running());
         assert_eq!(state.history().thinned(usize::MAX).count(), before + 1);
         assert!(state.simulation().time_secs() > 0.0);
+    }
+
+    /// A chain's eigenvalues are not measured from the run: its many modes
+    /// (the slowest with periods of minutes) are beyond a fit of two, and
+    /// the same run on two rods is measured.
+    #[test]
+    fn a_chain_s_eigenvalues_are_not_made_up_from_the_run() {
+        for (rods, measured) in [(2.0, true), (4.0, false)] {
+            let mut state = AppState::new(Settings::default()).unwrap();
+            state.set_parameter(Key::Rods, rods).unwrap();
+            for _ in 0..(40 * 60) {
+                state.advance(1.0 / 60.0);
+            }
+            assert_eq!(state.measured().is_some(), measured, "rods = {rods}");
+        }
     }
 
     /// A change of load mid-run restarts the measurement: the eigenvalues

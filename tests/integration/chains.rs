@@ -397,3 +397,90 @@ fn the_roller_chains_flutter_strongly_where_the_follower_chains_do() {
         assert!(past > 1e-3, "{roller_name}: {past}");
     }
 }
+
+/// The characteristic determinant of the continuous column with a tip mass
+/// (Pflueger's column) in the beam's units: `W'''' + p W'' - s W = 0` for
+/// the mode `w = W(x/L) e^{i omega t}` with `s = m omega^2 L^4 / EI`,
+/// clamped (`W = W' = 0` at 0), free of moment at the tip (`W'' = 0`), and
+/// the tip mass `M = chi m L` answering the shear (`W''' = -chi s W`; the
+/// follower force's transverse part cancels the axial force's there).
+fn pflueger_determinant(p: f64, s: f64, chi: f64) -> f64 {
+    let root = (p * p + 4.0 * s).sqrt();
+    let (a, b) = (f64::midpoint(p, root).sqrt(), ((root - p) / 2.0).sqrt());
+    let (ca, sa, cb, sb) = (a.cos(), a.sin(), b.cosh(), b.sinh());
+    // W = A cos(a x) + B sin(a x) + C cosh(b x) + D sinh(b x).
+    nalgebra::Matrix4::new(
+        1.0,
+        0.0,
+        1.0,
+        0.0,
+        0.0,
+        a,
+        0.0,
+        b,
+        -a * a * ca,
+        -a * a * sa,
+        b * b * cb,
+        b * b * sb,
+        a.powi(3) * sa + chi * s * ca,
+        -a.powi(3) * ca + chi * s * sa,
+        b.powi(3) * sb + chi * s * cb,
+        b.powi(3) * cb + chi * s * sb,
+    )
+    .determinant()
+}
+
+/// The continuous column's flutter load: the smallest `p` at which its two
+/// lowest frequencies meet and leave the real axis (fewer real roots `s`
+/// of the determinant below the third mode's), by bisection.
+fn continuous_flutter_load(chi: f64) -> f64 {
+    let real_roots = |p: f64| {
+        let samples: Vec<f64> = (1..=4000)
+            .map(|i| pflueger_determinant(p, 0.4 * f64::from(i), chi))
+            .collect();
+        samples
+            .windows(2)
+            .filter(|w| w[0].signum() != w[1].signum())
+            .count()
+    };
+    let unloaded = real_roots(0.0);
+    let (mut lo, mut hi) = (1.0, 25.0);
+    for _ in 0..40 {
+        let mid = 0.5 * (lo + hi);
+        if real_roots(mid) < unloaded {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// The chains converge to the continuous columns, solved here from their
+/// own characteristic equation: it gives Beck's 20.05 without a tip mass
+/// (Beck 1952), and with a tip mass of half the column's mass the chains
+/// of 16 and 32 rods (the error halving as N doubles) extrapolate to its
+/// flutter load to 0.05%.
+#[test]
+fn pflueger_s_chain_approaches_the_continuous_column() {
+    assert_close(continuous_flutter_load(0.0), 20.05, 1e-3);
+    let continuous = continuous_flutter_load(0.5);
+    let chain = |rods: u32| {
+        let n = f64::from(rods);
+        let (rods_set, tip_set) = (format!("rods={rods}"), format!("m_tip={}", 0.5 * n));
+        let model = model("pflueger", &[&rods_set, &tip_set]);
+        let first = transitions(&model, 40.0 / (n * n))[0];
+        assert_eq!(first.to, State::Flutter);
+        model.beck_load(first.load).unwrap()
+    };
+    let (coarse, fine) = (chain(16), chain(32));
+    let extrapolated = 2.0 * fine - coarse;
+    println!(
+        "Pflueger, M = m L / 2: chains {coarse}, {fine} -> {extrapolated}; continuous {continuous}"
+    );
+    assert!(
+        coarse < fine && fine < continuous,
+        "{coarse} {fine} {continuous}"
+    );
+    assert_close(extrapolated, continuous, 5e-4);
+}

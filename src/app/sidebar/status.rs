@@ -74,8 +74,12 @@ impl View for StatusSection {
                 z.im.abs()
             )),
             None => ui.label(
-                RichText::new("measured: after 20 s of small-amplitude motion (|φ| < 0.05 rad)")
-                    .small(),
+                RichText::new(if state.model().column.rods == 2 {
+                    "measured: after 20 s of small-amplitude motion (|φ| < 0.05 rad)"
+                } else {
+                    "measured: for two rods only (a chain's many slow modes need a longer run than a fit can use)"
+                })
+                .small(),
             ),
         };
         if weak {
