@@ -57,13 +57,8 @@ fn push_trail(trail: &mut VecDeque<(f64, [f64; 2])>, now: &Observables) {
     }
 }
 
-/// What the user is told when rapier cannot integrate the column: why, and
-/// that the reference engine took over.
-fn switched_to_reference() -> Notice {
-    Notice::warning(
-        "the column is too stiff for the rapier engine at its 1/240 s step (huge damping or stiffness against little mass); switched to the reference engine",
-    )
-}
+/// What the user is told when rapier cannot integrate the column.
+const SWITCHED_TO_REFERENCE: &str = "the column is too stiff for the rapier engine at its 1/240 s step (huge damping or stiffness against little mass); switched to the reference engine";
 
 /// A run of the settings' model from the standard kick. When rapier cannot
 /// integrate it the reference engine runs instead, the settings say so, and
@@ -73,10 +68,10 @@ fn start(settings: &mut Settings) -> Result<(Simulation, Option<Notice>), SimErr
     let x0 = initial_state(&model, 1e-3);
     match Simulation::new(model, settings.engine, x0.clone(), DEFAULT_STEP_SECS) {
         Ok(sim) => Ok((sim, None)),
-        Err(error) if error.reference_runs_it() => {
+        Err(SimError::TooStiffForRapier { .. }) => {
             settings.engine = EngineKind::Reference;
             Simulation::new(model, EngineKind::Reference, x0, DEFAULT_STEP_SECS)
-                .map(|sim| (sim, Some(switched_to_reference())))
+                .map(|sim| (sim, Some(Notice::warning(SWITCHED_TO_REFERENCE))))
         }
         Err(error) => Err(error),
     }
@@ -348,7 +343,7 @@ impl AppState {
     pub fn set_model(&mut self, model: Model) {
         let rods_before = self.sim.model().column.rods;
         let result = match self.sim.set_model(model) {
-            Err(error) if error.reference_runs_it() => {
+            Err(SimError::TooStiffForRapier { .. }) => {
                 // rapier cannot follow: the reference engine takes over, and says so.
                 let state = self.sim.state();
                 let switched = self
@@ -357,7 +352,7 @@ impl AppState {
                     .and_then(|()| self.sim.set_model(model));
                 if switched.is_ok() {
                     self.settings.engine = EngineKind::Reference;
-                    self.say(switched_to_reference());
+                    self.say(Notice::warning(SWITCHED_TO_REFERENCE));
                 }
                 switched
             }

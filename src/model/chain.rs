@@ -2,15 +2,11 @@
 //! (follower, partial, dead or the roller), with the joints' springs and
 //! dampers and the drag along the rods: state in, state derivative out.
 
-use nalgebra::{DMatrix, DVector, Vector2};
+use nalgebra::{Cholesky, DMatrix, DVector, Dyn, Matrix2, Vector2};
 
-use super::dynamics::{StateVec, joint_torques_nm, rods_drag, slaved_spin_rate, tip_load};
+use super::dynamics::{StateVec, joint_torques_nm, normal, rods_drag, slaved_spin_rate, tip_load};
 use super::linear::chain_mass_matrix;
 use super::params::{Column, Model};
-
-fn normal(angle_rad: f64) -> Vector2<f64> {
-    Vector2::new(-angle_rad.sin(), angle_rad.cos())
-}
 
 /// The rods' angles and rates of a chain's state.
 fn angles_and_rates(column: &Column, x: &StateVec) -> (Vec<f64>, Vec<f64>) {
@@ -45,35 +41,26 @@ fn joint_and_drag_forces(column: &Column, x: &StateVec, phi: &[f64], rate: &[f64
     q
 }
 
-/// The chain's mass matrix in state `x`: `M(phi)_jk = mu_jk cos(phi_j - phi_k)`
-/// with `mu` the mass matrix at rest (every point's velocity is
-/// `sum_j c_j phi_j' t_j`, and `t_j . t_k = cos(phi_j - phi_k)`).
-#[must_use]
-pub fn chain_mass_at(model: &Model, angles_rad: &[f64]) -> DMatrix<f64> {
-    mass_at(&chain_mass_matrix(model), angles_rad)
-}
-
-fn mass_at(mu: &DMatrix<f64>, phi: &[f64]) -> DMatrix<f64> {
-    DMatrix::from_fn(phi.len(), phi.len(), |j, k| {
-        mu[(j, k)] * (phi[j] - phi[k]).cos()
-    })
-}
-
-/// The rods' angular accelerations from Lagrange's equations
+/// Lagrange's equations of the chain in state `x`
 ///
 /// ```text
 /// sum_k mu_jk [cos(phi_j - phi_k) phi_k'' + sin(phi_j - phi_k) phi_k'^2] = Q_j
 /// ```
 ///
-/// with `Q` the springs, dampers and drag plus `tip_q`, the tip load's
-/// generalized forces on the rods. `None` for a mass matrix that cannot be
-/// factored.
-#[must_use]
-pub fn rod_accelerations(model: &Model, x: &StateVec, tip_q: &[f64]) -> Option<DVector<f64>> {
+/// as the factored mass matrix `M(phi)_jk = mu_jk cos(phi_j - phi_k)` (`mu`
+/// the mass matrix at rest: every point's velocity is `sum_j c_j phi_j' t_j`,
+/// and `t_j . t_k = cos(phi_j - phi_k)`) and the right side, with `Q` the
+/// springs, dampers and drag plus `tip_q`, the tip load's generalized forces
+/// on the rods. `None` for a mass matrix that cannot be factored.
+fn lagrange(
+    model: &Model,
+    x: &StateVec,
+    tip_q: &[f64],
+) -> Option<(Cholesky<f64, Dyn>, DVector<f64>)> {
     let (phi, rate) = angles_and_rates(&model.column, x);
     let n = phi.len();
     let mu = chain_mass_matrix(model);
-    let mass = mass_at(&mu, &phi);
+    let mass = DMatrix::from_fn(n, n, |j, k| mu[(j, k)] * (phi[j] - phi[k]).cos());
     let q = joint_and_drag_forces(&model.column, x, &phi, &rate);
     let rhs = DVector::from_fn(n, |j, _| {
         q[j] + tip_q[j]
@@ -81,7 +68,36 @@ pub fn rod_accelerations(model: &Model, x: &StateVec, tip_q: &[f64]) -> Option<D
                 .map(|k| mu[(j, k)] * (phi[j] - phi[k]).sin() * rate[k] * rate[k])
                 .sum::<f64>()
     });
-    Some(mass.cholesky()?.solve(&rhs))
+    Some((mass.cholesky()?, rhs))
+}
+
+/// The rods' angular accelerations from Lagrange's equations (see
+/// [`lagrange`]) under the tip load's generalized forces `tip_q`. `None`
+/// for a mass matrix that cannot be factored.
+fn rod_accelerations(model: &Model, x: &StateVec, tip_q: &[f64]) -> Option<DVector<f64>> {
+    let (factor, rhs) = lagrange(model, x, tip_q)?;
+    Some(factor.solve(&rhs))
+}
+
+/// How the tip answers a force there, from one factorization of the mass
+/// matrix: the mobility `J M(phi)^-1 J^T` (the change of the tip's velocity
+/// per unit impulse, `J = [l_i t_i]` the tip's Jacobian) and the rods'
+/// accelerations without the tip load. `None` for a mass matrix that cannot
+/// be factored.
+#[must_use]
+pub fn tip_mobility(model: &Model, x: &StateVec) -> Option<(Matrix2<f64>, DVector<f64>)> {
+    let column = &model.column;
+    let n = column.rods;
+    let (factor, rhs) = lagrange(model, x, &vec![0.0; n])?;
+    let jacobian = DMatrix::from_fn(2, n, |row, i| column.rod(i).length_m * normal(x[i])[row]);
+    let product = &jacobian * factor.solve(&jacobian.transpose());
+    let mobility = Matrix2::new(
+        product[(0, 0)],
+        product[(0, 1)],
+        product[(1, 0)],
+        product[(1, 1)],
+    );
+    Some((mobility, factor.solve(&rhs)))
 }
 
 /// The state derivative of a chain of any length under any tip load. The

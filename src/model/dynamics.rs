@@ -1,9 +1,9 @@
 //! The full nonlinear equations of motion (physics.md section 3) as a pure
 //! function state -> state derivative, with the roller's Coulomb friction.
 
-use nalgebra::{DMatrix, DVector, Matrix2, Vector2};
+use nalgebra::{DVector, Matrix2, Vector2};
 
-use super::chain::{chain_derivative, chain_energy_j, chain_mass_at, rod_accelerations};
+use super::chain::{chain_derivative, chain_energy_j, tip_mobility};
 use super::params::{Column, Load, Model, Roller};
 
 /// `(phi_1 .. phi_N, psi, phi_1' .. phi_N', psi')` in rad and rad/s: for
@@ -44,11 +44,15 @@ pub struct Friction {
     pub regularized: bool,
 }
 
-fn unit(angle_rad: f64) -> Vector2<f64> {
+/// The unit vector `e` along a rod at `angle_rad`.
+#[must_use]
+pub fn unit(angle_rad: f64) -> Vector2<f64> {
     Vector2::new(angle_rad.cos(), angle_rad.sin())
 }
 
-fn normal(angle_rad: f64) -> Vector2<f64> {
+/// The unit normal `t` of a rod at `angle_rad` (`e` turned a quarter left).
+#[must_use]
+pub fn normal(angle_rad: f64) -> Vector2<f64> {
     Vector2::new(-angle_rad.sin(), angle_rad.cos())
 }
 
@@ -206,8 +210,7 @@ pub fn rods_drag(column: &Column, angles_rad: &[f64], rates_rad_per_s: &[f64]) -
 
 /// The generalized forces of the drag on `(phi1, phi2)`: each rod's moment
 /// about its joint, and rod 2's force working through rod 1's swing.
-#[must_use]
-pub fn drag_generalized_n_m(column: &Column, x: &StateVec) -> [f64; 2] {
+fn drag_generalized_n_m(column: &Column, x: &StateVec) -> [f64; 2] {
     if column.drag_ns_per_m2 == 0.0 {
         return [0.0, 0.0];
     }
@@ -317,26 +320,9 @@ pub struct TipResponse {
 /// that is solved implicitly with the rods' motion).
 #[must_use]
 pub fn tip_response(model: &Model, x: &StateVec, dt: f64) -> TipResponse {
-    let column = &model.column;
-    let n = column.rods;
-    let angles: Vec<f64> = x.rows(0, n).iter().copied().collect();
-    let jacobian = DMatrix::from_fn(2, n, |row, i| {
-        column.rod(i).length_m * normal(angles[i])[row]
-    });
-    let mobility = chain_mass_at(model, &angles)
-        .cholesky()
-        .map_or_else(Matrix2::zeros, |factor| {
-            let solved = factor.solve(&jacobian.transpose());
-            let product = &jacobian * solved;
-            Matrix2::new(
-                product[(0, 0)],
-                product[(0, 1)],
-                product[(1, 0)],
-                product[(1, 1)],
-            )
-        });
-    let free = rod_accelerations(model, x, &vec![0.0; n])
-        .unwrap_or_else(|| DVector::from_element(n, f64::NAN));
+    let n = model.column.rods;
+    let (mobility, free) = tip_mobility(model, x)
+        .unwrap_or_else(|| (Matrix2::zeros(), DVector::from_element(n, f64::NAN)));
     TipResponse {
         mobility,
         free_rates: (0..n).map(|i| x[n + 1 + i] + dt * free[i]).collect(),

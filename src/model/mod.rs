@@ -16,11 +16,11 @@ mod presets;
 
 pub use crate::format::Shown;
 pub use axis::{Axis, DAMPER_RATIO, DAMPING_LEVEL, MASS_RATIO};
-pub use chain::{chain_derivative, chain_energy_j, chain_mass_at, rod_accelerations};
+pub use chain::{chain_derivative, chain_energy_j, tip_mobility};
 pub use dynamics::{
-    Friction, RodDrag, SLIP_REGULARIZATION_M_PER_S, StateVec, TipLoad, TipResponse,
-    drag_generalized_n_m, energy_j, friction, joint_torques_nm, joints_m, rest_state, rods_drag,
-    state_derivative, tip_load, tip_m, tip_response,
+    Friction, RodDrag, SLIP_REGULARIZATION_M_PER_S, StateVec, TipLoad, TipResponse, energy_j,
+    friction, joint_torques_nm, joints_m, normal, rest_state, rods_drag, state_derivative,
+    tip_load, tip_m, tip_response, unit,
 };
 pub use keys::{Assignment, KEYS, Key, KeySpec, apply_assignments, parse_assignment};
 pub use linear::{LinearModel, chain_mass_matrix, joint_matrices, linearize};

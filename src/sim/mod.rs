@@ -128,12 +128,6 @@ pub enum SimError {
 const CHAIN_CHANGE_PERTURBATION_RAD: f64 = 1e-3;
 
 impl SimError {
-    /// Whether the reference engine runs what rapier refused here.
-    #[must_use]
-    pub fn reference_runs_it(&self) -> bool {
-        matches!(self, Self::TooStiffForRapier { .. })
-    }
-
     /// The parameter (or argument) the error is about, when it is about one.
     #[must_use]
     pub fn parameter(&self) -> Option<&str> {

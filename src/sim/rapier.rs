@@ -9,7 +9,7 @@ use rapier2d::prelude::*;
 
 use crate::model::{
     Column, Load, Model, Roller, SLIP_REGULARIZATION_M_PER_S, StateVec, TipResponse, friction,
-    joint_torques_nm, joints_m, rods_drag, tip_load, tip_response,
+    joint_torques_nm, joints_m, normal, rods_drag, tip_load, tip_response, unit,
 };
 
 /// The rapier world of one column, and the roller's spin (f64, ours).
@@ -42,14 +42,6 @@ fn f32_of(v: f64) -> f32 {
 
 fn vec2(x: f64, y: f64) -> Vector {
     Vector::new(f32_of(x), f32_of(y))
-}
-
-fn unit(angle_rad: f64) -> Vector2<f64> {
-    Vector2::new(angle_rad.cos(), angle_rad.sin())
-}
-
-fn normal(angle_rad: f64) -> Vector2<f64> {
-    Vector2::new(-angle_rad.sin(), angle_rad.cos())
 }
 
 /// Mass properties of the last rod with the tip mass and the roller at its

@@ -28,6 +28,20 @@ fn angles(model: &Model, engine: EngineKind, kick_rad: f64, duration_secs: f64) 
     out
 }
 
+/// The largest difference of any rod's angle between rapier's run and the
+/// reference engine's over 30 s from a `kick_rad` kick, relative to the
+/// reference's largest angle; printed (run with --nocapture).
+fn rapier_gap(model: &Model, label: &str, kick_rad: f64) -> f64 {
+    let reference = angles(model, EngineKind::Reference, kick_rad, 30.0);
+    let rapier = angles(model, EngineKind::Rapier, kick_rad, 30.0);
+    let gap = largest_gap(&reference, &rapier);
+    println!(
+        "{label}: rapier within {:.3}% of the reference",
+        100.0 * gap
+    );
+    gap
+}
+
 /// The largest difference of any rod's angle between two runs, relative to
 /// the largest angle of the first.
 fn largest_gap(a: &[Vec<f64>], b: &[Vec<f64>]) -> f64 {
@@ -81,14 +95,7 @@ fn the_engines_agree_on_a_chain_of_four() {
         (&["rods=4", "load=1.1"][..], 1e-3),
         (&["rods=4", "load=0", "c2=0.02"][..], 0.3),
     ] {
-        let chain = model("uniform-rods", sets);
-        let reference = angles(&chain, EngineKind::Reference, kick_rad, 30.0);
-        let rapier = angles(&chain, EngineKind::Rapier, kick_rad, 30.0);
-        let gap = largest_gap(&reference, &rapier);
-        println!(
-            "{sets:?}: rapier within {:.3}% of the reference",
-            100.0 * gap
-        );
+        let gap = rapier_gap(&model("uniform-rods", sets), &format!("{sets:?}"), kick_rad);
         assert!(gap < 0.01, "{sets:?}: {gap}");
     }
 }
@@ -100,13 +107,7 @@ fn the_engines_agree_on_a_chain_of_four() {
 fn the_engines_agree_on_a_roller_at_the_end_of_a_chain() {
     for load in ["load=0.5", "load=1.5"] {
         let chain = model("roller", &["rods=4", load]);
-        let reference = angles(&chain, EngineKind::Reference, 1e-3, 30.0);
-        let rapier = angles(&chain, EngineKind::Rapier, 1e-3, 30.0);
-        let gap = largest_gap(&reference, &rapier);
-        println!(
-            "roller, 4 rods, {load}: rapier within {:.3}% of the reference",
-            100.0 * gap
-        );
+        let gap = rapier_gap(&chain, &format!("roller, 4 rods, {load}"), 1e-3);
         assert!(gap < 0.02, "{load}: {gap}");
     }
 }
