@@ -78,13 +78,63 @@ pub struct Report {
     pub numpy_eig_us_per_pencil: Option<f64>,
     /// `numpy_eig_us_per_pencil / locus_us_per_load`.
     pub locus_speedup_vs_numpy: Option<f64>,
+    /// The real window (the default launch, the default renderer) at
+    /// 1280x800, repainted continuously: frames drawn per second, drawing
+    /// and buffer swap included (null without a display, or when skipped).
+    pub window_fps: Option<f64>,
+    /// The same window's frame interval: 99th percentile, ms.
+    pub window_frame_ms_p99: Option<f64>,
+    /// The window at 1920x1080: frames drawn per second.
+    pub window_fps_1920x1080: Option<f64>,
+    /// The window at 1920x1080: frame interval, 99th percentile, ms.
+    pub window_frame_ms_p99_1920x1080: Option<f64>,
 }
 
-/// Runs every measurement; `frames` frames are timed.
+/// Frames timed in each real window.
+pub const WINDOW_FRAMES: usize = 240;
+
+/// Frames per second and the p99 frame interval (ms) of the default launch
+/// in a real window of `size` points drawn by `renderer`; `None` when there
+/// is no display to open it on.
 ///
 /// # Errors
-/// A preset or a computation that fails (none should).
-pub fn run(frames: usize) -> Result<Report> {
+/// A display that is there but gives no window or graphics context.
+pub fn window_figures(
+    renderer: crate::app::Renderer,
+    size: [f32; 2],
+    frames: usize,
+) -> Result<Option<(f64, f64)>> {
+    let has_display = ["DISPLAY", "WAYLAND_DISPLAY"]
+        .iter()
+        .any(|var| std::env::var_os(var).is_some_and(|v| !v.is_empty()));
+    if !has_display {
+        return Ok(None);
+    }
+    let timed = crate::app::time_window_frames(renderer, size, frames)
+        .map_err(|why| anyhow::anyhow!("the timed window: {why}"))?;
+    let total_secs: f64 = timed.intervals_ms.iter().sum::<f64>() / 1e3;
+    Ok(Some((
+        timed.intervals_ms.len() as f64 / total_secs,
+        quantile(&timed.intervals_ms, 0.99),
+    )))
+}
+
+/// Runs every measurement; `frames` frames are timed headless, and the real
+/// window is timed too when `window` is set and there is a display.
+///
+/// # Errors
+/// A preset or a computation that fails (none should), or a display that
+/// gives no window.
+pub fn run(frames: usize, window: bool) -> Result<Report> {
+    let (small, large) = if window {
+        let renderer = crate::app::Renderer::default();
+        (
+            window_figures(renderer, FRAME_SIZE, WINDOW_FRAMES)?,
+            window_figures(renderer, [1920.0, 1080.0], WINDOW_FRAMES)?,
+        )
+    } else {
+        (None, None)
+    };
     let roller = pencil(PresetId::Roller)?;
     let midpoint = pencil(PresetId::MidpointMasses)?;
     let frame_ms = frame_times_ms(frames, Tab::Locus)?;
@@ -109,6 +159,10 @@ pub fn run(frames: usize) -> Result<Report> {
         map_ms: map_ms()?,
         numpy_eig_us_per_pencil: numpy_us,
         locus_speedup_vs_numpy: numpy_us.map(|numpy| numpy / locus_us),
+        window_fps: small.map(|(fps, _)| fps),
+        window_frame_ms_p99: small.map(|(_, p99)| p99),
+        window_fps_1920x1080: large.map(|(fps, _)| fps),
+        window_frame_ms_p99_1920x1080: large.map(|(_, p99)| p99),
     })
 }
 

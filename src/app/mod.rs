@@ -24,6 +24,7 @@ mod stored;
 mod stored_model;
 mod tabs;
 mod theme;
+mod window;
 
 use eframe::egui::{self, vec2};
 
@@ -38,6 +39,7 @@ pub use pace::{MAX_FRAME_SECS, MAX_STEPS_PER_FRAME};
 pub use state::{AppState, LOAD_MAX_P, Settings, load_max_p};
 pub use tabs::Tab;
 pub use tabs::map::map_picture;
+pub use window::{Renderer, WindowFrames, run, time_window_frames};
 
 /// The key the settings are stored under.
 const SETTINGS_KEY: &str = "zieglerlab-settings";
@@ -82,6 +84,9 @@ pub struct ZieglerApp {
     /// When the window's last frame began (the headless paths never set it:
     /// their frames advance by fixed, given times).
     last_frame: Option<std::time::Instant>,
+    /// Whether what draws the frames clears them to the panels' colour
+    /// first (the window; a headless picture starts transparent).
+    cleared_to_panel_fill: bool,
 }
 
 impl ZieglerApp {
@@ -105,6 +110,7 @@ impl ZieglerApp {
             record_choice: recorder::RecordChoice::default(),
             recorder: recorder::Recorder::default(),
             last_frame: None,
+            cleared_to_panel_fill: false,
         }
     }
 
@@ -223,6 +229,17 @@ impl ZieglerApp {
         theme
     }
 
+    /// `frame` without its fill where the window has already cleared to the
+    /// panels' colour (each fill would cover the window once more: on a
+    /// CPU renderer that is a third of the frame's pixels).
+    fn panel_frame(&self, frame: egui::Frame) -> egui::Frame {
+        if self.cleared_to_panel_fill {
+            frame.fill(egui::Color32::TRANSPARENT)
+        } else {
+            frame
+        }
+    }
+
     /// The whole window's contents. Reads the state; the simulation advances
     /// only in [`ZieglerApp::advance`], so a picture depends on the state alone.
     pub fn contents_ui(&mut self, ui: &mut egui::Ui) {
@@ -245,12 +262,15 @@ impl ZieglerApp {
             self.tab = Tab::default();
             self.scene = scene::SceneView::default();
         }
+        let style = ui.style().clone();
         egui::Panel::bottom("status line")
+            .frame(self.panel_frame(egui::Frame::side_top_panel(&style)))
             .exact_size(1.6 * theme.text_size + 8.0)
             .show(ui, |ui| {
                 sidebar::status_line_ui(ui, &mut self.state, &theme);
             });
         egui::Panel::left("controls")
+            .frame(self.panel_frame(egui::Frame::side_top_panel(&style)))
             .resizable(false)
             .exact_size(320.0)
             .show(ui, |ui| {
@@ -259,27 +279,29 @@ impl ZieglerApp {
                     recorder::record_ui(ui, &mut self.record_choice, &mut self.recorder);
                 });
             });
-        egui::CentralPanel::default().show(ui, |ui| {
-            let height = ui.available_height();
-            // In front of a class the scene gets most of the height.
-            let scene_share = if self.state.settings().projector {
-                0.6
-            } else {
-                0.5
-            };
-            ui.allocate_ui(vec2(ui.available_width(), scene_share * height), |ui| {
-                scene::scene_ui(ui, &mut self.state, &mut self.scene, &theme);
-            });
-            load_bar::load_bar_ui(ui, &mut self.state, &theme);
-            tabs::Tabs::bar_ui(ui, &mut self.tab);
-            if ui.available_height() < MIN_PLOT_HEIGHT * theme.text_size / 14.0 {
-                ui.weak(
+        egui::CentralPanel::default()
+            .frame(self.panel_frame(egui::Frame::central_panel(&style)))
+            .show(ui, |ui| {
+                let height = ui.available_height();
+                // In front of a class the scene gets most of the height.
+                let scene_share = if self.state.settings().projector {
+                    0.6
+                } else {
+                    0.5
+                };
+                ui.allocate_ui(vec2(ui.available_width(), scene_share * height), |ui| {
+                    scene::scene_ui(ui, &mut self.state, &mut self.scene, &theme);
+                });
+                load_bar::load_bar_ui(ui, &mut self.state, &theme);
+                tabs::Tabs::bar_ui(ui, &mut self.tab);
+                if ui.available_height() < MIN_PLOT_HEIGHT * theme.text_size / 14.0 {
+                    ui.weak(
                     "The plots need more room here: a taller window, or projector mode off (P).",
                 );
-            } else {
-                self.tabs.view(self.tab).ui(ui, &mut self.state, &theme);
-            }
-        });
+                } else {
+                    self.tabs.view(self.tab).ui(ui, &mut self.state, &theme);
+                }
+            });
     }
 
     /// One panel alone (for snapshots and figures).
@@ -324,6 +346,10 @@ impl eframe::App for ZieglerApp {
         self.contents_ui(ui);
     }
 
+    fn clear_color(&self, visuals: &egui::Visuals) -> [f32; 4] {
+        visuals.panel_fill.to_normalized_gamma_f32()
+    }
+
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         match ron::to_string(self.state.settings()) {
             Ok(text) => storage.set_string(SETTINGS_KEY, text),
@@ -338,35 +364,4 @@ impl eframe::App for ZieglerApp {
                 .say(Notice::error(format!("window layout not saved: {error}"))),
         }
     }
-}
-
-/// Opens the app window.
-///
-/// # Errors
-/// When no window or graphics context can be created.
-pub fn run() -> eframe::Result {
-    // eframe restores its own entries (zoom, window) before any of ours runs:
-    // they are checked first, so a bad one cannot crash every launch.
-    let notice = eframe::storage_dir(APP_ID)
-        .map(|dir| dir.join("app.ron"))
-        .and_then(|path| store_check::check_stored_file(&path));
-    let options = eframe::NativeOptions {
-        viewport: egui::ViewportBuilder::default()
-            .with_title("zieglerlab")
-            .with_inner_size([1280.0, 800.0])
-            .with_min_inner_size([1024.0, 700.0]),
-        ..Default::default()
-    };
-    eframe::run_native(
-        APP_ID,
-        options,
-        Box::new(move |cc| {
-            let mut app = ZieglerApp::from_storage(cc.storage);
-            app.state.analyse_in_background();
-            if let Some(notice) = notice {
-                app.state.tell(Notice::warning(notice));
-            }
-            Ok(Box::new(app))
-        }),
-    )
 }

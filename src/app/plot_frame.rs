@@ -3,7 +3,7 @@
 //! and pan, and a refit when what the plots show changes).
 
 use eframe::egui::{self, Color32, Sense, Stroke, WidgetText, vec2};
-use egui_plot::{AxisHints, GridInput, GridMark, Plot};
+use egui_plot::{AxisHints, GridInput, GridMark, Plot, PlotPoint, PlotPoints, PlotUi};
 
 use crate::format::tick_text;
 
@@ -18,6 +18,89 @@ const Y_LABEL_SPACING: std::ops::RangeInclusive<f32> = 22.0..=30.0;
 /// above which they are fully drawn (the plot crate's default starts at 8:
 /// a line every 8 points is texture, not a scale, and costs a frame time).
 const GRID_SPACING: std::ops::RangeInclusive<f32> = 16.0..=300.0;
+
+/// A curve is drawn through a subset of its points that stays within this
+/// distance on screen of every point left out (a tenth of the thinnest
+/// line's width, far below what an eye resolves): a smooth branch a few
+/// hundred pixels long then costs tens of segments, not hundreds, which a
+/// CPU renderer pays for on every frame.
+pub const CURVE_TOLERANCE_PX: f32 = 0.15;
+
+/// The points of a curve as drawn in `plot_ui`'s current view, simplified
+/// (Ramer-Douglas-Peucker) so that no point left out lies farther than
+/// [`CURVE_TOLERANCE_PX`] from the polyline drawn. In pixels of the view in
+/// use: zooming in brings the detail back.
+pub fn thinned(
+    plot_ui: &PlotUi<'_>,
+    points: impl IntoIterator<Item = [f64; 2]>,
+) -> PlotPoints<'static> {
+    let transform = plot_ui.transform();
+    let points: Vec<[f64; 2]> = points.into_iter().collect();
+    let screen: Vec<egui::Pos2> = points
+        .iter()
+        .map(|&[x, y]| transform.position_from_point(&PlotPoint::new(x, y)))
+        .collect();
+    let keep = simplified(&screen, CURVE_TOLERANCE_PX);
+    PlotPoints::from(
+        points
+            .into_iter()
+            .zip(keep)
+            .filter_map(|(point, keep)| keep.then_some(point))
+            .collect::<Vec<_>>(),
+    )
+}
+
+/// Which points of the polyline `points` to keep so that every other one
+/// lies within `tolerance` of the kept polyline (Ramer-Douglas-Peucker; the
+/// ends are always kept, and a point that is not finite splits the curve).
+#[must_use]
+pub fn simplified(points: &[egui::Pos2], tolerance: f32) -> Vec<bool> {
+    let mut keep = vec![false; points.len()];
+    let finite = |p: &egui::Pos2| p.x.is_finite() && p.y.is_finite();
+    let mut start = 0;
+    while start < points.len() {
+        if !finite(&points[start]) {
+            start += 1;
+            continue;
+        }
+        let end = (start..points.len())
+            .find(|&i| !finite(&points[i]))
+            .unwrap_or(points.len());
+        keep[start] = true;
+        keep[end - 1] = true;
+        let mut stack = vec![(start, end - 1)];
+        while let Some((a, b)) = stack.pop() {
+            if b <= a + 1 {
+                continue;
+            }
+            let (pa, pb) = (points[a], points[b]);
+            let farthest = (a + 1..b)
+                .map(|i| (i, distance_to_segment(points[i], pa, pb)))
+                .max_by(|x, y| x.1.total_cmp(&y.1));
+            if let Some((i, distance)) = farthest
+                && distance > tolerance
+            {
+                keep[i] = true;
+                stack.push((a, i));
+                stack.push((i, b));
+            }
+        }
+        start = end;
+    }
+    keep
+}
+
+/// The distance from `p` to the segment from `a` to `b`.
+fn distance_to_segment(p: egui::Pos2, a: egui::Pos2, b: egui::Pos2) -> f32 {
+    let ab = b - a;
+    let length_sq = ab.length_sq();
+    let t = if length_sq > 0.0 {
+        ((p - a).dot(ab) / length_sq).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    p.distance(a + t * ab)
+}
 
 /// How to move about in a plot (the plot crate's bindings).
 pub const VIEW_HINT: &str = "drag: pan · Ctrl+scroll: zoom · double-click: fit";

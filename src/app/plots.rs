@@ -6,7 +6,7 @@ use eframe::egui::{self, vec2};
 use egui_plot::{Line, Plot, PlotPoints, Points, Span, VLine};
 
 use super::history::History;
-use super::plot_frame::{Swatch, axes, legend_row, refit_if};
+use super::plot_frame::{Swatch, axes, legend_row, refit_if, thinned};
 use super::state::Overlay;
 use super::theme::{Theme, load_color};
 use crate::analysis::{C64, Locus, State};
@@ -73,7 +73,7 @@ pub fn root_locus_ui(
         );
         if let Some(other) = overlay {
             for branch in &other.locus.branches {
-                let points: PlotPoints<'_> = branch.iter().map(|z| [z.re, z.im]).collect();
+                let points = thinned(plot_ui, branch.iter().map(|z| [z.re, z.im]));
                 plot_ui.line(
                     Line::new("", points)
                         .color(theme.overlay)
@@ -93,10 +93,10 @@ pub fn root_locus_ui(
                     continue;
                 }
                 let (i0, i1) = (shown[k0], shown[k1]);
-                let points: PlotPoints<'_> = shown[k0..=k1]
-                    .iter()
-                    .map(|&i| [branch[i].re, branch[i].im])
-                    .collect();
+                let points = thinned(
+                    plot_ui,
+                    shown[k0..=k1].iter().map(|&i| [branch[i].re, branch[i].im]),
+                );
                 let mid = 0.5 * (locus.loads[i0] + locus.loads[i1]);
                 plot_ui.line(
                     Line::new("", points)
@@ -177,13 +177,13 @@ pub fn versus_load_ui(
         for (shown, color) in layers {
             let samples = drawn_samples(shown);
             for branch in &shown.branches {
-                let points: PlotPoints<'_> = samples
-                    .iter()
-                    .map(|&i| {
+                let points = thinned(
+                    plot_ui,
+                    samples.iter().map(|&i| {
                         let z = branch[i];
                         [shown.loads[i], if imaginary { z.im } else { z.re }]
-                    })
-                    .collect();
+                    }),
+                );
                 plot_ui.line(
                     Line::new("", points)
                         .color(color)

@@ -218,7 +218,12 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View) {
     } = *input;
     let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::hover());
     let rect = response.rect;
-    painter.rect_filled(rect, 0.0, theme.background);
+    let painter = painter.with_clip_rect(rect.intersect(painter.clip_rect()));
+    // The band covers the whole picture where there is one: a background
+    // under it would only cost a CPU renderer a third of the scene's pixels.
+    if model.roller().is_none() {
+        painter.rect_filled(rect, 0.0, theme.background);
+    }
     let reach = model.column.reach_m();
     // The camera's box, with equal scales on both axes, centred.
     let margin = 0.12 * reach;
@@ -499,7 +504,10 @@ fn band(
     let x1 = f64::from(corner_a.x.max(corner_b.x)).max(reach + margin);
     let y0 = f64::from(corner_a.y.min(corner_b.y)).min(-reach - 0.5 * margin);
     let y1 = f64::from(corner_a.y.max(corner_b.y)).max(reach + 0.5 * margin);
-    painter.rect_filled(Rect::from_two_pos(to(x0, y0), to(x1, y1)), 0.0, theme.band);
+    // A pixel beyond the picture on every side (clipped): its edge is never
+    // blended with what lies outside.
+    let covered = Rect::from_two_pos(to(x0, y0), to(x1, y1)).union(rect.expand(1.0));
+    painter.rect_filled(covered, 0.0, theme.band);
     let spacing = 0.08 * reach;
     let offset = (-speed_m_per_s * t_secs).rem_euclid(spacing);
     let mut x = x0 + offset;

@@ -9,6 +9,8 @@ use clap::ValueEnum;
 
 use zieglerlab::app::{Panel, Tab, ZieglerApp};
 
+use super::tiles::TiledRenderer;
+
 #[derive(Clone, Copy, Debug, ValueEnum)]
 pub enum PanelArg {
     Window,
@@ -106,7 +108,7 @@ pub fn render_frames(
     std::panic::set_hook(Box::new(|_| {}));
     let rendered = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
         let mut harness = egui_kittest::Harness::builder()
-            .wgpu()
+            .renderer(TiledRenderer::new())
             .with_size([width / scale, height / scale])
             .with_pixels_per_point(scale)
             .build_ui_state(|ui, app: &mut ZieglerApp| app.panel_ui(ui, panel), app);
@@ -167,7 +169,7 @@ enum Failure {
 /// names the packages that provide one.
 fn failure_message(failure: &Failure, width: f32, height: f32) -> String {
     match failure {
-        Failure::Drawing(error) if error.to_lowercase().contains("timeout") => format!(
+        Failure::Drawing(error) if timed_out(error) => format!(
             "rendering timed out ({error}): Mesa's CPU renderer needs more time for a {width}x{height} picture on this machine; try a smaller --size or run it again when the machine is less busy"
         ),
         Failure::Drawing(error) => format!("rendering failed: {error}"),
@@ -175,6 +177,13 @@ fn failure_message(failure: &Failure, width: f32, height: f32) -> String {
             "rendering failed ({what}); if no renderer could be created (a GPU, or Mesa's CPU GL: Debian packages libegl1 libegl-mesa0 libgl1-mesa-dri)"
         ),
     }
+}
+
+/// Whether a renderer's error says that it waited too long (wgpu says
+/// "timed out", other layers "timeout").
+fn timed_out(error: &str) -> bool {
+    let error = error.to_lowercase();
+    error.contains("timeout") || error.contains("timed out")
 }
 
 #[cfg(test)]
@@ -194,6 +203,16 @@ mod tests {
         assert!(timeout.contains("4096x4096"), "{timeout}");
         assert!(timeout.contains("smaller --size"), "{timeout}");
         assert!(!timeout.contains("Mesa's CPU GL: Debian"), "{timeout}");
+        // wgpu's own words for it.
+        let wgpu = failure_message(
+            &Failure::Drawing(
+                "PollError: The requested Wait timed out before the submission was completed."
+                    .to_owned(),
+            ),
+            8192.0,
+            8192.0,
+        );
+        assert!(wgpu.starts_with("rendering timed out"), "{wgpu}");
         let other = failure_message(&Failure::Drawing("lost device".to_owned()), 64.0, 64.0);
         assert_eq!(other, "rendering failed: lost device");
         let missing = failure_message(&Failure::NoRenderer("no adapter".to_owned()), 1280.0, 800.0);

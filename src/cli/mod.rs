@@ -13,6 +13,7 @@ mod presets;
 mod record;
 mod simulate;
 mod snapshot;
+mod tiles;
 
 use std::process::ExitCode;
 
@@ -35,6 +36,49 @@ const LOAD_AXIS: &str = "p = P l/k";
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
+    /// What draws the window: glow (OpenGL, the default: five times the
+    /// frames of wgpu on a machine without a GPU) or wgpu. Also read from
+    /// the environment variable `ZIEGLERLAB_RENDERER`; the flag wins.
+    #[arg(long, value_enum)]
+    renderer: Option<RendererArg>,
+}
+
+/// The environment variable that chooses the window's renderer.
+const RENDERER_VAR: &str = "ZIEGLERLAB_RENDERER";
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum RendererArg {
+    Glow,
+    Wgpu,
+}
+
+impl From<RendererArg> for zieglerlab::app::Renderer {
+    fn from(renderer: RendererArg) -> Self {
+        match renderer {
+            RendererArg::Glow => Self::Glow,
+            RendererArg::Wgpu => Self::Wgpu,
+        }
+    }
+}
+
+/// The window's renderer: the flag, else `from_env` (the value of
+/// [`RENDERER_VAR`], if set), else glow.
+///
+/// # Errors
+/// An environment value that names no renderer.
+fn renderer(flag: Option<RendererArg>, from_env: Option<&str>) -> Result<RendererArg> {
+    if let Some(flag) = flag {
+        return Ok(flag);
+    }
+    match from_env.map(str::trim) {
+        Some(text) if !text.is_empty() => RendererArg::from_str(text, true).map_err(|_| {
+            anyhow::anyhow!(
+                "{RENDERER_VAR}={}: must be glow or wgpu",
+                printable(&text.chars().take(40).collect::<String>())
+            )
+        }),
+        _ => Ok(RendererArg::Glow),
+    }
 }
 
 /// The model options shared by the analysis subcommands.
@@ -166,14 +210,34 @@ pub fn run() -> ExitCode {
     };
     let Some(command) = cli.command else {
         // No subcommand: the app.
-        return match zieglerlab::app::run() {
+        let from_env = std::env::var(RENDERER_VAR).ok();
+        let renderer = match renderer(cli.renderer, from_env.as_deref()) {
+            Ok(renderer) => renderer,
+            Err(error) => {
+                eprintln!("error: {error}");
+                return ExitCode::from(2);
+            }
+        };
+        return match zieglerlab::app::run(renderer.into()) {
             Ok(()) => ExitCode::SUCCESS,
             Err(error) => {
-                eprintln!("error: the app could not start: {error}");
+                let other = match renderer {
+                    RendererArg::Glow => "wgpu",
+                    RendererArg::Wgpu => "glow",
+                };
+                eprintln!(
+                    "error: the app could not start: {error} (the other renderer may work: --renderer {other})"
+                );
                 ExitCode::from(2)
             }
         };
     };
+    if cli.renderer.is_some() {
+        eprintln!(
+            "error: --renderer chooses what draws the window; give it without a subcommand (snapshot and record draw headlessly with wgpu)"
+        );
+        return ExitCode::from(2);
+    }
     match execute(&command) {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
@@ -235,4 +299,26 @@ fn printable(text: &str) -> String {
             }
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The flag wins over the environment, which wins over the default; an
+    /// unknown name is refused with the variable named.
+    #[test]
+    fn the_renderer_comes_from_the_flag_then_the_environment() {
+        let glow = Some(RendererArg::Glow);
+        assert_eq!(renderer(None, None).unwrap(), RendererArg::Glow);
+        assert_eq!(renderer(None, Some("")).unwrap(), RendererArg::Glow);
+        assert_eq!(renderer(None, Some(" WGPU ")).unwrap(), RendererArg::Wgpu);
+        assert_eq!(renderer(glow, Some("wgpu")).unwrap(), RendererArg::Glow);
+        assert_eq!(renderer(glow, Some("vulkan")).unwrap(), RendererArg::Glow);
+        let unknown = renderer(None, Some("vulkan")).unwrap_err().to_string();
+        assert!(
+            unknown.contains("ZIEGLERLAB_RENDERER=vulkan") && unknown.contains("glow or wgpu"),
+            "{unknown}"
+        );
+    }
 }

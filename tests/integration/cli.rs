@@ -247,7 +247,7 @@ fn snapshot_writes_a_png_of_the_asked_size() {
 /// each a positive finite number, with the frame quantiles ordered.
 #[test]
 fn bench_json_has_every_figure() {
-    let out = run(&["bench", "--json", "--frames", "3"]);
+    let out = run(&["bench", "--json", "--frames", "3", "--no-window"]);
     assert!(
         out.status.success(),
         "{}",
@@ -276,12 +276,17 @@ fn bench_json_has_every_figure() {
             "map_ms",
             "numpy_eig_us_per_pencil",
             "locus_speedup_vs_numpy",
+            "window_fps",
+            "window_frame_ms_p99",
+            "window_fps_1920x1080",
+            "window_frame_ms_p99_1920x1080",
         ]
     );
     let json: serde_json::Value = serde_json::from_str(&text).expect("json");
     for key in keys {
-        // numpy's figures are null on a machine without numpy.
-        if key.contains("numpy") && json[key].is_null() {
+        // numpy's figures are null on a machine without numpy, the
+        // window's when it is skipped.
+        if (key.contains("numpy") || key.starts_with("window_")) && json[key].is_null() {
             continue;
         }
         let figure = json[key].as_f64().expect("a number");
@@ -608,4 +613,37 @@ fn lesson_check_passes_the_shipped_lessons_and_names_the_line_of_a_broken_one() 
         said.contains("line 5: step 2: speed = 50: expected 0.1 to 10"),
         "{said}"
     );
+}
+
+/// The renderer is the window's: beside a subcommand the flag is refused,
+/// and an unknown name in the environment is refused before any window
+/// opens (no display is needed to see either).
+#[test]
+fn the_renderer_choice_is_checked_before_anything_opens() {
+    let beside = run(&["--renderer", "wgpu", "presets"]);
+    assert_eq!(beside.status.code(), Some(2));
+    let text = String::from_utf8_lossy(&beside.stderr);
+    assert!(
+        text.contains("--renderer chooses what draws the window"),
+        "{text}"
+    );
+    let unknown = Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+        .env("ZIEGLERLAB_RENDERER", "vulkan")
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .output()
+        .expect("the binary runs");
+    assert_eq!(unknown.status.code(), Some(2));
+    let text = String::from_utf8_lossy(&unknown.stderr);
+    assert!(
+        text.contains("ZIEGLERLAB_RENDERER=vulkan: must be glow or wgpu"),
+        "{text}"
+    );
+    // Subcommands draw headlessly and ignore the variable.
+    let presets = Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+        .env("ZIEGLERLAB_RENDERER", "vulkan")
+        .arg("presets")
+        .output()
+        .expect("the binary runs");
+    assert!(presets.status.success());
 }

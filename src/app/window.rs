@@ -1,0 +1,174 @@
+//! The real window: eframe's options, the renderer that draws it, and timed
+//! runs of the window for the bench (the whole frame, drawing included).
+
+use std::sync::{Arc, Mutex};
+use std::time::Instant;
+
+use eframe::egui;
+
+use super::notice::Notice;
+use super::state::Settings;
+use super::{APP_ID, ZieglerApp, store_check};
+
+/// Which of eframe's renderers draws the window.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Renderer {
+    /// OpenGL through glow: the default. Without a GPU (Mesa's llvmpipe) it
+    /// draws about five times the frames of wgpu's GL backend.
+    #[default]
+    Glow,
+    /// wgpu (Vulkan, Metal, DX12 or GL, whichever the machine offers).
+    Wgpu,
+}
+
+impl From<Renderer> for eframe::Renderer {
+    fn from(renderer: Renderer) -> Self {
+        match renderer {
+            Renderer::Glow => Self::Glow,
+            Renderer::Wgpu => Self::Wgpu,
+        }
+    }
+}
+
+/// The window's options: its title and sizes, drawn by `renderer`.
+fn options(renderer: Renderer, inner_size: [f32; 2]) -> eframe::NativeOptions {
+    eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default()
+            .with_title("zieglerlab")
+            .with_inner_size(inner_size)
+            .with_min_inner_size([1024.0, 700.0]),
+        renderer: renderer.into(),
+        // Dithering adds noise to every pixel's colour to hide banding in
+        // gradients; there are none here, and on a CPU renderer it costs
+        // about a tenth of the frame.
+        dithering: false,
+        ..Default::default()
+    }
+}
+
+/// Opens the app window, drawn by `renderer`.
+///
+/// # Errors
+/// When no window or graphics context can be created.
+pub fn run(renderer: Renderer) -> eframe::Result {
+    // eframe restores its own entries (zoom, window) before any of ours runs:
+    // they are checked first, so a bad one cannot crash every launch.
+    let notice = eframe::storage_dir(APP_ID)
+        .map(|dir| dir.join("app.ron"))
+        .and_then(|path| store_check::check_stored_file(&path));
+    eframe::run_native(
+        APP_ID,
+        options(renderer, [1280.0, 800.0]),
+        Box::new(move |cc| {
+            let mut app = ZieglerApp::from_storage(cc.storage);
+            app.cleared_to_panel_fill = true;
+            app.state.analyse_in_background();
+            if let Some(notice) = notice {
+                app.state.tell(Notice::warning(notice));
+            }
+            Ok(Box::new(app))
+        }),
+    )
+}
+
+/// Frames of the window timed by [`time_window_frames`].
+#[derive(Clone, Debug, Default)]
+pub struct WindowFrames {
+    /// Wall time from the start of one frame to the start of the next, in
+    /// ms: the app's logic, the egui pass, tessellation, drawing and the
+    /// buffer swap, as the person at the window waits for them.
+    pub intervals_ms: Vec<f64>,
+    /// The window's size in pixels when the last frame began.
+    pub size_px: [f32; 2],
+}
+
+/// Frames untimed at the start (fonts laid out, caches filled, the window
+/// mapped and sized).
+const WARMUP_FRAMES: usize = 30;
+
+/// The default launch (the `roller` preset running, the locus tab) in a
+/// real window of `inner_size` points drawn by `renderer`, repainted
+/// continuously for `frames` timed frames and then closed. Nothing is read
+/// from or written to the stored settings. Needs a display.
+///
+/// # Errors
+/// No display, no graphics context, or the app's defaults refused (they are
+/// not).
+pub fn time_window_frames(
+    renderer: Renderer,
+    inner_size: [f32; 2],
+    frames: usize,
+) -> Result<WindowFrames, String> {
+    let timed = Arc::new(Mutex::new(WindowFrames::default()));
+    let shared = Arc::clone(&timed);
+    let mut options = options(renderer, inner_size);
+    options.persist_window = false;
+    options.viewport = options.viewport.with_min_inner_size([64.0, 64.0]);
+    let app = ZieglerApp::new(Settings::default()).map_err(|e| e.to_string())?;
+    eframe::run_native(
+        "zieglerlab-bench",
+        options,
+        Box::new(move |_cc| {
+            let mut app = app;
+            app.cleared_to_panel_fill = true;
+            app.state.analyse_in_background();
+            Ok(Box::new(TimedWindow {
+                app,
+                frames,
+                seen: 0,
+                last: None,
+                timed: shared,
+            }))
+        }),
+    )
+    .map_err(|e| e.to_string())?;
+    let frames_timed = timed
+        .lock()
+        .map_err(|_| "the timed window panicked".to_owned())?
+        .clone();
+    if frames_timed.intervals_ms.len() < frames {
+        return Err(format!(
+            "the window closed after {} of {frames} timed frames",
+            frames_timed.intervals_ms.len()
+        ));
+    }
+    Ok(frames_timed)
+}
+
+/// The app in a window that times its frames and closes itself.
+struct TimedWindow {
+    app: ZieglerApp,
+    frames: usize,
+    seen: usize,
+    last: Option<Instant>,
+    timed: Arc<Mutex<WindowFrames>>,
+}
+
+impl eframe::App for TimedWindow {
+    fn logic(&mut self, ctx: &egui::Context, frame: &mut eframe::Frame) {
+        let now = Instant::now();
+        if let (Some(last), true) = (self.last, self.seen > WARMUP_FRAMES)
+            && let Ok(mut timed) = self.timed.lock()
+        {
+            timed
+                .intervals_ms
+                .push(now.duration_since(last).as_secs_f64() * 1e3);
+            timed.size_px = (ctx.content_rect().size() * ctx.pixels_per_point()).into();
+        }
+        self.last = Some(now);
+        self.seen += 1;
+        if self.seen > WARMUP_FRAMES + self.frames {
+            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+        }
+        eframe::App::logic(&mut self.app, ctx, frame);
+        ctx.request_repaint();
+    }
+
+    fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        eframe::App::ui(&mut self.app, ui, frame);
+    }
+
+    fn clear_color(&self, visuals: &egui::Visuals) -> [f32; 4] {
+        eframe::App::clear_color(&self.app, visuals)
+    }
+}
