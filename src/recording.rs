@@ -41,6 +41,15 @@ impl GifRecording {
     /// # Errors
     /// A frame of another size, or the encoder's.
     pub fn push(&mut self, rgba: &mut [u8]) -> Result<(), RecordingError> {
+        self.push_lasting(rgba, self.delay_cs)
+    }
+
+    /// Adds a frame of RGBA pixels shown for `delay_cs` hundredths of a
+    /// second (frames taken at an uneven rate, as a window's are).
+    ///
+    /// # Errors
+    /// A frame of another size, or the encoder's.
+    pub fn push_lasting(&mut self, rgba: &mut [u8], delay_cs: u16) -> Result<(), RecordingError> {
         let expected = usize::from(self.width) * usize::from(self.height) * 4;
         if rgba.len() != expected {
             return Err(RecordingError::FrameSize {
@@ -50,7 +59,7 @@ impl GifRecording {
             });
         }
         let mut frame = gif::Frame::from_rgba_speed(self.width, self.height, rgba, 10);
-        frame.delay = self.delay_cs;
+        frame.delay = delay_cs;
         self.encoder.write_frame(&frame)?;
         Ok(())
     }

@@ -11,8 +11,20 @@ use eframe::egui::{self, ColorImage};
 
 use crate::recording::GifRecording;
 
-/// Frames per second of a recording of the window.
+/// Frames per second of a recording of the window (at most: a busy machine
+/// draws fewer, and each frame then lasts until the next).
 pub const RECORD_FPS: u16 = 10;
+
+/// How long after its end a recording waits for screenshots asked for and
+/// not yet delivered (they come a frame or two later).
+const LATE_SCREENSHOT_SECS: f64 = 2.0;
+
+/// Shortest delay written to the GIF, in hundredths of a second: browsers
+/// show a frame of 0 or 1 for a tenth of a second instead.
+const MIN_DELAY_CS: u16 = 2;
+
+/// A screenshot and the time (the context's clock) of the frame it shows.
+type TimedFrame = (f64, Arc<ColorImage>);
 
 /// Where a recording is.
 #[derive(Default)]
@@ -20,12 +32,15 @@ pub enum Recorder {
     #[default]
     Idle,
     /// Taking a screenshot every 1/fps s until `until_secs` (the context's
-    /// clock).
+    /// clock), each kept with the time of the frame it shows; then waiting
+    /// (at most [`LATE_SCREENSHOT_SECS`]) for those asked for and not yet
+    /// delivered.
     Capturing {
         folder: PathBuf,
         next_secs: f64,
         until_secs: f64,
-        frames: Arc<Mutex<Vec<Arc<ColorImage>>>>,
+        requested: usize,
+        frames: Arc<Mutex<Vec<TimedFrame>>>,
     },
     /// Making the GIF: frames done of all, and the file (or why not).
     Encoding {
@@ -58,6 +73,7 @@ impl Recorder {
             folder,
             next_secs: now_secs,
             until_secs: now_secs + secs,
+            requested: 0,
             frames: Arc::default(),
         };
     }
@@ -73,20 +89,27 @@ impl Recorder {
                 folder,
                 next_secs,
                 until_secs,
+                requested,
                 frames,
             } => {
                 if now_secs >= *until_secs {
                     let taken = frames.lock().map(|f| f.clone()).unwrap_or_default();
-                    *self = Self::encode(folder.clone(), taken);
+                    let waiting =
+                        taken.len() < *requested && now_secs < *until_secs + LATE_SCREENSHOT_SECS;
+                    if !waiting {
+                        *self = Self::encode(folder.clone(), taken, *until_secs);
+                    }
+                    ctx.request_repaint();
                     return None;
                 }
                 let (take, next) = due(*next_secs, now_secs, RECORD_FPS);
                 *next_secs = next;
                 if take {
+                    *requested += 1;
                     let frames = Arc::clone(frames);
                     ctx.request_screenshot(move |image| {
                         if let Ok(mut frames) = frames.lock() {
-                            frames.push(image);
+                            frames.push((now_secs, image));
                         }
                     });
                 }
@@ -110,8 +133,9 @@ impl Recorder {
         }
     }
 
-    /// The GIF of `frames` made on a thread and written into `folder`.
-    fn encode(folder: PathBuf, frames: Vec<Arc<ColorImage>>) -> Self {
+    /// The GIF of `frames` (the last lasting until `end_secs`) made on a
+    /// thread and written into `folder`.
+    fn encode(folder: PathBuf, frames: Vec<TimedFrame>, end_secs: f64) -> Self {
         let (sender, result) = mpsc::channel();
         let failed = sender.clone();
         let done = Arc::new(AtomicUsize::new(0));
@@ -120,7 +144,7 @@ impl Recorder {
         let spawned = std::thread::Builder::new()
             .name("recording".to_owned())
             .spawn(move || {
-                drop(sender.send(write_gif(&folder, &frames, &counter)));
+                drop(sender.send(write_gif(&folder, &frames, end_secs, &counter)));
             });
         if let Err(error) = spawned {
             drop(failed.send(Err(format!("no thread for the recording: {error}"))));
@@ -152,25 +176,60 @@ impl Recorder {
     }
 }
 
+/// How long each frame taken at `times_secs` (increasing) is shown, in
+/// hundredths of a second, the last until `end_secs`: each frame lasts
+/// until the next was taken, so the GIF plays in the time it recorded
+/// however unevenly the frames came. Rounding is carried from frame to
+/// frame (the total is the recorded time to the hundredth) and no delay is
+/// below [`MIN_DELAY_CS`].
+#[must_use]
+pub fn delays_cs(times_secs: &[f64], end_secs: f64) -> Vec<u16> {
+    let Some(&start) = times_secs.first() else {
+        return Vec::new();
+    };
+    let ends = times_secs.iter().skip(1).chain([&end_secs]);
+    let mut shown_cs: i64 = 0;
+    ends.map(|&end| {
+        #[expect(
+            clippy::cast_possible_truncation,
+            reason = "a recording lasts at most a minute: 6000 hundredths"
+        )]
+        let due_cs = ((end - start) * 100.0).round() as i64;
+        let delay = (due_cs - shown_cs).clamp(i64::from(MIN_DELAY_CS), i64::from(u16::MAX));
+        shown_cs += delay;
+        u16::try_from(delay).unwrap_or(u16::MAX)
+    })
+    .collect()
+}
+
 /// The GIF of `frames` (those of the first frame's size: a window resized
-/// mid-way leaves the others out) written into `folder`, named by the time.
+/// mid-way leaves the others out), the last shown until `end_secs`, written
+/// into `folder`, named by the time.
 fn write_gif(
     folder: &std::path::Path,
-    frames: &[Arc<ColorImage>],
+    frames: &[TimedFrame],
+    end_secs: f64,
     done: &AtomicUsize,
 ) -> Result<PathBuf, String> {
-    let first = frames.first().ok_or("no frame was captured")?;
+    let (_, first) = frames.first().ok_or("no frame was captured")?;
     let [width, height] = first.size;
     let side = |n: usize| u16::try_from(n).map_err(|_| format!("a frame {n} pixels wide"));
     let (w, h) = (side(width)?, side(height)?);
     let mut gif = GifRecording::new(w, h, RECORD_FPS).map_err(|e| e.to_string())?;
-    for frame in frames.iter().filter(|f| f.size == first.size) {
+    let mut kept: Vec<&TimedFrame> = frames
+        .iter()
+        .filter(|(_, f)| f.size == first.size)
+        .collect();
+    kept.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let times: Vec<f64> = kept.iter().map(|(t, _)| *t).collect();
+    for ((_, frame), delay) in kept.iter().zip(delays_cs(&times, end_secs)) {
         let mut rgba: Vec<u8> = frame
             .pixels
             .iter()
             .flat_map(egui::Color32::to_array)
             .collect();
-        gif.push(&mut rgba).map_err(|e| e.to_string())?;
+        gif.push_lasting(&mut rgba, delay)
+            .map_err(|e| e.to_string())?;
         done.fetch_add(1, Ordering::Relaxed);
     }
     let bytes = gif.finish().map_err(|e| e.to_string())?;
@@ -250,19 +309,51 @@ mod tests {
         );
     }
 
+    /// Frames that came unevenly (3 to 5 a second, as on a busy machine)
+    /// each last until the next, and the whole plays in the time recorded.
+    #[test]
+    fn each_frame_lasts_until_the_next_and_the_whole_takes_the_time_recorded() {
+        assert_eq!(delays_cs(&[0.0, 0.1, 0.2], 0.3), [10, 10, 10]);
+        let times = [5.0, 5.31, 5.52, 5.9, 6.13, 6.4];
+        let delays = delays_cs(&times, 7.0);
+        assert_eq!(delays, [31, 21, 38, 23, 27, 60]);
+        let total: u32 = delays.iter().map(|&d| u32::from(d)).sum();
+        assert_eq!(total, 200, "two seconds recorded, two seconds played");
+        // Rounding is carried: thirds of a tenth never drift.
+        let thirds: Vec<f64> = (0..30).map(|i| f64::from(i) / 30.0).collect();
+        let total: u32 = delays_cs(&thirds, 1.0).iter().map(|&d| u32::from(d)).sum();
+        assert_eq!(total, 100);
+        // Never a delay a browser would show for a tenth of a second.
+        assert!(
+            delays_cs(&[0.0, 0.001, 0.002], 0.003)
+                .iter()
+                .all(|&d| d >= MIN_DELAY_CS)
+        );
+        assert!(delays_cs(&[], 1.0).is_empty());
+    }
+
     #[test]
     fn the_frames_become_a_gif_in_the_folder() {
         let folder = tempfile::tempdir().unwrap();
-        let frames: Vec<Arc<ColorImage>> = [Color32::RED, Color32::BLUE]
+        let frames: Vec<TimedFrame> = [(0.0, Color32::RED), (0.4, Color32::BLUE)]
             .into_iter()
-            .map(|c| Arc::new(ColorImage::filled([8, 6], c)))
+            .map(|(t, c)| (t, Arc::new(ColorImage::filled([8, 6], c))))
             .collect();
         let done = AtomicUsize::new(0);
-        let path = write_gif(folder.path(), &frames, &done).unwrap();
+        let path = write_gif(folder.path(), &frames, 1.0, &done).unwrap();
         assert_eq!(done.load(Ordering::Relaxed), 2);
         let bytes = std::fs::read(&path).unwrap();
         assert!(bytes.starts_with(b"GIF89a"));
         assert_eq!(u16::from_le_bytes([bytes[6], bytes[7]]), 8, "width");
-        assert!(write_gif(folder.path(), &[], &done).is_err());
+        // The frames' delays as read back: 0.4 s and 0.6 s.
+        let mut decoder = gif::DecodeOptions::new()
+            .read_info(std::io::Cursor::new(&bytes))
+            .unwrap();
+        let mut delays = Vec::new();
+        while let Some(frame) = decoder.read_next_frame().unwrap() {
+            delays.push(frame.delay);
+        }
+        assert_eq!(delays, [40, 60]);
+        assert!(write_gif(folder.path(), &[], 1.0, &done).is_err());
     }
 }
