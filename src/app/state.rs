@@ -304,6 +304,8 @@ impl AppState {
     pub fn set_preset(&mut self, id: PresetId) {
         self.settings.preset = id;
         self.refused.clear();
+        // A ramp and its marks belong to the column it ran on.
+        self.ramp = None;
         // The load stays where it is, unless it is beyond the new preset's
         // slider (a chain's is shorter): then the preset's own.
         let model = id.model();

@@ -468,3 +468,40 @@ fn a_late_analysis_of_parameters_left_behind_is_dropped() {
         inline_app(0.2).state().analysis().unwrap().transitions
     );
 }
+
+/// A lesson after a finished ramp: the ramp of "where flutter starts" runs
+/// to its end (the tabletop held at p = 4), then "is the roller a
+/// follower?" opens. Its first step's load of 1 holds (the finished ramp
+/// used to set its own end again every frame), and the tabletop ramp's
+/// marks are gone from the roller's bar.
+#[test]
+fn a_finished_ramp_leaves_the_next_lesson_its_load() {
+    use zieglerlab::lesson::{BUILT_IN, Lesson};
+    let lesson = |name: &str| {
+        let (_, text) = BUILT_IN.iter().find(|(n, _)| *n == name).unwrap();
+        Lesson::read(text).unwrap()
+    };
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    let state = app.state_mut();
+    state.open_lesson(lesson("where-flutter-starts.ron"));
+    // To the ramp's step, then its 60 s of simulated time and more.
+    while state.ramp().is_none() {
+        let before = state.lesson().unwrap().step;
+        state.lesson_step(true);
+        assert_ne!(state.lesson().unwrap().step, before, "a ramp step exists");
+    }
+    state.set_speed(10.0);
+    for _ in 0..900 {
+        state.advance(0.1);
+    }
+    let ramp = state.ramp().expect("a finished ramp keeps its marks");
+    assert_eq!(ramp.load(), 4.0);
+    assert_eq!(state.model().load_p(), 4.0);
+    state.open_lesson(lesson("is-the-roller-a-follower.ron"));
+    for _ in 0..10 {
+        state.advance(1.0 / 60.0);
+    }
+    assert_eq!(state.settings().preset, PresetId::Roller);
+    assert_eq!(state.model().load_p(), 1.0);
+    assert!(state.ramp().is_none(), "the tabletop's ramp marks are gone");
+}

@@ -135,6 +135,11 @@ impl AppState {
         if let Some(Predict::Choice { answers, .. }) = &step.predict {
             run.last_choice = Some(answers.clone());
         }
+        // A step that sets the column takes it over from any ramp (a
+        // finished one too); a step that only reveals keeps the ramp's marks.
+        if step.preset.is_some() || !step.set.is_empty() {
+            self.stop_ramp();
+        }
         if let Some(preset) = step.preset {
             self.set_preset(preset);
         }

@@ -116,6 +116,10 @@ impl AppState {
             return;
         };
         run.observe(visible_now, load_now);
+        if run.finished() {
+            // Done: its marks stay, and the load is no longer its to set.
+            return;
+        }
         run.advance(dt_secs);
         let next = run.load();
         if next != load_now
