@@ -1,5 +1,5 @@
 //! Files written whole or not at all: a temporary file in the same folder,
-//! synced and renamed over the target, with the permissions a new file (or
+//! synced and renamed over the target (or to a free name), with the permissions a new file (or
 //! the one it replaces) would have; devices and pipes are written directly.
 
 use std::io::Write as _;
@@ -71,6 +71,63 @@ pub fn write_atomically(
     Ok(())
 }
 
+/// Most names [`write_new`] tries before giving up.
+const MAX_NAME_TRIES: u32 = 1000;
+
+/// Writes a new file in `folder`, whole or not at all, named
+/// `stem.extension` or, where that is taken, `stem-2.extension`,
+/// `stem-3.extension`, ...: never over an existing file, also when two
+/// processes write into the folder at the same moment (each name is taken
+/// by an atomic rename that refuses to replace). Returns the path written.
+///
+/// # Errors
+/// The folder, the temporary file, `write`, or no free name.
+pub fn write_new(
+    folder: &Path,
+    stem: &str,
+    extension: &str,
+    write: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> std::io::Result<()>,
+) -> Result<std::path::PathBuf, WriteError> {
+    let name = |k: u32| {
+        let suffix = if k == 1 {
+            String::new()
+        } else {
+            format!("-{k}")
+        };
+        folder.join(format!("{stem}{suffix}.{extension}"))
+    };
+    let error = |e: &dyn std::fmt::Display| WriteError {
+        path: name(1).display().to_string(),
+        why: e.to_string(),
+    };
+    let mut file = tempfile::NamedTempFile::new_in(folder).map_err(|e| error(&e))?;
+    {
+        let mut buffered = std::io::BufWriter::new(file.as_file_mut());
+        write(&mut buffered)
+            .and_then(|()| buffered.flush())
+            .map_err(|e| error(&e))?;
+    }
+    if let Some(permissions) = new_file_permissions() {
+        file.as_file()
+            .set_permissions(permissions)
+            .map_err(|e| error(&e))?;
+    }
+    file.as_file().sync_all().map_err(|e| error(&e))?;
+    for k in 1..=MAX_NAME_TRIES {
+        let path = name(k);
+        match file.persist_noclobber(&path) {
+            Ok(_) => return Ok(path),
+            Err(refused) if refused.error.kind() == std::io::ErrorKind::AlreadyExists => {
+                file = refused.file;
+            }
+            Err(refused) => return Err(error(&refused.error)),
+        }
+    }
+    Err(error(&format!(
+        "{MAX_NAME_TRIES} names from {stem}.{extension} on are taken"
+    )))
+}
+
 /// The permissions of a newly made file: readable by all, writable by the
 /// owner.
 #[cfg(unix)]
@@ -84,4 +141,45 @@ fn new_file_permissions() -> Option<std::fs::Permissions> {
 #[cfg(not(unix))]
 fn new_file_permissions() -> Option<std::fs::Permissions> {
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A taken name is never replaced: the next free one is used, and a
+    /// file named like a later one is stepped over too.
+    #[test]
+    fn a_new_file_takes_the_next_free_name() {
+        let folder = tempfile::tempdir().unwrap();
+        let put = |text: &'static str| {
+            write_new(folder.path(), "clip", "gif", |w| {
+                w.write_all(text.as_bytes())
+            })
+            .unwrap()
+        };
+        let first = put("one");
+        std::fs::write(folder.path().join("clip-2.gif"), "someone else's").unwrap();
+        let second = put("two");
+        let third = put("three");
+        let name = |p: &std::path::Path| p.file_name().unwrap().to_string_lossy().into_owned();
+        assert_eq!(name(&first), "clip.gif");
+        assert_eq!(name(&second), "clip-3.gif");
+        assert_eq!(name(&third), "clip-4.gif");
+        let read = |n: &str| std::fs::read_to_string(folder.path().join(n)).unwrap();
+        assert_eq!(read("clip.gif"), "one");
+        assert_eq!(read("clip-2.gif"), "someone else's");
+        assert_eq!(read("clip-3.gif"), "two");
+        assert_eq!(
+            std::fs::read_dir(folder.path()).unwrap().count(),
+            4,
+            "no temporary left"
+        );
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::PermissionsExt as _;
+            let mode = std::fs::metadata(&first).unwrap().permissions().mode();
+            assert_eq!(mode & 0o777, 0o644);
+        }
+    }
 }

@@ -73,7 +73,8 @@ pub fn load_bar_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
         let painter = ui.painter_at(rect);
         let load_max = state.load_max();
         let x = |load: f64| x_of_load(load, (bar.left(), bar.right()), load_max);
-        let analysis = state.analysis();
+        // A lesson's prediction: the bar shows no ranges and no critical loads.
+        let analysis = state.analysis().filter(|_| !state.answer_hidden());
         match analysis {
             Some(analysis) => {
                 for &(start, end, range) in &analysis.ranges {
@@ -139,9 +140,12 @@ fn marks_ui(painter: &egui::Painter, bar: Rect, state: &AppState, theme: &Theme)
     let bar_height = bar.height();
     let p = state.model().load_p();
     let analysis = state.analysis();
-    // A ramp's onsets: the theory's (text colour) and the seen one.
+    // A ramp's onsets: the theory's (text colour, not while a lesson keeps
+    // the answer) and the seen one.
     if let Some(run) = state.ramp() {
-        let theory = analysis.and_then(crate::app::analysis_cache::Analysis::first_instability);
+        let theory = analysis
+            .filter(|_| !state.answer_hidden())
+            .and_then(crate::app::analysis_cache::Analysis::first_instability);
         for (load, color) in [(theory, theme.text), (run.seen_at_p, theme.measured)] {
             if let Some(load) = load.filter(|&l| l <= load_max) {
                 painter.line_segment(

@@ -26,7 +26,7 @@ mod tabs;
 mod theme;
 mod window;
 
-use eframe::egui::{self, vec2};
+use eframe::egui::{self, RichText, vec2};
 
 use crate::model::PresetId;
 use crate::sim::{SimError, Simulation};
@@ -298,6 +298,14 @@ impl ZieglerApp {
                     ui.weak(
                     "The plots need more room here: a taller window, or projector mode off (P).",
                 );
+                } else if self.state.answer_hidden() && self.tab != Tab::Histories {
+                    ui.label(
+                        RichText::new(
+                            "This plot shows the answer: it comes back when the lesson reveals it. The time histories show what the column does.",
+                        )
+                        .size(theme.text_size * 1.2)
+                        .color(theme.info),
+                    );
                 } else {
                     self.tabs.view(self.tab).ui(ui, &mut self.state, &theme);
                 }

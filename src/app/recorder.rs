@@ -236,10 +236,11 @@ fn write_gif(
     let stamp = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| d.as_secs());
-    let path = folder.join(format!("zieglerlab-{stamp}.gif"));
-    crate::files::write_atomically(&path, |w| std::io::Write::write_all(w, &bytes))
-        .map_err(|e| e.to_string())?;
-    Ok(path)
+    // A free name: two windows finishing in the same second keep both files.
+    crate::files::write_new(folder, &format!("zieglerlab-{stamp}"), "gif", |w| {
+        std::io::Write::write_all(w, &bytes)
+    })
+    .map_err(|e| e.to_string())
 }
 
 /// What the next recording will be: its length and its folder.
@@ -355,5 +356,10 @@ mod tests {
         }
         assert_eq!(delays, [40, 60]);
         assert!(write_gif(folder.path(), &[], 1.0, &done).is_err());
+        // Recordings finished in the same second keep their own files.
+        let again = write_gif(folder.path(), &frames, 1.0, &done).unwrap();
+        let third = write_gif(folder.path(), &frames, 1.0, &done).unwrap();
+        assert!(again != path && third != path && third != again);
+        assert_eq!(std::fs::read_dir(folder.path()).unwrap().count(), 3);
     }
 }

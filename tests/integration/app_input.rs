@@ -289,6 +289,29 @@ fn a_lesson_walked_through_predict_run_reveal() {
         predicted.is_some_and(|p| (p - 4.0).abs() < 0.3),
         "{predicted:?}"
     );
+    // While the class predicts, nothing on the screen gives the answer: no
+    // critical load in the sidebar, no verdict on the card, no locus.
+    let onset_text = format!(
+        "p = {}: stable -> flutter",
+        zieglerlab::format::load_text(2.0 * (9.0 - 7f64.sqrt()) / 5.0)
+    );
+    assert!(harness.query_by_label_contains(&onset_text).is_none());
+    assert!(
+        harness
+            .query_by_label_contains("stable -> flutter")
+            .is_none()
+    );
+    assert!(
+        harness
+            .query_by_label_contains("hidden until the lesson reveals them")
+            .is_some()
+    );
+    assert!(harness.query_by_label_contains("neutral").is_none());
+    assert!(
+        harness
+            .query_by_label_contains("This plot shows the answer")
+            .is_some()
+    );
     harness.get_by_label("next").click();
     harness.run();
     assert!(
@@ -310,4 +333,11 @@ fn a_lesson_walked_through_predict_run_reveal() {
         zieglerlab::format::load_text(seen)
     );
     assert!(harness.query_by_label_contains(&said).is_some(), "{said}");
+    // Revealed: the critical loads and the plots are back.
+    assert!(harness.query_by_label_contains(&onset_text).is_some());
+    assert!(
+        harness
+            .query_by_label_contains("This plot shows the answer")
+            .is_none()
+    );
 }

@@ -505,3 +505,27 @@ fn a_finished_ramp_leaves_the_next_lesson_its_load() {
     assert_eq!(state.model().load_p(), 1.0);
     assert!(state.ramp().is_none(), "the tabletop's ramp marks are gone");
 }
+
+/// The answer is hidden from the step that asks for a prediction up to the
+/// step that reveals it, in each built-in lesson that asks for one.
+#[test]
+fn the_answer_is_hidden_from_the_prediction_to_the_reveal() {
+    use zieglerlab::lesson::{BUILT_IN, Lesson};
+    for (name, text) in BUILT_IN {
+        let lesson = Lesson::read(text).unwrap();
+        let asked = lesson.steps.iter().position(|s| s.predict.is_some());
+        let revealed = lesson.steps.iter().position(|s| s.reveal.is_some());
+        let mut app = ZieglerApp::new(Settings::default()).unwrap();
+        let state = app.state_mut();
+        state.open_lesson(lesson.clone());
+        for step in 0..lesson.steps.len() {
+            assert_eq!(state.lesson().unwrap().step, step);
+            let expected = asked.is_some_and(|a| step >= a && revealed.is_none_or(|r| step < r));
+            assert_eq!(state.answer_hidden(), expected, "{name}, step {step}");
+            state.lesson_step(true);
+        }
+        assert!(!state.answer_hidden(), "{name}: revealed at the end");
+        state.close_lesson();
+        assert!(!state.answer_hidden());
+    }
+}

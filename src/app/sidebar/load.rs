@@ -45,6 +45,13 @@ impl View for LoadSection {
                 ),
             );
         }
+        if state.answer_hidden() {
+            ui.weak("The critical loads are hidden until the lesson reveals them.");
+            if let Some(run) = state.ramp() {
+                ramp_onset_ui(ui, run.seen_at_p, None, theme);
+            }
+            return;
+        }
         let Some(analysis) = state.analysis() else {
             return;
         };

@@ -36,8 +36,10 @@ impl View for ModelSection {
         if chosen != current {
             state.set_preset(chosen);
         }
-        // In front of a class the picker's tooltip holds the description.
-        if !state.settings().projector {
+        // In front of a class the picker's tooltip holds the description;
+        // while a lesson keeps the answer it is not shown (some name their
+        // critical loads).
+        if !state.settings().projector && !state.answer_hidden() {
             ui.label(RichText::new(state.settings().preset.preset().description).small());
         }
         // The preset's words name its force; a changed eta changes that force.

@@ -17,6 +17,11 @@ pub struct StatusSection;
 
 impl View for StatusSection {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+        if state.answer_hidden() {
+            ui.label(RichText::new("stable or not?").heading().color(theme.info));
+            ui.weak("The verdict is hidden until the lesson reveals it: watch the column.");
+            return;
+        }
         let (Some(analysis), Some(spectrum)) = (state.analysis(), state.current_spectrum()) else {
             if let Some(error) = state.analysis_failure() {
                 ui.colored_label(theme.warning, format!("no stability figures: {error}"));

@@ -28,6 +28,21 @@ impl LessonRun {
         &self.lesson.steps[self.step.min(self.lesson.steps.len() - 1)]
     }
 
+    /// Whether the answer is kept from the class: from a step that asks for
+    /// a prediction until a step that reveals. The critical loads, the
+    /// stability's colours and verdict and the plots that show them are
+    /// hidden meanwhile; what the class observes (the column, the time
+    /// histories, the motion seen during a ramp) is not.
+    #[must_use]
+    pub fn answer_hidden(&self) -> bool {
+        let shown = self.step.min(self.lesson.steps.len() - 1);
+        let steps = &self.lesson.steps[..=shown];
+        steps
+            .iter()
+            .rposition(|s| s.predict.is_some())
+            .is_some_and(|asked| !steps[asked..].iter().any(|s| s.reveal.is_some()))
+    }
+
     /// The revealed result of the step shown, in words, beside what was
     /// predicted; `first_instability` and `seen_at_p` come from the state.
     #[must_use]
@@ -84,6 +99,13 @@ impl AppState {
     #[must_use]
     pub fn lesson(&self) -> Option<&LessonRun> {
         self.lesson.as_ref()
+    }
+
+    /// Whether a lesson keeps the answer from the class now (see
+    /// [`LessonRun::answer_hidden`]).
+    #[must_use]
+    pub fn answer_hidden(&self) -> bool {
+        self.lesson.as_ref().is_some_and(LessonRun::answer_hidden)
     }
 
     /// Moves to the next step (or back, `forward` false) and carries it out.
