@@ -17,11 +17,13 @@ pub enum Command {
     LoadUp,
     LoadDown,
     Projector,
+    LessonNext,
+    LessonBack,
 }
 
 impl Command {
     /// Every command, in the order the keys help lists them.
-    pub const ALL: [Self; 8] = [
+    pub const ALL: [Self; 10] = [
         Self::PlayPause,
         Self::LoadUp,
         Self::LoadDown,
@@ -29,6 +31,8 @@ impl Command {
         Self::Reset,
         Self::ResetAll,
         Self::Projector,
+        Self::LessonNext,
+        Self::LessonBack,
         Self::Step,
     ];
 
@@ -45,6 +49,8 @@ impl Command {
             Self::LoadUp => "load up",
             Self::LoadDown => "load down",
             Self::Projector => "projector mode",
+            Self::LessonNext => "next",
+            Self::LessonBack => "back",
         }
     }
 
@@ -62,6 +68,8 @@ impl Command {
             Self::LoadUp => "load up by 0.08",
             Self::LoadDown => "load down by 0.08",
             Self::Projector => "projector mode: high contrast, large text",
+            Self::LessonNext => "the lesson's next step (a presenter's remote sends Page Down)",
+            Self::LessonBack => "the lesson's previous step (Page Up)",
         }
     }
 
@@ -77,6 +85,8 @@ impl Command {
             Self::LoadUp => &[Key::ArrowRight, Key::ArrowUp],
             Self::LoadDown => &[Key::ArrowLeft, Key::ArrowDown],
             Self::Projector => &[Key::P],
+            Self::LessonNext => &[Key::PageDown],
+            Self::LessonBack => &[Key::PageUp],
         }
     }
 
@@ -91,6 +101,8 @@ impl Command {
                 egui::Key::ArrowUp => "up",
                 egui::Key::ArrowLeft => "left",
                 egui::Key::ArrowDown => "down",
+                egui::Key::PageDown => "page down",
+                egui::Key::PageUp => "page up",
                 other => other.name(),
             })
             .collect::<Vec<_>>()
@@ -108,6 +120,8 @@ impl Command {
             Self::LoadUp => state.nudge_load(LOAD_KEY_STEP * state.load_max()),
             Self::LoadDown => state.nudge_load(-LOAD_KEY_STEP * state.load_max()),
             Self::Projector => state.set_projector(!state.settings().projector),
+            Self::LessonNext => state.lesson_step(true),
+            Self::LessonBack => state.lesson_step(false),
         }
     }
 

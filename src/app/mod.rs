@@ -229,6 +229,14 @@ impl ZieglerApp {
         theme
     }
 
+    /// Carries out the commands whose keys were pressed this frame (the
+    /// window's logic calls it first; tests that type keys call it too).
+    pub fn take_keys(&mut self, ctx: &egui::Context) {
+        for command in Command::pressed(ctx) {
+            command.execute(&mut self.state);
+        }
+    }
+
     /// `frame` without its fill where the window has already cleared to the
     /// panels' colour (each fill would cover the window once more: on a
     /// CPU renderer that is a third of the frame's pixels).
@@ -333,9 +341,7 @@ impl ZieglerApp {
 
 impl eframe::App for ZieglerApp {
     fn logic(&mut self, ctx: &egui::Context, _frame: &mut eframe::Frame) {
-        for command in Command::pressed(ctx) {
-            command.execute(&mut self.state);
-        }
+        self.take_keys(ctx);
         // The wall clock, read here and only here: everything below takes the
         // elapsed time as a number, so tests and pictures can give their own.
         let now = std::time::Instant::now();

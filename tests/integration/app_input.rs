@@ -341,3 +341,42 @@ fn a_lesson_walked_through_predict_run_reveal() {
             .is_none()
     );
 }
+
+/// A presenter's remote sends Page Down and Page Up: they move through the
+/// lesson's steps, carrying each out, and do nothing without a lesson.
+#[test]
+fn page_down_and_page_up_step_through_a_lesson() {
+    let app = ZieglerApp::new(Settings::default()).unwrap();
+    let mut harness = Harness::builder()
+        .with_size([1280.0, 900.0])
+        .build_ui_state(
+            |ui, app: &mut ZieglerApp| {
+                app.take_keys(ui.ctx());
+                app.contents_ui(ui);
+            },
+            app,
+        );
+    harness.run();
+    harness.key_press(egui::Key::PageDown);
+    harness.run();
+    assert!(harness.state().state().lesson().is_none());
+    let (_, text) = zieglerlab::lesson::BUILT_IN[0];
+    let lesson = zieglerlab::lesson::Lesson::read(text).unwrap();
+    harness.state_mut().state_mut().open_lesson(lesson);
+    harness.run();
+    let step = |h: &Harness<'_, ZieglerApp>| h.state().state().lesson().unwrap().step;
+    assert_eq!(step(&harness), 0);
+    harness.key_press(egui::Key::PageDown);
+    harness.run();
+    assert_eq!(step(&harness), 1);
+    harness.key_press(egui::Key::PageDown);
+    harness.run();
+    assert_eq!(step(&harness), 2);
+    assert!(
+        harness.state().state().ramp().is_some(),
+        "step 3 starts its ramp"
+    );
+    harness.key_press(egui::Key::PageUp);
+    harness.run();
+    assert_eq!(step(&harness), 1);
+}

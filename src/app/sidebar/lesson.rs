@@ -121,14 +121,14 @@ fn step_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
         let last = run.step + 1 == run.lesson.steps.len();
         if ui
             .add_enabled(run.step > 0, egui::Button::new("back"))
-            .on_hover_text("the previous step")
+            .on_hover_text("the previous step (Page Up)")
             .clicked()
         {
             state.lesson_step(false);
         }
         if ui
             .add_enabled(!last, egui::Button::new("next"))
-            .on_hover_text("the next step (it sets and starts what it says)")
+            .on_hover_text("the next step: it sets and starts what it says (Page Down, as a presenter's remote sends)")
             .clicked()
         {
             state.lesson_step(true);
