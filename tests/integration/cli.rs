@@ -627,12 +627,17 @@ fn the_renderer_choice_is_checked_before_anything_opens() {
         text.contains("--renderer chooses what draws the window"),
         "{text}"
     );
-    let unknown = Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
-        .env("ZIEGLERLAB_RENDERER", "vulkan")
-        .env_remove("DISPLAY")
-        .env_remove("WAYLAND_DISPLAY")
-        .output()
-        .expect("the binary runs");
+    // No display: were the name taken, the window would fail to open.
+    let with_unknown_renderer = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+            .args(args)
+            .env("ZIEGLERLAB_RENDERER", "vulkan")
+            .env_remove("DISPLAY")
+            .env_remove("WAYLAND_DISPLAY")
+            .output()
+            .expect("the binary runs")
+    };
+    let unknown = with_unknown_renderer(&[]);
     assert_eq!(unknown.status.code(), Some(2));
     let text = String::from_utf8_lossy(&unknown.stderr);
     assert!(
@@ -640,10 +645,6 @@ fn the_renderer_choice_is_checked_before_anything_opens() {
         "{text}"
     );
     // Subcommands draw headlessly and ignore the variable.
-    let presets = Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
-        .env("ZIEGLERLAB_RENDERER", "vulkan")
-        .arg("presets")
-        .output()
-        .expect("the binary runs");
+    let presets = with_unknown_renderer(&["presets"]);
     assert!(presets.status.success());
 }
