@@ -297,15 +297,49 @@ impl ZieglerApp {
                 } else {
                     0.5
                 };
-                ui.allocate_ui(vec2(ui.available_width(), scene_share * height), |ui| {
+                let min_plot_height = MIN_PLOT_HEIGHT * theme.text_size / 14.0;
+                // On a projector too small for the tab's plots, the root
+                // locus goes beside the scene: the class sees the column, the
+                // load bar and the eigenvalues together.
+                let locus_beside = self.state.settings().projector
+                    && (1.0 - scene_share) * height - below_scene_height(&theme)
+                        < min_plot_height;
+                let (top, _) = ui.allocate_exact_size(
+                    vec2(ui.available_width(), scene_share * height),
+                    egui::Sense::hover(),
+                );
+                let (scene_rect, locus_rect) = if locus_beside {
+                    let split = top.left() + 0.55 * top.width();
+                    let (left, right) = top.split_left_right_at_x(split);
+                    (left, Some(right.shrink2(vec2(6.0, 0.0))))
+                } else {
+                    (top, None)
+                };
+                ui.scope_builder(egui::UiBuilder::new().max_rect(scene_rect), |ui| {
                     scene::scene_ui(ui, &mut self.state, &mut self.scene, &theme);
                 });
+                if let Some(rect) = locus_rect {
+                    ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
+                        if self.state.answer_hidden() {
+                            ui.colored_label(
+                                theme.info,
+                                "The root locus shows the answer: it comes back when the lesson reveals it.",
+                            );
+                        } else {
+                            self.tabs
+                                .locus_mut()
+                                .complex_plane_ui(ui, &self.state, &theme);
+                        }
+                    });
+                }
                 load_bar::load_bar_ui(ui, &mut self.state, &theme);
                 tabs::Tabs::bar_ui(ui, &mut self.tab);
-                if ui.available_height() < MIN_PLOT_HEIGHT * theme.text_size / 14.0 {
-                    ui.weak(
-                    "The plots need more room here: a taller window, or projector mode off (P).",
-                );
+                if ui.available_height() < min_plot_height {
+                    ui.weak(if locus_beside {
+                        "The root locus is beside the column; the other plots need a taller window, or projector mode off (P)."
+                    } else {
+                        "The plots need more room here: a taller window, or projector mode off (P)."
+                    });
                 } else if self.state.answer_hidden() && self.tab != Tab::Histories {
                     ui.label(
                         RichText::new(
@@ -337,6 +371,12 @@ impl ZieglerApp {
             }
         }
     }
+}
+
+/// The height the load bar and the tab bar take under the scene, in
+/// points (the load bar's three rows of text, the tab bar's one, spacing).
+fn below_scene_height(theme: &Theme) -> f32 {
+    3.4 * (theme.text_size + 4.0) + theme.text_size + 36.0
 }
 
 impl eframe::App for ZieglerApp {

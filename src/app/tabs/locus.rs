@@ -78,6 +78,37 @@ impl View for LocusTab {
     }
 }
 
+impl LocusTab {
+    /// The root locus in the complex plane alone (beside the scene on a
+    /// projector too small for the tab's plots), refitted as the tab's are.
+    pub fn complex_plane_ui(&mut self, ui: &mut egui::Ui, state: &AppState, theme: &Theme) {
+        let Some(analysis) = state.analysis() else {
+            return;
+        };
+        let overlay = state.overlay();
+        let refit = self.fit.refit((
+            state.view_generation(),
+            analysis.key,
+            overlay.map(|o| o.preset),
+        ));
+        let loads = &analysis.locus.loads;
+        ui.label(format!(
+            "root locus, p = {} to {}",
+            number_text(loads.first().copied().unwrap_or(0.0)),
+            number_text(loads.last().copied().unwrap_or(0.0))
+        ));
+        root_locus_ui(
+            ui,
+            &analysis.locus,
+            overlay,
+            &state.current_eigenvalues(),
+            state.measured(),
+            refit,
+            theme,
+        );
+    }
+}
+
 /// The legend of the tab's plots, above them: what the colours, markers
 /// and lines are, and the overlay's own critical loads.
 fn legend_ui(ui: &mut egui::Ui, state: &AppState, locus: &Locus, theme: &Theme) {

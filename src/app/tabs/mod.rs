@@ -73,6 +73,11 @@ pub struct Tabs {
 }
 
 impl Tabs {
+    /// The locus tab, for its complex plane alone.
+    pub fn locus_mut(&mut self) -> &mut locus::LocusTab {
+        &mut self.locus
+    }
+
     /// The view that draws `tab`.
     pub fn view(&mut self, tab: Tab) -> &mut dyn View {
         match tab {
