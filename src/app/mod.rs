@@ -36,6 +36,7 @@ use theme::Theme;
 pub use layout::Layout;
 pub use notice::{Level, Notice};
 pub use pace::{MAX_FRAME_SECS, MAX_STEPS_PER_FRAME};
+pub use plot_frame::VIEW_HINT;
 pub use state::{AppState, LOAD_MAX_P, Settings, load_max_p};
 pub use tabs::Tab;
 pub use tabs::map::map_picture;
@@ -87,6 +88,8 @@ pub struct ZieglerApp {
     /// Whether what draws the frames clears them to the panels' colour
     /// first (the window; a headless picture starts transparent).
     cleared_to_panel_fill: bool,
+    /// Every frame is drawn for a picture (the command line's).
+    for_pictures: bool,
 }
 
 impl ZieglerApp {
@@ -111,6 +114,7 @@ impl ZieglerApp {
             recorder: recorder::Recorder::default(),
             last_frame: None,
             cleared_to_panel_fill: false,
+            for_pictures: false,
         }
     }
 
@@ -165,6 +169,12 @@ impl ZieglerApp {
                     .tell(Notice::warning(format!("stored map axis not used: {why}")));
             }
         }
+    }
+
+    /// Draws every frame for a picture: no hints for the hand (how to drag,
+    /// pan or zoom, the first launch's hint, the fit buttons).
+    pub fn draw_for_pictures(&mut self) {
+        self.for_pictures = true;
     }
 
     /// The state the window shows.
@@ -252,6 +262,9 @@ impl ZieglerApp {
     /// only in [`ZieglerApp::advance`], so a picture depends on the state alone.
     pub fn contents_ui(&mut self, ui: &mut egui::Ui) {
         let theme = self.applied_theme(ui.ctx());
+        // A recording's frames are pictures too.
+        self.state
+            .set_for_picture(self.for_pictures || self.recorder.is_capturing());
         match self.recorder.frame(ui.ctx()) {
             Some(Ok(path)) => self.state.say(Notice::info(format!(
                 "recording saved to {}",
@@ -357,6 +370,7 @@ impl ZieglerApp {
     /// One panel alone (for snapshots and figures).
     pub fn panel_ui(&mut self, ui: &mut egui::Ui, panel: Panel) {
         let theme = self.applied_theme(ui.ctx());
+        self.state.set_for_picture(self.for_pictures);
         match panel {
             Panel::Window => self.contents_ui(ui),
             Panel::Scene => {

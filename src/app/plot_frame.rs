@@ -254,8 +254,12 @@ impl<T> Default for Fit<T> {
 }
 
 impl<T: PartialEq> Fit<T> {
-    /// The row above the plots: the "fit" button and the hint.
-    pub fn bar_ui(&mut self, ui: &mut egui::Ui) {
+    /// The row above the plots: the "fit" button and the hint (neither in
+    /// a picture).
+    pub fn bar_ui(&mut self, ui: &mut egui::Ui, for_picture: bool) {
+        if for_picture {
+            return;
+        }
         ui.horizontal(|ui| {
             self.asked |= ui
                 .small_button("fit")

@@ -11,6 +11,9 @@ use eframe::egui::{self, ColorImage};
 
 use crate::recording::GifRecording;
 
+/// The window's title, also after a recording has shown its progress there.
+pub const WINDOW_TITLE: &str = "zieglerlab";
+
 /// Frames per second of a recording of the window (at most: a busy machine
 /// draws fewer, and each frame then lasts until the next).
 pub const RECORD_FPS: u16 = 10;
@@ -78,6 +81,13 @@ impl Recorder {
         };
     }
 
+    /// Whether screenshots are being taken (the window then draws no hints,
+    /// and the progress goes to the window's title, out of the pictures).
+    #[must_use]
+    pub fn is_capturing(&self) -> bool {
+        matches!(self, Self::Capturing { .. })
+    }
+
     /// One frame of the window: a screenshot when one is due; at the end,
     /// the GIF made on a thread. Returns a finished file's path, or why the
     /// recording failed.
@@ -98,12 +108,21 @@ impl Recorder {
                         taken.len() < *requested && now_secs < *until_secs + LATE_SCREENSHOT_SECS;
                     if !waiting {
                         *self = Self::encode(folder.clone(), taken, *until_secs);
+                        ctx.send_viewport_cmd(egui::ViewportCommand::Title(
+                            WINDOW_TITLE.to_owned(),
+                        ));
                     }
                     ctx.request_repaint();
                     return None;
                 }
                 let (take, next) = due(*next_secs, now_secs, RECORD_FPS);
                 *next_secs = next;
+                if take {
+                    ctx.send_viewport_cmd(egui::ViewportCommand::Title(format!(
+                        "{WINDOW_TITLE}: recording, {:.0} s to go",
+                        (*until_secs - now_secs).max(0.0).ceil()
+                    )));
+                }
                 if take {
                     *requested += 1;
                     let frames = Arc::clone(frames);
@@ -156,22 +175,16 @@ impl Recorder {
         }
     }
 
-    /// A line saying how far the recording is, if it is under way.
+    /// A line saying how far the making of the GIF is, if it is under way
+    /// (the capture's own progress is in the window's title).
     #[must_use]
-    pub fn progress_text(&self, now_secs: f64) -> Option<String> {
+    pub fn progress_text(&self) -> Option<String> {
         match self {
-            Self::Idle => None,
-            Self::Capturing {
-                until_secs, frames, ..
-            } => Some(format!(
-                "recording: {:.0} s to go, {} frames",
-                (until_secs - now_secs).max(0.0).ceil(),
-                frames.lock().map_or(0, |f| f.len())
-            )),
             Self::Encoding { done, total, .. } => Some(format!(
                 "making the GIF: frame {} of {total}",
                 done.load(Ordering::Relaxed)
             )),
+            Self::Idle | Self::Capturing { .. } => None,
         }
     }
 }
@@ -276,7 +289,12 @@ pub fn record_ui(ui: &mut egui::Ui, choice: &mut RecordChoice, recorder: &mut Re
             .accessible_name("record folder")
             .on_hover_text("the folder the GIF goes in");
         let now_secs = ui.input(|i| i.time);
-        if let Some(progress) = recorder.progress_text(now_secs) {
+        if recorder.is_capturing() {
+            // Nothing here that the pictures would show: the window's
+            // title counts down.
+            return;
+        }
+        if let Some(progress) = recorder.progress_text() {
             ui.label(progress);
             return;
         }

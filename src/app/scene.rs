@@ -149,14 +149,16 @@ pub fn scene_ui(ui: &mut egui::Ui, state: &mut AppState, scene: &mut SceneView, 
         return;
     }
     let drag = ui.interact(rect, ui.scope_id().with("drag the column"), Sense::drag());
-    plate(
-        ui.painter(),
-        theme,
-        rect.left_bottom() + vec2(10.0, -10.0),
-        Align2::LEFT_BOTTOM,
-        "drag the tip or a joint to displace the column".to_owned(),
-        theme.axis,
-    );
+    if !state.for_picture() {
+        plate(
+            ui.painter(),
+            theme,
+            rect.left_bottom() + vec2(10.0, -10.0),
+            Align2::LEFT_BOTTOM,
+            "drag the tip or a joint to displace the column".to_owned(),
+            theme.axis,
+        );
+    }
     // What was under the button when it went down (the drag starts a few
     // points later).
     if drag.drag_started()

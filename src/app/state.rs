@@ -109,6 +109,9 @@ pub struct AppState {
     ramp: Option<RampRun>,
     /// The one-line hint of a first launch, until the first kick.
     hint: bool,
+    /// Whom the frames are drawn for: a picture (the command line's, the
+    /// frames of a recording) has no hints for the hand.
+    drawn_for: DrawnFor,
     /// Counts "reset all": the views go back to their defaults when it moves.
     view_generation: u64,
     /// The column is held by the mouse: time stands still until released.
@@ -116,6 +119,15 @@ pub struct AppState {
     /// The lesson under way, and the tab its step asks the window for.
     lesson: Option<LessonRun>,
     requested_tab: Option<crate::lesson::LessonTab>,
+}
+
+/// Whom the window's frames are drawn for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum DrawnFor {
+    /// A person at the window: hints for the hand.
+    Window,
+    /// A picture: none.
+    Picture,
 }
 
 impl AppState {
@@ -144,6 +156,7 @@ impl AppState {
             overlay: None,
             ramp: None,
             hint: false,
+            drawn_for: DrawnFor::Window,
             view_generation: 0,
             held: false,
             lesson: None,

@@ -34,7 +34,7 @@ impl From<Renderer> for eframe::Renderer {
 fn options(renderer: Renderer, inner_size: [f32; 2]) -> eframe::NativeOptions {
     eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
-            .with_title("zieglerlab")
+            .with_title(super::recorder::WINDOW_TITLE)
             .with_inner_size(inner_size)
             .with_min_inner_size([1024.0, 700.0]),
         renderer: renderer.into(),

@@ -100,6 +100,7 @@ pub fn render_frames(
     mut each: impl FnMut(usize, image::RgbaImage) -> Result<()>,
 ) -> Result<()> {
     let (width, height) = (f32::from(size.width), f32::from(size.height));
+    app.draw_for_pictures();
     let background = matches!(panel, Panel::Tab(Tab::Map | Tab::Paradox));
     if background {
         app.complete_background_work();

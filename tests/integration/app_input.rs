@@ -380,3 +380,31 @@ fn page_down_and_page_up_step_through_a_lesson() {
     harness.run();
     assert_eq!(step(&harness), 1);
 }
+
+/// A picture shows no hints for the hand: the plots' view hint and fit
+/// button and the first launch's hint are in the window, not in what the
+/// command line draws (nor in a recording's frames).
+#[test]
+fn pictures_carry_no_hints_for_the_hand() {
+    let hints = |for_pictures: bool| {
+        let mut app = ZieglerApp::from_stored_text(None);
+        if for_pictures {
+            app.draw_for_pictures();
+        }
+        let mut harness = Harness::builder()
+            .with_size([1280.0, 800.0])
+            .build_ui_state(|ui, app: &mut ZieglerApp| app.contents_ui(ui), app);
+        harness.run();
+        [
+            harness
+                .query_by_label_contains(zieglerlab::app::VIEW_HINT)
+                .is_some(),
+            harness.query_by_label("fit").is_some(),
+            harness
+                .query_by_label_contains("Drag the load bar to about 3")
+                .is_some(),
+        ]
+    };
+    assert_eq!(hints(false), [true, true, true], "the window shows them");
+    assert_eq!(hints(true), [false, false, false], "a picture does not");
+}

@@ -18,10 +18,26 @@ impl AppState {
         state
     }
 
-    /// The hint to show, if any.
+    /// The hint to show, if any (none in a picture).
     #[must_use]
     pub fn hint(&self) -> Option<&'static str> {
-        self.hint.then_some(FIRST_LAUNCH_HINT)
+        (self.hint && !self.for_picture()).then_some(FIRST_LAUNCH_HINT)
+    }
+
+    /// Whether the window is drawn for a picture: the command line's
+    /// pictures and the frames of a recording show no hints for the hand
+    /// (how to drag, pan or zoom, the first launch's hint, the fit button).
+    #[must_use]
+    pub fn for_picture(&self) -> bool {
+        self.drawn_for == super::DrawnFor::Picture
+    }
+
+    pub fn set_for_picture(&mut self, on: bool) {
+        self.drawn_for = if on {
+            super::DrawnFor::Picture
+        } else {
+            super::DrawnFor::Window
+        };
     }
 
     pub fn dismiss_hint(&mut self) {

@@ -18,7 +18,7 @@ pub struct HistoriesTab {
 
 impl View for HistoriesTab {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
-        self.fit.bar_ui(ui);
+        self.fit.bar_ui(ui, state.for_picture());
         let refit = self.fit.refit(state.view_generation());
         histories_ui(ui, state.history(), refit, theme);
     }

@@ -33,7 +33,7 @@ impl View for LocusTab {
             );
             return;
         };
-        self.fit.bar_ui(ui);
+        self.fit.bar_ui(ui, state.for_picture());
         let overlay = state.overlay();
         legend_ui(ui, state, &analysis.locus, theme);
         // The analysis drawn (it may come in a frame after the parameters).

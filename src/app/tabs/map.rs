@@ -253,7 +253,13 @@ impl MapPanel {
     }
 
     /// The panel: axis choice and range, progress, the map. Returns a click.
-    fn draw(&mut self, ui: &mut egui::Ui, model: &Model, theme: &Theme) -> Option<Pick> {
+    fn draw(
+        &mut self,
+        ui: &mut egui::Ui,
+        model: &Model,
+        for_picture: bool,
+        theme: &Theme,
+    ) -> Option<Pick> {
         self.controls_ui(ui, model);
         let job = self.job.as_mut()?;
         job.drain();
@@ -291,7 +297,7 @@ impl MapPanel {
             job.stale = false;
         }
         let texture = job.texture.as_ref()?;
-        self.fit.bar_ui(ui);
+        self.fit.bar_ui(ui, for_picture);
         let spec = &job.spec;
         let refit = self.fit.refit((
             self.generation,
@@ -363,7 +369,7 @@ impl View for MapPanel {
         let model = *state.model();
         self.follow(&model, load_max_p(&model));
         self.generation = state.view_generation();
-        if let Some(pick) = self.draw(ui, &model, theme) {
+        if let Some(pick) = self.draw(ui, &model, state.for_picture(), theme) {
             state.set_map_point(&pick.axis, pick.load, pick.value);
         }
     }

@@ -360,7 +360,14 @@ impl ParadoxPanel {
         point
     }
 
-    fn draw(&mut self, ui: &mut egui::Ui, model: &Model, known: Option<f64>, theme: &Theme) {
+    fn draw(
+        &mut self,
+        ui: &mut egui::Ui,
+        model: &Model,
+        known: Option<f64>,
+        for_picture: bool,
+        theme: &Theme,
+    ) {
         self.follow(model);
         let here = self.current_point(model, known);
         let Some(job) = &mut self.job else {
@@ -386,7 +393,7 @@ impl ParadoxPanel {
             (Load::Follower { .. }, DampingKind::Joints) => "The flutter load with joint dampers c1 = (c1/c2) c2 as the damping level g2 = c2 / sqrt(k m l^2) goes to zero: the limit depends on the ratio and lies below the undamped load (Ziegler's paradox).",
             (Load::Follower { .. }, DampingKind::External) => "The flutter load with equal joint dampers c1 = c2 = c (internal damping) and drag c_ext = (c_ext l^3 / c) c / l^3 along the rods (external damping) as the level g2 = c / sqrt(k m l^2) goes to zero: external damping destabilizes too, and the limit depends on the ratio.",
         });
-        self.fit.bar_ui(ui);
+        self.fit.bar_ui(ui, for_picture);
         let refit = self.fit.refit((self.generation, job.key));
         let palette = [theme.series[0], theme.series[3], theme.series[4]];
         let highest = curves
@@ -444,7 +451,7 @@ impl View for ParadoxPanel {
         if matches!(model.load, Load::Follower { eta, .. } if eta > 0.0) {
             self.kind_ui(ui);
         }
-        self.draw(ui, &model, known, theme);
+        self.draw(ui, &model, known, state.for_picture(), theme);
     }
 }
 
