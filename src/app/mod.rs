@@ -49,6 +49,9 @@ const LAYOUT_KEY: &str = "zieglerlab-layout";
 /// Below this height (in points, at the normal text size) the tab's plots
 /// would be unreadable and are not drawn.
 const MIN_PLOT_HEIGHT: f32 = 170.0;
+/// What stands where a plot would give a lesson's answer away.
+const ANSWER_HIDDEN_NOTE: &str =
+    "This plot shows the answer: it comes back when the lesson reveals it.";
 /// eframe's name for the app (its storage folder).
 const APP_ID: &str = "zieglerlab";
 
@@ -302,69 +305,69 @@ impl ZieglerApp {
             });
         egui::CentralPanel::default()
             .frame(self.panel_frame(egui::Frame::central_panel(&style)))
-            .show(ui, |ui| {
-                let height = ui.available_height();
-                // In front of a class the scene gets most of the height.
-                let scene_share = if self.state.settings().projector {
-                    0.6
+            .show(ui, |ui| self.central_ui(ui, &theme));
+    }
+
+    /// The central panel: the scene (with the root locus beside it on a
+    /// small projector), the load bar, the tab bar and the tab.
+    fn central_ui(&mut self, ui: &mut egui::Ui, theme: &Theme) {
+        let height = ui.available_height();
+        // In front of a class the scene gets most of the height.
+        let scene_share = if self.state.settings().projector {
+            0.6
+        } else {
+            0.5
+        };
+        let min_plot_height = MIN_PLOT_HEIGHT * theme.text_size / 14.0;
+        // On a projector too small for the tab's plots, the root
+        // locus goes beside the scene: the class sees the column, the
+        // load bar and the eigenvalues together.
+        let locus_beside = self.state.settings().projector
+            && (1.0 - scene_share) * height - below_scene_height(theme) < min_plot_height;
+        let (top, _) = ui.allocate_exact_size(
+            vec2(ui.available_width(), scene_share * height),
+            egui::Sense::hover(),
+        );
+        let (scene_rect, locus_rect) = if locus_beside {
+            let split = top.left() + 0.55 * top.width();
+            let (left, right) = top.split_left_right_at_x(split);
+            (left, Some(right.shrink2(vec2(6.0, 0.0))))
+        } else {
+            (top, None)
+        };
+        ui.scope_builder(egui::UiBuilder::new().max_rect(scene_rect), |ui| {
+            scene::scene_ui(ui, &mut self.state, &mut self.scene, theme);
+        });
+        if let Some(rect) = locus_rect {
+            ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
+                if self.state.answer_hidden() {
+                    ui.colored_label(theme.info, ANSWER_HIDDEN_NOTE);
                 } else {
-                    0.5
-                };
-                let min_plot_height = MIN_PLOT_HEIGHT * theme.text_size / 14.0;
-                // On a projector too small for the tab's plots, the root
-                // locus goes beside the scene: the class sees the column, the
-                // load bar and the eigenvalues together.
-                let locus_beside = self.state.settings().projector
-                    && (1.0 - scene_share) * height - below_scene_height(&theme)
-                        < min_plot_height;
-                let (top, _) = ui.allocate_exact_size(
-                    vec2(ui.available_width(), scene_share * height),
-                    egui::Sense::hover(),
-                );
-                let (scene_rect, locus_rect) = if locus_beside {
-                    let split = top.left() + 0.55 * top.width();
-                    let (left, right) = top.split_left_right_at_x(split);
-                    (left, Some(right.shrink2(vec2(6.0, 0.0))))
-                } else {
-                    (top, None)
-                };
-                ui.scope_builder(egui::UiBuilder::new().max_rect(scene_rect), |ui| {
-                    scene::scene_ui(ui, &mut self.state, &mut self.scene, &theme);
-                });
-                if let Some(rect) = locus_rect {
-                    ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
-                        if self.state.answer_hidden() {
-                            ui.colored_label(
-                                theme.info,
-                                "The root locus shows the answer: it comes back when the lesson reveals it.",
-                            );
-                        } else {
-                            self.tabs
-                                .locus_mut()
-                                .complex_plane_ui(ui, &self.state, &theme);
-                        }
-                    });
-                }
-                load_bar::load_bar_ui(ui, &mut self.state, &theme);
-                tabs::Tabs::bar_ui(ui, &mut self.tab);
-                if ui.available_height() < min_plot_height {
-                    ui.weak(if locus_beside {
-                        "The root locus is beside the column; the other plots need a taller window, or projector mode off (P)."
-                    } else {
-                        "The plots need more room here: a taller window, or projector mode off (P)."
-                    });
-                } else if self.state.answer_hidden() && self.tab != Tab::Histories {
-                    ui.label(
-                        RichText::new(
-                            "This plot shows the answer: it comes back when the lesson reveals it. The time histories show what the column does.",
-                        )
-                        .size(theme.text_size * 1.2)
-                        .color(theme.info),
-                    );
-                } else {
-                    self.tabs.view(self.tab).ui(ui, &mut self.state, &theme);
+                    self.tabs
+                        .locus_mut()
+                        .complex_plane_ui(ui, &self.state, theme);
                 }
             });
+        }
+        load_bar::load_bar_ui(ui, &mut self.state, theme);
+        tabs::Tabs::bar_ui(ui, &mut self.tab);
+        if ui.available_height() < min_plot_height {
+            ui.weak(if locus_beside {
+                "The root locus is beside the column; the other plots need a taller window, or projector mode off (P)."
+            } else {
+                "The plots need more room here: a taller window, or projector mode off (P)."
+            });
+        } else if self.state.answer_hidden() && self.tab != Tab::Histories {
+            ui.label(
+                RichText::new(format!(
+                    "{ANSWER_HIDDEN_NOTE} The time histories show what the column does."
+                ))
+                .size(theme.text_size * 1.2)
+                .color(theme.info),
+            );
+        } else {
+            self.tabs.view(self.tab).ui(ui, &mut self.state, theme);
+        }
     }
 
     /// One panel alone (for snapshots and figures).

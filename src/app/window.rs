@@ -78,8 +78,6 @@ pub struct WindowFrames {
     /// ms: the app's logic, the egui pass, tessellation, drawing and the
     /// buffer swap, as the person at the window waits for them.
     pub intervals_ms: Vec<f64>,
-    /// The window's size in pixels when the last frame began.
-    pub size_px: [f32; 2],
 }
 
 /// Frames untimed at the start (fonts laid out, caches filled, the window
@@ -88,8 +86,8 @@ const WARMUP_FRAMES: usize = 30;
 
 /// The default launch (the `roller` preset running, the locus tab) in a
 /// real window of `inner_size` points drawn by `renderer`, repainted
-/// continuously for `frames` timed frames and then closed. Nothing is read
-/// from or written to the stored settings. Needs a display.
+/// continuously for `frames` timed frames and then closed. The app's stored
+/// settings are neither read nor written. Needs a display.
 ///
 /// # Errors
 /// No display, no graphics context, or the app's defaults refused (they are
@@ -153,7 +151,6 @@ impl eframe::App for TimedWindow {
             timed
                 .intervals_ms
                 .push(now.duration_since(last).as_secs_f64() * 1e3);
-            timed.size_px = (ctx.content_rect().size() * ctx.pixels_per_point()).into();
         }
         self.last = Some(now);
         self.seen += 1;
@@ -170,5 +167,10 @@ impl eframe::App for TimedWindow {
 
     fn clear_color(&self, visuals: &egui::Visuals) -> [f32; 4] {
         eframe::App::clear_color(&self.app, visuals)
+    }
+
+    /// A bench run leaves nothing of egui's memory behind.
+    fn persist_egui_memory(&self) -> bool {
+        false
     }
 }
