@@ -6,8 +6,9 @@ use std::path::Path;
 
 use anyhow::Result;
 
-/// Refuses an output path before any work is done: its folder must exist,
-/// and a picture must be named `*.png` (the only format written).
+/// Refuses an output path before any work is done: its folder must exist
+/// and take a new file (the output is written there first and renamed into
+/// place), and a picture must be named `*.png` (the only format written).
 pub fn check_output(out: &Path, png: bool) -> Result<()> {
     let shown = out.display();
     if png
@@ -26,6 +27,18 @@ pub fn check_output(out: &Path, png: bool) -> Result<()> {
     }
     if out.is_dir() {
         anyhow::bail!("out = {shown}: is a folder, not a file");
+    }
+    // A device or a pipe (/dev/stdout) is written directly; anything else
+    // goes through a temporary file in the folder: try one now, so that a
+    // folder that takes no files (read-only, /proc) is found before the work.
+    let direct = std::fs::metadata(out).is_ok_and(|m| !m.is_file());
+    if !direct && let Err(why) = tempfile::NamedTempFile::new_in(folder) {
+        // The kind alone: the temporary file's own name means nothing here.
+        anyhow::bail!(
+            "out = {shown}: the folder {} takes no new file ({})",
+            folder.display(),
+            std::io::Error::from(why.kind())
+        );
     }
     Ok(())
 }

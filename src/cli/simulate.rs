@@ -2,6 +2,7 @@
 //! rest, one CSV row per step.
 
 use std::io::Write;
+use std::ops::ControlFlow;
 
 use anyhow::Result;
 use clap::ValueEnum;
@@ -102,18 +103,22 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     };
     let first_load = args.ramp.map(|ramp| ramp.from_p);
     row(&simulation.observe(), first_load)?;
+    // A row that cannot be written (the reader went away: `| head`) ends
+    // the run there, not at the end of the duration.
     let mut written = Ok(());
+    let mut keep = |result: std::io::Result<()>| {
+        written = result;
+        if written.is_ok() {
+            ControlFlow::Continue(())
+        } else {
+            ControlFlow::Break(())
+        }
+    };
     let status = match &args.ramp {
-        Some(ramp) => simulation.run_ramp(ramp, duration, |o, load| {
-            if written.is_ok() {
-                written = row(o, Some(load));
-            }
-        })?,
-        None => simulation.run(duration, |o| {
-            if written.is_ok() {
-                written = row(o, None);
-            }
-        }),
+        Some(ramp) => {
+            simulation.run_ramp_while(ramp, duration, |o, load| keep(row(o, Some(load))))?
+        }
+        None => simulation.run_while(duration, |o| keep(row(o, None))),
     };
     written?;
     out.flush()?;

@@ -16,6 +16,7 @@ use crate::model::{
     Model, ModelError, StateVec, chain_mass_matrix, joint_matrices, joints_m, rest_state,
     state_derivative,
 };
+use std::ops::ControlFlow;
 
 /// The app's simulation step: small against the fastest column period of
 /// the presets (about 5 s) and the roller's spin time constant at p = 1.
@@ -390,12 +391,24 @@ impl Simulation {
     /// Advances whole steps until `duration_secs` more have passed (or the
     /// run diverges), calling `each` with the observables after every step.
     pub fn run(&mut self, duration_secs: f64, mut each: impl FnMut(&Observables)) -> Status {
+        self.run_while(duration_secs, |o| {
+            each(o);
+            ControlFlow::Continue(())
+        })
+    }
+
+    /// [`Self::run`], stopping early after a step where `each` says
+    /// [`ControlFlow::Break`] (a reader that went away).
+    pub fn run_while(
+        &mut self,
+        duration_secs: f64,
+        mut each: impl FnMut(&Observables) -> ControlFlow<()>,
+    ) -> Status {
         let end = self.time_secs() + duration_secs;
         while self.time_secs() < end - 0.5 * self.step_secs {
-            if self.step() != Status::Running {
+            if self.step() != Status::Running || each(&self.observe()).is_break() {
                 break;
             }
-            each(&self.observe());
         }
         self.status
     }

@@ -3,6 +3,7 @@
 //! quasi-statically from zero"), and a run that follows it step by step.
 
 use super::{Observables, SimError, Simulation, Status};
+use std::ops::ControlFlow;
 
 /// A load ramp: `p` from `from_p` toward `to_p` at `rate_p_per_s` (> 0) per
 /// simulated second, then held at `to_p`.
@@ -91,16 +92,32 @@ impl Simulation {
         duration_secs: f64,
         mut each: impl FnMut(&Observables, f64),
     ) -> Result<Status, SimError> {
+        self.run_ramp_while(ramp, duration_secs, |o, load| {
+            each(o, load);
+            ControlFlow::Continue(())
+        })
+    }
+
+    /// [`Self::run_ramp`], stopping early after a step where `each` says
+    /// [`ControlFlow::Break`].
+    ///
+    /// # Errors
+    /// A load the engine cannot take (the run stops there).
+    pub fn run_ramp_while(
+        &mut self,
+        ramp: &Ramp,
+        duration_secs: f64,
+        mut each: impl FnMut(&Observables, f64) -> ControlFlow<()>,
+    ) -> Result<Status, SimError> {
         let start = self.time_secs();
         let end = start + duration_secs;
         while self.time_secs() < end - 0.5 * self.step_secs() {
             let load = ramp.load_at(self.time_secs() - start);
             let model = self.model().at_load(load);
             self.set_model(model)?;
-            if self.step() != Status::Running {
+            if self.step() != Status::Running || each(&self.observe(), load).is_break() {
                 break;
             }
-            each(&self.observe(), load);
         }
         Ok(self.status())
     }

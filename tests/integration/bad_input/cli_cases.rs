@@ -410,6 +410,29 @@ pub const CLI: &[Cli] = &[
         ],
         "the folder /nonexistent-dir does not exist",
     ),
+    // A folder that exists but takes no file is found before any work.
+    refused(
+        &["record", "--preset", "roller", "--out", "/proc/x.gif"],
+        "out = /proc/x.gif: the folder /proc takes no new file",
+    ),
+    refused(
+        &[
+            "map",
+            "--preset",
+            "roller",
+            "--x",
+            "load:0:8:256",
+            "--y",
+            "nu:0.005:1:256",
+            "--out",
+            "/proc/m.csv",
+        ],
+        "out = /proc/m.csv: the folder /proc takes no new file",
+    ),
+    refused(
+        &["snapshot", "--preset", "roller", "--out", "/proc/x.png"],
+        "out = /proc/x.png: the folder /proc takes no new file",
+    ),
     refused(
         &["bench", "--frames", "0"],
         "frames = 0: must be 1 to 10000",
