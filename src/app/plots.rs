@@ -201,7 +201,8 @@ pub fn versus_load_ui(
 
 /// The run's recent past: the angles and delta against time, the energies,
 /// and a phase portrait of rod 2.
-pub fn histories_ui(ui: &mut egui::Ui, history: &History, refit: bool, theme: &Theme) {
+/// The band's angle and power only where there is a band (`band`).
+pub fn histories_ui(ui: &mut egui::Ui, history: &History, band: bool, refit: bool, theme: &Theme) {
     let samples: Vec<_> = history.thinned(1500).collect();
     let series = |f: &dyn Fn(&crate::sim::Observables) -> f64| -> PlotPoints<'_> {
         samples.iter().map(|o| [o.t_secs, f(o)]).collect()
@@ -210,48 +211,52 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, refit: bool, theme: &T
     ui.horizontal(|ui| {
         ui.vertical(|ui| {
             ui.allocate_ui(vec2(0.62 * width, 0.5 * height - 4.0), |ui| {
-                legend_row(
-                    ui,
-                    &[
-                        (Swatch::Line(theme.series[0]), "φ1".to_owned()),
-                        (Swatch::Line(theme.series[1]), "φ2".to_owned()),
-                        (
-                            Swatch::Line(theme.series[2]),
-                            "δ: the band force's angle from rod 2".to_owned(),
-                        ),
-                    ],
-                );
+                let mut legend = vec![
+                    (Swatch::Line(theme.series[0]), "φ1".to_owned()),
+                    (Swatch::Line(theme.series[1]), "φ2".to_owned()),
+                ];
+                if band {
+                    legend.push((
+                        Swatch::Line(theme.series[2]),
+                        "δ: the band force's angle from rod 2".to_owned(),
+                    ));
+                }
+                legend_row(ui, &legend);
                 let plot = Plot::new("angles");
                 refit_if(axes(plot, "t (s)", "rad"), refit).show(ui, |plot_ui| {
                     plot_ui.line(Line::new("φ1", series(&|o| o.phi1_rad)).color(theme.series[0]));
                     plot_ui.line(Line::new("φ2", series(&|o| o.phi2_rad)).color(theme.series[1]));
-                    plot_ui.line(Line::new("δ", series(&|o| o.delta_rad)).color(theme.series[2]));
+                    if band {
+                        plot_ui
+                            .line(Line::new("δ", series(&|o| o.delta_rad)).color(theme.series[2]));
+                    }
                 });
             });
             ui.allocate_ui(vec2(0.62 * width, 0.5 * height - 4.0), |ui| {
-                legend_row(
-                    ui,
-                    &[
-                        (
-                            Swatch::Line(theme.series[3]),
-                            "kinetic + spring energy".to_owned(),
-                        ),
-                        (
-                            Swatch::Line(theme.series[4]),
-                            "power from the band".to_owned(),
-                        ),
-                    ],
-                );
+                let mut legend = vec![(
+                    Swatch::Line(theme.series[3]),
+                    "kinetic + spring energy".to_owned(),
+                )];
+                if band {
+                    legend.push((
+                        Swatch::Line(theme.series[4]),
+                        "power from the band".to_owned(),
+                    ));
+                }
+                legend_row(ui, &legend);
                 let plot = Plot::new("energy");
-                refit_if(axes(plot, "t (s)", "J, W"), refit).show(ui, |plot_ui| {
+                let units = if band { "J, W" } else { "J" };
+                refit_if(axes(plot, "t (s)", units), refit).show(ui, |plot_ui| {
                     plot_ui.line(
                         Line::new("kinetic + spring energy", series(&|o| o.energy_j()))
                             .color(theme.series[3]),
                     );
-                    plot_ui.line(
-                        Line::new("power from the band", series(&|o| o.band_power_w))
-                            .color(theme.series[4]),
-                    );
+                    if band {
+                        plot_ui.line(
+                            Line::new("power from the band", series(&|o| o.band_power_w))
+                                .color(theme.series[4]),
+                        );
+                    }
                 });
             });
         });

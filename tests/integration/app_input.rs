@@ -408,3 +408,43 @@ fn pictures_carry_no_hints_for_the_hand() {
     assert_eq!(hints(false), [true, true, true], "the window shows them");
     assert_eq!(hints(true), [false, false, false], "a picture does not");
 }
+
+/// Words per column: the band's angle and power are plotted only where
+/// there is a band, and a growth rate zero within the resolution is called
+/// neutral, with no decay time of millions of years beside it.
+#[test]
+fn the_words_fit_the_column() {
+    use zieglerlab::app::Tab;
+    use zieglerlab::model::PRESETS;
+    let mut neutral_seen = 0;
+    for preset in PRESETS {
+        let mut app = ZieglerApp::new(Settings {
+            preset: preset.id,
+            model: preset
+                .model()
+                .at_load(0.5 * zieglerlab::app::load_max_p(&preset.model()) / 8.0),
+            ..Settings::default()
+        })
+        .unwrap();
+        app.show_tab(Tab::Histories);
+        // The analysis alone: the map's and paradox's work is not shown.
+        app.state_mut().settle_analysis();
+        let mut harness = Harness::builder()
+            .with_size([1280.0, 900.0])
+            .build_ui_state(|ui, app: &mut ZieglerApp| app.contents_ui(ui), app);
+        harness.run();
+        let band = preset.model().roller().is_some();
+        let shown = |text: &str| harness.query_by_label_contains(text).is_some();
+        assert_eq!(shown("power from the band"), band, "{}", preset.name);
+        assert_eq!(shown("the band force's angle"), band, "{}", preset.name);
+        if shown("growth rate  0 (to within") {
+            neutral_seen += 1;
+            assert!(shown("neutral: no growth, no decay"), "{}", preset.name);
+            assert!(!shown("decay time"), "{}", preset.name);
+        }
+    }
+    assert!(
+        neutral_seen > 0,
+        "some undamped column is neutral at its load"
+    );
+}

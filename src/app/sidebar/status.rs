@@ -58,7 +58,9 @@ impl View for StatusSection {
         }
         match s.e_folding_secs() {
             Some(secs) => ui.label(format!("e-folding time  {}", duration_text(secs))),
-            None if growth < 0.0 => {
+            // Within the resolution the rate is zero: no decay time of
+            // millions of years beside "growth rate 0".
+            None if growth < -s.tolerance_per_s => {
                 ui.label(format!("decay time  {}", duration_text(-1.0 / growth)))
             }
             None => ui.label("neutral: no growth, no decay"),

@@ -20,6 +20,7 @@ impl View for HistoriesTab {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
         self.fit.bar_ui(ui, state.for_picture());
         let refit = self.fit.refit(state.view_generation());
-        histories_ui(ui, state.history(), refit, theme);
+        let band = state.model().roller().is_some();
+        histories_ui(ui, state.history(), band, refit, theme);
     }
 }
