@@ -47,28 +47,35 @@ pub fn write_atomically(
             .and_then(|()| buffered.flush())
             .map_err(|e| error(&e));
     }
-    let folder = folder_of(out);
-    let mut file = tempfile::NamedTempFile::new_in(folder).map_err(|e| error(&e))?;
-    {
-        let mut buffered = std::io::BufWriter::new(file.as_file_mut());
-        write(&mut buffered)
-            .and_then(|()| buffered.flush())
-            .map_err(|e| error(&e))?;
-    }
     // A temporary file is private (0600); the result gets the permissions
     // of the file it replaces, or those of a new file (0644 on Unix).
     let permissions = std::fs::metadata(out)
         .map(|m| m.permissions())
         .ok()
         .or_else(new_file_permissions);
-    if let Some(permissions) = permissions {
-        file.as_file()
-            .set_permissions(permissions)
-            .map_err(|e| error(&e))?;
-    }
-    file.as_file().sync_all().map_err(|e| error(&e))?;
+    let file = written_temporary(folder_of(out), permissions, write).map_err(|e| error(&e))?;
     file.persist(out).map_err(|e| error(&e.error))?;
     Ok(())
+}
+
+/// A temporary file in `folder` holding what `write` wrote, flushed, given
+/// `permissions` and synced: ready to be renamed into place.
+fn written_temporary(
+    folder: &Path,
+    permissions: Option<std::fs::Permissions>,
+    write: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> std::io::Result<()>,
+) -> std::io::Result<tempfile::NamedTempFile> {
+    let mut file = tempfile::NamedTempFile::new_in(folder)?;
+    {
+        let mut buffered = std::io::BufWriter::new(file.as_file_mut());
+        write(&mut buffered)?;
+        buffered.flush()?;
+    }
+    if let Some(permissions) = permissions {
+        file.as_file().set_permissions(permissions)?;
+    }
+    file.as_file().sync_all()?;
+    Ok(file)
 }
 
 /// Most names [`write_new`] tries before giving up.
@@ -100,19 +107,8 @@ pub fn write_new(
         path: name(1).display().to_string(),
         why: e.to_string(),
     };
-    let mut file = tempfile::NamedTempFile::new_in(folder).map_err(|e| error(&e))?;
-    {
-        let mut buffered = std::io::BufWriter::new(file.as_file_mut());
-        write(&mut buffered)
-            .and_then(|()| buffered.flush())
-            .map_err(|e| error(&e))?;
-    }
-    if let Some(permissions) = new_file_permissions() {
-        file.as_file()
-            .set_permissions(permissions)
-            .map_err(|e| error(&e))?;
-    }
-    file.as_file().sync_all().map_err(|e| error(&e))?;
+    let mut file =
+        written_temporary(folder, new_file_permissions(), write).map_err(|e| error(&e))?;
     for k in 1..=MAX_NAME_TRIES {
         let path = name(k);
         match file.persist_noclobber(&path) {
