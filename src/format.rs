@@ -98,13 +98,16 @@ fn round_to_3(value: f64) -> f64 {
 }
 
 /// A load: four decimals, or three significant digits when it is below
-/// 1e-3 (the roller's first flutter load scales with nu).
+/// 1e-3 (the roller's first flutter load scales with nu), five from 1e6.
 #[must_use]
 pub fn load_text(load: f64) -> String {
-    if load == 0.0 || load.abs() >= 1e-3 {
+    let magnitude = load.abs();
+    if load == 0.0 || (1e-3..1e6).contains(&magnitude) || !magnitude.is_finite() {
         format!("{load:.4}")
-    } else {
+    } else if magnitude < 1e-3 {
         format!("{load:.2e}")
+    } else {
+        format!("{load:.4e}")
     }
 }
 
@@ -184,6 +187,7 @@ mod tests {
     fn small_loads_rates_and_times_keep_three_significant_digits() {
         assert_eq!(load_text(2.085_786_437_626_9), "2.0858");
         assert_eq!(load_text(2.382e-4), "2.38e-4");
+        assert_eq!(load_text(1e150), "1.0000e150");
         assert_eq!(rate_text(0.004_49), "+0.00449");
         assert_eq!(rate_text(-2.5e-5), "-2.500e-5");
         assert_eq!(percent_text(2.864), "2.86%");

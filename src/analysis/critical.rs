@@ -5,7 +5,7 @@ use serde::Serialize;
 
 use super::AnalysisError;
 use super::C64;
-use super::locus::{Locus, eigenvalues_near, load_resolution, locus};
+use super::locus::{Locus, eigenvalues_near, load_resolution, locus, locus_until};
 use super::pencil::AffinePencil;
 use super::stability::{Stability, State, classify};
 use crate::format::load_text;
@@ -309,16 +309,113 @@ pub fn critical_loads(
     critical_loads_along(pencil, &bracketing_locus(pencil, load_min, load_max)?)
 }
 
-/// The tracked locus of [`BRACKET_SAMPLES`] loads over `[load_min, load_max]`
-/// (fewer when the range holds fewer distinct loads in f64, one when it is a point).
+/// Samples of each decade of load in a wide range (see [`bracketing_locus`]).
+const DECADE_SAMPLES: usize = 4000;
+
+/// Beyond this many times the load that matches the column's stiffness, the
+/// column's own stiffness changes the pencil by less than the
+/// classification's tolerance (1e-10 of the frequency scale, see
+/// [`RELATIVE_TOLERANCE`](super::RELATIVE_TOLERANCE)) and below rounding
+/// 1e5 times further: the pencil changes in scale only.
+const ROUNDED_AWAY: f64 = 1e12;
+
+/// Samples of the range beyond [`ROUNDED_AWAY`].
+const ROUNDED_AWAY_SAMPLES: usize = 100;
+
+/// The largest load a range may reach, as for the load itself (`--set load`).
+pub const LARGEST_LOAD: f64 = crate::model::LARGEST_DERIVED;
+
+/// The tracked locus that brackets every change of stability over
+/// `[load_min, load_max]`. Up to ten times the column's natural range
+/// ([`AffinePencil::natural_load_max`]), [`BRACKET_SAMPLES`] evenly spaced
+/// loads (fewer when the range holds fewer distinct loads in f64, one when it
+/// is a point). A wider range is bracketed in sections: the natural range
+/// as above, then [`DECADE_SAMPLES`] per decade of load, so that `--load-max
+/// 1e6` resolves the same windows as the natural range, up to where the
+/// column's stiffness is rounded away ([`ROUNDED_AWAY`]); beyond that, where
+/// nothing but the scale changes, [`ROUNDED_AWAY_SAMPLES`].
 ///
 /// # Errors
-/// A bad range (also one too narrow to hold two distinct loads) or a failed
-/// eigenvalue computation.
+/// A bad range (also one too narrow to hold two distinct loads, or one
+/// reaching beyond [`LARGEST_LOAD`]) or a failed eigenvalue computation.
 pub fn bracketing_locus(
     pencil: &AffinePencil,
     load_min: f64,
     load_max: f64,
+) -> Result<Locus, AnalysisError> {
+    if load_max > LARGEST_LOAD {
+        return Err(AnalysisError::BadRange {
+            what: "load-max",
+            value: load_max,
+            allowed: "must be at most 1e150, the largest load the analysis resolves",
+        });
+    }
+    let natural = pencil.natural_load_max().max(load_min);
+    if load_max <= 10.0 * natural {
+        return evenly_bracketed(pencil, load_min, load_max);
+    }
+    let rounded_away = ROUNDED_AWAY * pencil.stiffness_matching_load().max(natural);
+    let mut whole = evenly_bracketed(pencil, load_min, natural)?;
+    let mut start = natural;
+    while start < load_max {
+        let (end, samples) = if start >= rounded_away {
+            (load_max, ROUNDED_AWAY_SAMPLES)
+        } else {
+            ((10.0 * start).min(load_max), DECADE_SAMPLES)
+        };
+        whole.extend_with(&locus(pencil, start, end, samples)?);
+        start = end;
+    }
+    Ok(whole)
+}
+
+/// The tracked locus of [`BRACKET_SAMPLES`] evenly spaced loads (see [`bracketing_locus`]).
+fn evenly_bracketed(
+    pencil: &AffinePencil,
+    load_min: f64,
+    load_max: f64,
+) -> Result<Locus, AnalysisError> {
+    evenly_bracketed_until(pencil, load_min, load_max, |_, _| false)
+}
+
+/// Evenly spaced loads past the first unstable one that the bracketing
+/// locus of [`first_loss_within`] goes on to: room to widen the bracket
+/// where the tracked roots and the Schur path read a double root apart.
+const PAST_FIRST_LOSS: usize = 8;
+
+/// The first change from stable to unstable in `[0, load_max]`, as
+/// [`critical_loads`] finds it, with the bracketing locus ended a few
+/// samples past the first unstable one (the whole range when the column
+/// starts unstable or stays stable).
+///
+/// # Errors
+/// A bad range or a failed eigenvalue computation.
+pub(super) fn first_loss_within(
+    pencil: &AffinePencil,
+    load_max: f64,
+) -> Result<Option<Transition>, AnalysisError> {
+    let mut seen_stable = false;
+    let mut past = None;
+    let bracket = evenly_bracketed_until(pencil, 0.0, load_max, |p, eigenvalues| {
+        let stable = classify(eigenvalues, pencil.scale_per_s(p)).state == State::Stable;
+        seen_stable |= stable;
+        if seen_stable && !stable && past.is_none() {
+            past = Some(0);
+        }
+        past = past.map(|n: usize| n + 1);
+        past.is_some_and(|n| n > PAST_FIRST_LOSS)
+    })?;
+    Ok(transitions_along(pencil, &bracket, (0.0, load_max))?
+        .into_iter()
+        .find(|t| t.from == State::Stable))
+}
+
+/// [`evenly_bracketed`], ended where `stop` says (see [`locus_until`]).
+fn evenly_bracketed_until(
+    pencil: &AffinePencil,
+    load_min: f64,
+    load_max: f64,
+    stop: impl FnMut(f64, &[C64]) -> bool,
 ) -> Result<Locus, AnalysisError> {
     // A range only a few units in the last place wide holds fewer distinct loads.
     let resolution = load_resolution(load_max);
@@ -340,7 +437,7 @@ pub fn bracketing_locus(
     } else {
         1
     };
-    locus(pencil, load_min, load_max, samples)
+    locus_until(pencil, load_min, load_max, samples, stop)
 }
 
 /// Every change of stability over the loads of `locus` (a tracked, refined
@@ -356,10 +453,19 @@ pub fn critical_loads_along(
     pencil: &AffinePencil,
     locus: &Locus,
 ) -> Result<Vec<Transition>, AnalysisError> {
-    let range = match (locus.loads.first(), locus.loads.last()) {
-        (Some(&min), Some(&max)) => (min, max),
-        _ => return Ok(Vec::new()),
-    };
+    match (locus.loads.first(), locus.loads.last()) {
+        (Some(&min), Some(&max)) => transitions_along(pencil, locus, (min, max)),
+        _ => Ok(Vec::new()),
+    }
+}
+
+/// [`critical_loads_along`] a locus that may cover only part of `range`,
+/// the loads the crossings are polished within.
+fn transitions_along(
+    pencil: &AffinePencil,
+    locus: &Locus,
+    range: (f64, f64),
+) -> Result<Vec<Transition>, AnalysisError> {
     let tracked: Vec<State> = (0..locus.loads.len())
         .map(|i| {
             let scale = pencil.scale_per_s(locus.loads[i]);

@@ -11,8 +11,10 @@ use super::{AnalysisError, C64};
 const RESOLVED_STEPS: f64 = 4.0;
 
 /// The smallest step between distinct loads of a range ending at `load_max`.
+/// Never below the smallest normal number: subnormal loads carry too few
+/// digits to be told apart (and slow every operation on some CPUs).
 pub(crate) fn load_resolution(load_max: f64) -> f64 {
-    RESOLVED_STEPS * f64::EPSILON * load_max.abs()
+    (RESOLVED_STEPS * f64::EPSILON * load_max.abs()).max(f64::MIN_POSITIVE)
 }
 
 /// Largest number of evenly spaced loads a locus accepts.
@@ -32,6 +34,28 @@ const FLOOR_TOLERANCE: f64 = 1e-3;
 /// the resolution of f64 at the range's end).
 const MIN_STEP_FRACTION: f64 = 1e-6;
 
+/// Eigenvalues smaller than this fraction of the frequency scale are left out
+/// of the search for axis crossings. Near a double root at zero (a mode whose
+/// stiffness the load has cancelled) rounding moves an eigenvalue by about
+/// the square root of the machine epsilon times the scale (1.5e-8), so its
+/// real and imaginary parts change sign from sample to sample at random, and
+/// halving the step would chase the rounding down to the smallest step
+/// everywhere (a stiff first joint on a chain took minutes). A true crossing
+/// of such a tiny eigenvalue is still bracketed by the samples' states and
+/// located by the critical loads' bisection.
+const ROUNDING_BAND: f64 = 1e-6;
+
+/// At most this many samples are added by refinement per evenly spaced load
+/// (with [`MIN_REFINED_SAMPLES`] at least): a crossing or a meeting of
+/// branches takes about 40 (halving down to the smallest step and doubling
+/// back), so this bounds the time and memory of a locus by its arguments.
+const REFINED_PER_SAMPLE: usize = 16;
+const MIN_REFINED_SAMPLES: usize = 20_000;
+
+/// Most eigenvalues a locus holds (evenly spaced loads times eigenvalues per
+/// load): 2^24 complex numbers are 256 MiB.
+pub const MAX_HELD_EIGENVALUES: usize = 1 << 24;
+
 /// Eigenvalue branches over a range of loads.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Locus {
@@ -43,12 +67,33 @@ pub struct Locus {
     /// the structural zero roots are the last `structural_zeros` branches.
     pub branches: Vec<Vec<C64>>,
     pub structural_zeros: usize,
+    /// The load from which the refinement's budget was spent (samples then
+    /// only at the evenly spaced loads): narrow windows of another state
+    /// beyond it may be missed. `None` when the refinement was complete.
+    pub refinement_cut_at: Option<f64>,
 }
 
 impl Locus {
     /// The eigenvalues at sample i, branch by branch (structural zeros included).
     pub fn at(&self, i: usize) -> impl Iterator<Item = C64> + '_ {
         self.branches.iter().map(move |branch| branch[i])
+    }
+
+    /// Appends `next`, a locus that starts at this one's last load, its
+    /// branches reordered to continue this one's (its first sample, a repeat
+    /// of this one's last, is left out).
+    pub(crate) fn extend_with(&mut self, next: &Self) {
+        let last = self.loads.len() - 1;
+        let here: Vec<C64> = self.at(last).collect();
+        let there: Vec<C64> = next.at(0).collect();
+        // Which of `next`'s branches continues each of ours.
+        let order = assignment(&there, &here);
+        self.loads.extend_from_slice(&next.loads[1..]);
+        self.on_grid.extend_from_slice(&next.on_grid[1..]);
+        for (branch, &k) in self.branches.iter_mut().zip(&order) {
+            branch.extend_from_slice(&next.branches[k][1..]);
+        }
+        self.refinement_cut_at = self.refinement_cut_at.or(next.refinement_cut_at);
     }
 
     /// The moving eigenvalues at sample i.
@@ -127,6 +172,12 @@ pub fn load_grid(min: f64, max: f64, samples: usize) -> Result<Vec<f64>, Analysi
 /// Reorders `found` to follow `guess` branch by branch (least total distance;
 /// exhaustive up to 6 eigenvalues, greedy beyond).
 fn assign(found: &[C64], guess: &[C64]) -> Vec<C64> {
+    assignment(found, guess).iter().map(|&k| found[k]).collect()
+}
+
+/// For each eigenvalue of `guess`, the index of the one of `found` that
+/// continues it (see [`assign`]).
+fn assignment(found: &[C64], guess: &[C64]) -> Vec<usize> {
     let n = found.len();
     if n <= 6 {
         let mut best: (f64, Vec<usize>) = (f64::INFINITY, (0..n).collect());
@@ -141,14 +192,18 @@ fn assign(found: &[C64], guess: &[C64]) -> Vec<C64> {
                 best = (cost, perm.to_vec());
             }
         });
-        return best.1.iter().map(|&k| found[k]).collect();
+        return best.1;
     }
-    let mut free: Vec<C64> = found.to_vec();
+    let mut free: Vec<usize> = (0..n).collect();
     guess
         .iter()
         .map(|g| {
             let k = (0..free.len())
-                .min_by(|&a, &b| (free[a] - g).norm().total_cmp(&(free[b] - g).norm()))
+                .min_by(|&a, &b| {
+                    (found[free[a]] - g)
+                        .norm()
+                        .total_cmp(&(found[free[b]] - g).norm())
+                })
                 .unwrap_or(0);
             free.swap_remove(k)
         })
@@ -205,22 +260,53 @@ fn sign_with_tolerance(x: f64, tolerance: f64) -> i8 {
     }
 }
 
+/// The number of evenly spaced loads a locus of `pencil` may have: the
+/// eigenvalues it holds stay within [`MAX_HELD_EIGENVALUES`].
+#[must_use]
+pub fn max_samples(pencil: &AffinePencil) -> usize {
+    let per_load = 2 * pencil.dof();
+    (MAX_HELD_EIGENVALUES / per_load.max(1)).min(MAX_SAMPLES)
+}
+
 /// The eigenvalue branches of `pencil` over the evenly spaced loads from
 /// `min` to `max`, with samples added by adaptive halving of the step where
 /// the linear prediction of a branch misses (branches meeting, turning; see
 /// [`TURN_TOLERANCE`]) or a
 /// branch's real or imaginary part changes sign (crossing Re = 0, landing on
-/// the real axis).
+/// the real axis). The refinement adds at most [`REFINED_PER_SAMPLE`] samples
+/// per evenly spaced load; where that is spent, [`Locus::refinement_cut_at`] says so.
 ///
 /// # Errors
-/// A bad range (see [`load_grid`]) or an eigenvalue computation that fails.
+/// A bad range (see [`load_grid`]), more samples than [`max_samples`], or an
+/// eigenvalue computation that fails.
 pub fn locus(
     pencil: &AffinePencil,
     min: f64,
     max: f64,
     samples: usize,
 ) -> Result<Locus, AnalysisError> {
+    locus_until(pencil, min, max, samples, |_, _| false)
+}
+
+/// [`locus`], ended at the first evenly spaced load where `stop(p,
+/// eigenvalues)` is true (that sample included).
+pub(crate) fn locus_until(
+    pencil: &AffinePencil,
+    min: f64,
+    max: f64,
+    samples: usize,
+    mut stop: impl FnMut(f64, &[C64]) -> bool,
+) -> Result<Locus, AnalysisError> {
+    let most = max_samples(pencil);
+    if samples > most {
+        return Err(AnalysisError::TooManySamples {
+            samples,
+            most,
+            eigenvalues: 2 * pencil.dof(),
+        });
+    }
     let grid = load_grid(min, max, samples)?;
+    let mut refinement_left = (REFINED_PER_SAMPLE * grid.len()).max(MIN_REFINED_SAMPLES);
     // Never below a few units in the last place: p + step must move p.
     let min_step = ((max - min) * MIN_STEP_FRACTION).max(load_resolution(max));
     let mut first = pencil.spectrum(grid[0])?.eigenvalues;
@@ -231,6 +317,7 @@ pub fn locus(
         on_grid: Vec::with_capacity(grid.len()),
         branches: vec![Vec::with_capacity(grid.len()); first.len() + structural_zeros],
         structural_zeros,
+        refinement_cut_at: None,
     };
     let push = |out: &mut Locus, p: f64, on_grid: bool, eigenvalues: &[C64]| {
         out.loads.push(p);
@@ -250,7 +337,12 @@ pub fn locus(
     for &target in &grid[1..] {
         while p < target {
             let next_p = loop {
-                let trial = step.max(min_step).min(target - p);
+                // Once the refinement's budget is spent: the evenly spaced loads only.
+                let trial = if refinement_left == 0 {
+                    target - p
+                } else {
+                    step.max(min_step).min(target - p)
+                };
                 let next_p = if trial >= target - p {
                     target
                 } else {
@@ -269,22 +361,35 @@ pub fn locus(
                 eigenvalues_near(pencil, next_p, &mut next)?;
                 let scale = pencil.scale_per_s(next_p);
                 let tolerance = RELATIVE_TOLERANCE * scale;
+                let rounding_band = ROUNDING_BAND * scale;
                 let smooth = next.iter().zip(&guess).zip(&current).all(|((z, g), w)| {
                     modulus(z - g)
                         <= TURN_TOLERANCE * modulus(g - w) + FLOOR_TOLERANCE * (modulus(*z) + scale)
                 });
                 let crosses = next.iter().zip(&current).any(|(z, w)| {
-                    sign_with_tolerance(z.re, tolerance) != sign_with_tolerance(w.re, tolerance)
-                        || sign_with_tolerance(z.im, tolerance)
-                            != sign_with_tolerance(w.im, tolerance)
+                    (modulus(*z) > rounding_band || modulus(*w) > rounding_band)
+                        && (sign_with_tolerance(z.re, tolerance)
+                            != sign_with_tolerance(w.re, tolerance)
+                            || sign_with_tolerance(z.im, tolerance)
+                                != sign_with_tolerance(w.im, tolerance))
                 });
-                if (smooth && !crosses) || trial <= min_step {
+                if (smooth && !crosses) || trial <= min_step || refinement_left == 0 {
                     step = if smooth { 2.0 * trial } else { trial };
                     break next_p;
                 }
                 step = trial / 2.0;
             };
-            push(&mut out, next_p, next_p == target, &next);
+            let on_grid = next_p == target;
+            if !on_grid {
+                refinement_left = refinement_left.saturating_sub(1);
+                if refinement_left == 0 && out.refinement_cut_at.is_none() {
+                    out.refinement_cut_at = Some(next_p);
+                }
+            }
+            push(&mut out, next_p, on_grid, &next);
+            if on_grid && stop(next_p, &next) {
+                return Ok(out);
+            }
             // The samples rotate through three buffers: no allocation per step.
             let mut older = previous.take().map_or_else(Vec::new, |(_, z)| z);
             std::mem::swap(&mut older, &mut current);

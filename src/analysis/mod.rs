@@ -11,10 +11,10 @@ mod roots;
 mod stability;
 
 pub use critical::{
-    BRACKET_SAMPLES, DEFAULT_LOAD_MAX, Transition, bracketing_locus, critical_loads,
+    BRACKET_SAMPLES, DEFAULT_LOAD_MAX, LARGEST_LOAD, Transition, bracketing_locus, critical_loads,
     critical_loads_along,
 };
-pub use locus::{Locus, load_grid, locus};
+pub use locus::{Locus, MAX_HELD_EIGENVALUES, load_grid, locus, max_samples};
 pub use map::{Cell, MapSpec, Row, RowResult, compute as compute_map};
 pub use paradox::{
     first_instability, first_loss_of_stability, flutter_load_damped, flutter_load_external,
@@ -36,6 +36,14 @@ pub enum AnalysisError {
     Model(#[from] ModelError),
     #[error("the eigenvalue iteration did not converge at load p = {}", Shown(*.load))]
     NotConverged { load: f64 },
+    #[error(
+        "samples = {samples}: at most {most} loads for a locus of {eigenvalues} eigenvalues per load (its memory is bounded to 256 MiB); use fewer samples"
+    )]
+    TooManySamples {
+        samples: usize,
+        most: usize,
+        eigenvalues: usize,
+    },
     #[error("{what} = {}: {allowed}", Shown(*.value))]
     BadRange {
         what: &'static str,
@@ -51,6 +59,7 @@ impl AnalysisError {
         match self {
             Self::Model(error) => error.parameter(),
             Self::BadRange { what, .. } => Some(what),
+            Self::TooManySamples { .. } => Some("samples"),
             Self::NotConverged { .. } => None,
         }
     }

@@ -4,7 +4,7 @@
 //! as its mass goes to zero), next to the undamped value.
 
 use super::AnalysisError;
-use super::critical::{Transition, critical_loads};
+use super::critical::{Transition, first_loss_within};
 use super::pencil::AffinePencil;
 use super::stability::State;
 use crate::model::{Axis, Model};
@@ -16,9 +16,7 @@ use crate::model::{Axis, Model};
 /// A model the linear analysis refuses.
 pub fn first_instability(model: &Model, load_max: f64) -> Result<Option<f64>, AnalysisError> {
     let pencil = AffinePencil::new(model)?;
-    Ok(first_loss_of_stability(&critical_loads(
-        &pencil, 0.0, load_max,
-    )?))
+    Ok(first_loss_within(&pencil, load_max)?.map(|t| t.load))
 }
 
 /// The load of the first change from stable to unstable among

@@ -215,6 +215,7 @@ pub struct AffinePencil {
     /// The characteristic polynomial as polynomials in the load, for 2 or 3
     /// degrees of freedom.
     characteristic: Option<CharacteristicPolynomial>,
+    natural_load_max: f64,
 }
 
 impl AffinePencil {
@@ -242,6 +243,7 @@ impl AffinePencil {
             per_unit_load,
             cyclic: always_cyclic,
             characteristic,
+            natural_load_max: super::DEFAULT_LOAD_MAX * model.column.load_range_scale(),
         })
     }
 
@@ -337,6 +339,25 @@ impl AffinePencil {
             structural_zeros: self.cyclic + lin.extra_zero_roots,
             scale_per_s: frequency_scale(lin),
         })
+    }
+
+    /// The load at which the load's stiffness matches the column's own in
+    /// norm (`|K1| p = |K0|`). Infinite when the load adds no stiffness.
+    #[must_use]
+    pub fn stiffness_matching_load(&self) -> f64 {
+        let [own, _, per_load] = self.norms.stiffness;
+        if per_load > 0.0 {
+            (own / per_load).sqrt()
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// The column's own load range: `p` from 0 to 10 for two rods, and the
+    /// same range in the beam's units for a chain (see `Column::load_range_scale`).
+    #[must_use]
+    pub fn natural_load_max(&self) -> f64 {
+        self.natural_load_max
     }
 
     /// The frequency scale at load p (see [`Spectrum::scale_per_s`]),

@@ -118,7 +118,12 @@ pub fn resolution_warning(
         )));
     }
     let (Some(low), Some(high)) = (undecided.first(), undecided.last()) else {
-        return Ok(None);
+        return Ok(locus.refinement_cut_at.map(|p| {
+            format!(
+                "the root locus was refined only up to p = {}: beyond it the branches are sampled at the evenly spaced loads alone, so a window of another state narrower than their spacing may be missing (the refinement's bound on time and memory was reached; use a narrower range)",
+                load_text(p)
+            )
+        }));
     };
     Ok(Some(format!(
         "the stability is not resolved: for p from {} to {} the growth rates lie between 1e-12 and 1e-10 of the frequency scale, where rounding decides the state (a roller of tiny mass nu, whose weak flutter grows in proportion to nu, or a very slow band V); the critical loads shown may be misplaced or missing",

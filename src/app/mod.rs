@@ -222,9 +222,9 @@ impl ZieglerApp {
     /// Computes the analysis, the stability map and the paradox curves of
     /// the current parameters and waits until they are complete (for pictures and tests;
     /// the window never waits).
-    pub fn complete_background_work(&mut self) {
+    pub fn complete_background_work(&mut self, tab: Tab) {
         self.state.settle_analysis();
-        self.tabs.complete_background_work(&self.state);
+        self.tabs.complete_background_work(&self.state, tab);
     }
 
     /// The current theme, applied to the context when it changed.

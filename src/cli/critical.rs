@@ -8,6 +8,7 @@ use serde_json::json;
 use zieglerlab::analysis::{
     AffinePencil, DEFAULT_LOAD_MAX, bracketing_locus, critical_loads_along, resolution_warning,
 };
+use zieglerlab::format::Shown;
 
 use super::{LOAD_AXIS, ModelArgs, printable};
 
@@ -33,6 +34,12 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     let load_max = args
         .load_max
         .unwrap_or(DEFAULT_LOAD_MAX * model.column.load_range_scale());
+    if load_max == load_min {
+        anyhow::bail!(
+            "load-max = {}: must exceed load-min: the changes of stability are sought over a range of loads",
+            Shown(load_max)
+        );
+    }
     let pencil = AffinePencil::new(&model)?;
     let bracket = bracketing_locus(&pencil, load_min, load_max)?;
     let transitions = critical_loads_along(&pencil, &bracket)?;
@@ -57,7 +64,9 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     }
     writeln!(
         out,
-        "{name}: stability changes for {LOAD_AXIS} in [{load_min}, {load_max}]"
+        "{name}: stability changes for {LOAD_AXIS} in [{}, {}]",
+        Shown(load_min),
+        Shown(load_max)
     )?;
     if transitions.is_empty() {
         writeln!(out, "  none")?;
@@ -67,14 +76,25 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     for t in &transitions {
         let (from, to) = (t.from.name(), t.to.name());
         let q = mu
-            .map(|mu| format!("  (q = R l/k = {:.9})", t.load / mu))
+            .map(|mu| format!("  (q = R l/k = {})", fixed_or_exponent(t.load / mu, 9)))
             .unwrap_or_default();
         // A chain of equal rods discretizes a beam: its load in the beam's units.
         let beck = model
             .beck_load(t.load)
-            .map(|beck| format!("  (P L^2/EI = {beck:.6})"))
+            .map(|beck| format!("  (P L^2/EI = {})", fixed_or_exponent(beck, 6)))
             .unwrap_or_default();
-        writeln!(out, "  p = {:<22} {from} -> {to}{q}{beck}", t.load)?;
+        let load = Shown(t.load).to_string();
+        writeln!(out, "  p = {load:<22} {from} -> {to}{q}{beck}")?;
     }
     Ok(())
+}
+
+/// `value` with `decimals` decimals, or in exponent form beyond 1e7 (no
+/// line of 150 digits for a load of 1e150).
+fn fixed_or_exponent(value: f64, decimals: usize) -> String {
+    if value.abs() < 1e7 {
+        format!("{value:.decimals$}")
+    } else {
+        format!("{value:.decimals$e}")
+    }
 }

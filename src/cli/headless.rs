@@ -101,9 +101,12 @@ pub fn render_frames(
 ) -> Result<()> {
     let (width, height) = (f32::from(size.width), f32::from(size.height));
     app.draw_for_pictures();
-    let background = matches!(panel, Panel::Tab(Tab::Map | Tab::Paradox));
-    if background {
-        app.complete_background_work();
+    let background = match panel {
+        Panel::Tab(tab @ (Tab::Map | Tab::Paradox)) => Some(tab),
+        _ => None,
+    };
+    if let Some(tab) = background {
+        app.complete_background_work(tab);
     }
     let previous_hook = std::panic::take_hook();
     std::panic::set_hook(Box::new(|_| {}));
@@ -115,8 +118,10 @@ pub fn render_frames(
             .build_ui_state(|ui, app: &mut ZieglerApp| app.panel_ui(ui, panel), app);
         for i in 0..frames {
             before(harness.state_mut(), i);
-            if background && i > 0 {
-                harness.state_mut().complete_background_work();
+            if let Some(tab) = background
+                && i > 0
+            {
+                harness.state_mut().complete_background_work(tab);
             }
             harness.run_steps(if i == 0 { 4 } else { 2 });
             let image = harness.render().map_err(Stop::Drawing)?;

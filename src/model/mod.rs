@@ -25,7 +25,9 @@ pub use dynamics::{
 pub use keys::{Assignment, KEYS, Key, KeySpec, apply_assignments, parse_assignment};
 pub use linear::{LinearModel, chain_mass_matrix, joint_matrices, linearize};
 pub(crate) use params::analysis_range_text;
-pub use params::{Column, Inertia, Load, MAX_RODS, Model, Rod, Roller, SpinInertia};
+pub use params::{
+    Column, Inertia, LARGEST_DERIVED, Load, MAX_RODS, Model, Rod, Roller, SpinInertia,
+};
 pub use presets::{PRESETS, Preset, PresetId, preset};
 
 /// A parameter value that makes no model, named so the user can fix it.

@@ -8,7 +8,9 @@
 use crate::common;
 
 use common::{assert_close, eigenvalues, model, transitions};
-use zieglerlab::analysis::{State, first_instability};
+use zieglerlab::analysis::{
+    AffinePencil, State, bracketing_locus, critical_loads, critical_loads_along, first_instability,
+};
 use zieglerlab::model::{
     Model, StateVec, apply_assignments, chain_derivative, chain_energy_j, chain_mass_matrix,
     parse_assignment, state_derivative,
@@ -483,4 +485,53 @@ fn pflueger_s_chain_approaches_the_continuous_column() {
         "{coarse} {fine} {continuous}"
     );
     assert_close(extrapolated, continuous, 5e-4);
+}
+
+/// Every change of stability on Beck's chain of 8 rods up to p = 7 (four:
+/// the flutter, then a window of flutter between divergences) is found again
+/// on a range up to 1e6, bracketed decade by decade beyond the
+/// chain's own range (0 to 0.625), to the same loads. An evenly spaced
+/// bracketing grid over 0 to 1e6 stepped over the window.
+#[test]
+fn a_wide_load_range_finds_the_narrow_windows_near_the_column_s_own() {
+    let chain = model("beck", &["rods=8"]);
+    let near = transitions(&chain, 7.0);
+    assert_eq!(near.len(), 4, "{near:?}");
+    let wide = transitions(&chain, 1e6);
+    assert_eq!(wide.len(), near.len(), "{wide:?}");
+    for (a, b) in near.iter().zip(&wide) {
+        assert_eq!((a.from, a.to), (b.from, b.to));
+        assert_close(b.load, a.load, 1e-9);
+    }
+}
+
+/// A stiff first joint (k1 a million times the others) makes a mode that
+/// the load cancels down to rounding: its eigenvalues flip between the
+/// real and imaginary axes from load to load. The locus ignores those flips
+/// (they are rounding, not crossings), so its refinement is not spent, and
+/// the critical loads are those of narrow ranges around each of them.
+#[test]
+fn a_stiff_first_joint_does_not_send_the_locus_chasing_rounding() {
+    let chain = model("beck", &["rods=8", "k1=1e6"]);
+    let pencil = AffinePencil::new(&chain).unwrap();
+    let range = pencil.natural_load_max();
+    let bracket = bracketing_locus(&pencil, 0.0, range).unwrap();
+    assert_eq!(bracket.refinement_cut_at, None);
+    assert!(
+        bracket.loads.len() < 4000,
+        "{} samples",
+        bracket.loads.len()
+    );
+    let found = critical_loads_along(&pencil, &bracket).unwrap();
+    assert!(!found.is_empty());
+    for t in &found {
+        let around = critical_loads(&pencil, 0.5 * t.load, 2.0 * t.load).unwrap();
+        assert!(
+            around
+                .iter()
+                .any(|u| (u.from, u.to) == (t.from, t.to)
+                    && (u.load - t.load).abs() <= 1e-9 * t.load),
+            "{t:?} against {around:?}"
+        );
+    }
 }

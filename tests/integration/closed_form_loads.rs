@@ -97,3 +97,18 @@ fn found_for_every_search_range() {
         }
     }
 }
+
+/// A range as wide as the load allows (1e150) is bracketed decade by decade
+/// beyond the column's own range: the closed-form pair near p = 2 is found
+/// as on the range 0 to 20 (a 1000-load grid over the whole range once
+/// stepped past it and answered "none").
+#[test]
+fn the_widest_load_range_keeps_the_closed_form_loads() {
+    let column = model("ziegler-1952", &[]);
+    let t = transitions(&column, 1e150);
+    assert!(t.len() >= 2, "{t:?}");
+    assert_eq!((t[0].from, t[0].to), (State::Stable, State::Flutter));
+    assert_eq!((t[1].from, t[1].to), (State::Flutter, State::Divergence));
+    assert_close(t[0].load, 3.5 - 2f64.sqrt(), 1e-9);
+    assert_close(t[1].load, 3.5 + 2f64.sqrt(), 1e-9);
+}

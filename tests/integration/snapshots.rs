@@ -91,12 +91,10 @@ fn root_locus_panel_of_each_preset() {
 fn stability_map_and_paradox_panels() {
     let mut results = SnapshotResults::new();
     for name in ["roller", "ziegler-1952"] {
-        for (panel, label) in [
-            (Panel::Tab(Tab::Map), "map"),
-            (Panel::Tab(Tab::Paradox), "paradox"),
-        ] {
+        for (tab, label) in [(Tab::Map, "map"), (Tab::Paradox, "paradox")] {
+            let panel = Panel::Tab(tab);
             let mut app = ZieglerApp::new(preset_settings(name)).unwrap();
-            app.complete_background_work();
+            app.complete_background_work(tab);
             let mut harness = Harness::builder()
                 .wgpu()
                 .with_size([900.0, 500.0])

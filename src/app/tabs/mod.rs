@@ -109,12 +109,19 @@ impl Tabs {
         &mut self.map
     }
 
-    /// Computes the stability map and the paradox curves of the current
-    /// parameters and waits until they are complete (for pictures and tests).
-    pub fn complete_background_work(&mut self, state: &AppState) {
+    /// Computes the background work of `tab` (the stability map, the
+    /// paradox curves) for the current parameters and waits until it is
+    /// complete (for pictures and tests). Other tabs' work is not started:
+    /// a picture of the paradox on a chain once computed the map too.
+    pub fn complete_background_work(&mut self, state: &AppState, tab: Tab) {
         let model = state.model();
-        self.map.follow(model, load_max_p(model));
-        self.map.wait();
-        self.paradox.wait(model);
+        match tab {
+            Tab::Map => {
+                self.map.follow(model, load_max_p(model));
+                self.map.wait();
+            }
+            Tab::Paradox => self.paradox.wait(model),
+            Tab::Locus | Tab::Histories => {}
+        }
     }
 }

@@ -10,7 +10,9 @@ use std::sync::{Arc, mpsc};
 use eframe::egui;
 use egui_plot::{Corner, HLine, Legend, Line, Plot, PlotPoints, Points, log_grid_spacer};
 
-use crate::analysis::{first_instability, flutter_load_damped, flutter_load_external};
+use crate::analysis::{
+    DEFAULT_LOAD_MAX, first_instability, flutter_load_damped, flutter_load_external,
+};
 use crate::app::View;
 use crate::app::plot_frame::{Fit, axes, refit_if};
 use crate::app::state::AppState;
@@ -18,8 +20,13 @@ use crate::app::theme::Theme;
 use crate::format::number_text;
 use crate::model::{Axis, Key, Load, Model};
 
-/// Loads searched for the first loss of stability.
-const LOAD_MAX: f64 = 10.0;
+/// The loads searched for the first loss of stability: the column's own
+/// range (p to 10 for two rods, the same range of `P L^2/EI` for a chain),
+/// as `critical` searches by default. A chain of 16 rods searched to p = 10,
+/// 64 times its range, took ten minutes per picture.
+fn load_max(model: &Model) -> f64 {
+    DEFAULT_LOAD_MAX * model.column.load_range_scale()
+}
 /// Points per curve.
 const POINTS: usize = 41;
 /// Joint damping levels g2 of the column curves, down to "vanishing".
@@ -85,11 +92,12 @@ impl Curves {
         lines: Vec<(String, Vec<[f64; 2]>)>,
         failures: Vec<Option<String>>,
         reference: Option<(String, f64)>,
+        load_max: f64,
     ) -> Self {
         let note = lines
             .iter()
             .all(|(_, points)| points.is_empty())
-            .then(|| empty_reason(failures));
+            .then(|| empty_reason(failures, load_max));
         Self {
             x_label,
             lines,
@@ -129,12 +137,13 @@ fn curve<E: std::fmt::Display>(
 }
 
 /// Why a plot with no point at all is empty: the first failure, or that
-/// no point loses stability below [`LOAD_MAX`].
-fn empty_reason(failures: impl IntoIterator<Item = Option<String>>) -> String {
+/// no point loses stability below `load_max`.
+fn empty_reason(failures: impl IntoIterator<Item = Option<String>>, load_max: f64) -> String {
     failures.into_iter().flatten().next().map_or_else(
         || {
             format!(
-                "No curve to draw: at every ratio shown the column keeps its stability up to p = {LOAD_MAX}."
+                "No curve to draw: at every ratio shown the column keeps its stability up to p = {}.",
+                number_text(load_max)
             )
         },
         |error| format!("No curve to draw: {error}."),
@@ -146,7 +155,8 @@ fn empty_reason(failures: impl IntoIterator<Item = Option<String>>) -> String {
 /// a cancelled result is for no one.
 #[must_use]
 pub fn curves(model: &Model, kind: DampingKind, cancel: &AtomicBool) -> Curves {
-    let first = |m: &Model| first_instability(m, LOAD_MAX).ok().flatten();
+    let load_max = load_max(model);
+    let first = |m: &Model| first_instability(m, load_max).ok().flatten();
     match model.load {
         Load::Follower { eta: 0.0, .. } => Curves {
             note: Some(
@@ -164,9 +174,9 @@ pub fn curves(model: &Model, kind: DampingKind, cancel: &AtomicBool) -> Curves {
                 .iter()
                 .map(|&level| {
                     let (points, failure) = curve(RATIO_DECADES, cancel, |ratio| match kind {
-                        DampingKind::Joints => flutter_load_damped(model, ratio, level, LOAD_MAX),
+                        DampingKind::Joints => flutter_load_damped(model, ratio, level, load_max),
                         DampingKind::External => {
-                            flutter_load_external(model, ratio, level, LOAD_MAX)
+                            flutter_load_external(model, ratio, level, load_max)
                         }
                     });
                     (
@@ -180,6 +190,7 @@ pub fn curves(model: &Model, kind: DampingKind, cancel: &AtomicBool) -> Curves {
                 lines,
                 failures,
                 undamped.map(|p| ("undamped".to_owned(), p)),
+                load_max,
             )
         }
         Load::Roller(roller) => {
@@ -198,7 +209,7 @@ pub fn curves(model: &Model, kind: DampingKind, cancel: &AtomicBool) -> Curves {
                         let m = Axis::Key(Key::Nu)
                             .apply(&m, nu)
                             .map_err(|e| e.to_string())?;
-                        first_instability(&m, LOAD_MAX).map_err(|e| e.to_string())
+                        first_instability(&m, load_max).map_err(|e| e.to_string())
                     });
                     ((format!("V = {} m/s", number_text(speed)), points), failure)
                 })
@@ -209,6 +220,7 @@ pub fn curves(model: &Model, kind: DampingKind, cancel: &AtomicBool) -> Curves {
                 lines,
                 failures,
                 massless.map(|p| ("nu = 0: the ideal follower".to_owned(), p)),
+                load_max,
             )
         }
     }
@@ -353,7 +365,7 @@ impl ParadoxPanel {
             Load::Follower { .. } => self.kind.ratio(model),
         };
         let point = (x > 0.0 && x.is_finite())
-            .then(|| known.or_else(|| first_instability(&key, LOAD_MAX).ok().flatten()))
+            .then(|| known.or_else(|| first_instability(&key, load_max(&key)).ok().flatten()))
             .flatten()
             .map(|p| [x.log10(), p]);
         self.current = Some(((key, self.kind), point));

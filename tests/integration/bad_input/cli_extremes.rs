@@ -154,6 +154,77 @@ pub const CLI_EXTREMES: &[Cli] = &[
         ],
         "too many for so narrow a range",
     ),
+    // Load ranges the analysis cannot resolve: refused by name. A range as
+    // wide as the load itself allows is bracketed decade by decade.
+    refused(
+        &[
+            "critical",
+            "--preset",
+            "ziegler-1952",
+            "--load-max",
+            "1e300",
+        ],
+        "load-max = 1e300: must be at most 1e150",
+    ),
+    refused(
+        &[
+            "critical",
+            "--preset",
+            "ziegler-1952",
+            "--load-min",
+            "0",
+            "--load-max",
+            "5e-324",
+        ],
+        "load-max = 5e-324: must exceed load-min by more than the resolution",
+    ),
+    refused(
+        &[
+            "critical",
+            "--preset",
+            "ziegler-1952",
+            "--load-min",
+            "2",
+            "--load-max",
+            "2",
+        ],
+        "load-max = 2: must exceed load-min",
+    ),
+    answered(
+        &[
+            "critical",
+            "--preset",
+            "ziegler-1952",
+            "--load-max",
+            "1e150",
+        ],
+        "the stability is not resolved: at p = 1.0000e150",
+    ),
+    // Chains: the memory a locus holds is bounded by its arguments, and a
+    // stiff first joint (a mode the load cancels to rounding) once halved
+    // the locus's step to its floor everywhere (7 s on 8 rods, 75 s on 32).
+    refused(
+        &[
+            "locus",
+            "--preset",
+            "beck",
+            "--set",
+            "rods=64",
+            "--load-min",
+            "0",
+            "--load-max",
+            "0.01",
+            "--samples",
+            "1000000",
+        ],
+        "samples = 1000000: at most 131072 loads for a locus of 128 eigenvalues",
+    ),
+    answered(
+        &[
+            "critical", "--preset", "beck", "--set", "rods=8", "--set", "k1=1e6",
+        ],
+        "",
+    ),
     // Messages that name what is wrong, on one readable line.
     refused(
         &["critical"],
