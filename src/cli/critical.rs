@@ -28,6 +28,9 @@ pub struct Args {
     json: bool,
 }
 
+/// Changes of stability listed when the stability is not resolved.
+const UNRESOLVED_LISTED: usize = 20;
+
 pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     let (name, model) = args.model.build()?;
     let load_min = args.load_min;
@@ -47,6 +50,15 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     if let Some(warning) = &warning {
         eprintln!("warning: {}", printable(warning));
     }
+    // Where rounding decides the states, the changes it makes can number
+    // thousands (a roller of mass nu = 1e-50): list the first few and count
+    // the rest, rather than bury the warning.
+    let unlisted = if warning.is_some() {
+        transitions.len().saturating_sub(UNRESOLVED_LISTED)
+    } else {
+        0
+    };
+    let transitions = &transitions[..transitions.len() - unlisted];
     if args.json {
         let value = json!({
             "preset": name,
@@ -57,6 +69,7 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
             "rods": model.column.rods,
             "beck_loads": transitions.iter().map(|t| model.beck_load(t.load)).collect::<Vec<_>>(),
             "resolved": warning.is_none(),
+            "transitions_not_listed": unlisted,
             "warning": warning,
         });
         writeln!(out, "{}", serde_json::to_string_pretty(&value)?)?;
@@ -73,7 +86,7 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     }
     // The roller's own load q = R l/k = p / mu, beside p.
     let mu = model.roller().map(|roller| roller.mu);
-    for t in &transitions {
+    for t in transitions {
         let (from, to) = (t.from.name(), t.to.name());
         let q = mu
             .map(|mu| format!("  (q = R l/k = {})", fixed_or_exponent(t.load / mu, 9)))
@@ -85,6 +98,12 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
             .unwrap_or_default();
         let load = Shown(t.load).to_string();
         writeln!(out, "  p = {load:<22} {from} -> {to}{q}{beck}")?;
+    }
+    if unlisted > 0 {
+        writeln!(
+            out,
+            "  ... and {unlisted} more changes, not listed: the stability is not resolved (see the warning)"
+        )?;
     }
     Ok(())
 }

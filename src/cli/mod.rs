@@ -94,11 +94,13 @@ struct ModelArgs {
 }
 
 impl ModelArgs {
-    /// Whether a `--set` assigns `key`.
-    fn sets(&self, key: Key) -> bool {
+    /// The first key among `keys` that a `--set` assigns.
+    fn sets_any(&self, keys: &[Key]) -> Option<Key> {
         self.set
             .iter()
-            .any(|text| parse_assignment(text).is_ok_and(|a| a.key == key))
+            .filter_map(|text| parse_assignment(text).ok())
+            .map(|a| a.key)
+            .find(|key| keys.contains(key))
     }
 
     /// The preset and its model with the `--set` overrides applied and
@@ -125,15 +127,22 @@ impl ModelArgs {
     }
 
     /// [`Self::build`] at the start of `ramp`, if there is one: the ramp
-    /// sets the load, so a `--set load` beside it is refused.
+    /// sets the load, so a `--set` of the load beside it (as `load`, the
+    /// force `P` or the roller's normal force `R`) is refused: it would be
+    /// silently overridden.
     fn build_ramped(&self, ramp: Option<&Ramp>) -> Result<(PresetId, Model)> {
         let (preset, model) = self.build()?;
         let Some(ramp) = ramp else {
             return Ok((preset, model));
         };
-        if self.sets(Key::Load) {
-            anyhow::bail!("--ramp sets the load (from its FROM on): leave out --set load");
+        if let Some(key) = self.sets_any(&[Key::Load, Key::P, Key::NormalForce]) {
+            anyhow::bail!(
+                "--ramp sets the load (from its FROM on): leave out --set {}",
+                key.name()
+            );
         }
+        ramp.check_for(&model)
+            .map_err(|why| anyhow::anyhow!("--ramp: {why}"))?;
         Ok((preset, model.at_load(ramp.from_p)))
     }
 }

@@ -3,6 +3,8 @@
 //! quasi-statically from zero"), and a run that follows it step by step.
 
 use super::{Observables, SimError, Simulation, Status};
+use crate::format::Shown;
+use crate::model::Model;
 use std::ops::ControlFlow;
 
 /// A load ramp: `p` from `from_p` toward `to_p` at `rate_p_per_s` (> 0) per
@@ -22,12 +24,13 @@ impl Ramp {
     pub fn new(from_p: f64, to_p: f64, rate_p_per_s: f64) -> Result<Self, String> {
         for (name, p) in [("from", from_p), ("to", to_p)] {
             if !(p.is_finite() && p >= 0.0) {
-                return Err(format!("ramp {name} = {p}: must be a load p >= 0"));
+                return Err(format!("ramp {name} = {}: must be a load p >= 0", Shown(p)));
             }
         }
         if !(rate_p_per_s.is_finite() && rate_p_per_s > 0.0) {
             return Err(format!(
-                "ramp rate = {rate_p_per_s}: must be a positive load per second"
+                "ramp rate = {}: must be a positive load per second",
+                Shown(rate_p_per_s)
             ));
         }
         Ok(Self {
@@ -35,6 +38,22 @@ impl Ramp {
             to_p,
             rate_p_per_s,
         })
+    }
+
+    /// Whether `model` takes every load of the ramp: both ends (the loads
+    /// between them are in between), so a ramp is refused before its run,
+    /// not when it reaches a load the model cannot take.
+    ///
+    /// # Errors
+    /// The end the model refuses, with the model's reason.
+    pub fn check_for(&self, model: &Model) -> Result<(), String> {
+        for (name, p) in [("from", self.from_p), ("to", self.to_p)] {
+            model
+                .at_load(p)
+                .validate()
+                .map_err(|why| format!("ramp {name} = {}: {why}", Shown(p)))?;
+        }
+        Ok(())
     }
 
     /// The load `elapsed_secs` after the ramp started (`from_p` before it).

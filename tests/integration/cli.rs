@@ -648,3 +648,43 @@ fn the_renderer_choice_is_checked_before_anything_opens() {
     let presets = with_unknown_renderer(&["presets"]);
     assert!(presets.status.success());
 }
+
+/// Where rounding decides the states (a roller of mass nu = 1e-50, a second
+/// rod 1e74 times the first), `critical` lists the first 20 changes and
+/// counts the rest, under its warning; the JSON says how many it left out.
+/// It once printed thousands of lines made by rounding.
+#[test]
+fn unresolved_changes_are_counted_not_listed() {
+    let out = run(&["critical", "--preset", "roller", "--set", "nu=1e-50"]);
+    assert!(out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("the stability is not resolved"));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let listed = text.lines().filter(|l| l.starts_with("  p = ")).count();
+    assert_eq!(listed, 20, "{text}");
+    let last = text.lines().last().unwrap();
+    assert!(last.contains("more changes, not listed"), "{last}");
+    let json: serde_json::Value = serde_json::from_str(&stdout(&[
+        "critical", "--preset", "roller", "--set", "nu=1e-50", "--json",
+    ]))
+    .unwrap();
+    assert_eq!(json["resolved"], false);
+    assert_eq!(json["transitions"].as_array().unwrap().len(), 20);
+    assert!(json["transitions_not_listed"].as_u64().unwrap() > 100);
+}
+
+/// Loads far from 1 are written in exponent form: a range to 1e150 gives
+/// no line of 150 digits, nor a range to 1e-300 one of 300.
+#[test]
+fn extreme_loads_are_printed_in_exponent_form() {
+    for load_max in ["1e150", "1e-300"] {
+        let text = stdout(&[
+            "critical",
+            "--preset",
+            "ziegler-1952",
+            "--load-max",
+            load_max,
+        ]);
+        assert!(text.lines().all(|l| l.len() < 120), "{text}");
+        assert!(text.contains(&format!(", {load_max}]")), "{text}");
+    }
+}

@@ -77,6 +77,10 @@ impl AppState {
     /// Starts `ramp`: the load goes to its start and moves on as the run
     /// does; the run starts if it was paused.
     pub fn start_ramp(&mut self, ramp: Ramp) {
+        if let Err(why) = ramp.check_for(&self.settings.model) {
+            self.say(Notice::error(format!("ramp: {why}")));
+            return;
+        }
         if let Err(why) = self.set_parameter(Key::Load, ramp.from_p) {
             self.say(Notice::error(format!("ramp: {why}")));
             return;

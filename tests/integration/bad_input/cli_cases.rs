@@ -415,6 +415,63 @@ pub const CLI: &[Cli] = &[
         &["record", "--preset", "roller", "--out", "/proc/x.gif"],
         "out = /proc/x.gif: the folder /proc takes no new file",
     ),
+    // A ramp sets the load: a --set of it in any of its names is refused
+    // (it was silently overridden), and so is a ramp to a load the model
+    // cannot take, before the run, in every command that ramps.
+    refused(
+        &[
+            "simulate",
+            "--preset",
+            "roller",
+            "--duration",
+            "1",
+            "--ramp",
+            "0:2:0.1",
+            "--set",
+            "R=50",
+        ],
+        "--ramp sets the load (from its FROM on): leave out --set R",
+    ),
+    refused(
+        &[
+            "simulate",
+            "--preset",
+            "ziegler-1952",
+            "--duration",
+            "1",
+            "--ramp",
+            "0:2:0.1",
+            "--set",
+            "P=5",
+        ],
+        "leave out --set P",
+    ),
+    refused(
+        &[
+            "simulate",
+            "--preset",
+            "roller",
+            "--duration",
+            "1",
+            "--ramp",
+            "0:1e300:1e300",
+        ],
+        "--ramp: ramp to = 1e300: the load P = 1e299: beyond",
+    ),
+    refused(
+        &[
+            "record",
+            "--preset",
+            "roller",
+            "--duration",
+            "1",
+            "--ramp",
+            "0:1e300:1e300",
+            "--out",
+            "/tmp/zieglerlab-ramp-refused.gif",
+        ],
+        "ramp to = 1e300",
+    ),
     refused(
         &[
             "map",
