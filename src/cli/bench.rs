@@ -15,7 +15,7 @@ pub struct Args {
     #[arg(long)]
     json: bool,
     /// Frames timed for the frame-time quantiles.
-    #[arg(long, default_value_t = FRAMES)]
+    #[arg(long, default_value_t = FRAMES, allow_hyphen_values = true)]
     frames: usize,
     /// Skip the real window's frames (timed by default when there is a
     /// display: two windows open for a few seconds each).

@@ -17,12 +17,12 @@ pub struct Args {
     #[command(flatten)]
     model: ModelArgs,
     /// Lower end of the load range searched.
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     load_min: f64,
     /// Upper end of the load range searched [default: 10 for two rods; for
     /// a chain of N rods 10 (2/N)^2, the same range in the continuous
     /// column's units P L^2/EI (0 to 40)].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     load_max: Option<f64>,
     #[arg(long)]
     json: bool,

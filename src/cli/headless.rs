@@ -62,7 +62,7 @@ pub struct Look {
     /// Pixels per point, 0.5 to 8: 2 draws the same layout as 1 with
     /// twice as many pixels each way (text for a 4K slide: `--size
     /// 3840x2160 --scale 3` lays out a 1280x720 window).
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
     pub scale: f32,
     #[arg(long)]
     pub projector: bool,

@@ -21,11 +21,11 @@ enum Format {
 pub struct Args {
     #[command(flatten)]
     model: ModelArgs,
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     load_min: f64,
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     load_max: f64,
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     samples: usize,
     #[arg(long, value_enum, default_value_t = Format::Csv)]
     format: Format,

@@ -28,10 +28,10 @@ pub struct Args {
     #[arg(long, value_name = "FROM:TO:RATE")]
     ramp: Option<Ramp>,
     /// Simulated seconds recorded.
-    #[arg(long, default_value_t = 10.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 10.0, allow_hyphen_values = true)]
     duration: f64,
     /// Frames per simulated second (1 to 50).
-    #[arg(long, default_value_t = 10)]
+    #[arg(long, default_value_t = 10, allow_hyphen_values = true)]
     fps: u16,
     #[arg(long, value_enum, default_value_t = EngineArg::Rapier)]
     engine: EngineArg,

@@ -24,15 +24,15 @@ pub struct Args {
     #[command(flatten)]
     model: ModelArgs,
     /// Simulated time in seconds.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     duration: f64,
     #[arg(long, value_enum, default_value_t = EngineArg::Rapier)]
     engine: EngineArg,
     /// Initial angle of both rods, in rad.
-    #[arg(long, default_value_t = 0.001, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 0.001, allow_hyphen_values = true)]
     perturb: f64,
     /// Time step (and output interval), in s.
-    #[arg(long, default_value_t = DEFAULT_STEP_SECS, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = DEFAULT_STEP_SECS, allow_hyphen_values = true)]
     dt: f64,
     /// A quasi-static load ramp, `FROM:TO:RATE` (loads p, RATE in p per
     /// simulated second): the load starts at FROM, moves at RATE, stays at

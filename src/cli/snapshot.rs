@@ -14,7 +14,7 @@ pub struct Args {
     #[command(flatten)]
     model: ModelArgs,
     /// Simulated time before the picture, in s.
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     time: f64,
     #[arg(long, value_enum, default_value_t = EngineArg::Rapier)]
     engine: EngineArg,

@@ -415,6 +415,48 @@ pub const CLI: &[Cli] = &[
         &["record", "--preset", "roller", "--out", "/proc/x.gif"],
         "out = /proc/x.gif: the folder /proc takes no new file",
     ),
+    // Negative numbers and -inf reach the flag's own check, which names it
+    // (clap once answered "unexpected argument '-1' found", naming none).
+    refused(
+        &[
+            "record",
+            "--preset",
+            "roller",
+            "--fps",
+            "-1",
+            "--out",
+            "/tmp/x.gif",
+        ],
+        "invalid value '-1' for '--fps <FPS>'",
+    ),
+    refused(
+        &[
+            "record",
+            "--preset",
+            "roller",
+            "--duration",
+            "-inf",
+            "--out",
+            "/tmp/x.gif",
+        ],
+        "duration = -inf: must be a positive number of seconds",
+    ),
+    refused(
+        &[
+            "snapshot",
+            "--preset",
+            "roller",
+            "--scale",
+            "-1",
+            "--out",
+            "/tmp/x.png",
+        ],
+        "scale = -1: must be 0.5 to 8 pixels per point",
+    ),
+    refused(
+        &["bench", "--frames", "-1"],
+        "invalid value '-1' for '--frames <FRAMES>'",
+    ),
     // A ramp sets the load: a --set of it in any of its names is refused
     // (it was silently overridden), and so is a ramp to a load the model
     // cannot take, before the run, in every command that ramps.
