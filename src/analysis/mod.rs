@@ -12,7 +12,7 @@ mod stability;
 
 pub use critical::{
     BRACKET_SAMPLES, DEFAULT_LOAD_MAX, LARGEST_LOAD, Transition, bracketing_locus, critical_loads,
-    critical_loads_along,
+    critical_loads_along, natural_load_max,
 };
 pub use locus::{Locus, MAX_HELD_EIGENVALUES, load_grid, locus, max_samples};
 pub use map::{Cell, MapSpec, Row, RowResult, compute as compute_map};

@@ -243,7 +243,7 @@ impl AffinePencil {
             per_unit_load,
             cyclic: always_cyclic,
             characteristic,
-            natural_load_max: super::DEFAULT_LOAD_MAX * model.column.load_range_scale(),
+            natural_load_max: super::natural_load_max(model),
         })
     }
 
@@ -353,8 +353,7 @@ impl AffinePencil {
         }
     }
 
-    /// The column's own load range: `p` from 0 to 10 for two rods, and the
-    /// same range in the beam's units for a chain (see `Column::load_range_scale`).
+    /// The upper end of the column's own load range (see [`super::natural_load_max`]).
     #[must_use]
     pub fn natural_load_max(&self) -> f64 {
         self.natural_load_max

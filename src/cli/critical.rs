@@ -6,7 +6,7 @@ use anyhow::Result;
 use serde_json::json;
 
 use zieglerlab::analysis::{
-    AffinePencil, DEFAULT_LOAD_MAX, bracketing_locus, critical_loads_along, resolution_warning,
+    AffinePencil, bracketing_locus, critical_loads_along, natural_load_max, resolution_warning,
 };
 use zieglerlab::format::Shown;
 
@@ -34,9 +34,7 @@ const UNRESOLVED_LISTED: usize = 20;
 pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     let (name, model) = args.model.build()?;
     let load_min = args.load_min;
-    let load_max = args
-        .load_max
-        .unwrap_or(DEFAULT_LOAD_MAX * model.column.load_range_scale());
+    let load_max = args.load_max.unwrap_or_else(|| natural_load_max(&model));
     if load_max == load_min {
         anyhow::bail!(
             "load-max = {}: must exceed load-min: the changes of stability are sought over a range of loads",

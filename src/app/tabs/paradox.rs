@@ -11,7 +11,7 @@ use eframe::egui;
 use egui_plot::{Corner, HLine, Legend, Line, Plot, PlotPoints, Points, log_grid_spacer};
 
 use crate::analysis::{
-    DEFAULT_LOAD_MAX, first_instability, flutter_load_damped, flutter_load_external,
+    first_instability, flutter_load_damped, flutter_load_external, natural_load_max,
 };
 use crate::app::View;
 use crate::app::plot_frame::{Fit, axes, refit_if};
@@ -20,13 +20,6 @@ use crate::app::theme::Theme;
 use crate::format::number_text;
 use crate::model::{Axis, Key, Load, Model};
 
-/// The loads searched for the first loss of stability: the column's own
-/// range (p to 10 for two rods, the same range of `P L^2/EI` for a chain),
-/// as `critical` searches by default. A chain of 16 rods searched to p = 10,
-/// 64 times its range, took ten minutes per picture.
-fn load_max(model: &Model) -> f64 {
-    DEFAULT_LOAD_MAX * model.column.load_range_scale()
-}
 /// Points per curve.
 const POINTS: usize = 41;
 /// Joint damping levels g2 of the column curves, down to "vanishing".
@@ -155,7 +148,10 @@ fn empty_reason(failures: impl IntoIterator<Item = Option<String>>, load_max: f6
 /// a cancelled result is for no one.
 #[must_use]
 pub fn curves(model: &Model, kind: DampingKind, cancel: &AtomicBool) -> Curves {
-    let load_max = load_max(model);
+    // The first loss of stability is sought over the column's own range, as
+    // `critical` does by default (a chain of 16 rods searched to p = 10, 64
+    // times its range, took ten minutes per picture).
+    let load_max = natural_load_max(model);
     let first = |m: &Model| first_instability(m, load_max).ok().flatten();
     match model.load {
         Load::Follower { eta: 0.0, .. } => Curves {
@@ -365,7 +361,13 @@ impl ParadoxPanel {
             Load::Follower { .. } => self.kind.ratio(model),
         };
         let point = (x > 0.0 && x.is_finite())
-            .then(|| known.or_else(|| first_instability(&key, load_max(&key)).ok().flatten()))
+            .then(|| {
+                known.or_else(|| {
+                    first_instability(&key, natural_load_max(&key))
+                        .ok()
+                        .flatten()
+                })
+            })
             .flatten()
             .map(|p| [x.log10(), p]);
         self.current = Some(((key, self.kind), point));
