@@ -362,7 +362,7 @@ pub fn chain_frame_times_ms(frames: usize) -> Result<Vec<f64>> {
         engine: EngineKind::Reference,
         ..Settings::default()
     };
-    let load_max = crate::app::load_max_p(&model);
+    let load_max = model.load_bar_max_p();
     drag_frame_times_ms(frames, settings, Tab::Locus, (Key::Load, 0.0, load_max))
 }
 

@@ -1,6 +1,7 @@
-//! Files written whole or not at all: a temporary file in the same folder,
-//! synced and renamed over the target (or to a free name), with the permissions a new file (or
-//! the one it replaces) would have; devices and pipes are written directly.
+//! Files written whole or not at all (a temporary file in the same folder,
+//! synced and renamed over the target or to a free name, with the
+//! permissions a new file or the one it replaces would have; devices and
+//! pipes are written directly), and text files read with a bound on size.
 
 use std::io::Write as _;
 use std::path::Path;
@@ -11,6 +12,65 @@ use std::path::Path;
 pub struct WriteError {
     pub path: String,
     pub why: String,
+}
+
+/// A text file that could not be read, and why.
+#[derive(Debug, thiserror::Error)]
+#[error("cannot read {path}: {why}")]
+pub struct ReadError {
+    pub path: String,
+    pub why: String,
+}
+
+/// Reads the text file at `path`, of at most `most_bytes` bytes, without a
+/// UTF-8 byte-order mark. Only a regular file is read: a folder, a device
+/// (`/dev/zero` never ends) or a pipe (which blocks until someone writes)
+/// is refused before it is opened, and a file that grows past the bound
+/// while it is read is refused too.
+///
+/// # Errors
+/// Not a regular file, larger than `most_bytes`, unreadable, or not UTF-8.
+pub fn read_text(path: &Path, most_bytes: u64) -> Result<String, ReadError> {
+    use std::io::Read as _;
+    let error = |why: String| ReadError {
+        path: path.display().to_string(),
+        why,
+    };
+    let metadata = std::fs::metadata(path).map_err(|e| error(e.to_string()))?;
+    if !metadata.is_file() {
+        let kind = if metadata.is_dir() {
+            "a folder"
+        } else {
+            "a device, a pipe or a socket"
+        };
+        return Err(error(format!("it is {kind}, not a regular file")));
+    }
+    let too_large = |bytes: u64| {
+        error(format!(
+            "it holds {bytes} bytes; at most {most_bytes} are read"
+        ))
+    };
+    if metadata.len() > most_bytes {
+        return Err(too_large(metadata.len()));
+    }
+    let file = std::fs::File::open(path).map_err(|e| error(e.to_string()))?;
+    let mut bytes = Vec::new();
+    file.take(most_bytes.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(|e| error(e.to_string()))?;
+    if bytes.len() as u64 > most_bytes {
+        return Err(too_large(bytes.len() as u64));
+    }
+    let text = String::from_utf8(bytes).map_err(|e| {
+        error(format!(
+            "it is not UTF-8 text (byte {} is not)",
+            e.utf8_error().valid_up_to() + 1
+        ))
+    })?;
+    Ok(match text.strip_prefix('\u{feff}') {
+        Some(rest) => rest.to_owned(),
+        None => text,
+    })
 }
 
 /// The folder `out` is written in (`.` for a bare file name).
@@ -142,6 +202,28 @@ fn new_file_permissions() -> Option<std::fs::Permissions> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Only regular files of at most the bound are read; a byte-order mark
+    /// is dropped; a device, a folder and a pipe are refused unopened.
+    #[test]
+    fn text_is_read_from_regular_files_within_the_bound() {
+        let folder = tempfile::tempdir().unwrap();
+        let path = folder.path().join("lesson.ron");
+        std::fs::write(&path, "\u{feff}(title: \"t\")").unwrap();
+        assert_eq!(read_text(&path, 100).unwrap(), "(title: \"t\")");
+        let why = |p: &Path, most| read_text(p, most).unwrap_err().why;
+        assert_eq!(why(&path, 10), "it holds 15 bytes; at most 10 are read");
+        assert_eq!(
+            why(folder.path(), 100),
+            "it is a folder, not a regular file"
+        );
+        assert_eq!(
+            why(Path::new("/dev/zero"), 100),
+            "it is a device, a pipe or a socket, not a regular file"
+        );
+        std::fs::write(&path, [b'a', 0xff]).unwrap();
+        assert_eq!(why(&path, 100), "it is not UTF-8 text (byte 2 is not)");
+    }
 
     /// A taken name is never replaced: the next free one is used, and a
     /// file named like a later one is stepped over too.

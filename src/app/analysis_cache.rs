@@ -8,8 +8,6 @@ use crate::analysis::{
 };
 use crate::model::Model;
 
-use super::state::load_max_p;
-
 /// Evenly spaced loads of the plotted locus (plus the refinement). The same
 /// locus brackets the critical loads, with the sample count `critical` uses.
 pub const LOCUS_SAMPLES: usize = BRACKET_SAMPLES;
@@ -31,7 +29,7 @@ impl Analysis {
     pub(super) fn new(model: &Model) -> Result<Self, AnalysisError> {
         let key = model.at_load(0.0);
         let pencil = AffinePencil::new(&key)?;
-        let load_max = load_max_p(model);
+        let load_max = model.load_bar_max_p();
         let locus = locus(&pencil, 0.0, load_max, LOCUS_SAMPLES)?;
         let transitions = critical_loads_along(&pencil, &locus)?;
         let warning = resolution_warning(&pencil, &locus)?;

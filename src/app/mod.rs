@@ -37,7 +37,7 @@ pub use layout::Layout;
 pub use notice::{Level, Notice};
 pub use pace::{MAX_FRAME_SECS, MAX_STEPS_PER_FRAME};
 pub use plot_frame::VIEW_HINT;
-pub use state::{AppState, LOAD_MAX_P, Settings, load_max_p};
+pub use state::{AppState, Settings};
 pub use tabs::Tab;
 pub use tabs::map::map_picture;
 pub use window::{Renderer, WindowFrames, run, time_window_frames};
@@ -67,6 +67,23 @@ pub enum Panel {
     Window,
     Scene,
     Tab(Tab),
+}
+
+/// The smallest window, in points: the window cannot be made smaller, and
+/// the sidebar, the scene and the plots all fit in it.
+pub const SMALLEST_WINDOW_POINTS: [f32; 2] = [1024.0, 700.0];
+
+impl Panel {
+    /// The smallest area, in points, this panel is laid out in without
+    /// labels running into each other: the window's own minimum for the
+    /// whole window, 480x300 for one panel.
+    #[must_use]
+    pub fn smallest_points(self) -> [f32; 2] {
+        match self {
+            Self::Window => SMALLEST_WINDOW_POINTS,
+            Self::Scene | Self::Tab(_) => [480.0, 300.0],
+        }
+    }
 }
 
 /// The app: its state and the views that draw it.

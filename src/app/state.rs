@@ -26,18 +26,6 @@ use super::notice::Notice;
 use super::pace::Pace;
 pub use super::settings::Settings;
 
-/// The load slider's range and the locus's, on the common axis p, for two
-/// rods (see [`load_max_p`]).
-pub const LOAD_MAX_P: f64 = 8.0;
-
-/// The load slider's range for `model`: [`LOAD_MAX_P`] for two rods; for a
-/// chain of N rods `LOAD_MAX_P (2/N)^2`, the same range in the continuous
-/// column's units `P L^2 / EI` (0 to 32).
-#[must_use]
-pub fn load_max_p(model: &Model) -> f64 {
-    LOAD_MAX_P * model.column.load_range_scale()
-}
-
 /// The size of a kick, in rad on both angles.
 const KICK_RAD: f64 = 0.01;
 /// The step of the load keys, as a fraction of the slider's range.
@@ -294,10 +282,10 @@ impl AppState {
         self.refused.retain(|(k, _)| *k != key);
     }
 
-    /// The load slider's range for the current model (see [`load_max_p`]).
+    /// The load slider's range for the current model (see [`Model::load_bar_max_p`]).
     #[must_use]
     pub fn load_max(&self) -> f64 {
-        load_max_p(&self.settings.model)
+        self.settings.model.load_bar_max_p()
     }
 
     /// Moves the load by `delta_p`, within the slider's range (or toward it
@@ -315,20 +303,26 @@ impl AppState {
     /// Switches to the preset `id` at the current load (or, beyond its
     /// slider, its own): its parameters, a fresh run, the overlay at its `a`.
     pub fn set_preset(&mut self, id: PresetId) {
+        self.switch_column(id, id.switched_from(&self.settings.model));
+    }
+
+    /// Shows `model` of preset `id`: as a switch of preset (a fresh run)
+    /// when `id` is another, as a change of parameters otherwise.
+    pub fn set_column(&mut self, id: PresetId, model: Model) {
+        if id == self.settings.preset {
+            self.set_model(model);
+        } else {
+            self.switch_column(id, model);
+        }
+    }
+
+    /// Preset `id` with `model`, on a fresh run.
+    fn switch_column(&mut self, id: PresetId, model: Model) {
         self.settings.preset = id;
         self.refused.clear();
         // A ramp and its marks belong to the column it ran on.
         self.ramp = None;
-        // The load stays where it is, unless it is beyond the new preset's
-        // slider (a chain's is shorter): then the preset's own.
-        let model = id.model();
-        let p = self.settings.model.load_p();
-        let load = if p <= load_max_p(&model) {
-            p
-        } else {
-            model.load_p()
-        };
-        self.set_model(model.at_load(load));
+        self.set_model(model);
         self.reset();
     }
 

@@ -60,11 +60,87 @@ fn keep_copy(path: &Path) -> std::io::Result<PathBuf> {
     Ok(copy)
 }
 
+/// The largest store read, in bytes: a few kB are written; anything near
+/// this is not the app's.
+const MOST_STORE_BYTES: u64 = 16 << 20;
+
+/// Moves `path` aside (a folder, a pipe, a device, or a file too large to
+/// be the app's store), so that eframe neither blocks on reading it nor
+/// fails to write the settings. Says what was done.
+fn move_aside(path: &Path, why: &str) -> String {
+    let secs = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    let aside = path.with_extension(format!("ron.unusable-{secs}"));
+    match std::fs::rename(path, &aside) {
+        Ok(()) => format!(
+            "the stored state {} {why}; it is moved to {} and the defaults are used",
+            path.display(),
+            aside.display()
+        ),
+        Err(error) => format!(
+            "the stored state {} {why} and could not be moved aside ({error}); settings will not be saved",
+            path.display()
+        ),
+    }
+}
+
+/// Whether the settings can be saved at `path`: the folder takes a new
+/// file and an existing store is writable. Says why not, if not.
+fn unwritable(path: &Path) -> Option<String> {
+    let folder = path.parent().unwrap_or_else(|| Path::new("."));
+    if let Err(error) = tempfile::NamedTempFile::new_in(folder) {
+        return Some(format!(
+            "settings will not be saved: the folder {} takes no new file ({})",
+            folder.display(),
+            std::io::Error::from(error.kind())
+        ));
+    }
+    if let Err(error) = std::fs::OpenOptions::new().append(true).open(path)
+        && error.kind() != std::io::ErrorKind::NotFound
+    {
+        return Some(format!(
+            "settings will not be saved: {} cannot be written ({error})",
+            path.display()
+        ));
+    }
+    None
+}
+
 /// Checks and repairs eframe's store at `path` (`app.ron`) before eframe
-/// reads it. Returns what the user should be told, if anything.
+/// reads it: what it holds, and that it can be written. Returns what the
+/// user should be told, if anything.
 #[must_use]
 pub fn check_stored_file(path: &Path) -> Option<String> {
-    let text = std::fs::read_to_string(path).ok()?;
+    let read = check_stored_entries(path);
+    let write = unwritable(path);
+    match (read, write) {
+        (Some(read), Some(write)) => Some(format!("{read}; {write}")),
+        (read, write) => read.or(write),
+    }
+}
+
+/// Checks and repairs the entries of eframe's store at `path`.
+fn check_stored_entries(path: &Path) -> Option<String> {
+    let metadata = std::fs::metadata(path).ok()?;
+    if !metadata.is_file() {
+        let kind = if metadata.is_dir() {
+            "is a folder"
+        } else {
+            "is a device, a pipe or a socket"
+        };
+        return Some(move_aside(path, kind));
+    }
+    if metadata.len() > MOST_STORE_BYTES {
+        return Some(move_aside(
+            path,
+            &format!(
+                "holds {} bytes (at most {MOST_STORE_BYTES} are read)",
+                metadata.len()
+            ),
+        ));
+    }
+    let text = crate::files::read_text(path, MOST_STORE_BYTES).ok()?;
     let mut entries: BTreeMap<String, String> = match ron::from_str(&text) {
         Ok(entries) => entries,
         Err(error) => {
@@ -101,7 +177,12 @@ pub fn check_stored_file(path: &Path) -> Option<String> {
     if !dropped.is_empty() {
         let written = ron::ser::to_string_pretty(&entries, ron::ser::PrettyConfig::default())
             .map_err(|e| e.to_string())
-            .and_then(|repaired| write_replacing(path, &repaired).map_err(|e| e.to_string()));
+            .and_then(|repaired| {
+                crate::files::write_atomically(path, |w| {
+                    std::io::Write::write_all(w, repaired.as_bytes())
+                })
+                .map_err(|e| e.why)
+            });
         note.push(match written {
             Ok(()) => format!("stored state: ignored {}", dropped.join(", ")),
             Err(error) => format!(
@@ -118,16 +199,6 @@ pub fn check_stored_file(path: &Path) -> Option<String> {
         Err(error) => note.push(format!("no copy of the original could be kept ({error})")),
     }
     Some(note.join("; "))
-}
-
-/// Writes `text` to `path` through a temporary file in the same folder.
-fn write_replacing(path: &Path, text: &str) -> std::io::Result<()> {
-    let folder = path.parent().unwrap_or_else(|| Path::new("."));
-    let mut file = tempfile::NamedTempFile::new_in(folder)?;
-    std::io::Write::write_all(&mut file, text.as_bytes())?;
-    file.as_file().sync_all()?;
-    file.persist(path).map_err(|e| e.error)?;
-    Ok(())
 }
 
 #[cfg(test)]
@@ -209,5 +280,31 @@ mod tests {
         );
         assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 2);
         std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    /// A folder or a pipe where the store should be is moved aside before
+    /// eframe blocks on it (a pipe) or cannot save (a folder), and said so.
+    #[test]
+    fn a_folder_or_a_pipe_in_place_of_the_store_is_moved_aside() {
+        for kind in ["folder", "pipe"] {
+            let dir = dir(kind);
+            std::fs::create_dir_all(&dir).unwrap();
+            let path = dir.join("app.ron");
+            if kind == "folder" {
+                std::fs::create_dir(&path).unwrap();
+            } else {
+                let made = std::process::Command::new("mkfifo").arg(&path).status();
+                assert!(made.unwrap().success());
+            }
+            let note = check_stored_file(&path).unwrap();
+            assert!(note.contains("moved to"), "{note}");
+            assert!(!path.exists(), "{kind}: moved away");
+            assert_eq!(
+                check_stored_file(&path),
+                None,
+                "{kind}: nothing left to say"
+            );
+            std::fs::remove_dir_all(&dir).unwrap();
+        }
     }
 }

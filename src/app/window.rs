@@ -36,7 +36,7 @@ fn options(renderer: Renderer, inner_size: [f32; 2]) -> eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title(super::recorder::WINDOW_TITLE)
             .with_inner_size(inner_size)
-            .with_min_inner_size([1024.0, 700.0]),
+            .with_min_inner_size(super::SMALLEST_WINDOW_POINTS),
         renderer: renderer.into(),
         // Dithering adds noise to every pixel's colour to hide banding in
         // gradients; there are none here, and on a CPU renderer it costs

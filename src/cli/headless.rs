@@ -70,15 +70,53 @@ pub struct Look {
     pub panel: PanelArg,
 }
 
-/// Pixels per point must be 0.5 to 8.
-///
-/// # Errors
-/// A scale out of that range, or not a number.
-pub fn check_scale(scale: f32) -> Result<()> {
-    if !(scale.is_finite() && (0.5..=8.0).contains(&scale)) {
-        anyhow::bail!("scale = {scale}: must be 0.5 to 8 pixels per point");
+impl Look {
+    /// The panel these arguments picture.
+    pub fn panel(&self) -> Panel {
+        Panel::from(self.panel)
     }
-    Ok(())
+
+    /// Pixels per point must be 0.5 to 8, and `size` at that scale must lay
+    /// the panel out in at least [`Panel::smallest_points`]: a smaller
+    /// layout is a clipped fragment of the app (or nothing at all), never
+    /// what a window shows.
+    ///
+    /// # Errors
+    /// A scale out of range or not a number, or too few points for the panel.
+    pub fn check(&self, size: Size) -> Result<()> {
+        let scale = self.scale;
+        if !(scale.is_finite() && (0.5..=8.0).contains(&scale)) {
+            anyhow::bail!("scale = {scale}: must be 0.5 to 8 pixels per point");
+        }
+        let panel = self.panel();
+        let [least_w, least_h] = panel.smallest_points();
+        let (points_w, points_h) = (
+            f32::from(size.width) / scale,
+            f32::from(size.height) / scale,
+        );
+        if points_w < least_w || points_h < least_h {
+            let what = match panel {
+                Panel::Window => "the window (the smallest it opens at)",
+                Panel::Scene | Panel::Tab(_) => "one panel",
+            };
+            let most_scale =
+                (f32::from(size.width) / least_w).min(f32::from(size.height) / least_h);
+            let hint = if most_scale >= 0.5 {
+                format!(
+                    "a scale of at most {:.2} or a larger --size",
+                    (most_scale * 100.0).floor() / 100.0
+                )
+            } else {
+                "a larger --size".to_owned()
+            };
+            anyhow::bail!(
+                "size = {}x{} at scale = {scale} lays out {points_w:.0}x{points_h:.0} points; {what} needs at least {least_w:.0}x{least_h:.0}: use {hint}",
+                size.width,
+                size.height,
+            );
+        }
+        Ok(())
+    }
 }
 
 /// Renders `panel` of `app` headlessly with wgpu, `size` pixels at `scale`

@@ -28,13 +28,11 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
         }
         return Ok(());
     };
-    let shown = path.display();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| anyhow::anyhow!("{shown}: cannot read the lesson: {e}"))?;
-    let lesson = Lesson::read(&text).map_err(|e| anyhow::anyhow!("{shown}: {e}"))?;
+    let lesson = Lesson::read_file(path)?;
     writeln!(
         out,
-        "{shown}: ok: \"{}\", {} steps",
+        "{}: ok: \"{}\", {} steps, from every preset, forward and back",
+        path.display(),
         lesson.title,
         lesson.steps.len()
     )?;

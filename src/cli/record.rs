@@ -6,11 +6,11 @@ use std::io::Write;
 
 use anyhow::Result;
 
-use zieglerlab::app::{Panel, Settings, ZieglerApp};
+use zieglerlab::app::{Settings, ZieglerApp};
 use zieglerlab::recording::GifRecording;
 use zieglerlab::sim::Ramp;
 
-use super::headless::{Look, Size, check_scale, render_frames};
+use super::headless::{Look, Size, render_frames};
 use super::output::{check_output, write_atomically};
 use super::{EngineArg, ModelArgs, progress_bar};
 
@@ -36,7 +36,7 @@ pub struct Args {
     #[arg(long, value_enum, default_value_t = EngineArg::Rapier)]
     engine: EngineArg,
     /// Picture size in pixels, `WIDTHxHEIGHT`.
-    #[arg(long, default_value = "800x500", allow_hyphen_values = true)]
+    #[arg(long, default_value = "1024x700", allow_hyphen_values = true)]
     size: Size,
     #[command(flatten)]
     look: Look,
@@ -57,7 +57,7 @@ pub fn run(args: &Args) -> Result<()> {
             args.out.display()
         );
     }
-    check_scale(args.look.scale)?;
+    args.look.check(args.size)?;
     if !(1..=50).contains(&args.fps) {
         anyhow::bail!("fps = {}: must be 1 to 50 frames per second", args.fps);
     }
@@ -80,7 +80,7 @@ pub fn run(args: &Args) -> Result<()> {
     if let Some(ramp) = args.ramp {
         app.state_mut().start_ramp(ramp);
     }
-    let panel = Panel::from(args.look.panel);
+    let panel = args.look.panel();
     #[expect(
         clippy::cast_possible_truncation,
         clippy::cast_sign_loss,

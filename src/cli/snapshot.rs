@@ -3,9 +3,9 @@
 
 use anyhow::Result;
 
-use zieglerlab::app::{Panel, Settings, ZieglerApp};
+use zieglerlab::app::{Settings, ZieglerApp};
 
-use super::headless::{Look, Size, check_scale, render_frames};
+use super::headless::{Look, Size, render_frames};
 use super::output::{check_output, write_png};
 use super::{EngineArg, ModelArgs, progress_bar};
 
@@ -29,7 +29,7 @@ pub struct Args {
 
 pub fn run(args: &Args) -> Result<()> {
     check_output(&args.out, true)?;
-    check_scale(args.look.scale)?;
+    args.look.check(args.size)?;
     let (name, model) = args.model.build()?;
     let time = args.time;
     if !(time.is_finite() && (0.0..=1.0e5).contains(&time)) {
@@ -58,7 +58,7 @@ pub fn run(args: &Args) -> Result<()> {
         }
     }
     progress.finish_and_clear();
-    let panel = Panel::from(args.look.panel);
+    let panel = args.look.panel();
     let mut image = None;
     render_frames(
         app,

@@ -1,15 +1,23 @@
 //! Predict-then-observe lessons as small text files (RON): a title and a
 //! sequence of steps, each showing text and able to set the preset, the
 //! parameters, the load, the speed, the open tab and an overlay, start a kick or a
-//! ramp, ask for a prediction and reveal the result. Reading and checking
-//! only: what the app does with a step is the app's business.
+//! ramp, ask for a prediction and reveal the result. Reading, checking, and
+//! the column each step leaves (the one rule the app and the checker share).
 
 use std::collections::BTreeMap;
+use std::path::Path;
 
 use serde::Deserialize;
 
-use crate::model::{Assignment, Key, Model, PresetId, apply_assignments};
+use crate::model::{Assignment, Key, Model, ModelError, PresetId, apply_assignments};
 use crate::sim::{Ramp, SPEED_RANGE};
+
+/// The largest lesson file read, in bytes: far more than any lesson needs,
+/// small enough to read and check at once.
+pub const MOST_BYTES: u64 = 1 << 20;
+
+/// The longest title, in characters: one line on the screen.
+const MOST_TITLE_CHARS: usize = 200;
 
 /// The lessons built into the program: (file name, text).
 pub const BUILT_IN: [(&str, &str); 3] = [
@@ -43,7 +51,9 @@ pub struct Step {
     pub text: String,
     /// The model to switch to, by preset name.
     pub preset: Option<PresetId>,
-    /// Parameters, as `--set` names them, e.g. `{"load": 1.0, "nu": 0.1}`.
+    /// Parameters, as `--set` names them, e.g. `{"load": 1.0, "nu": 0.1}`;
+    /// a key written twice is refused, not silently overwritten.
+    #[serde(deserialize_with = "keys_once")]
     pub set: BTreeMap<Key, f64>,
     /// Simulated seconds per wall second.
     pub speed: Option<f64>,
@@ -68,6 +78,69 @@ impl Step {
             .map(|(&key, &value)| Assignment { key, value })
             .collect()
     }
+
+    /// Whether the step changes the column (its preset or parameters).
+    #[must_use]
+    pub fn sets_column(&self) -> bool {
+        self.preset.is_some() || !self.set.is_empty()
+    }
+
+    /// The column after this step, from `column`: its preset switched to
+    /// (the load carried over as [`PresetId::switched_from`] does), then its
+    /// parameters set.
+    ///
+    /// # Errors
+    /// A parameter the column refuses, named.
+    pub fn column_after(&self, column: Column) -> Result<Column, ModelError> {
+        let Column {
+            mut preset,
+            mut model,
+        } = column;
+        if let Some(id) = self.preset {
+            preset = id;
+            model = id.switched_from(&model);
+        }
+        apply_assignments(&mut model, &self.assignments())?;
+        Ok(Column { preset, model })
+    }
+}
+
+/// A column a lesson acts on: the preset it came from and its model.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Column {
+    pub preset: PresetId,
+    pub model: Model,
+}
+
+/// A `set` map whose keys are each written once.
+fn keys_once<'de, D: serde::Deserializer<'de>>(
+    deserializer: D,
+) -> Result<BTreeMap<Key, f64>, D::Error> {
+    struct Once;
+    impl<'de> serde::de::Visitor<'de> for Once {
+        type Value = BTreeMap<Key, f64>;
+
+        fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+            f.write_str("a map of parameters, e.g. {\"load\": 1.0}")
+        }
+
+        fn visit_map<A: serde::de::MapAccess<'de>>(
+            self,
+            mut map: A,
+        ) -> Result<Self::Value, A::Error> {
+            let mut set = BTreeMap::new();
+            while let Some((key, value)) = map.next_entry::<Key, f64>()? {
+                if set.insert(key, value).is_some() {
+                    return Err(serde::de::Error::custom(format!(
+                        "the key '{}' is written twice in `set`",
+                        key.name()
+                    )));
+                }
+            }
+            Ok(set)
+        }
+    }
+    deserializer.deserialize_map(Once)
 }
 
 /// The app's tabs, by the names a lesson uses: "locus", "histories",
@@ -138,9 +211,32 @@ pub struct LessonError {
     pub message: String,
 }
 
+/// Why a lesson file cannot be used.
+#[derive(Debug, thiserror::Error)]
+pub enum LessonFileError {
+    #[error(transparent)]
+    Read(#[from] crate::files::ReadError),
+    #[error("{path}: {error}")]
+    Lesson { path: String, error: LessonError },
+}
+
 impl Lesson {
+    /// Reads and checks the lesson file at `path`: a regular file of at most
+    /// [`MOST_BYTES`] (a device, a pipe or a huge file is refused unread).
+    ///
+    /// # Errors
+    /// The file cannot be read, or the lesson's first problem.
+    pub fn read_file(path: &Path) -> Result<Self, LessonFileError> {
+        let text = crate::files::read_text(path, MOST_BYTES)?;
+        Self::read(&text).map_err(|error| LessonFileError::Lesson {
+            path: path.display().to_string(),
+            error,
+        })
+    }
+
     /// Reads and checks a lesson's text: its syntax and field names, then
-    /// every step against the model it would act on.
+    /// every step against the column it would act on, whichever preset the
+    /// lesson is opened on.
     ///
     /// # Errors
     /// The first problem, with its line.
@@ -157,31 +253,72 @@ impl Lesson {
         Ok(lesson)
     }
 
-    /// Checks what the syntax cannot: a step with text, parameters that the
-    /// model of that moment takes, a speed in range, a ramp that is one, a
-    /// choice of two answers or more, and a revealed answer among them.
+    /// The column the lesson has made when step `index` is shown, opened on
+    /// `start`: every step up to it applied in turn. Going back to a step
+    /// gives the same column as reaching it forward.
+    ///
+    /// # Errors
+    /// The first step whose parameters the column refuses: (its index, why).
+    pub fn column_at(&self, start: Column, index: usize) -> Result<Column, (usize, ModelError)> {
+        self.steps
+            .iter()
+            .enumerate()
+            .take(index + 1)
+            .try_fold(start, |column, (i, step)| {
+                step.column_after(column).map_err(|e| (i, e))
+            })
+    }
+
+    /// Checks what the syntax cannot: a title of one short printable line, a
+    /// step with text, parameters and ramps that the column of that moment
+    /// takes (from every preset the lesson may be opened on), a speed in
+    /// range, a choice of two answers or more, and a revealed answer among
+    /// them.
     fn check(&self, text: &str) -> Result<(), LessonError> {
         let at_step = |index: usize, message: String| LessonError {
             line: step_line(text, index),
             message: format!("step {}: {message}", index + 1),
         };
+        check_title(&self.title).map_err(|message| LessonError {
+            line: text
+                .find("title")
+                .map_or(1, |at| text[..at].lines().count().max(1)),
+            message,
+        })?;
         if self.steps.is_empty() {
             return Err(LessonError {
                 line: 1,
                 message: "expected at least one step in `steps`".to_owned(),
             });
         }
-        let mut model: Model = PresetId::Roller.model();
+        for start in PresetId::ALL {
+            let opened_on = |message: String| {
+                if self.steps[0].preset.is_some() {
+                    message
+                } else {
+                    format!("{message} (the lesson opened on the {start} preset)")
+                }
+            };
+            let mut column = Column {
+                preset: start,
+                model: start.model(),
+            };
+            for (index, step) in self.steps.iter().enumerate() {
+                column = step
+                    .column_after(column)
+                    .map_err(|e| at_step(index, opened_on(e.to_string())))?;
+                if let Some(Run::Ramp { from, to, rate }) = step.run {
+                    Ramp::new(from, to, rate)
+                        .and_then(|ramp| ramp.check_for(&column.model))
+                        .map_err(|e| at_step(index, opened_on(e)))?;
+                }
+            }
+        }
         let mut answers: Option<usize> = None;
         for (index, step) in self.steps.iter().enumerate() {
             if step.text.trim().is_empty() {
                 return Err(at_step(index, "expected a `text` to show".to_owned()));
             }
-            if let Some(preset) = step.preset {
-                model = preset.model().at_load(model.load_p());
-            }
-            apply_assignments(&mut model, &step.assignments())
-                .map_err(|e| at_step(index, e.to_string()))?;
             if let Some(speed) = step.speed
                 && !SPEED_RANGE.contains(&speed)
             {
@@ -193,9 +330,6 @@ impl Lesson {
                         SPEED_RANGE.end()
                     ),
                 ));
-            }
-            if let Some(Run::Ramp { from, to, rate }) = step.run {
-                Ramp::new(from, to, rate).map_err(|e| at_step(index, e))?;
             }
             if let Some(Predict::Choice { answers: given, .. }) = &step.predict {
                 if given.len() < 2 {
@@ -231,16 +365,66 @@ impl Lesson {
     }
 }
 
+/// A title is one line of at most [`MOST_TITLE_CHARS`] printable
+/// characters: it is printed on terminals, where a control character
+/// (an escape sequence) could rewrite the screen.
+fn check_title(title: &str) -> Result<(), String> {
+    if title.trim().is_empty() {
+        return Err("expected a `title`".to_owned());
+    }
+    let chars = title.chars().count();
+    if chars > MOST_TITLE_CHARS {
+        return Err(format!(
+            "the title has {chars} characters; at most {MOST_TITLE_CHARS}"
+        ));
+    }
+    if let Some(control) = title.chars().find(|c| c.is_control()) {
+        return Err(format!(
+            "the title holds the control character U+{:04X}; expected printable text on one line",
+            u32::from(control)
+        ));
+    }
+    Ok(())
+}
+
 /// The line (from 1) where step `index` (from 0) of `text` begins: the
-/// `index`-th `Step(` after `steps:`, or 1 when it cannot be found.
+/// `index`-th `Step(` after `steps:` outside strings and comments, or 1
+/// when it cannot be found.
 fn step_line(text: &str, index: usize) -> usize {
     let start = text.find("steps").unwrap_or(0);
-    text[start..]
-        .match_indices("Step(")
+    code_offsets(&text[start..])
+        .filter(|&offset| text[start + offset..].starts_with("Step("))
         .nth(index)
-        .map_or(1, |(offset, _)| {
-            text[..start + offset].lines().count().max(1)
-        })
+        .map_or(1, |offset| text[..start + offset].lines().count().max(1))
+}
+
+/// The byte offsets of `text` that are code: outside string literals
+/// (with their escapes) and `//` or `/* */` comments.
+fn code_offsets(text: &str) -> impl Iterator<Item = usize> + '_ {
+    #[derive(Clone, Copy)]
+    enum In {
+        Code,
+        Text,
+        Escape,
+        LineComment,
+        BlockComment,
+    }
+    let bytes = text.as_bytes();
+    let mut state = In::Code;
+    (0..bytes.len()).filter(move |&i| {
+        let (next, code) = match (state, bytes[i]) {
+            (In::Code, b'"') | (In::Escape, _) => (In::Text, false),
+            (In::Code, b'/') if bytes.get(i + 1) == Some(&b'/') => (In::LineComment, false),
+            (In::Code, b'/') if bytes.get(i + 1) == Some(&b'*') => (In::BlockComment, false),
+            (In::Code, _) => (In::Code, true),
+            (In::Text, b'\\') => (In::Escape, false),
+            (In::Text, b'"') | (In::LineComment, b'\n') => (In::Code, false),
+            (In::BlockComment, b'/') if i > 0 && bytes[i - 1] == b'*' => (In::Code, false),
+            (other, _) => (other, false),
+        };
+        state = next;
+        code
+    })
 }
 
 #[cfg(test)]
@@ -299,11 +483,81 @@ mod tests {
                 1,
                 "at least one step",
             ),
+            // A key written twice is refused, not overwritten.
+            (
+                "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", set: {\"load\": 1.0, \"load\": 2.0}),\n ],\n)",
+                4,
+                "the key 'load' is written twice in `set`",
+            ),
+            // A title that would reach a terminal as an escape sequence.
+            (
+                "Lesson(\n title: \"t\\u{1b}[2J\",\n steps: [\n  Step(text: \"a\"),\n ],\n)",
+                2,
+                "control character U+001B",
+            ),
+            // `Step(` inside a string or a comment is not a step.
+            (
+                "Lesson(\n title: \"Step(\",\n // Step( here\n steps: [\n  Step(text: \"Step(, Step(\"),\n  Step(text: \"b\", speed: 50.0),\n ],\n)",
+                6,
+                "step 2: speed = 50",
+            ),
+            // A first step's parameter that one preset lacks: refused,
+            // naming the preset the window would fail on.
+            (
+                "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", set: {\"nu\": 0.2}),\n ],\n)",
+                4,
+                "(the lesson opened on the ziegler-1952 preset)",
+            ),
+            // A ramp to a load the column cannot take, as the window refuses it.
+            (
+                "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", preset: \"tabletop\",\n   run: Ramp(from: 1e300, to: 1.0, rate: 1.0)),\n ],\n)",
+                4,
+                "ramp from = 1e300",
+            ),
         ];
         for (text, line, says) in cases {
+            let text: &str = text;
             let error = Lesson::read(text).unwrap_err();
             assert_eq!(error.line, line, "{text}: {error}");
             assert!(error.message.contains(says), "{text}: {error}");
         }
+    }
+
+    /// A step's column is the lesson's start with every step up to it
+    /// applied: reached forward or by going back, the same.
+    #[test]
+    fn a_step_gives_the_same_column_forward_and_back() {
+        let lesson = Lesson::read(
+            "Lesson(title: \"t\", steps: [\n Step(text: \"a\", preset: \"tabletop\", set: {\"eta\": 0.5, \"load\": 1.0}),\n Step(text: \"b\", preset: \"roller\"),\n Step(text: \"c\", set: {\"load\": 2.0}),\n])",
+        )
+        .unwrap();
+        let start = Column {
+            preset: PresetId::Beck,
+            model: PresetId::Beck.model(),
+        };
+        let first = lesson.column_at(start, 0).unwrap();
+        assert_eq!(first.preset, PresetId::Tabletop);
+        let mut expected = PresetId::Tabletop.model();
+        apply_assignments(
+            &mut expected,
+            &[
+                Assignment {
+                    key: Key::Eta,
+                    value: 0.5,
+                },
+                Assignment {
+                    key: Key::Load,
+                    value: 1.0,
+                },
+            ],
+        )
+        .unwrap();
+        assert_eq!(first.model, expected);
+        let last = lesson.column_at(start, 2).unwrap();
+        assert_eq!(last.preset, PresetId::Roller);
+        assert_eq!(last.model.load_p(), 2.0);
+        // The roller's load 1 carried over from step 1, then step 3's own.
+        assert_eq!(lesson.column_at(start, 1).unwrap().model.load_p(), 1.0);
+        assert_eq!(lesson.column_at(start, 0).unwrap(), first, "back to step 1");
     }
 }

@@ -26,7 +26,8 @@ pub use keys::{Assignment, KEYS, Key, KeySpec, apply_assignments, parse_assignme
 pub use linear::{LinearModel, chain_mass_matrix, joint_matrices, linearize};
 pub(crate) use params::analysis_range_text;
 pub use params::{
-    Column, Inertia, LARGEST_DERIVED, Load, MAX_RODS, Model, Rod, Roller, SpinInertia,
+    Column, Inertia, LARGEST_DERIVED, LOAD_BAR_MAX_P, Load, MAX_RODS, Model, Rod, Roller,
+    SpinInertia,
 };
 pub use presets::{PRESETS, Preset, PresetId, preset};
 

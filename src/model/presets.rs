@@ -65,6 +65,20 @@ impl PresetId {
     pub fn model(self) -> Model {
         self.preset().model()
     }
+
+    /// This preset's column, switched to from `previous`: the load stays
+    /// where it was unless it is beyond this column's load bar (a chain's is
+    /// shorter), where the preset's own load is taken.
+    #[must_use]
+    pub fn switched_from(self, previous: &Model) -> Model {
+        let model = self.model();
+        let p = previous.load_p();
+        if p <= model.load_bar_max_p() {
+            model.at_load(p)
+        } else {
+            model
+        }
+    }
 }
 
 impl std::fmt::Display for PresetId {

@@ -422,7 +422,7 @@ fn the_words_fit_the_column() {
             preset: preset.id,
             model: preset
                 .model()
-                .at_load(0.5 * zieglerlab::app::load_max_p(&preset.model()) / 8.0),
+                .at_load(0.5 * preset.model().load_bar_max_p() / 8.0),
             ..Settings::default()
         })
         .unwrap();
@@ -447,4 +447,45 @@ fn the_words_fit_the_column() {
         neutral_seen > 0,
         "some undamped column is neutral at its load"
     );
+}
+
+/// A lesson path typed into the window is read off the UI thread: a device
+/// that never ends is refused by name (the window froze at 2.2 GB on it),
+/// and a lesson file then opens at its first step.
+#[test]
+fn a_lesson_file_is_read_off_the_ui_thread_and_checked() {
+    let folder = tempfile::tempdir().unwrap();
+    let good = folder.path().join("mine.ron");
+    std::fs::write(
+        &good,
+        "\u{feff}Lesson(title: \"Mine\", steps: [Step(text: \"look\", preset: \"tabletop\")])",
+    )
+    .unwrap();
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    let mut harness = harness(&mut app);
+    harness.get_by_label("lessons").click();
+    harness.run();
+    let open = |harness: &mut Harness<'_>, path: &str| {
+        type_into(harness, "lesson file", path);
+        harness.get_by_label("open").click();
+        // Frames until the reading thread has answered.
+        for _ in 0..200 {
+            harness.run();
+            if harness.query_by_label_contains("reading ").is_none() {
+                break;
+            }
+            std::thread::sleep(std::time::Duration::from_millis(10));
+        }
+        harness.run();
+    };
+    open(&mut harness, "/dev/zero");
+    assert!(
+        harness
+            .query_by_label_contains("cannot read /dev/zero: it is a device, a pipe or a socket")
+            .is_some()
+    );
+    open(&mut harness, good.to_str().unwrap());
+    assert!(harness.query_by_label_contains("step 1 of 1").is_some());
+    drop(harness);
+    assert_eq!(app.settings().preset, zieglerlab::model::PresetId::Tabletop);
 }

@@ -234,11 +234,11 @@ fn snapshot_writes_a_png_of_the_asked_size() {
         "--panel",
         "locus",
         "--size",
-        "400x300",
+        "480x300",
         "--out",
         out,
     ]);
-    assert_eq!(png_size(&panel), (400, 300));
+    assert_eq!(png_size(&panel), (480, 300));
     std::fs::remove_dir_all(&dir).expect("cleanup");
 }
 
@@ -527,7 +527,7 @@ fn record_writes_a_deterministic_gif_of_the_run() {
             "--fps",
             "4",
             "--size",
-            "160x100",
+            "480x300",
             "--out",
             path.to_str().expect("a path"),
         ])
@@ -540,7 +540,7 @@ fn record_writes_a_deterministic_gif_of_the_run() {
     );
     assert_eq!(a, b, "the same arguments give the same bytes");
     let (size, frames) = gif_frames(&out("a.gif"));
-    assert_eq!(size, (160, 100));
+    assert_eq!(size, (480, 300));
     assert_eq!(frames.len(), 12, "3 s at 4 frames per second");
     assert_ne!(frames[0], frames[11], "the column moved");
     for (args, says) in [

@@ -8,30 +8,84 @@ use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::app::{Notice, View};
 use crate::format::load_text;
-use crate::lesson::{BUILT_IN, Lesson, Predict};
+use crate::lesson::{BUILT_IN, Lesson, LessonError, LessonFileError, Predict};
 
-/// The path typed to open a lesson file.
+/// The built-in lessons (read and checked once), the path typed to open a
+/// lesson file, and the file being read.
 #[derive(Default)]
 pub struct LessonSection {
+    built_in: Option<Vec<(&'static str, Result<Lesson, LessonError>)>>,
     path: String,
+    reading: Option<Reading>,
+}
+
+/// A lesson file read and checked off the UI thread: a slow disk or a
+/// large file never holds the window.
+struct Reading {
+    path: String,
+    answer: std::sync::mpsc::Receiver<Result<Lesson, LessonFileError>>,
+}
+
+impl Reading {
+    fn start(path: &str) -> Self {
+        let (send, answer) = std::sync::mpsc::channel();
+        let file = std::path::PathBuf::from(path);
+        std::thread::spawn(move || {
+            // The window may have closed meanwhile: nobody to tell.
+            let _ = send.send(Lesson::read_file(&file));
+        });
+        Self {
+            path: path.to_owned(),
+            answer,
+        }
+    }
+}
+
+impl LessonSection {
+    /// Opens the file read, or says why not, once the reading is done.
+    fn take_reading(&mut self, ctx: &egui::Context, state: &mut AppState) {
+        let Some(reading) = &self.reading else {
+            return;
+        };
+        match reading.answer.try_recv() {
+            Ok(Ok(lesson)) => state.open_lesson(lesson),
+            Ok(Err(error)) => state.say(Notice::error(error.to_string())),
+            Err(std::sync::mpsc::TryRecvError::Empty) => {
+                ctx.request_repaint_after(std::time::Duration::from_millis(50));
+                return;
+            }
+            Err(std::sync::mpsc::TryRecvError::Disconnected) => state.say(Notice::error(format!(
+                "{}: the reading stopped without an answer",
+                reading.path
+            ))),
+        }
+        self.reading = None;
+    }
 }
 
 impl View for LessonSection {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+        self.take_reading(ui.ctx(), state);
         if state.lesson().is_some() {
             step_ui(ui, state, theme);
             return;
         }
+        let built_in = self.built_in.get_or_insert_with(|| {
+            BUILT_IN
+                .iter()
+                .map(|&(name, text)| (name, Lesson::read(text)))
+                .collect()
+        });
         egui::CollapsingHeader::new("lessons").show(ui, |ui| {
-            for (name, text) in BUILT_IN {
-                match Lesson::read(text) {
+            for (name, read) in built_in.iter() {
+                match read {
                     Ok(lesson) => {
                         if ui
                             .button(lesson.title.as_str())
                             .on_hover_text(format!("the built-in lesson {name}"))
                             .clicked()
                         {
-                            state.open_lesson(lesson);
+                            state.open_lesson(lesson.clone());
                         }
                     }
                     Err(error) => {
@@ -47,26 +101,17 @@ impl View for LessonSection {
                 )
                 .accessible_name("lesson file")
                 .on_hover_text("the path of your own lesson file (see the README for the format)");
-                if ui
+                if let Some(reading) = &self.reading {
+                    ui.weak(format!("reading {}", reading.path));
+                } else if ui
                     .button("open")
                     .on_hover_text("read and check the file, then start it")
                     .clicked()
                 {
-                    open_file(self.path.trim(), state);
+                    self.reading = Some(Reading::start(self.path.trim()));
                 }
             });
         });
-    }
-}
-
-/// Reads, checks and starts the lesson at `path`; says why not otherwise.
-fn open_file(path: &str, state: &mut AppState) {
-    let read = std::fs::read_to_string(path)
-        .map_err(|e| format!("cannot read the lesson: {e}"))
-        .and_then(|text| Lesson::read(&text).map_err(|e| e.to_string()));
-    match read {
-        Ok(lesson) => state.open_lesson(lesson),
-        Err(why) => state.say(Notice::error(format!("{path}: {why}"))),
     }
 }
 

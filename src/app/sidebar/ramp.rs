@@ -4,7 +4,7 @@
 use eframe::egui;
 
 use crate::app::View;
-use crate::app::state::{AppState, LOAD_MAX_P};
+use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::{load_text, number_text};
 use crate::sim::Ramp;
@@ -14,20 +14,39 @@ pub struct RampSection {
     from_p: f64,
     to_p: f64,
     rate_p_per_s: f64,
+    /// The top of the load bar these values were made for.
+    bar_max_p: f64,
+}
+
+impl RampSection {
+    /// Simulated seconds the default ramp takes over the whole bar: slow
+    /// enough to stay quasi-static.
+    const DEFAULT_RAMP_SECS: f64 = 80.0;
+
+    /// The whole load bar, `0` to `bar_max_p`, in [`Self::DEFAULT_RAMP_SECS`].
+    fn over_bar(bar_max_p: f64) -> Self {
+        Self {
+            from_p: 0.0,
+            to_p: bar_max_p,
+            rate_p_per_s: bar_max_p / Self::DEFAULT_RAMP_SECS,
+            bar_max_p,
+        }
+    }
 }
 
 impl Default for RampSection {
     fn default() -> Self {
-        Self {
-            from_p: 0.0,
-            to_p: LOAD_MAX_P,
-            rate_p_per_s: 0.1,
-        }
+        Self::over_bar(crate::model::LOAD_BAR_MAX_P)
     }
 }
 
 impl View for RampSection {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+        // Another column's bar (a chain's is shorter): its whole range.
+        let bar_max_p = state.load_max();
+        if bar_max_p != self.bar_max_p {
+            *self = Self::over_bar(bar_max_p);
+        }
         egui::CollapsingHeader::new("ramp the load").show(ui, |ui| {
             ui.horizontal(|ui| {
                 ui.label("from");

@@ -4,7 +4,7 @@
 
 use super::AppState;
 use crate::app::notice::Notice;
-use crate::lesson::{Lesson, LessonTab, Predict, Reveal, Run};
+use crate::lesson::{Column, Lesson, LessonTab, Predict, Reveal, Run};
 use crate::sim::Ramp;
 
 /// A lesson and where the class is in it.
@@ -19,6 +19,9 @@ pub struct LessonRun {
     pub chosen: Option<usize>,
     /// The last choice asked, to set its answer beside the reveal.
     last_choice: Option<Vec<String>>,
+    /// The column the lesson was opened on: each step's column is made
+    /// from it, the same going forward and back.
+    start: Column,
 }
 
 impl LessonRun {
@@ -91,6 +94,10 @@ impl AppState {
             predicted_load: None,
             chosen: None,
             last_choice: None,
+            start: Column {
+                preset: self.settings.preset,
+                model: self.settings.model,
+            },
         });
         self.carry_out_step();
     }
@@ -159,17 +166,14 @@ impl AppState {
         }
         // A step that sets the column takes it over from any ramp (a
         // finished one too); a step that only reveals keeps the ramp's marks.
-        if step.preset.is_some() || !step.set.is_empty() {
+        if step.sets_column() {
+            let column = run.lesson.column_at(run.start, run.step);
             self.stop_ramp();
-        }
-        if let Some(preset) = step.preset {
-            self.set_preset(preset);
-        }
-        if !step.set.is_empty() {
-            let mut model = self.settings.model;
-            match crate::model::apply_assignments(&mut model, &step.assignments()) {
-                Ok(()) => self.set_model(model),
-                Err(error) => self.say(Notice::error(format!("lesson: {error}"))),
+            match column {
+                Ok(column) => self.set_column(column.preset, column.model),
+                Err((index, error)) => {
+                    self.say(Notice::error(format!("lesson step {}: {error}", index + 1)));
+                }
             }
         }
         if let Some(speed) = step.speed {

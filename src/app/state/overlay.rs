@@ -9,8 +9,6 @@ use crate::app::analysis_cache::LOCUS_SAMPLES;
 use crate::app::notice::Notice;
 use crate::model::{Assignment, Key, ModelError, PresetId, apply_assignments};
 
-use super::LOAD_MAX_P;
-
 /// Another preset's root locus, at the current model's `a`.
 pub struct Overlay {
     pub preset: PresetId,
@@ -49,7 +47,7 @@ impl AppState {
                 }],
             )?;
             let pencil = AffinePencil::new(&model)?;
-            let locus = locus(&pencil, 0.0, LOAD_MAX_P, LOCUS_SAMPLES)?;
+            let locus = locus(&pencil, 0.0, model.load_bar_max_p(), LOCUS_SAMPLES)?;
             let transitions = critical_loads_along(&pencil, &locus)?;
             Ok((locus, transitions))
         };

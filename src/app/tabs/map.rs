@@ -13,7 +13,7 @@ use egui_plot::{Line, Plot, PlotImage, PlotPoint, PlotPoints, Points};
 use crate::analysis::{MapSpec, Row, RowResult, State, Transition, compute_map};
 use crate::app::View;
 use crate::app::plot_frame::{Fit, SingleClick, axes, refit_if};
-use crate::app::state::{AppState, load_max_p};
+use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::number_text;
 use crate::model::{Axis, Key, Model};
@@ -367,7 +367,7 @@ impl View for MapPanel {
     /// load and the map's second parameter.
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
         let model = *state.model();
-        self.follow(&model, load_max_p(&model));
+        self.follow(&model, model.load_bar_max_p());
         self.generation = state.view_generation();
         if let Some(pick) = self.draw(ui, &model, state.for_picture(), theme) {
             state.set_map_point(&pick.axis, pick.load, pick.value);

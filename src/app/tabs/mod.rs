@@ -10,7 +10,7 @@ mod paradox;
 use eframe::egui;
 
 use super::View;
-use super::state::{AppState, load_max_p};
+use super::state::AppState;
 
 /// The choice of plots in the lower half of the window.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
@@ -117,7 +117,7 @@ impl Tabs {
         let model = state.model();
         match tab {
             Tab::Map => {
-                self.map.follow(model, load_max_p(model));
+                self.map.follow(model, model.load_bar_max_p());
                 self.map.wait();
             }
             Tab::Paradox => self.paradox.wait(model),

@@ -441,6 +441,46 @@ pub const CLI: &[Cli] = &[
         ],
         "duration = -inf: must be a positive number of seconds",
     ),
+    // Only a regular file of at most 1 MiB is read as a lesson: a device
+    // never ends, a pipe blocks.
+    refused(
+        &["lesson", "--check", "/dev/zero"],
+        "cannot read /dev/zero: it is a device, a pipe or a socket, not a regular file",
+    ),
+    refused(
+        &["lesson", "--check", "/tmp"],
+        "cannot read /tmp: it is a folder, not a regular file",
+    ),
+    // A layout smaller than the panel can take is refused, not drawn as a
+    // clipped fragment or a transparent picture.
+    refused(
+        &[
+            "snapshot",
+            "--preset",
+            "roller",
+            "--size",
+            "800x500",
+            "--scale",
+            "8",
+            "--out",
+            "/tmp/zl-never.png",
+        ],
+        "size = 800x500 at scale = 8 lays out 100x62 points; the window (the smallest it opens at) needs at least 1024x700",
+    ),
+    refused(
+        &[
+            "record",
+            "--preset",
+            "roller",
+            "--panel",
+            "scene",
+            "--size",
+            "64x64",
+            "--out",
+            "/tmp/zl-never.gif",
+        ],
+        "size = 64x64 at scale = 1 lays out 64x64 points; one panel needs at least 480x300",
+    ),
     refused(
         &[
             "snapshot",
