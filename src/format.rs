@@ -7,7 +7,10 @@
 #[must_use]
 pub fn number_text(value: f64) -> String {
     let magnitude = value.abs();
-    if value == 0.0 || !value.is_finite() {
+    if value == 0.0 {
+        // -0 too: a sign on nothing is noise to a reader.
+        "0".to_owned()
+    } else if !value.is_finite() {
         format!("{value}")
     } else if (1e-3..1e6).contains(&magnitude) {
         // Six significant digits, trailing zeros dropped.
@@ -156,6 +159,21 @@ impl std::fmt::Display for Shown {
         if magnitude != 0.0 && magnitude.is_finite() && !(1e-4..1e7).contains(&magnitude) {
             write!(f, "{:e}", self.0)
         } else {
+            write!(f, "{}", Exact(self.0))
+        }
+    }
+}
+
+/// A number for a data file: every digit needed to read it back exactly
+/// (Rust's shortest round-trip form), and zero without a sign: a -0 from
+/// rounding means nothing and reads as a negative number to a sign test.
+pub struct Exact(pub f64);
+
+impl std::fmt::Display for Exact {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.0 == 0.0 {
+            f.write_str("0")
+        } else {
             write!(f, "{}", self.0)
         }
     }
@@ -169,6 +187,7 @@ mod tests {
     fn numbers_keep_their_significant_digits() {
         for (value, text) in [
             (0.0, "0"),
+            (-0.0, "0"),
             (0.1, "0.1"),
             (0.123_456_789, "0.123457"),
             (1234.5, "1234.5"),

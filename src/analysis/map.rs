@@ -53,18 +53,27 @@ impl MapSpec {
         load_grid(self.load_range.0, self.load_range.1, self.loads)
     }
 
-    /// The values of the second axis, one per row.
+    /// The values of the second axis, one per row: evenly spaced, ends
+    /// included; on an axis that counts (`rods`), each the nearest whole
+    /// number (so rows may repeat one when there are more rows than whole
+    /// numbers in the range).
     ///
     /// # Errors
     /// A bad range or count.
     pub fn value_grid(&self) -> Result<Vec<f64>, AnalysisError> {
-        load_grid(self.axis_range.0, self.axis_range.1, self.values).map_err(|e| match e {
-            AnalysisError::BadRange { value, allowed, .. } => AnalysisError::BadRange {
-                what: "axis range",
-                value,
-                allowed,
-            },
-            other => other,
+        let grid =
+            load_grid(self.axis_range.0, self.axis_range.1, self.values).map_err(|e| match e {
+                AnalysisError::BadRange { value, allowed, .. } => AnalysisError::BadRange {
+                    what: "axis range",
+                    value,
+                    allowed,
+                },
+                other => other,
+            })?;
+        Ok(if self.axis.counts() {
+            grid.into_iter().map(f64::round).collect()
+        } else {
+            grid
         })
     }
 

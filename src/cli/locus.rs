@@ -8,6 +8,7 @@ use clap::ValueEnum;
 use serde_json::json;
 
 use zieglerlab::analysis::{AffinePencil, locus, resolution_warning};
+use zieglerlab::format::Exact;
 
 use super::{LOAD_AXIS, ModelArgs, printable};
 
@@ -51,7 +52,13 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
         Format::Csv => {
             writeln!(out, "load,branch,re,im")?;
             for (load, branch, z) in rows {
-                writeln!(out, "{load},{branch},{},{}", z.re, z.im)?;
+                writeln!(
+                    out,
+                    "{},{branch},{},{}",
+                    Exact(load),
+                    Exact(z.re),
+                    Exact(z.im)
+                )?;
             }
         }
         Format::Json => {

@@ -13,6 +13,8 @@ use zieglerlab::analysis::{
 };
 use zieglerlab::model::{Axis, Key, Shown};
 
+use zieglerlab::format::Exact;
+
 use super::output::{check_output, write_atomically, write_png};
 use super::{ModelArgs, printable, progress_bar};
 
@@ -135,10 +137,11 @@ pub fn run(args: &Args) -> Result<()> {
                     for (p, cell) in grid.iter().zip(&row.cells) {
                         writeln!(
                             file,
-                            "{p},{},{},{}",
-                            row.value,
+                            "{},{},{},{}",
+                            Exact(*p),
+                            Exact(row.value),
                             cell.state.name(),
-                            cell.growth_per_s
+                            Exact(cell.growth_per_s)
                         )?;
                     }
                 }

@@ -7,6 +7,7 @@ use std::ops::ControlFlow;
 use anyhow::Result;
 use clap::ValueEnum;
 
+use zieglerlab::format::Exact;
 use zieglerlab::sim::{DEFAULT_STEP_SECS, Observables, Ramp, Simulation, Status, initial_state};
 
 use super::{EngineArg, ModelArgs};
@@ -81,23 +82,23 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
         let join = |values: &[f64]| {
             values
                 .iter()
-                .map(f64::to_string)
+                .map(|&x| Exact(x).to_string())
                 .collect::<Vec<_>>()
                 .join(",")
         };
         write!(
             out,
             "{},{},{},{},{},{},{}",
-            o.t_secs,
+            Exact(o.t_secs),
             join(&o.angles_rad),
-            o.psi_rad,
+            Exact(o.psi_rad),
             join(&o.rates_rad_per_s),
-            o.psi_dot_rad_per_s,
-            o.delta_rad,
-            o.energy_j()
+            Exact(o.psi_dot_rad_per_s),
+            Exact(o.delta_rad),
+            Exact(o.energy_j())
         )?;
         match load {
-            Some(p) => writeln!(out, ",{p}"),
+            Some(p) => writeln!(out, ",{}", Exact(p)),
             None => writeln!(out),
         }
     };

@@ -80,6 +80,12 @@ impl Axis {
         }
     }
 
+    /// Whether the axis counts (`rods`): a map samples it at whole numbers.
+    #[must_use]
+    pub fn counts(&self) -> bool {
+        matches!(self, Self::Key(Key::Rods))
+    }
+
     /// `model` with this axis at `value`, validated like `--set`.
     ///
     /// # Errors
@@ -155,7 +161,11 @@ fn damping_scale(model: &Model) -> f64 {
     .sqrt()
 }
 
-/// The mass beyond the joint A: rod 2, the tip mass and the roller.
+/// The mass beyond the joint A: every rod after the first (rod 2, repeated
+/// on a chain), the tip mass and the roller.
 fn mass_beyond_joint(model: &Model) -> f64 {
-    model.column.rod2.mass_kg + model.column.tip_mass_kg + model.roller().map_or(0.0, |r| r.mass_kg)
+    let c = &model.column;
+    #[expect(clippy::cast_precision_loss, reason = "at most 64 rods")]
+    let rods_beyond = (c.rods - 1) as f64;
+    rods_beyond * c.rod2.mass_kg + c.tip_mass_kg + model.roller().map_or(0.0, |r| r.mass_kg)
 }

@@ -688,3 +688,37 @@ fn extreme_loads_are_printed_in_exponent_form() {
         assert!(text.contains(&format!(", {load_max}]")), "{text}");
     }
 }
+
+/// Data files carry no negative zero: a rate or an angle that rounds to
+/// zero is written `0` (`-0` reads as negative to a sign test).
+#[test]
+fn data_files_write_zero_without_a_sign() {
+    let map = stdout(&[
+        "map",
+        "--preset",
+        "beck",
+        "--x",
+        "load:0:0.1:2",
+        "--y",
+        "mass_ratio:0.05:0.1:2",
+        "--out",
+        "/dev/stdout",
+    ]);
+    let locus = stdout(&[
+        "locus",
+        "--preset",
+        "roller",
+        "--load-min",
+        "0",
+        "--load-max",
+        "1",
+        "--samples",
+        "3",
+    ]);
+    for text in [map, locus] {
+        assert!(text.lines().count() > 2, "{text}");
+        for line in text.lines() {
+            assert!(!line.split(',').any(|field| field == "-0"), "{line}");
+        }
+    }
+}

@@ -220,3 +220,35 @@ fn map_rows_hold_no_subnormal_numbers() {
         }
     }
 }
+
+/// On a chain the mass beyond joint A is every rod after the first (rod 2
+/// repeated), the tip and the roller: Beck's 16 equal rods have the mass
+/// ratio 1/15, and that value gives the preset back. A map over `rods`
+/// samples whole numbers, each row a chain that exists.
+#[test]
+fn a_chain_counts_every_rod_beyond_the_joint_and_its_rods_are_whole() {
+    let model = preset("beck").unwrap().model();
+    assert_eq!(model.column.rods, 16);
+    let axis = Axis::parse("mass_ratio", &model).unwrap();
+    assert!((axis.get(&model) - 1.0 / 15.0).abs() < 1e-15);
+    let back = axis.apply(&model, 1.0 / 15.0).unwrap();
+    assert!((back.column.rod1.mass_kg - model.column.rod1.mass_kg).abs() < 1e-15);
+    let spec = MapSpec {
+        axis: Axis::parse("rods", &model).unwrap(),
+        model,
+        load_range: (0.0, 0.5),
+        loads: 3,
+        axis_range: (2.0, 16.0),
+        values: 5,
+    };
+    assert_eq!(spec.value_grid().unwrap(), [2.0, 6.0, 9.0, 13.0, 16.0]);
+    for row in rows(&spec) {
+        assert_eq!(row.value.fract(), 0.0);
+        assert_eq!(
+            row.cells.len(),
+            3,
+            "rods = {}: every cell computed",
+            row.value
+        );
+    }
+}

@@ -518,7 +518,12 @@ fn map_plot_ui(
     let pick = pick.map(|point| Pick {
         load: point.x,
         axis: spec.axis.clone(),
-        value: point.y,
+        // A count (`rods`) is picked at the whole number its row shows.
+        value: if spec.axis.counts() {
+            point.y.round()
+        } else {
+            point.y
+        },
     });
     (pick, double)
 }
