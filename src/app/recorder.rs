@@ -1,11 +1,13 @@
 //! The record button's work: screenshots of the window at a steady rate
-//! for the chosen seconds of wall time, then a GIF made off the UI thread
-//! and written whole into the chosen folder, with progress on the way and a
+//! for the chosen seconds of wall time, each handed as it arrives to a
+//! thread that adds it to the GIF (a few raw frames queued at most, so a
+//! long or 4K recording never holds its frames in memory), then the file
+//! written whole into the chosen folder, with progress on the way and a
 //! notice saying where the file went.
 
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::{Arc, Mutex, mpsc};
+use std::sync::{Arc, OnceLock, mpsc};
 
 use eframe::egui::{self, ColorImage};
 
@@ -22,6 +24,18 @@ pub const RECORD_FPS: u16 = 10;
 /// not yet delivered (they come a frame or two later).
 const LATE_SCREENSHOT_SECS: f64 = 2.0;
 
+/// How long after its end a recording that has no frame yet waits for its
+/// first (a machine busy enough to deliver none in the recording's time).
+const FIRST_SCREENSHOT_SECS: f64 = 10.0;
+
+/// Raw frames waiting for the encoder, at most: a frame that finds the
+/// queue full is left out (the others then last longer, so the GIF still
+/// plays in the time recorded). A 4K frame is 33 MB.
+const QUEUED_FRAMES: usize = 4;
+
+/// How often the encoder looks whether the recording has ended.
+const ENCODER_POLL: std::time::Duration = std::time::Duration::from_millis(50);
+
 /// Shortest delay written to the GIF, in hundredths of a second: browsers
 /// show a frame of 0 or 1 for a tenth of a second instead.
 const MIN_DELAY_CS: u16 = 2;
@@ -29,28 +43,78 @@ const MIN_DELAY_CS: u16 = 2;
 /// A screenshot and the time (the context's clock) of the frame it shows.
 type TimedFrame = (f64, Arc<ColorImage>);
 
+/// The thread making the GIF, and what the window knows of it.
+pub struct Encoder {
+    frames: mpsc::SyncSender<TimedFrame>,
+    /// The recording's end (the context's clock), once it has ended.
+    end_secs: Arc<OnceLock<f64>>,
+    /// Frames added to the GIF.
+    done: Arc<AtomicUsize>,
+    /// Frames delivered by the window, and those left out of a full queue.
+    delivered: Arc<AtomicUsize>,
+    left_out: Arc<AtomicUsize>,
+    result: mpsc::Receiver<Result<PathBuf, String>>,
+}
+
+impl Encoder {
+    /// Starts the thread that writes the GIF into `folder`.
+    fn start(folder: PathBuf) -> Self {
+        let (frames, queue) = mpsc::sync_channel(QUEUED_FRAMES);
+        let (sender, result) = mpsc::channel();
+        let end_secs = Arc::new(OnceLock::new());
+        let done = Arc::new(AtomicUsize::new(0));
+        let (end, counter) = (Arc::clone(&end_secs), Arc::clone(&done));
+        let failed = sender.clone();
+        let spawned = std::thread::Builder::new()
+            .name("recording".to_owned())
+            .spawn(move || {
+                drop(sender.send(encode_stream(&folder, &queue, &end, &counter)));
+            });
+        if let Err(error) = spawned {
+            drop(failed.send(Err(format!("no thread for the recording: {error}"))));
+        }
+        Self {
+            frames,
+            end_secs,
+            done,
+            delivered: Arc::default(),
+            left_out: Arc::default(),
+            result,
+        }
+    }
+
+    /// A callback that hands a screenshot of the frame at `time_secs` to
+    /// the encoder, or leaves it out when the queue is full.
+    fn taker(&self, time_secs: f64) -> impl Fn(Arc<ColorImage>) + Send + Sync + 'static {
+        let frames = self.frames.clone();
+        let (delivered, left_out) = (Arc::clone(&self.delivered), Arc::clone(&self.left_out));
+        move |image| {
+            delivered.fetch_add(1, Ordering::Relaxed);
+            if frames.try_send((time_secs, image)).is_err() {
+                left_out.fetch_add(1, Ordering::Relaxed);
+            }
+        }
+    }
+}
+
 /// Where a recording is.
 #[derive(Default)]
 pub enum Recorder {
     #[default]
     Idle,
     /// Taking a screenshot every 1/fps s until `until_secs` (the context's
-    /// clock), each kept with the time of the frame it shows; then waiting
-    /// (at most [`LATE_SCREENSHOT_SECS`]) for those asked for and not yet
-    /// delivered.
+    /// clock), each handed to the encoder with the time of the frame it
+    /// shows; then waiting (at most [`LATE_SCREENSHOT_SECS`]) for those
+    /// asked for and not yet delivered.
     Capturing {
-        folder: PathBuf,
         next_secs: f64,
         until_secs: f64,
         requested: usize,
-        frames: Arc<Mutex<Vec<TimedFrame>>>,
+        encoder: Encoder,
     },
-    /// Making the GIF: frames done of all, and the file (or why not).
-    Encoding {
-        done: Arc<AtomicUsize>,
-        total: usize,
-        result: mpsc::Receiver<Result<PathBuf, String>>,
-    },
+    /// The capture is over: the encoder adds what is queued and writes the
+    /// file (or says why not).
+    Encoding { encoder: Encoder },
 }
 
 /// The seconds that are due a frame from `next_secs` to `now_secs`, at
@@ -73,11 +137,10 @@ impl Recorder {
     /// Starts recording the next `secs` seconds into `folder`.
     pub fn start(&mut self, folder: PathBuf, secs: f64, now_secs: f64) {
         *self = Self::Capturing {
-            folder,
             next_secs: now_secs,
             until_secs: now_secs + secs,
             requested: 0,
-            frames: Arc::default(),
+            encoder: Encoder::start(folder),
         };
     }
 
@@ -89,25 +152,30 @@ impl Recorder {
     }
 
     /// One frame of the window: a screenshot when one is due; at the end,
-    /// the GIF made on a thread. Returns a finished file's path, or why the
-    /// recording failed.
+    /// the encoder told and then waited for. Returns a finished file's
+    /// path, or why the recording failed.
     pub fn frame(&mut self, ctx: &egui::Context) -> Option<Result<PathBuf, String>> {
         let now_secs = ctx.input(|i| i.time);
         match self {
             Self::Idle => None,
             Self::Capturing {
-                folder,
                 next_secs,
                 until_secs,
                 requested,
-                frames,
+                encoder,
             } => {
                 if now_secs >= *until_secs {
-                    let taken = frames.lock().map(|f| f.clone()).unwrap_or_default();
-                    let waiting =
-                        taken.len() < *requested && now_secs < *until_secs + LATE_SCREENSHOT_SECS;
+                    let delivered = encoder.delivered.load(Ordering::Relaxed);
+                    let waiting = (delivered < *requested
+                        && now_secs < *until_secs + LATE_SCREENSHOT_SECS)
+                        || (delivered == 0 && now_secs < *until_secs + FIRST_SCREENSHOT_SECS);
                     if !waiting {
-                        *self = Self::encode(folder.clone(), taken, *until_secs);
+                        // Set once: this state is left at once.
+                        let _ = encoder.end_secs.set(*until_secs);
+                        let Self::Capturing { encoder, .. } = std::mem::take(self) else {
+                            return None;
+                        };
+                        *self = Self::Encoding { encoder };
                         ctx.send_viewport_cmd(egui::ViewportCommand::Title(
                             WINDOW_TITLE.to_owned(),
                         ));
@@ -122,26 +190,19 @@ impl Recorder {
                         "{WINDOW_TITLE}: recording, {:.0} s to go",
                         (*until_secs - now_secs).max(0.0).ceil()
                     )));
-                }
-                if take {
                     *requested += 1;
-                    let frames = Arc::clone(frames);
-                    ctx.request_screenshot(move |image| {
-                        if let Ok(mut frames) = frames.lock() {
-                            frames.push((now_secs, image));
-                        }
-                    });
+                    ctx.request_screenshot(encoder.taker(now_secs));
                 }
                 ctx.request_repaint();
                 None
             }
-            Self::Encoding { result, .. } => match result.try_recv() {
+            Self::Encoding { encoder } => match encoder.result.try_recv() {
                 Ok(done) => {
                     *self = Self::Idle;
                     Some(done)
                 }
                 Err(mpsc::TryRecvError::Empty) => {
-                    ctx.request_repaint();
+                    ctx.request_repaint_after(ENCODER_POLL);
                     None
                 }
                 Err(mpsc::TryRecvError::Disconnected) => {
@@ -152,100 +213,117 @@ impl Recorder {
         }
     }
 
-    /// The GIF of `frames` (the last lasting until `end_secs`) made on a
-    /// thread and written into `folder`.
-    fn encode(folder: PathBuf, frames: Vec<TimedFrame>, end_secs: f64) -> Self {
-        let (sender, result) = mpsc::channel();
-        let failed = sender.clone();
-        let done = Arc::new(AtomicUsize::new(0));
-        let total = frames.len();
-        let counter = Arc::clone(&done);
-        let spawned = std::thread::Builder::new()
-            .name("recording".to_owned())
-            .spawn(move || {
-                drop(sender.send(write_gif(&folder, &frames, end_secs, &counter)));
-            });
-        if let Err(error) = spawned {
-            drop(failed.send(Err(format!("no thread for the recording: {error}"))));
-        }
-        Self::Encoding {
-            done,
-            total,
-            result,
-        }
-    }
-
-    /// A line saying how far the making of the GIF is, if it is under way
+    /// A line saying how far the making of the GIF is, if only that is left
     /// (the capture's own progress is in the window's title).
     #[must_use]
     pub fn progress_text(&self) -> Option<String> {
         match self {
-            Self::Encoding { done, total, .. } => Some(format!(
-                "making the GIF: frame {} of {total}",
-                done.load(Ordering::Relaxed)
-            )),
+            Self::Encoding { encoder } => {
+                let kept = encoder.delivered.load(Ordering::Relaxed)
+                    - encoder.left_out.load(Ordering::Relaxed);
+                Some(format!(
+                    "making the GIF: frame {} of {kept}",
+                    encoder.done.load(Ordering::Relaxed)
+                ))
+            }
             Self::Idle | Self::Capturing { .. } => None,
         }
     }
 }
 
-/// How long each frame taken at `times_secs` (increasing) is shown, in
-/// hundredths of a second, the last until `end_secs`: each frame lasts
-/// until the next was taken, so the GIF plays in the time it recorded
-/// however unevenly the frames came. Rounding is carried from frame to
-/// frame (the total is the recorded time to the hundredth) and no delay is
-/// below [`MIN_DELAY_CS`].
-#[must_use]
-pub fn delays_cs(times_secs: &[f64], end_secs: f64) -> Vec<u16> {
-    let Some(&start) = times_secs.first() else {
-        return Vec::new();
-    };
-    let ends = times_secs.iter().skip(1).chain([&end_secs]);
-    let mut shown_cs: i64 = 0;
-    ends.map(|&end| {
+/// The delays of frames shown one after another from `start_secs`, in
+/// hundredths of a second, with the rounding carried from frame to frame.
+struct DelayClock {
+    start_secs: f64,
+    shown_cs: i64,
+}
+
+impl DelayClock {
+    /// How long the frame shown now lasts if the next comes at `end_secs`:
+    /// the total is the time from the start to the hundredth, and no delay
+    /// is below [`MIN_DELAY_CS`].
+    fn until(&mut self, end_secs: f64) -> u16 {
         #[expect(
             clippy::cast_possible_truncation,
             reason = "a recording lasts at most a minute: 6000 hundredths"
         )]
-        let due_cs = ((end - start) * 100.0).round() as i64;
-        let delay = (due_cs - shown_cs).clamp(i64::from(MIN_DELAY_CS), i64::from(u16::MAX));
-        shown_cs += delay;
+        let due_cs = ((end_secs - self.start_secs) * 100.0).round() as i64;
+        let delay = (due_cs - self.shown_cs).clamp(i64::from(MIN_DELAY_CS), i64::from(u16::MAX));
+        self.shown_cs += delay;
         u16::try_from(delay).unwrap_or(u16::MAX)
-    })
-    .collect()
+    }
 }
 
-/// The GIF of `frames` (those of the first frame's size: a window resized
-/// mid-way leaves the others out), the last shown until `end_secs`, written
-/// into `folder`, named by the time.
-fn write_gif(
+/// The GIF of the frames `queue` brings (in the order taken; those of
+/// another size than the first, from a window resized mid-way, and any
+/// taken after the end are left out), each shown until the next, the last
+/// until `end_secs` once that is set; written into `folder`, named by the
+/// time. One frame is held back until the next gives its delay.
+fn encode_stream(
     folder: &std::path::Path,
-    frames: &[TimedFrame],
-    end_secs: f64,
+    queue: &mpsc::Receiver<TimedFrame>,
+    end_secs: &OnceLock<f64>,
     done: &AtomicUsize,
 ) -> Result<PathBuf, String> {
-    let (_, first) = frames.first().ok_or("no frame was captured")?;
-    let [width, height] = first.size;
-    let side = |n: usize| u16::try_from(n).map_err(|_| format!("a frame {n} pixels wide"));
-    let (w, h) = (side(width)?, side(height)?);
-    let mut gif = GifRecording::new(w, h, RECORD_FPS).map_err(|e| e.to_string())?;
-    let mut kept: Vec<&TimedFrame> = frames
-        .iter()
-        .filter(|(_, f)| f.size == first.size)
-        .collect();
-    kept.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let times: Vec<f64> = kept.iter().map(|(t, _)| *t).collect();
-    for ((_, frame), delay) in kept.iter().zip(delays_cs(&times, end_secs)) {
+    let mut gif: Option<GifRecording> = None;
+    let mut clock: Option<DelayClock> = None;
+    let mut held: Option<TimedFrame> = None;
+    let add = |gif: &mut GifRecording, frame: &ColorImage, delay_cs: u16| {
         let mut rgba: Vec<u8> = frame
             .pixels
             .iter()
             .flat_map(egui::Color32::to_array)
             .collect();
-        gif.push_lasting(&mut rgba, delay)
+        gif.push_lasting(&mut rgba, delay_cs)
             .map_err(|e| e.to_string())?;
         done.fetch_add(1, Ordering::Relaxed);
+        Ok::<(), String>(())
+    };
+    loop {
+        let (time_secs, image) = match queue.recv_timeout(ENCODER_POLL) {
+            Ok(frame) => frame,
+            Err(mpsc::RecvTimeoutError::Timeout) if end_secs.get().is_none() => continue,
+            Err(_) => break,
+        };
+        let after_end = end_secs.get().is_some_and(|&end| time_secs > end);
+        let in_order = held
+            .as_ref()
+            .is_none_or(|(held_secs, _)| time_secs > *held_secs);
+        if after_end || !in_order {
+            continue;
+        }
+        if gif.is_none() {
+            let [width, height] = image.size;
+            let side = |n: usize| u16::try_from(n).map_err(|_| format!("a frame {n} pixels wide"));
+            gif = Some(
+                GifRecording::new(side(width)?, side(height)?, RECORD_FPS)
+                    .map_err(|e| e.to_string())?,
+            );
+            clock = Some(DelayClock {
+                start_secs: time_secs,
+                shown_cs: 0,
+            });
+        }
+        let (Some(recording), Some(clock)) = (&mut gif, &mut clock) else {
+            continue;
+        };
+        if held
+            .as_ref()
+            .is_some_and(|(_, first)| first.size != image.size)
+        {
+            continue;
+        }
+        if let Some((_, frame)) = held.replace((time_secs, image)) {
+            add(recording, &frame, clock.until(time_secs))?;
+        }
     }
-    let bytes = gif.finish().map_err(|e| e.to_string())?;
+    let (Some(mut recording), Some((held_secs, frame)), Some(clock)) = (gif, held, &mut clock)
+    else {
+        return Err("no frame was captured".to_owned());
+    };
+    let end = end_secs.get().copied().unwrap_or(held_secs).max(held_secs);
+    add(&mut recording, &frame, clock.until(end))?;
+    let bytes = recording.finish().map_err(|e| e.to_string())?;
     let stamp = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| d.as_secs());
@@ -316,6 +394,26 @@ mod tests {
     use super::*;
     use eframe::egui::Color32;
 
+    /// How long each frame taken at `times_secs` (increasing) is shown, in
+    /// hundredths of a second, the last until `end_secs`: each frame lasts
+    /// until the next was taken, so the GIF plays in the time it recorded
+    /// however unevenly the frames came (see [`DelayClock`]).
+    fn delays_cs(times_secs: &[f64], end_secs: f64) -> Vec<u16> {
+        let Some(&start_secs) = times_secs.first() else {
+            return Vec::new();
+        };
+        let mut clock = DelayClock {
+            start_secs,
+            shown_cs: 0,
+        };
+        times_secs
+            .iter()
+            .skip(1)
+            .chain([&end_secs])
+            .map(|&end| clock.until(end))
+            .collect()
+    }
+
     #[test]
     fn a_frame_is_due_every_tenth_of_a_second_and_late_ones_are_not_made_up() {
         assert_eq!(due(1.0, 0.95, 10), (false, 1.0));
@@ -351,16 +449,36 @@ mod tests {
         assert!(delays_cs(&[], 1.0).is_empty());
     }
 
+    /// Frames sent through the queue one by one.
+    fn gif_of(
+        folder: &std::path::Path,
+        frames: &[TimedFrame],
+        end: f64,
+    ) -> Result<PathBuf, String> {
+        let (send, queue) = mpsc::sync_channel(QUEUED_FRAMES);
+        let end_secs = OnceLock::new();
+        let done = AtomicUsize::new(0);
+        std::thread::scope(|scope| {
+            let (end_ref, counter) = (&end_secs, &done);
+            let encoding = scope.spawn(move || encode_stream(folder, &queue, end_ref, counter));
+            for frame in frames {
+                send.send(frame.clone()).unwrap();
+            }
+            end_secs.set(end).unwrap();
+            let made = encoding.join().unwrap();
+            if made.is_ok() {
+                assert_eq!(done.load(Ordering::Relaxed), frames.len());
+            }
+            made
+        })
+    }
+
     #[test]
     fn the_frames_become_a_gif_in_the_folder() {
         let folder = tempfile::tempdir().unwrap();
-        let frames: Vec<TimedFrame> = [(0.0, Color32::RED), (0.4, Color32::BLUE)]
-            .into_iter()
-            .map(|(t, c)| (t, Arc::new(ColorImage::filled([8, 6], c))))
-            .collect();
-        let done = AtomicUsize::new(0);
-        let path = write_gif(folder.path(), &frames, 1.0, &done).unwrap();
-        assert_eq!(done.load(Ordering::Relaxed), 2);
+        let frame = |t: f64, c: Color32| (t, Arc::new(ColorImage::filled([8, 6], c)));
+        let frames = [frame(0.0, Color32::RED), frame(0.4, Color32::BLUE)];
+        let path = gif_of(folder.path(), &frames, 1.0).unwrap();
         let bytes = std::fs::read(&path).unwrap();
         assert!(bytes.starts_with(b"GIF89a"));
         assert_eq!(u16::from_le_bytes([bytes[6], bytes[7]]), 8, "width");
@@ -373,11 +491,42 @@ mod tests {
             delays.push(frame.delay);
         }
         assert_eq!(delays, [40, 60]);
-        assert!(write_gif(folder.path(), &[], 1.0, &done).is_err());
+        assert_eq!(
+            gif_of(folder.path(), &[], 1.0).unwrap_err(),
+            "no frame was captured"
+        );
         // Recordings finished in the same second keep their own files.
-        let again = write_gif(folder.path(), &frames, 1.0, &done).unwrap();
-        let third = write_gif(folder.path(), &frames, 1.0, &done).unwrap();
+        let again = gif_of(folder.path(), &frames, 1.0).unwrap();
+        let third = gif_of(folder.path(), &frames, 1.0).unwrap();
         assert!(again != path && third != path && third != again);
         assert_eq!(std::fs::read_dir(folder.path()).unwrap().count(), 3);
+    }
+
+    /// Many more frames than the queue holds pass through it (the encoder
+    /// takes each as it comes), and their delays add up to the time
+    /// recorded.
+    #[test]
+    fn a_long_recording_streams_through_a_short_queue() {
+        let folder = tempfile::tempdir().unwrap();
+        let frames: Vec<TimedFrame> = (0..60)
+            .map(|i| {
+                let shade = u8::try_from(i * 4).unwrap();
+                let image = ColorImage::filled([16, 8], Color32::from_gray(shade));
+                (f64::from(i) * 0.1, Arc::new(image))
+            })
+            .collect();
+        let path = gif_of(folder.path(), &frames, 6.0).unwrap();
+        let bytes = std::fs::read(path).unwrap();
+        let mut decoder = gif::DecodeOptions::new()
+            .read_info(std::io::Cursor::new(&bytes))
+            .unwrap();
+        let mut total_cs = 0_u32;
+        let mut count = 0;
+        while let Some(frame) = decoder.read_next_frame().unwrap() {
+            total_cs += u32::from(frame.delay);
+            count += 1;
+        }
+        assert_eq!(count, 60);
+        assert_eq!(total_cs, 600, "six seconds recorded, six played");
     }
 }

@@ -89,6 +89,13 @@ fn move_aside(path: &Path, why: &str) -> String {
 /// file and an existing store is writable. Says why not, if not.
 fn unwritable(path: &Path) -> Option<String> {
     let folder = path.parent().unwrap_or_else(|| Path::new("."));
+    // On a first launch the folder is not there yet: eframe makes it.
+    if let Err(error) = std::fs::create_dir_all(folder) {
+        return Some(format!(
+            "settings will not be saved: the folder {} cannot be made ({error})",
+            folder.display()
+        ));
+    }
     if let Err(error) = tempfile::NamedTempFile::new_in(folder) {
         return Some(format!(
             "settings will not be saved: the folder {} takes no new file ({})",
@@ -306,5 +313,14 @@ mod tests {
             );
             std::fs::remove_dir_all(&dir).unwrap();
         }
+    }
+
+    /// A first launch, with no folder for the store yet, says nothing.
+    #[test]
+    fn a_first_launch_has_nothing_to_say() {
+        let dir = dir("first");
+        let path = dir.join("zieglerlab").join("app.ron");
+        assert_eq!(check_stored_file(&path), None);
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 }
