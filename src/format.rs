@@ -30,6 +30,20 @@ pub fn number_text(value: f64) -> String {
     }
 }
 
+/// A word the user typed, as a message repeats it: at most `most_chars`
+/// characters, and the length of the rest said (a 4096-character token is
+/// not echoed whole).
+#[must_use]
+pub fn clipped(text: &str, most_chars: usize) -> String {
+    let count = text.chars().count();
+    if count <= most_chars {
+        text.to_owned()
+    } else {
+        let head: String = text.chars().take(most_chars).collect();
+        format!("{head}... ({count} characters)")
+    }
+}
+
 /// A growth rate, signed: five decimals, or four significant digits when small.
 #[must_use]
 pub fn rate_text(rate: f64) -> String {
@@ -182,6 +196,12 @@ impl std::fmt::Display for Exact {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn long_words_are_clipped_with_their_length() {
+        assert_eq!(clipped("roller", 40), "roller");
+        assert_eq!(clipped(&"k".repeat(4096), 3), "kkk... (4096 characters)");
+    }
 
     #[test]
     fn numbers_keep_their_significant_digits() {

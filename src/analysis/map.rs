@@ -61,6 +61,11 @@ impl MapSpec {
     /// # Errors
     /// A bad range or count.
     pub fn value_grid(&self) -> Result<Vec<f64>, AnalysisError> {
+        // The ends as the axis takes them ("eta = -1: must be in [0, 1]"),
+        // before the grid's own checks.
+        for end in [self.axis_range.0, self.axis_range.1] {
+            self.axis.apply(&self.model, end)?;
+        }
         let grid =
             load_grid(self.axis_range.0, self.axis_range.1, self.values).map_err(|e| match e {
                 AnalysisError::BadRange { value, allowed, .. } => AnalysisError::BadRange {

@@ -74,7 +74,7 @@ fn renderer(flag: Option<RendererArg>, from_env: Option<&str>) -> Result<Rendere
         Some(text) if !text.is_empty() => RendererArg::from_str(text, true).map_err(|_| {
             anyhow::anyhow!(
                 "{RENDERER_VAR}={}: must be glow or wgpu",
-                printable(&text.chars().take(40).collect::<String>())
+                printable(&zieglerlab::format::clipped(text, 40))
             )
         }),
         _ => Ok(RendererArg::Glow),

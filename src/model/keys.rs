@@ -159,6 +159,9 @@ impl TryFrom<String> for Key {
     }
 }
 
+/// The most characters of an unknown key a message repeats.
+const MOST_KEY_CHARS: usize = 40;
+
 impl std::str::FromStr for Key {
     type Err = ModelError;
 
@@ -169,7 +172,7 @@ impl std::str::FromStr for Key {
             .into_iter()
             .find(|key| key.name() == name)
             .ok_or_else(|| ModelError::UnknownKey {
-                key: name.to_owned(),
+                key: crate::format::clipped(name, MOST_KEY_CHARS),
                 known: Self::ALL.map(Self::name).join(", "),
             })
     }

@@ -502,17 +502,30 @@ impl Model {
         if let Some((what, value)) = self.beyond_analysis() {
             return Err(ModelError::invalid(what, value, &analysis_range_text()));
         }
+        self.check_mass_matrix(rods)
+    }
+
+    /// The mass matrix is regular: the two-rod inertia's determinant well
+    /// above rounding, and on a chain every pivot of its Cholesky factor.
+    fn check_mass_matrix(&self, rods: usize) -> Result<(), ModelError> {
         let inertia = self.inertia();
         let det = inertia.a_kg_m2 * inertia.c_kg_m2 - inertia.b_kg_m2 * inertia.b_kg_m2;
-        if !(inertia.a_kg_m2 > 0.0
-            && inertia.c_kg_m2 > 0.0
-            && det > 1e-12 * inertia.a_kg_m2 * inertia.c_kg_m2)
-        {
-            return Err(ModelError::invalid(
-                "mass matrix",
-                det,
-                "the column needs mass beyond the joint A (rod 2, tip or roller) and mass or inertia that moves with rod 1 on its own; the mass matrix is singular",
-            ));
+        let scale = inertia.a_kg_m2 * inertia.c_kg_m2;
+        if !(inertia.a_kg_m2 > 0.0 && inertia.c_kg_m2 > 0.0 && det > 1e-12 * scale) {
+            let c = &self.column;
+            let own_rod1 = c.rod1.inertia_kg_m2 + c.rod1.mass_kg * c.rod1.com_m * c.rod1.com_m;
+            let beyond = c.rod2.mass_kg
+                + c.rod2.inertia_kg_m2
+                + c.tip_mass_kg
+                + self.roller().map_or(0.0, |r| r.mass_kg);
+            let why = if own_rod1 > 0.0 && beyond > 0.0 {
+                // Both rods carry mass, but one mass outweighs the rest so
+                // far that rounding leaves the other's inertia no digits.
+                "the masses are too unequal: the determinant of the mass matrix is below 1e-12 of its scale, so rounding decides the motion (e.g. a tip mass or roller over about 1e12 times the rods')"
+            } else {
+                "the column needs mass beyond the joint A (rod 2, tip or roller) and mass or inertia that moves with rod 1 on its own; the mass matrix is singular"
+            };
+            return Err(ModelError::invalid("mass matrix", det, why));
         }
         if rods > 2 {
             // Every copy of rod 2 must carry mass or inertia of its own: the

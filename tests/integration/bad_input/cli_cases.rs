@@ -441,6 +441,38 @@ pub const CLI: &[Cli] = &[
         ],
         "duration = -inf: must be a positive number of seconds",
     ),
+    // A map axis's range is checked as the axis takes it, not as a load.
+    refused(
+        &[
+            "map",
+            "--preset",
+            "beck",
+            "--x",
+            "load:0:1:2",
+            "--y",
+            "eta:-1:1:2",
+            "--out",
+            "/tmp/zl-never.csv",
+        ],
+        "eta = -1: must be a finite number in [0, 1]",
+    ),
+    // Masses so unequal that rounding leaves one no digits: said so, not
+    // "needs mass beyond the joint".
+    refused(
+        &["critical", "--preset", "roller", "--set", "m_tip=1e149"],
+        "mass matrix = 0: the masses are too unequal",
+    ),
+    // A long unknown word is repeated clipped, with its length.
+    refused(
+        &[
+            "critical",
+            "--preset",
+            "roller",
+            "--set",
+            "kkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkk=1",
+        ],
+        "unknown key 'kkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkk... (64 characters)' for preset roller",
+    ),
     // Only a regular file of at most 1 MiB is read as a lesson: a device
     // never ends, a pipe blocks.
     refused(
