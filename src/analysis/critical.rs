@@ -5,7 +5,7 @@ use serde::Serialize;
 
 use super::AnalysisError;
 use super::C64;
-use super::locus::{Locus, eigenvalues_near, load_resolution, locus, locus_until};
+use super::locus::{Locus, eigenvalues_near, load_resolution, locus_until};
 use super::pencil::AffinePencil;
 use super::stability::{Stability, State, classify};
 use crate::format::load_text;
@@ -351,6 +351,21 @@ pub fn bracketing_locus(
     load_min: f64,
     load_max: f64,
 ) -> Result<Locus, AnalysisError> {
+    bracketing_locus_reporting(pencil, load_min, load_max, &mut |_, _| {})
+}
+
+/// [`bracketing_locus`], telling `progress(done, total)` the evenly spaced
+/// loads computed of all it will compute (refinements not counted), after
+/// each: a wide range on a long chain takes minutes.
+///
+/// # Errors
+/// As [`bracketing_locus`].
+pub fn bracketing_locus_reporting(
+    pencil: &AffinePencil,
+    load_min: f64,
+    load_max: f64,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Locus, AnalysisError> {
     if load_max > LARGEST_LOAD {
         return Err(AnalysisError::BadRange {
             what: "load-max",
@@ -360,10 +375,16 @@ pub fn bracketing_locus(
     }
     let natural = pencil.natural_load_max().max(load_min);
     if load_max <= 10.0 * natural {
-        return evenly_bracketed(pencil, load_min, load_max);
+        return evenly_bracketed_until(
+            pencil,
+            load_min,
+            load_max,
+            counting(0, BRACKET_SAMPLES - 1, progress),
+        );
     }
+    // The sections beyond the natural range, planned first to know the total.
     let rounded_away = ROUNDED_AWAY * pencil.stiffness_matching_load().max(natural);
-    let mut whole = evenly_bracketed(pencil, load_min, natural)?;
+    let mut sections = Vec::new();
     let mut start = natural;
     while start < load_max {
         let (end, samples) = if start >= rounded_away {
@@ -371,19 +392,39 @@ pub fn bracketing_locus(
         } else {
             ((10.0 * start).min(load_max), DECADE_SAMPLES)
         };
-        whole.extend_with(&locus(pencil, start, end, samples)?);
+        sections.push((start, end, samples));
         start = end;
+    }
+    // Each section's first load is the one before's last: the steps count.
+    let total = BRACKET_SAMPLES - 1 + sections.iter().map(|&(_, _, n)| n - 1).sum::<usize>();
+    let mut whole =
+        evenly_bracketed_until(pencil, load_min, natural, counting(0, total, progress))?;
+    let mut done = BRACKET_SAMPLES - 1;
+    for (start, end, samples) in sections {
+        whole.extend_with(&locus_until(
+            pencil,
+            start,
+            end,
+            samples,
+            counting(done, total, progress),
+        )?);
+        done += samples - 1;
     }
     Ok(whole)
 }
 
-/// The tracked locus of [`BRACKET_SAMPLES`] evenly spaced loads (see [`bracketing_locus`]).
-fn evenly_bracketed(
-    pencil: &AffinePencil,
-    load_min: f64,
-    load_max: f64,
-) -> Result<Locus, AnalysisError> {
-    evenly_bracketed_until(pencil, load_min, load_max, |_, _| false)
+/// A `stop` for [`locus_until`] that never stops and tells `progress` each
+/// load done after a section's first, counted on from `done` of `total`.
+fn counting(
+    mut done: usize,
+    total: usize,
+    progress: &mut dyn FnMut(usize, usize),
+) -> impl FnMut(f64, &[C64]) -> bool + '_ {
+    move |_, _| {
+        done += 1;
+        progress(done, total);
+        false
+    }
 }
 
 /// Evenly spaced loads past the first unstable one that the bracketing
@@ -418,7 +459,9 @@ pub(super) fn first_loss_within(
         .find(|t| t.from == State::Stable))
 }
 
-/// [`evenly_bracketed`], ended where `stop` says (see [`locus_until`]).
+/// The tracked locus of [`BRACKET_SAMPLES`] evenly spaced loads (fewer
+/// when the range holds fewer distinct loads), ended where `stop` says (see
+/// [`locus_until`]).
 fn evenly_bracketed_until(
     pencil: &AffinePencil,
     load_min: f64,
@@ -522,6 +565,27 @@ fn transitions_along(
 mod tests {
     use super::*;
     use crate::model::{Axis, Key, Model, PRESETS, PresetId};
+
+    /// The progress of a wide bracket counts every evenly spaced load once,
+    /// in order, to its total, and the locus is the one without progress.
+    #[test]
+    fn a_wide_bracket_reports_its_progress_to_the_end() {
+        let pencil = AffinePencil::new(&PresetId::Ziegler1952.model()).unwrap();
+        let mut seen = Vec::new();
+        let reported = bracketing_locus_reporting(&pencil, 0.0, 1e6, &mut |done, total| {
+            seen.push((done, total));
+        })
+        .unwrap();
+        let total = seen[0].1;
+        assert!(total > BRACKET_SAMPLES, "sections beyond the natural range");
+        assert!(seen.iter().all(|&(_, t)| t == total));
+        assert!(seen.windows(2).all(|w| w[1].0 > w[0].0), "in order");
+        assert_eq!(seen.last().unwrap().0, total);
+        assert_eq!(
+            reported.loads,
+            bracketing_locus(&pencil, 0.0, 1e6).unwrap().loads
+        );
+    }
 
     /// Bisects every change of stability that the bracketing locus of
     /// `model` shows both ways and returns how many there were.

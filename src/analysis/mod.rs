@@ -11,8 +11,8 @@ mod roots;
 mod stability;
 
 pub use critical::{
-    BRACKET_SAMPLES, DEFAULT_LOAD_MAX, LARGEST_LOAD, Transition, bracketing_locus, critical_loads,
-    critical_loads_along, natural_load_max,
+    BRACKET_SAMPLES, DEFAULT_LOAD_MAX, LARGEST_LOAD, Transition, bracketing_locus,
+    bracketing_locus_reporting, critical_loads, critical_loads_along, natural_load_max,
 };
 pub use locus::{Locus, MAX_HELD_EIGENVALUES, load_grid, locus, max_samples};
 pub use map::{Cell, MapSpec, Row, RowResult, compute as compute_map};

@@ -6,11 +6,12 @@ use anyhow::Result;
 use serde_json::json;
 
 use zieglerlab::analysis::{
-    AffinePencil, bracketing_locus, critical_loads_along, natural_load_max, resolution_warning,
+    AffinePencil, bracketing_locus_reporting, critical_loads_along, natural_load_max,
+    resolution_warning,
 };
 use zieglerlab::format::Shown;
 
-use super::{LOAD_AXIS, ModelArgs, printable};
+use super::{LOAD_AXIS, ModelArgs, printable, progress_bar};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -42,7 +43,15 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
         );
     }
     let pencil = AffinePencil::new(&model)?;
-    let bracket = bracketing_locus(&pencil, load_min, load_max)?;
+    // A wide range on a long chain takes minutes: progress on a terminal.
+    let progress = progress_bar(0, "loads bracketed");
+    let bracket = bracketing_locus_reporting(&pencil, load_min, load_max, &mut |done, total| {
+        if done % 50 == 0 {
+            progress.set_length(total as u64);
+            progress.set_position(done as u64);
+        }
+    })?;
+    progress.finish_and_clear();
     let transitions = critical_loads_along(&pencil, &bracket)?;
     let warning = resolution_warning(&pencil, &bracket)?;
     if let Some(warning) = &warning {
