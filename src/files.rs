@@ -96,6 +96,10 @@ pub fn write_atomically(
         path: out.display().to_string(),
         why: e.to_string(),
     };
+    // A symbolic link is written through: the file it names is replaced,
+    // the link stays (renaming over the link would replace the link).
+    let target = link_target(out).map_err(|e| error(&e))?;
+    let out = target.as_deref().unwrap_or(out);
     if std::fs::metadata(out).is_ok_and(|m| !m.is_file()) {
         // A device or a pipe (/dev/stdout, /dev/null): nothing to replace.
         let mut file = std::fs::File::options()
@@ -116,6 +120,23 @@ pub fn write_atomically(
     let file = written_temporary(folder_of(out), permissions, write).map_err(|e| error(&e))?;
     file.persist(out).map_err(|e| error(&e.error))?;
     Ok(())
+}
+
+/// The file a symbolic link at `path` names, in the end (through links to
+/// links), or `None` when `path` is no link. A link to nothing names the
+/// file it would create.
+///
+/// # Errors
+/// The link cannot be read.
+pub fn link_target(path: &Path) -> std::io::Result<Option<std::path::PathBuf>> {
+    if !std::fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_symlink()) {
+        return Ok(None);
+    }
+    if let Ok(resolved) = std::fs::canonicalize(path) {
+        return Ok(Some(resolved));
+    }
+    let named = std::fs::read_link(path)?;
+    Ok(Some(folder_of(path).join(named)))
 }
 
 /// A temporary file in `folder` holding what `write` wrote, flushed, given
@@ -202,6 +223,34 @@ fn new_file_permissions() -> Option<std::fs::Permissions> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A link is written through: the file it names gets the text, the
+    /// link stays a link.
+    #[cfg(unix)]
+    #[test]
+    fn a_link_is_written_through() {
+        let folder = tempfile::tempdir().unwrap();
+        let target = folder.path().join("target.csv");
+        let link = folder.path().join("link.csv");
+        std::fs::write(&target, "old").unwrap();
+        std::os::unix::fs::symlink(&target, &link).unwrap();
+        write_atomically(&link, |w| w.write_all(b"new")).unwrap();
+        assert!(
+            std::fs::symlink_metadata(&link)
+                .unwrap()
+                .file_type()
+                .is_symlink()
+        );
+        assert_eq!(std::fs::read_to_string(&target).unwrap(), "new");
+        // A link to a file not made yet makes it.
+        let dangling = folder.path().join("dangling.csv");
+        std::os::unix::fs::symlink("made.csv", &dangling).unwrap();
+        write_atomically(&dangling, |w| w.write_all(b"made")).unwrap();
+        assert_eq!(
+            std::fs::read_to_string(folder.path().join("made.csv")).unwrap(),
+            "made"
+        );
+    }
 
     /// Only regular files of at most the bound are read; a byte-order mark
     /// is dropped; a device, a folder and a pipe are refused unopened.

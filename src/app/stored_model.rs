@@ -5,33 +5,22 @@
 use ron::value::RawValue;
 
 use super::stored::{Fields, field};
-use crate::model::{Load, Model, SpinInertia, analysis_range_text};
+use crate::model::{
+    Assignment, Key, Load, Model, SpinInertia, analysis_range_text, apply_assignments,
+};
 
 /// Writes one number of a model.
 type Setter = fn(&mut Model, f64);
 
-/// Every number of a column, by its name in the stored text.
-const COLUMN: [(&str, Setter); 7] = [
+/// Every number of a column, by its name in the stored text (the count of
+/// rods is read as `--set rods` reads it, see [`read_model`]).
+const COLUMN: [(&str, Setter); 6] = [
     ("tip_mass_kg", |m, v| m.column.tip_mass_kg = v),
     ("k1_nm_per_rad", |m, v| m.column.k1_nm_per_rad = v),
     ("k2_nm_per_rad", |m, v| m.column.k2_nm_per_rad = v),
     ("c1_nms_per_rad", |m, v| m.column.c1_nms_per_rad = v),
     ("c2_nms_per_rad", |m, v| m.column.c2_nms_per_rad = v),
     ("drag_ns_per_m2", |m, v| m.column.drag_ns_per_m2 = v),
-    ("rods", |m, v| {
-        // A count that is no whole number in range fails validation (0 rods).
-        #[expect(
-            clippy::cast_possible_truncation,
-            clippy::cast_sign_loss,
-            reason = "a whole number within the chain's range"
-        )]
-        let rods = if v.fract() == 0.0 && (0.0..=1e6).contains(&v) {
-            v as usize
-        } else {
-            0
-        };
-        m.column.rods = rods;
-    }),
 ];
 
 /// Every number of rod 1 and rod 2 (lengths first: a centre of mass is
@@ -73,8 +62,17 @@ fn with_roller(model: &mut Model, set: impl FnOnce(&mut crate::model::Roller)) {
 /// One stored number: where it goes, what it is called, its value.
 struct Entry {
     name: String,
-    set: Setter,
+    set: Write,
     value: f64,
+}
+
+/// How a stored number is written: into its field, or as the key of
+/// `--set` (checked as the command line checks it: `rods = 2.5: must be a
+/// whole number from 2 to 64`).
+#[derive(Clone, Copy)]
+enum Write {
+    Field(Setter),
+    Key(Key),
 }
 
 /// Moves each known number of `fields` into `entries` (named `prefix.name`),
@@ -92,7 +90,11 @@ fn numbers(
         };
         let name = format!("{prefix}.{name}");
         if let Some(value) = field::<f64>(Some(&raw), &name, ignored) {
-            entries.push(Entry { name, set, value });
+            entries.push(Entry {
+                name,
+                set: Write::Field(set),
+                value,
+            });
         }
     }
     ignored.extend(
@@ -137,6 +139,15 @@ pub fn read_model(raw: &RawValue, base: Model, ignored: &mut Vec<String>) -> Mod
             {
                 numbers(rod_fields, &name, rod, &mut entries, ignored);
             }
+        }
+        if let Some(raw) = column.0.remove("rods")
+            && let Some(value) = field::<f64>(Some(&raw), "model.column.rods", ignored)
+        {
+            entries.push(Entry {
+                name: "model.column.rods".to_owned(),
+                set: Write::Key(Key::Rods),
+                value,
+            });
         }
         numbers(column, "model.column", &COLUMN, &mut entries, ignored);
     }
@@ -207,9 +218,21 @@ fn apply(mut model: Model, entries: Vec<Entry>, ignored: &mut Vec<String>) -> Mo
         let mut refused = Vec::new();
         for entry in pending {
             let mut candidate = model;
-            (entry.set)(&mut candidate, entry.value);
-            let verdict = candidate
-                .validate()
+            let written = match entry.set {
+                Write::Field(set) => {
+                    set(&mut candidate, entry.value);
+                    Ok(())
+                }
+                Write::Key(key) => apply_assignments(
+                    &mut candidate,
+                    &[Assignment {
+                        key,
+                        value: entry.value,
+                    }],
+                ),
+            };
+            let verdict = written
+                .and_then(|()| candidate.validate())
                 .map_err(|e| e.to_string())
                 .and_then(|()| match candidate.beyond_analysis() {
                     Some((what, _)) => Err(format!("makes {what} {}", analysis_range_text())),

@@ -18,6 +18,10 @@ pub fn check_output(out: &Path, png: bool) -> Result<()> {
     {
         anyhow::bail!("out = {shown}: pictures are written as PNG; name the file *.png");
     }
+    // A link is written through: the file it names is what is checked.
+    let target = zieglerlab::files::link_target(out)
+        .map_err(|e| anyhow::anyhow!("out = {shown}: the link cannot be read ({e})"))?;
+    let out = target.as_deref().unwrap_or(out);
     let folder = folder_of(out);
     if !folder.is_dir() {
         anyhow::bail!(

@@ -81,8 +81,37 @@ fn stored_settings_keep_what_reads_and_name_the_rest() {
         };
         ron::to_string(&settings).unwrap()
     };
+    // A count of rods that is no whole number in range, named as `--set`
+    // names it (it was reported as "rods = 0").
+    let rods = |count: &str| {
+        let settings = Settings {
+            preset: PresetId::Beck,
+            model: PresetId::Beck.model(),
+            ..Settings::default()
+        };
+        ron::to_string(&settings)
+            .unwrap()
+            .replace("rods:16", &format!("rods:{count}"))
+    };
+    let (half, huge, negative) = (rods("2.5"), rods("1e300"), rods("-3"));
+    assert_ne!(half, rods("16"), "the count is stored as rods:16");
     // (stored text, speed kept, message fragment; None: no message)
     let cases: &[(&str, f64, Option<&str>)] = &[
+        (
+            &half,
+            1.0,
+            Some("model.column.rods (rods = 2.5: must be a whole number from 2 to 64)"),
+        ),
+        (
+            &huge,
+            1.0,
+            Some("model.column.rods (rods = 1e300: must be a whole number"),
+        ),
+        (
+            &negative,
+            1.0,
+            Some("model.column.rods (rods = -3: must be a whole number"),
+        ),
         // An older version that knew only the speed.
         ("(speed: 3.0)", 3.0, None),
         // A newer version's field.
