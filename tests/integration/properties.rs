@@ -162,3 +162,83 @@ proptest! {
         check_run(&model, EngineKind::Reference)?;
     }
 }
+
+/// Chains of 2 to 64 rods with a partial follower (`eta`) and drag along
+/// the rods (`c_ext`), the values drawn also beyond what they may be: each
+/// case is analysed (2n finite eigenvalues; the critical loads, finite and
+/// ordered, up to 12 rods, where a debug build takes seconds) or refused
+/// naming the key that was wrong. How many cases each answer took is
+/// printed and must show every kind.
+#[test]
+fn chains_with_eta_and_drag_are_analysed_or_refused_by_name() {
+    use proptest::test_runner::{Config, TestRunner};
+    use std::cell::RefCell;
+    use std::collections::BTreeMap;
+    let counts = RefCell::new(BTreeMap::<String, usize>::new());
+    let count = |what: &str| *counts.borrow_mut().entry(what.to_owned()).or_default() += 1;
+    let cases = (
+        prop::sample::select(vec!["beck", "pflueger"]),
+        prop_oneof![3 => (2.0..=64.0f64).prop_map(f64::round), 1 => -4.0..=80.0f64],
+        prop_oneof![3 => 0.0..=1.0f64, 1 => -1.0..=2.0f64],
+        prop_oneof![
+            Just(0.0),
+            log_uniform(-3.0, 2.0),
+            Just(-1.0),
+            log_uniform(150.0, 200.0)
+        ],
+        0.0..=1.0f64,
+    );
+    let mut runner = TestRunner::new(Config::with_cases(96));
+    runner
+        .run(&cases, |(name, rods, eta, c_ext, load_share)| {
+            let mut model = preset(name).unwrap().model();
+            let sets: Vec<Assignment> = [("rods", rods), ("eta", eta), ("c_ext", c_ext)]
+                .into_iter()
+                .map(|(key, value)| Assignment {
+                    key: key.parse().unwrap(),
+                    value,
+                })
+                .collect();
+            if let Err(error) = apply_assignments(&mut model, &sets) {
+                let text = error.to_string();
+                let named = ["rods", "eta", "c_ext"]
+                    .into_iter()
+                    .find(|key| text.starts_with(&format!("{key} = ")));
+                prop_assert!(named.is_some(), "{name} {rods} {eta} {c_ext}: {text}");
+                count(&format!("refused: {}", named.unwrap_or_default()));
+                return Ok(());
+            }
+            let load = load_share * model.load_bar_max_p();
+            let set_load = [Assignment {
+                key: "load".parse().unwrap(),
+                value: load,
+            }];
+            apply_assignments(&mut model, &set_load).unwrap();
+            let pencil = AffinePencil::new(&model).unwrap();
+            let spectrum = pencil.spectrum(load).unwrap();
+            prop_assert_eq!(spectrum.all().count(), 2 * model.dof());
+            prop_assert!(spectrum.all().all(|z| z.re.is_finite() && z.im.is_finite()));
+            if model.column.rods <= 12 {
+                let most = model.load_bar_max_p();
+                let transitions = critical_loads(&pencil, 0.0, most).unwrap();
+                prop_assert!(transitions.iter().all(|t| t.load.is_finite()));
+                prop_assert!(transitions.windows(2).all(|w| w[0].load <= w[1].load));
+            }
+            count("analysed");
+            Ok(())
+        })
+        .unwrap();
+    let counts = counts.into_inner();
+    eprintln!("cases by answer: {counts:?}");
+    for answer in [
+        "analysed",
+        "refused: rods",
+        "refused: eta",
+        "refused: c_ext",
+    ] {
+        assert!(
+            counts.get(answer).is_some_and(|&n| n > 0),
+            "{answer}: {counts:?}"
+        );
+    }
+}
