@@ -143,7 +143,12 @@ impl ZieglerApp {
     #[must_use]
     pub fn from_storage(storage: Option<&dyn eframe::Storage>) -> Self {
         let text = |key| storage.and_then(|s| s.get_string(key));
-        let mut app = Self::from_stored_text(text(SETTINGS_KEY).as_deref());
+        // The stored column's analysis off the UI thread: a long chain
+        // opens at once.
+        let mut app = Self::with_state(AppState::from_stored_text_analysed(
+            text(SETTINGS_KEY).as_deref(),
+            true,
+        ));
         if let Some(layout) = text(LAYOUT_KEY) {
             let (layout, note) = Layout::read(&layout);
             if let Some(note) = note {

@@ -123,7 +123,23 @@ impl AppState {
     ///
     /// # Errors
     /// Settings that make no valid simulation.
-    pub fn new(mut settings: Settings) -> Result<Self, SimError> {
+    pub fn new(settings: Settings) -> Result<Self, SimError> {
+        Self::started(settings, None)
+    }
+
+    /// [`AppState::new`] with the analysis computed off the UI thread from
+    /// the start: a stored 64-rod chain opens at once, its plots following
+    /// (the window stayed black for seconds while the first was computed).
+    ///
+    /// # Errors
+    /// Settings that make no valid simulation.
+    pub fn new_analysing_in_background(settings: Settings) -> Result<Self, SimError> {
+        Self::started(settings, AnalysisWorker::start().ok())
+    }
+
+    /// The state with `settings`, its analysis asked of `worker` (computed
+    /// here without one).
+    fn started(mut settings: Settings, worker: Option<AnalysisWorker>) -> Result<Self, SimError> {
         let (sim, notice) = start(&mut settings)?;
         let mut state = Self {
             settings,
@@ -132,7 +148,7 @@ impl AppState {
             trail: VecDeque::new(),
             analysis: None,
             analysis_failure: None,
-            worker: None,
+            worker,
             pending: None,
             pace: Pace::default(),
             current: None,
@@ -501,7 +517,9 @@ impl AppState {
     /// slider, and the frame never waits for them. Stays inline when the
     /// system gives no thread.
     pub fn analyse_in_background(&mut self) {
-        self.worker = AnalysisWorker::start().ok();
+        if self.worker.is_none() {
+            self.worker = AnalysisWorker::start().ok();
+        }
     }
 
     /// Whether an analysis of the current parameters is still being computed.

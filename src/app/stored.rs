@@ -136,6 +136,13 @@ impl AppState {
     /// defaults, and a notice names them.
     #[must_use]
     pub fn from_stored_text(text: Option<&str>) -> Self {
+        Self::from_stored_text_analysed(text, false)
+    }
+
+    /// [`AppState::from_stored_text`], the analysis of the stored column
+    /// computed off the UI thread when `in_background` (the window's start).
+    #[must_use]
+    pub fn from_stored_text_analysed(text: Option<&str>, in_background: bool) -> Self {
         let Some(text) = text else {
             return Self::first_launch();
         };
@@ -155,7 +162,12 @@ impl AppState {
                 ))),
             ),
         };
-        let mut state = match Self::new(settings) {
+        let started = if in_background {
+            Self::new_analysing_in_background(settings)
+        } else {
+            Self::new(settings)
+        };
+        let mut state = match started {
             Ok(state) => state,
             Err(error) => {
                 let mut state = Self::defaults();

@@ -24,6 +24,14 @@ pub struct LocusTab {
 impl View for LocusTab {
     fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
         let Some(analysis) = state.analysis() else {
+            if state.analysis_pending() {
+                // A long chain's first analysis takes seconds, off this thread.
+                ui.horizontal(|ui| {
+                    ui.spinner();
+                    ui.label("Computing the root locus of these parameters...");
+                });
+                return;
+            }
             let why = state
                 .analysis_failure()
                 .map_or_else(String::new, |error| format!(": {error}"));
