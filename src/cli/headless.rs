@@ -86,7 +86,15 @@ impl Look {
     pub fn check(&self, size: Size) -> Result<()> {
         let scale = self.scale;
         if !(scale.is_finite() && (0.5..=8.0).contains(&scale)) {
-            anyhow::bail!("scale = {scale}: must be 0.5 to 8 pixels per point");
+            // The number as typed (f32), in exponent form when huge or tiny.
+            let magnitude = scale.abs();
+            let shown =
+                if magnitude == 0.0 || !magnitude.is_finite() || (1e-4..1e7).contains(&magnitude) {
+                    format!("{scale}")
+                } else {
+                    format!("{scale:e}")
+                };
+            anyhow::bail!("scale = {shown}: must be 0.5 to 8 pixels per point");
         }
         let panel = self.panel();
         let [least_w, least_h] = panel.smallest_points();

@@ -5,6 +5,7 @@
 use std::io::Write;
 
 use anyhow::Result;
+use zieglerlab::format::Shown;
 
 use zieglerlab::app::{Settings, ZieglerApp};
 use zieglerlab::recording::GifRecording;
@@ -65,7 +66,8 @@ pub fn run(args: &Args) -> Result<()> {
     let frames = duration * f64::from(args.fps);
     if !(duration.is_finite() && duration > 0.0 && frames <= MAX_FRAMES) {
         anyhow::bail!(
-            "duration = {duration}: must be a positive number of seconds, at most {MAX_FRAMES} frames at {} fps",
+            "duration = {}: must be a positive number of seconds, at most {MAX_FRAMES} frames at {} fps",
+            Shown(duration),
             args.fps
         );
     }

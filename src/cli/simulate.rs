@@ -6,6 +6,7 @@ use std::ops::ControlFlow;
 
 use anyhow::Result;
 use clap::ValueEnum;
+use zieglerlab::format::Shown;
 
 use zieglerlab::format::Exact;
 use zieglerlab::sim::{DEFAULT_STEP_SECS, Observables, Ramp, Simulation, Status, initial_state};
@@ -49,10 +50,16 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     let (_, model) = args.model.build_ramped(args.ramp.as_ref())?;
     let (duration, perturb, dt) = (args.duration, args.perturb, args.dt);
     if !(duration.is_finite() && duration > 0.0) {
-        anyhow::bail!("duration = {duration}: must be a positive number of seconds");
+        anyhow::bail!(
+            "duration = {}: must be a positive number of seconds",
+            Shown(duration)
+        );
     }
     if !(perturb.is_finite() && perturb.abs() <= 1.0) {
-        anyhow::bail!("perturb = {perturb}: must be an angle in [-1, 1] rad");
+        anyhow::bail!(
+            "perturb = {}: must be an angle in [-1, 1] rad",
+            Shown(perturb)
+        );
     }
     if dt.is_finite() && dt > 0.0 && duration / dt > MAX_ROWS {
         anyhow::bail!(

@@ -2,6 +2,7 @@
 //! after a given simulated time.
 
 use anyhow::Result;
+use zieglerlab::format::Shown;
 
 use zieglerlab::app::{Settings, ZieglerApp};
 
@@ -33,7 +34,10 @@ pub fn run(args: &Args) -> Result<()> {
     let (name, model) = args.model.build()?;
     let time = args.time;
     if !(time.is_finite() && (0.0..=1.0e5).contains(&time)) {
-        anyhow::bail!("time = {time}: must be a number of seconds in [0, 100000]");
+        anyhow::bail!(
+            "time = {}: must be a number of seconds in [0, 100000]",
+            Shown(time)
+        );
     }
     let settings = Settings {
         preset: name,

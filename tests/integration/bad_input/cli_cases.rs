@@ -441,6 +441,31 @@ pub const CLI: &[Cli] = &[
         ],
         "duration = -inf: must be a positive number of seconds",
     ),
+    // Huge and tiny numbers are repeated in exponent form, not with 300 digits.
+    refused(
+        &[
+            "record",
+            "--preset",
+            "roller",
+            "--duration",
+            "1e308",
+            "--out",
+            "/tmp/zl-never.gif",
+        ],
+        "duration = 1e308: must be a positive number of seconds",
+    ),
+    refused(
+        &[
+            "snapshot",
+            "--preset",
+            "roller",
+            "--scale",
+            "1e-45",
+            "--out",
+            "/tmp/zl-never.png",
+        ],
+        "scale = 1e-45: must be 0.5 to 8 pixels per point",
+    ),
     // A map axis's range is checked as the axis takes it, not as a load.
     refused(
         &[
