@@ -73,6 +73,8 @@ pub(super) fn field<T: for<'de> Deserialize<'de>>(
 /// # Errors
 /// Text that is not settings at all.
 pub fn read(text: &str) -> Result<Read, String> {
+    // Text saved by an editor that writes a byte-order mark reads the same.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let Fields(mut fields) = ron::from_str(text).map_err(|e| format!("not settings text: {e}"))?;
     let mut ignored = Vec::new();
     let mut take = |name: &str| fields.remove(name);

@@ -213,7 +213,10 @@ pub fn run() -> ExitCode {
             } else {
                 first.join(" ")
             };
-            eprintln!("{} (see zieglerlab --help)", printable(&first));
+            eprintln!(
+                "{} (see zieglerlab --help)",
+                printable(&clipped_words(&first))
+            );
             return ExitCode::from(2);
         }
     };
@@ -294,6 +297,15 @@ fn progress_bar(len: u64, what: &str) -> indicatif::ProgressBar {
     }
     bar.set_message(what.to_owned());
     bar
+}
+
+/// `text` with every word longer than 60 characters clipped (clap repeats
+/// a value as typed, and a 4096-character one buried the message).
+fn clipped_words(text: &str) -> String {
+    text.split(' ')
+        .map(|word| zieglerlab::format::clipped(word, 60))
+        .collect::<Vec<_>>()
+        .join(" ")
 }
 
 /// `text` with control characters (a key typed with a tab or an escape

@@ -97,6 +97,8 @@ fn stored_settings_keep_what_reads_and_name_the_rest() {
     assert_ne!(half, rods("16"), "the count is stored as rods:16");
     // (stored text, speed kept, message fragment; None: no message)
     let cases: &[(&str, f64, Option<&str>)] = &[
+        // Saved by an editor that writes a byte-order mark.
+        ("\u{feff}(speed: 3.0)", 3.0, None),
         (
             &half,
             1.0,
