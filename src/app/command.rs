@@ -65,8 +65,8 @@ impl Command {
             Self::ResetAll => {
                 "reset all: the preset's parameters and load, normal speed, a fresh run, the default views"
             }
-            Self::LoadUp => "load up by 0.08",
-            Self::LoadDown => "load down by 0.08",
+            Self::LoadUp => "load up by a hundredth of the load bar",
+            Self::LoadDown => "load down by a hundredth of the load bar",
             Self::Projector => "projector mode: high contrast, large text",
             Self::LessonNext => "the lesson's next step (a presenter's remote sends Page Down)",
             Self::LessonBack => "the lesson's previous step (Page Up)",

@@ -154,7 +154,7 @@ fn step_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
         .analysis()
         .and_then(crate::app::analysis_cache::Analysis::first_instability);
     let seen = state.ramp().and_then(|r| r.seen_at_p);
-    if let Some(result) = run.reveal_text(first, seen) {
+    if let Some(result) = run.reveal_text(first, state.load_max(), seen) {
         ui.label(RichText::new(result).color(theme.measured));
     }
     if let Some(p) = run.predicted_load

@@ -22,9 +22,9 @@ impl View for LoadSection {
         ui.horizontal(|ui| {
             // The wide bar under the scene is the slider; this field takes a
             // typed load, also beyond the bar's range (not clamped).
-            self.field
-                .show(ui, state, theme, Key::Load)
-                .on_hover_text("type a load (Enter applies, Escape restores); beyond 8 too");
+            self.field.show(ui, state, theme, Key::Load).on_hover_text(
+                "type a load (Enter applies, Escape restores); beyond the bar's end too",
+            );
             ui.label("load p = P l/k");
         });
         refusal_ui(ui, state, theme, Key::Load);

@@ -47,18 +47,25 @@ impl LessonRun {
     }
 
     /// The revealed result of the step shown, in words, beside what was
-    /// predicted; `first_instability` and `seen_at_p` come from the state.
+    /// predicted; `first_instability` (searched up to `bar_max_p`, the load
+    /// bar's top) and `seen_at_p` come from the state.
     #[must_use]
     pub fn reveal_text(
         &self,
         first_instability: Option<f64>,
+        bar_max_p: f64,
         seen_at_p: Option<f64>,
     ) -> Option<String> {
         let load = |p: f64| crate::format::load_text(p);
         let text = match self.current().reveal.as_ref()? {
             Reveal::FirstInstability => {
                 let theory = first_instability.map_or_else(
-                    || "the column does not lose stability up to p = 8".to_owned(),
+                    || {
+                        format!(
+                            "the column does not lose stability up to p = {}",
+                            load(bar_max_p)
+                        )
+                    },
                     |p| format!("the theory: unstable from p = {}", load(p)),
                 );
                 let seen = seen_at_p

@@ -8,13 +8,14 @@ use crate::model::{Key, Model};
 use crate::sim::{Observables, Ramp};
 
 /// The motion is called visible when the tip is off its straight position
-/// by this fraction of the column's length (5%: 25 px of a 500 px column).
+/// by this fraction of the column's length, all its rods (5%: 25 px of a
+/// 500 px column).
 pub const VISIBLE_FRACTION: f64 = 0.05;
 
 /// Whether the column's motion in `now` is visible (see [`VISIBLE_FRACTION`]).
 #[must_use]
 pub fn visible(model: &Model, now: &Observables) -> bool {
-    let reach_m = model.column.rod1.length_m + model.column.rod2.length_m;
+    let reach_m = model.column.reach_m();
     let [x, y] = now.tip_m;
     (x - reach_m).hypot(y) > VISIBLE_FRACTION * reach_m
 }
@@ -159,5 +160,21 @@ mod tests {
         let mut late = RampRun::new(Ramp::new(1.0, 2.0, 0.5).unwrap(), true);
         late.observe(true, 1.2);
         assert_eq!(late.seen_at_p, None, "visible from the start: no onset");
+    }
+
+    /// A chain at rest is not "visible motion": its reach is all its rods
+    /// (measured against two rods, a straight 16-rod column was always
+    /// "visible", so a ramp on it never noted an onset); bent by more than
+    /// 5% of that reach, it is.
+    #[test]
+    fn a_chain_at_rest_is_still_and_bent_it_moves() {
+        let model = crate::model::PresetId::Beck.model();
+        assert_eq!(model.column.rods, 16);
+        let rest = crate::sim::observe(&model, 0.0, &crate::sim::initial_state(&model, 1e-3));
+        assert!(!visible(&model, &rest));
+        let mut bent = rest.clone();
+        let reach_m = model.column.reach_m();
+        bent.tip_m = [reach_m, 0.06 * reach_m];
+        assert!(visible(&model, &bent));
     }
 }

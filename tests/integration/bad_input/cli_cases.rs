@@ -443,7 +443,11 @@ pub const CLI: &[Cli] = &[
     ),
     // clap repeats a value as typed: a long one is clipped with its length.
     refused(
-        &["critical", "--preset", "xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx"],
+        &[
+            "critical",
+            "--preset",
+            "xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx",
+        ],
         "... (102 characters) for '--preset <PRESET>'",
     ),
     // Huge and tiny numbers are repeated in exponent form, not with 300 digits.
