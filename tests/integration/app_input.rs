@@ -381,13 +381,19 @@ fn page_down_and_page_up_step_through_a_lesson() {
     assert_eq!(step(&harness), 1);
 }
 
-/// A picture shows no hints for the hand: the plots' view hint and fit
-/// button and the first launch's hint are in the window, not in what the
-/// command line draws (nor in a recording's frames).
+/// A picture shows no hints for the hand and no messages: the plots' view
+/// hint and fit button, the first launch's hint and a notice are in the
+/// window, not in what the command line draws (nor in a recording's frames).
 #[test]
 fn pictures_carry_no_hints_for_the_hand() {
-    let hints = |for_pictures: bool| {
+    // The status line holds the first launch's hint or, once said, a notice.
+    let hints = |for_pictures: bool, said: bool| {
         let mut app = ZieglerApp::from_stored_text(None);
+        if said {
+            app.state_mut().say(zieglerlab::app::Notice::info(
+                "a message for the person at the window",
+            ));
+        }
         if for_pictures {
             app.draw_for_pictures();
         }
@@ -402,11 +408,24 @@ fn pictures_carry_no_hints_for_the_hand() {
             harness.query_by_label("fit").is_some(),
             harness
                 .query_by_label_contains("Drag the load bar to about 3")
-                .is_some(),
+                .is_some()
+                || harness
+                    .query_by_label_contains("a message for the person")
+                    .is_some(),
         ]
     };
-    assert_eq!(hints(false), [true, true, true], "the window shows them");
-    assert_eq!(hints(true), [false, false, false], "a picture does not");
+    for said in [false, true] {
+        assert_eq!(
+            hints(false, said),
+            [true, true, true],
+            "the window shows them"
+        );
+        assert_eq!(
+            hints(true, said),
+            [false, false, false],
+            "a picture does not"
+        );
+    }
 }
 
 /// Words per column: the band's angle and power are plotted only where

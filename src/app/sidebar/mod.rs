@@ -96,10 +96,13 @@ fn overlay_ui(ui: &mut egui::Ui, state: &mut AppState) {
 
 /// The status line at the foot of the window: the latest notice (with a
 /// button to dismiss it) or the first launch's hint, always in this one
-/// place, so that a message never moves a control.
+/// place, so that a message never moves a control. A picture (the command
+/// line's, a recording's frames) shows no message: it is for the person at
+/// the window, not for the class.
 pub fn status_line_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
     ui.horizontal(|ui| {
-        if let Some(notice) = state.notice().cloned() {
+        let notice = state.notice().cloned().filter(|_| !state.for_picture());
+        if let Some(notice) = notice {
             if ui
                 .small_button("dismiss")
                 .on_hover_text("clear this message")
