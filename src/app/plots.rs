@@ -61,10 +61,17 @@ pub fn root_locus_ui(
         .map(|z| z.im.abs())
         .fold(0.0, f64::max)
         .max(1e-3);
+    // Equal scales on both axes: egui_plot keeps the x range and fits the y
+    // range to the plot's shape, so on a wide plot the x range is widened
+    // until the branches' whole imaginary extent (the pairs the status card
+    // is about) fits; the axes and their labels take about 60 x 40 points.
+    let size = ui.available_size();
+    let shape = (f64::from(size.x) - 60.0).max(1.0) / (f64::from(size.y) - 40.0).max(1.0);
+    let half_width = (1.3 * extent).max(1.2 * extent * shape);
     let plot = Plot::new("root locus")
         .data_aspect(1.0)
-        .default_x_bounds(-1.3 * extent, 1.3 * extent)
-        .default_y_bounds(-1.15 * extent, 1.15 * extent);
+        .default_x_bounds(-half_width, half_width)
+        .default_y_bounds(-1.2 * extent, 1.2 * extent);
     refit_if(axes(plot, "Re λ (1/s)", "Im λ (rad/s)"), refit).show(ui, |plot_ui| {
         plot_ui.vline(
             VLine::new("", 0.0)
