@@ -332,6 +332,25 @@ impl AppState {
         }
     }
 
+    /// All of `settings` in place of the current ones, on a fresh run: the
+    /// lesson, the overlay, the open tab and the analysis thread stay.
+    /// Nothing changes when they make no run.
+    ///
+    /// # Errors
+    /// Settings that make no valid simulation.
+    pub fn take_settings(&mut self, settings: Settings) -> Result<(), SimError> {
+        // Would the run start? (Cheap: no analysis.) The engine it settles on.
+        let mut trial = settings;
+        start(&mut trial)?;
+        self.switch_column(trial.preset, trial.model);
+        if trial.engine != self.settings.engine {
+            self.set_engine(trial.engine);
+        }
+        self.set_speed(trial.speed);
+        self.set_projector(trial.projector);
+        Ok(())
+    }
+
     /// Preset `id` with `model`, on a fresh run.
     fn switch_column(&mut self, id: PresetId, model: Model) {
         self.settings.preset = id;

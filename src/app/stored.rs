@@ -203,6 +203,12 @@ impl AppState {
     /// Loads settings from shared text; garbage leaves everything as it was
     /// and says why.
     pub fn paste_settings(&mut self, text: &str) {
+        if text.trim().is_empty() {
+            self.say(Notice::error(
+                "nothing to paste: put settings text (from \"copy settings\") in the box first",
+            ));
+            return;
+        }
         let settings = match read(text) {
             Ok(read) if read.ignored.is_empty() => read.settings,
             Ok(read) => {
@@ -219,11 +225,11 @@ impl AppState {
                 return;
             }
         };
-        match Self::new(settings) {
-            Ok(mut pasted) => {
-                pasted.say(Notice::info("settings pasted"));
-                *self = pasted;
-            }
+        // Taken in place: the analysis thread, the lesson, the overlay and
+        // the tab stay (a new state dropped the thread, so every later change
+        // was analysed on the UI thread).
+        match self.take_settings(settings) {
+            Ok(()) => self.say(Notice::info("settings pasted")),
             Err(error) => {
                 self.say(Notice::error(format!(
                     "pasted settings refused, nothing changed: {error}"

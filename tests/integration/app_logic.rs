@@ -296,6 +296,30 @@ fn pasted_garbage_changes_nothing_and_says_so() {
     app.state_mut()
         .paste_settings(&ron::to_string(&good).unwrap());
     assert_eq!(app.settings(), &good);
+    // An empty box says what to do, not "Expected opening `(`".
+    app.state_mut().paste_settings("  ");
+    assert!(
+        app.message().unwrap().starts_with("nothing to paste"),
+        "{:?}",
+        app.message()
+    );
+    // Another preset pasted keeps the overlay chosen and the lesson open.
+    app.state_mut().set_overlay(Some(PresetId::UniformRods));
+    app.state_mut()
+        .open_lesson(zieglerlab::lesson::Lesson::read(zieglerlab::lesson::BUILT_IN[0].1).unwrap());
+    let tabletop = Settings {
+        preset: PresetId::Tabletop,
+        model: PresetId::Tabletop.model(),
+        ..Settings::default()
+    };
+    app.state_mut()
+        .paste_settings(&ron::to_string(&tabletop).unwrap());
+    assert_eq!(app.settings(), &tabletop);
+    assert_eq!(
+        app.state().overlay().map(|o| o.preset),
+        Some(PresetId::UniformRods)
+    );
+    assert!(app.state().lesson().is_some());
 }
 
 #[test]

@@ -722,3 +722,19 @@ fn data_files_write_zero_without_a_sign() {
         }
     }
 }
+
+/// The README's example of `critical` is what the command prints, line for
+/// line (it had drifted in the last digits).
+#[test]
+fn the_readme_example_of_critical_is_what_it_prints() {
+    let readme = std::fs::read_to_string("README.md").expect("the README");
+    let command = "    $ zieglerlab critical --preset ziegler-1952\n";
+    let start = readme.find(command).expect("the example") + command.len();
+    let shown: Vec<&str> = readme[start..]
+        .lines()
+        .take_while(|line| line.starts_with("    ") && !line.trim_start().starts_with('#'))
+        .map(|line| &line[4..])
+        .collect();
+    let printed = stdout(&["critical", "--preset", "ziegler-1952"]);
+    assert_eq!(shown, printed.lines().collect::<Vec<_>>());
+}
