@@ -288,6 +288,27 @@ pub fn locus(
     locus_until(pencil, min, max, samples, |_, _| false)
 }
 
+/// [`locus`], telling `progress(done, total)` each evenly spaced load
+/// computed after the first (a long chain's fine locus takes minutes).
+///
+/// # Errors
+/// As [`locus`].
+pub fn locus_reporting(
+    pencil: &AffinePencil,
+    min: f64,
+    max: f64,
+    samples: usize,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Locus, AnalysisError> {
+    let total = samples.saturating_sub(1);
+    let mut done = 0;
+    locus_until(pencil, min, max, samples, |_, _| {
+        done += 1;
+        progress(done, total);
+        false
+    })
+}
+
 /// [`locus`], ended at the first evenly spaced load where `stop(p,
 /// eigenvalues)` is true (that sample included).
 pub(crate) fn locus_until(
@@ -399,4 +420,24 @@ pub(crate) fn locus_until(
         }
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::PresetId;
+
+    /// Progress counts each evenly spaced load after the first, in order,
+    /// and the locus is the one computed without it.
+    #[test]
+    fn a_reported_locus_counts_every_load_once() {
+        let pencil = AffinePencil::new(&PresetId::Roller.model()).unwrap();
+        let mut seen = Vec::new();
+        let reported = locus_reporting(&pencil, 0.0, 8.0, 101, &mut |done, total| {
+            seen.push((done, total));
+        })
+        .unwrap();
+        assert_eq!(seen, (1..=100).map(|done| (done, 100)).collect::<Vec<_>>());
+        assert_eq!(reported.loads, locus(&pencil, 0.0, 8.0, 101).unwrap().loads);
+    }
 }

@@ -7,10 +7,10 @@ use anyhow::Result;
 use clap::ValueEnum;
 use serde_json::json;
 
-use zieglerlab::analysis::{AffinePencil, locus, resolution_warning};
+use zieglerlab::analysis::{AffinePencil, locus_reporting, resolution_warning};
 use zieglerlab::format::Exact;
 
-use super::{LOAD_AXIS, ModelArgs, printable};
+use super::{LOAD_AXIS, ModelArgs, printable, progress_bar};
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 enum Format {
@@ -35,7 +35,20 @@ pub struct Args {
 pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     let (name, model) = args.model.build()?;
     let pencil = AffinePencil::new(&model)?;
-    let locus = locus(&pencil, args.load_min, args.load_max, args.samples)?;
+    // A long chain's fine locus takes minutes: progress on a terminal.
+    let progress = progress_bar(args.samples.saturating_sub(1) as u64, "loads");
+    let locus = locus_reporting(
+        &pencil,
+        args.load_min,
+        args.load_max,
+        args.samples,
+        &mut |done, _| {
+            if done % 50 == 0 {
+                progress.set_position(done as u64);
+            }
+        },
+    )?;
+    progress.finish_and_clear();
     if let Some(warning) = resolution_warning(&pencil, &locus)? {
         eprintln!("warning: {}", printable(&warning));
     }
