@@ -1,10 +1,53 @@
 //! Files written whole or not at all (a temporary file in the same folder,
 //! synced and renamed over the target or to a free name, with the
 //! permissions a new file or the one it replaces would have; devices and
-//! pipes are written directly), and text files read with a bound on size.
+//! pipes are written directly; a temporary file left by a stopping signal
+//! is removed), and text files read with a bound on size.
 
 use std::io::Write as _;
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+
+/// The temporary files being written now, for [`remove_unfinished`].
+static UNFINISHED: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// A temporary file listed in [`UNFINISHED`] while it lives.
+struct Unfinished(PathBuf);
+
+impl Unfinished {
+    fn new(path: &Path) -> Self {
+        if let Ok(mut paths) = UNFINISHED.lock() {
+            paths.push(path.to_owned());
+        }
+        Self(path.to_owned())
+    }
+}
+
+impl Drop for Unfinished {
+    fn drop(&mut self) {
+        if let Ok(mut paths) = UNFINISHED.lock() {
+            paths.retain(|p| p != &self.0);
+        }
+    }
+}
+
+/// Removes the temporary files being written: for a handler of Ctrl-C or
+/// SIGTERM, so that a stopped write leaves nothing beside its output (a
+/// file renamed into place meanwhile is not touched: its temporary name is
+/// gone).
+pub fn remove_unfinished() {
+    remove_unfinished_where(|_| true);
+}
+
+/// Removes the listed temporary files whose path `chosen` picks.
+fn remove_unfinished_where(chosen: impl Fn(&Path) -> bool) {
+    if let Ok(paths) = UNFINISHED.lock() {
+        for path in paths.iter().filter(|p| chosen(p)) {
+            // Already renamed or removed: nothing left to do.
+            let _ = std::fs::remove_file(path);
+        }
+    }
+}
 
 /// A file that could not be written, and why.
 #[derive(Debug, thiserror::Error)]
@@ -117,7 +160,8 @@ pub fn write_atomically(
         .map(|m| m.permissions())
         .ok()
         .or_else(new_file_permissions);
-    let file = written_temporary(folder_of(out), permissions, write).map_err(|e| error(&e))?;
+    let (file, _listed) =
+        written_temporary(folder_of(out), permissions, write).map_err(|e| error(&e))?;
     file.persist(out).map_err(|e| error(&e.error))?;
     Ok(())
 }
@@ -145,8 +189,9 @@ fn written_temporary(
     folder: &Path,
     permissions: Option<std::fs::Permissions>,
     write: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> std::io::Result<()>,
-) -> std::io::Result<tempfile::NamedTempFile> {
+) -> std::io::Result<(tempfile::NamedTempFile, Unfinished)> {
     let mut file = tempfile::NamedTempFile::new_in(folder)?;
+    let listed = Unfinished::new(file.path());
     {
         let mut buffered = std::io::BufWriter::new(file.as_file_mut());
         write(&mut buffered)?;
@@ -156,7 +201,7 @@ fn written_temporary(
         file.as_file().set_permissions(permissions)?;
     }
     file.as_file().sync_all()?;
-    Ok(file)
+    Ok((file, listed))
 }
 
 /// Most names [`write_new`] tries before giving up.
@@ -188,7 +233,7 @@ pub fn write_new(
         path: name(1).display().to_string(),
         why: e.to_string(),
     };
-    let mut file =
+    let (mut file, _listed) =
         written_temporary(folder, new_file_permissions(), write).map_err(|e| error(&e))?;
     for k in 1..=MAX_NAME_TRIES {
         let path = name(k);
@@ -223,6 +268,24 @@ fn new_file_permissions() -> Option<std::fs::Permissions> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A stopping signal's handler removes the temporary file of a write
+    /// under way: nothing is left beside the output, and the write fails.
+    #[test]
+    fn a_stopped_write_leaves_no_temporary() {
+        let folder = tempfile::tempdir().unwrap();
+        let out = folder.path().join("map.csv");
+        // This folder's only: other tests write files meanwhile.
+        let ours = |p: &Path| p.starts_with(folder.path());
+        let written = write_atomically(&out, |w| {
+            remove_unfinished_where(ours);
+            w.write_all(b"half")
+        });
+        assert!(written.is_err());
+        assert_eq!(std::fs::read_dir(folder.path()).unwrap().count(), 0);
+        let listed = UNFINISHED.lock().unwrap().iter().any(|p| ours(p));
+        assert!(!listed, "no longer listed");
+    }
 
     /// A link is written through: the file it names gets the text, the
     /// link stays a link.

@@ -187,8 +187,19 @@ enum Command {
     Record(record::Args),
 }
 
+/// Status of a run stopped by Ctrl-C or SIGTERM (128 + SIGINT, as shells
+/// report it).
+const STOPPED: i32 = 130;
+
 /// Runs the command line; status 0 on success, 2 with one line on any error.
 pub fn run() -> ExitCode {
+    // Ctrl-C, SIGTERM or a closed terminal stops at once, and a file being
+    // written is not left half-made beside its output. Without the handler
+    // (none could be set) the system's default still stops the process.
+    let _ = ctrlc::set_handler(|| {
+        zieglerlab::files::remove_unfinished();
+        std::process::exit(STOPPED);
+    });
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(error) => {

@@ -738,3 +738,34 @@ fn the_readme_example_of_critical_is_what_it_prints() {
     let printed = stdout(&["critical", "--preset", "ziegler-1952"]);
     assert_eq!(shown, printed.lines().collect::<Vec<_>>());
 }
+
+/// Ctrl-C or SIGTERM stops a long command at once with status 130, and no
+/// file is left where the output would have gone.
+#[cfg(unix)]
+#[test]
+fn a_stopping_signal_ends_a_long_command_at_once() {
+    let folder = tempfile::tempdir().expect("a temporary folder");
+    let out = folder.path().join("never.png");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+        .args([
+            "snapshot", "--preset", "roller", "--time", "100000", "--out",
+        ])
+        .arg(&out)
+        .spawn()
+        .expect("the binary runs");
+    std::thread::sleep(std::time::Duration::from_millis(500));
+    let sent = Command::new("kill")
+        .args(["-TERM", &child.id().to_string()])
+        .status()
+        .expect("kill runs");
+    assert!(sent.success());
+    // 100000 simulated seconds would take hours: 130 is the handler's.
+    let status = child.wait().expect("it ends");
+    assert_eq!(status.code(), Some(130));
+    assert_eq!(
+        std::fs::read_dir(folder.path())
+            .expect("the folder")
+            .count(),
+        0
+    );
+}
