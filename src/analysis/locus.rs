@@ -288,35 +288,53 @@ pub fn locus(
     locus_until(pencil, min, max, samples, |_, _| false)
 }
 
-/// [`locus`], telling `progress(done, total)` each evenly spaced load
-/// computed after the first (a long chain's fine locus takes minutes).
+/// [`locus`], handing each evenly spaced load, as soon as its samples are
+/// final, to `each(index, p, row)`: its index in the grid (from 0) and every
+/// branch's eigenvalue in order, structural zeros included (the rows of
+/// [`Locus::at`]). `each` returning false ends the locus there (a reader
+/// that has gone): a long chain's fine locus is written and shown as it is
+/// computed, not after minutes.
 ///
 /// # Errors
 /// As [`locus`].
-pub fn locus_reporting(
+pub fn locus_streamed(
     pencil: &AffinePencil,
     min: f64,
     max: f64,
     samples: usize,
-    progress: &mut dyn FnMut(usize, usize),
+    each: &mut dyn FnMut(usize, f64, &[C64]) -> bool,
 ) -> Result<Locus, AnalysisError> {
-    let total = samples.saturating_sub(1);
-    let mut done = 0;
-    locus_until(pencil, min, max, samples, |_, _| {
-        done += 1;
-        progress(done, total);
-        false
-    })
+    locus_each(pencil, min, max, samples, each)
 }
 
-/// [`locus`], ended at the first evenly spaced load where `stop(p,
-/// eigenvalues)` is true (that sample included).
+/// [`locus`], ended at the first evenly spaced load after the first where
+/// `stop(p, eigenvalues)` is true (that sample included; the structural
+/// zeros are not among the eigenvalues).
 pub(crate) fn locus_until(
     pencil: &AffinePencil,
     min: f64,
     max: f64,
     samples: usize,
     mut stop: impl FnMut(f64, &[C64]) -> bool,
+) -> Result<Locus, AnalysisError> {
+    let structural_zeros = pencil.structural_zeros();
+    locus_each(pencil, min, max, samples, |index, p, row| {
+        index == 0 || !stop(p, &row[..row.len() - structural_zeros])
+    })
+}
+
+/// The tracked locus, each evenly spaced load handed to `each(index, p,
+/// row)` once final (see [`locus_streamed`]); ended where `each` says.
+#[expect(
+    clippy::too_many_lines,
+    reason = "one tracking loop: its step control, refinement budget and hand-on share its state"
+)]
+fn locus_each(
+    pencil: &AffinePencil,
+    min: f64,
+    max: f64,
+    samples: usize,
+    mut each: impl FnMut(usize, f64, &[C64]) -> bool,
 ) -> Result<Locus, AnalysisError> {
     let most = max_samples(pencil);
     if samples > most {
@@ -351,11 +369,22 @@ pub(crate) fn locus_until(
         }
     };
     push(&mut out, grid[0], true, &first);
+    // One grid load's eigenvalues, every branch, for `each`.
+    let mut row = Vec::with_capacity(out.branches.len());
+    let mut hand_on = |index: usize, p: f64, eigenvalues: &[C64], branches: usize| {
+        row.clear();
+        row.extend_from_slice(eigenvalues);
+        row.resize(branches, C64::new(0.0, 0.0));
+        each(index, p, &row)
+    };
+    if !hand_on(0, grid[0], &first, out.branches.len()) {
+        return Ok(out);
+    }
     let (mut p, mut current) = (grid[0], first);
     let mut previous: Option<(f64, Vec<C64>)> = None;
     let mut step = grid.get(1).map_or(0.0, |g| g - grid[0]);
     let (mut guess, mut next) = (Vec::new(), Vec::new());
-    for &target in &grid[1..] {
+    for (index, &target) in grid.iter().enumerate().skip(1) {
         while p < target {
             let next_p = loop {
                 // Once the refinement's budget is spent: the evenly spaced loads only.
@@ -408,7 +437,7 @@ pub(crate) fn locus_until(
                 }
             }
             push(&mut out, next_p, on_grid, &next);
-            if on_grid && stop(next_p, &next) {
+            if on_grid && !hand_on(index, next_p, &next, out.branches.len()) {
                 return Ok(out);
             }
             // The samples rotate through three buffers: no allocation per step.
@@ -427,17 +456,34 @@ mod tests {
     use super::*;
     use crate::model::PresetId;
 
-    /// Progress counts each evenly spaced load after the first, in order,
-    /// and the locus is the one computed without it.
+    /// Each evenly spaced load is handed on once, in order, with every
+    /// branch, as the locus computed without it holds it; a `false` ends
+    /// the locus at that load.
     #[test]
-    fn a_reported_locus_counts_every_load_once() {
+    fn a_streamed_locus_hands_on_every_load_once() {
         let pencil = AffinePencil::new(&PresetId::Roller.model()).unwrap();
+        let whole = locus(&pencil, 0.0, 8.0, 101).unwrap();
+        let grid: Vec<usize> = (0..whole.loads.len())
+            .filter(|&i| whole.on_grid[i])
+            .collect();
         let mut seen = Vec::new();
-        let reported = locus_reporting(&pencil, 0.0, 8.0, 101, &mut |done, total| {
-            seen.push((done, total));
+        let streamed = locus_streamed(&pencil, 0.0, 8.0, 101, &mut |index, p, row| {
+            let i = grid[index];
+            assert_eq!(p, whole.loads[i]);
+            assert_eq!(row, whole.at(i).collect::<Vec<_>>());
+            seen.push(index);
+            true
         })
         .unwrap();
-        assert_eq!(seen, (1..=100).map(|done| (done, 100)).collect::<Vec<_>>());
-        assert_eq!(reported.loads, locus(&pencil, 0.0, 8.0, 101).unwrap().loads);
+        assert_eq!(seen, (0..=100).collect::<Vec<_>>());
+        assert_eq!(streamed.loads, whole.loads);
+        let mut handed = 0;
+        let ended = locus_streamed(&pencil, 0.0, 8.0, 101, &mut |index, _, _| {
+            handed += 1;
+            index < 10
+        })
+        .unwrap();
+        assert_eq!(handed, 11);
+        assert_eq!(ended.on_grid.iter().filter(|&&g| g).count(), 11);
     }
 }

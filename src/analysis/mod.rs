@@ -14,7 +14,7 @@ pub use critical::{
     BRACKET_SAMPLES, DEFAULT_LOAD_MAX, LARGEST_LOAD, Transition, bracketing_locus,
     bracketing_locus_reporting, critical_loads, critical_loads_along, natural_load_max,
 };
-pub use locus::{Locus, MAX_HELD_EIGENVALUES, load_grid, locus, locus_reporting, max_samples};
+pub use locus::{Locus, MAX_HELD_EIGENVALUES, load_grid, locus, locus_streamed, max_samples};
 pub use map::{Cell, MapSpec, Row, RowResult, compute as compute_map};
 pub use paradox::{
     first_instability, first_loss_of_stability, flutter_load_damped, flutter_load_external,

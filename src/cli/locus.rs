@@ -7,7 +7,7 @@ use anyhow::Result;
 use clap::ValueEnum;
 use serde_json::json;
 
-use zieglerlab::analysis::{AffinePencil, locus_reporting, resolution_warning};
+use zieglerlab::analysis::{AffinePencil, locus_streamed, resolution_warning};
 use zieglerlab::format::Exact;
 
 use super::{LOAD_AXIS, ModelArgs, printable, progress_bar};
@@ -35,65 +35,76 @@ pub struct Args {
 pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     let (name, model) = args.model.build()?;
     let pencil = AffinePencil::new(&model)?;
-    // A long chain's fine locus takes minutes: progress on a terminal.
-    let progress = progress_bar(args.samples.saturating_sub(1) as u64, "loads");
-    let locus = locus_reporting(
-        &pencil,
-        args.load_min,
-        args.load_max,
-        args.samples,
-        &mut |done, _| {
-            if done % 50 == 0 {
-                progress.set_position(done as u64);
-            }
-        },
-    )?;
-    progress.finish_and_clear();
-    if let Some(warning) = resolution_warning(&pencil, &locus)? {
-        eprintln!("warning: {}", printable(&warning));
-    }
-    let locus = &locus;
-    let rows = (0..locus.loads.len())
-        .filter(|&i| locus.on_grid[i])
-        .flat_map(|i| {
-            locus
-                .at(i)
-                .enumerate()
-                .map(move |(b, z)| (locus.loads[i], b, z))
-        });
-    match args.format {
-        Format::Csv => {
-            writeln!(out, "load,branch,re,im")?;
-            for (load, branch, z) in rows {
-                writeln!(
-                    out,
-                    "{},{branch},{},{}",
-                    Exact(load),
-                    Exact(z.re),
-                    Exact(z.im)
-                )?;
-            }
-        }
-        Format::Json => {
-            // Streamed row by row, as the CSV is (a million samples would
-            // otherwise be one document in memory); the keys in serde_json's
-            // order, so the text is what one `to_string` of it would be.
-            write!(
+    // The rows go out as each load is final, so a long chain's locus shows
+    // at once and a reader that has gone (`| head`) stops the work; the
+    // header with the first load, so that a refused range writes nothing.
+    let header = |out: &mut dyn Write| -> Result<()> {
+        match args.format {
+            Format::Csv => writeln!(out, "load,branch,re,im")?,
+            Format::Json => write!(
                 out,
                 "{{\"load_axis\":{},\"preset\":{},\"rows\":[",
                 serde_json::to_string(LOAD_AXIS)?,
                 serde_json::to_string(&name)?
-            )?;
-            for (k, (load, branch, z)) in rows.enumerate() {
+            )?,
+        }
+        Ok(())
+    };
+    let progress = progress_bar(args.samples.saturating_sub(1) as u64, "loads");
+    let mut written: Result<()> = Ok(());
+    let locus = locus_streamed(
+        &pencil,
+        args.load_min,
+        args.load_max,
+        args.samples,
+        &mut |index, load, row| {
+            if index % 50 == 0 {
+                progress.set_position(index as u64);
+            }
+            written = if index == 0 { header(out) } else { Ok(()) }
+                .and_then(|()| write_rows(out, args.format, index, load, row));
+            written.is_ok()
+        },
+    )?;
+    progress.finish_and_clear();
+    written?;
+    if let Format::Json = args.format {
+        writeln!(
+            out,
+            "],\"structural_zero_branches\":{}}}",
+            locus.structural_zeros
+        )?;
+    }
+    if let Some(warning) = resolution_warning(&pencil, &locus)? {
+        eprintln!("warning: {}", printable(&warning));
+    }
+    Ok(())
+}
+
+/// One load's rows, every branch: CSV lines, or JSON objects each after a
+/// comma but the very first (the keys in `serde_json`'s order, so the text is
+/// what one `to_string` of the whole would be).
+fn write_rows(
+    out: &mut impl Write,
+    format: Format,
+    index: usize,
+    load: f64,
+    row: &[zieglerlab::analysis::C64],
+) -> Result<()> {
+    for (branch, z) in row.iter().enumerate() {
+        match format {
+            Format::Csv => writeln!(
+                out,
+                "{},{branch},{},{}",
+                Exact(load),
+                Exact(z.re),
+                Exact(z.im)
+            )?,
+            Format::Json => {
                 let row = json!({"load": load, "branch": branch, "re": z.re, "im": z.im});
-                let separator = if k == 0 { "" } else { "," };
+                let separator = if index == 0 && branch == 0 { "" } else { "," };
                 write!(out, "{separator}{}", serde_json::to_string(&row)?)?;
             }
-            writeln!(
-                out,
-                "],\"structural_zero_branches\":{}}}",
-                locus.structural_zeros
-            )?;
         }
     }
     Ok(())
