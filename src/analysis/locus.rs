@@ -297,39 +297,11 @@ pub fn locus(
 ///
 /// # Errors
 /// As [`locus`].
-pub fn locus_streamed(
-    pencil: &AffinePencil,
-    min: f64,
-    max: f64,
-    samples: usize,
-    each: &mut dyn FnMut(usize, f64, &[C64]) -> bool,
-) -> Result<Locus, AnalysisError> {
-    locus_each(pencil, min, max, samples, each)
-}
-
-/// [`locus`], ended at the first evenly spaced load after the first where
-/// `stop(p, eigenvalues)` is true (that sample included; the structural
-/// zeros are not among the eigenvalues).
-pub(crate) fn locus_until(
-    pencil: &AffinePencil,
-    min: f64,
-    max: f64,
-    samples: usize,
-    mut stop: impl FnMut(f64, &[C64]) -> bool,
-) -> Result<Locus, AnalysisError> {
-    let structural_zeros = pencil.structural_zeros();
-    locus_each(pencil, min, max, samples, |index, p, row| {
-        index == 0 || !stop(p, &row[..row.len() - structural_zeros])
-    })
-}
-
-/// The tracked locus, each evenly spaced load handed to `each(index, p,
-/// row)` once final (see [`locus_streamed`]); ended where `each` says.
 #[expect(
     clippy::too_many_lines,
     reason = "one tracking loop: its step control, refinement budget and hand-on share its state"
 )]
-fn locus_each(
+pub fn locus_streamed(
     pencil: &AffinePencil,
     min: f64,
     max: f64,
@@ -450,6 +422,21 @@ fn locus_each(
     }
     Ok(out)
 }
+/// [`locus`], ended at the first evenly spaced load after the first where
+/// `stop(p, eigenvalues)` is true (that sample included; the structural
+/// zeros are not among the eigenvalues).
+pub(crate) fn locus_until(
+    pencil: &AffinePencil,
+    min: f64,
+    max: f64,
+    samples: usize,
+    mut stop: impl FnMut(f64, &[C64]) -> bool,
+) -> Result<Locus, AnalysisError> {
+    let structural_zeros = pencil.structural_zeros();
+    locus_streamed(pencil, min, max, samples, |index, p, row| {
+        index == 0 || !stop(p, &row[..row.len() - structural_zeros])
+    })
+}
 
 #[cfg(test)]
 mod tests {
@@ -467,7 +454,7 @@ mod tests {
             .filter(|&i| whole.on_grid[i])
             .collect();
         let mut seen = Vec::new();
-        let streamed = locus_streamed(&pencil, 0.0, 8.0, 101, &mut |index, p, row| {
+        let streamed = locus_streamed(&pencil, 0.0, 8.0, 101, |index, p, row: &[C64]| {
             let i = grid[index];
             assert_eq!(p, whole.loads[i]);
             assert_eq!(row, whole.at(i).collect::<Vec<_>>());
@@ -478,7 +465,7 @@ mod tests {
         assert_eq!(seen, (0..=100).collect::<Vec<_>>());
         assert_eq!(streamed.loads, whole.loads);
         let mut handed = 0;
-        let ended = locus_streamed(&pencil, 0.0, 8.0, 101, &mut |index, _, _| {
+        let ended = locus_streamed(&pencil, 0.0, 8.0, 101, |index, _, _: &[C64]| {
             handed += 1;
             index < 10
         })

@@ -57,7 +57,7 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
         args.load_min,
         args.load_max,
         args.samples,
-        &mut |index, load, row| {
+        |index, load, row: &[zieglerlab::analysis::C64]| {
             if index % 50 == 0 {
                 progress.set_position(index as u64);
             }
