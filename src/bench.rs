@@ -15,7 +15,7 @@
 use std::hint::black_box;
 use std::time::Instant;
 
-use anyhow::{Context as _, Result};
+use anyhow::Result;
 use eframe::egui::{self, RawInput, Rect, pos2};
 use serde::Serialize;
 
@@ -24,7 +24,7 @@ use std::sync::atomic::{AtomicBool, AtomicUsize};
 use nalgebra::DMatrix;
 
 use crate::analysis::{AffinePencil, MapSpec, compute_map, critical_loads, load_grid, locus};
-use crate::app::{Settings, Tab, ZieglerApp};
+use crate::app::{Action, Settings, Tab, ZieglerApp};
 use crate::model::{Assignment, Axis, Key, Model, PresetId, apply_assignments};
 use crate::sim::{DEFAULT_STEP_SECS, EngineKind, Simulation, initial_state};
 
@@ -391,9 +391,10 @@ fn drag_frame_times_ms(
             ..Default::default()
         };
         let start = Instant::now();
-        app.state_mut()
-            .set_parameter(key, value)
-            .with_context(|| format!("setting {key}"))?;
+        app.apply(Action::Enter { key, value });
+        if let Some(why) = app.state().refusal(key) {
+            anyhow::bail!("setting {key}: {why}");
+        }
         app.advance(1.0 / 60.0);
         app.state_mut().receive_analysis();
         let mut output = ctx.run_ui(input, |ui| app.contents_ui(ui));

@@ -1,12 +1,14 @@
-//! Every action the user can ask for by button or key, in one list: its
-//! label, its keys, what it does. The buttons, the keyboard and the keys
-//! help all read it.
+//! The actions with a name of their own, asked for by button or key, in
+//! one list: each one's label, keys and tooltip. The buttons, the keyboard
+//! and the keys help all read it; the state carries them out
+//! ([`super::action::Action::Command`]).
 
 use eframe::egui;
 
-use super::state::{AppState, LOAD_KEY_STEP};
+use super::action::Actions;
+use super::state::AppState;
 
-/// An action of the user.
+/// A named action of the user.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Command {
     PlayPause,
@@ -109,24 +111,8 @@ impl Command {
             .join(", ")
     }
 
-    /// Does it.
-    pub fn execute(self, state: &mut AppState) {
-        match self {
-            Self::PlayPause => state.toggle_running(),
-            Self::Step => state.step(),
-            Self::Kick => state.kick(),
-            Self::Reset => state.reset(),
-            Self::ResetAll => state.reset_all(),
-            Self::LoadUp => state.nudge_load(LOAD_KEY_STEP * state.load_max()),
-            Self::LoadDown => state.nudge_load(-LOAD_KEY_STEP * state.load_max()),
-            Self::Projector => state.set_projector(!state.settings().projector),
-            Self::LessonNext => state.lesson_step(true),
-            Self::LessonBack => state.lesson_step(false),
-        }
-    }
-
-    /// Its button: the label, the tooltip with the keys; a click does it.
-    pub fn button(self, ui: &mut egui::Ui, state: &mut AppState) {
+    /// Its button: the label, the tooltip with the keys; a click asks for it.
+    pub fn button(self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions) {
         let keys = self.key_names();
         let tooltip = if keys.is_empty() {
             self.tooltip().to_owned()
@@ -138,7 +124,7 @@ impl Command {
             .on_hover_text(tooltip)
             .clicked()
         {
-            self.execute(state);
+            actions.push(self);
         }
     }
 

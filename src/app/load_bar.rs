@@ -4,6 +4,7 @@
 
 use eframe::egui::{self, Align2, FontId, Rect, Sense, Stroke, pos2, vec2};
 
+use super::action::{Action, Actions};
 use super::state::AppState;
 use super::theme::Theme;
 use crate::format::{load_text, number_text};
@@ -41,7 +42,7 @@ pub fn x_of_load(load: f64, (left, right): (f32, f32), load_max: f64) -> f32 {
 
 /// The bar across `ui`'s width: the load's value at its left, the ranges,
 /// the critical loads above, the scale below, the handle at the load.
-pub fn load_bar_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+pub fn load_bar_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
     let text_height = theme.text_size + 4.0;
     let bar_height = 1.4 * text_height;
     let font = FontId::proportional(theme.text_size);
@@ -68,7 +69,13 @@ pub fn load_bar_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
             && let Some(pointer) = response.interact_pointer_pos()
         {
             let load = load_at_x(pointer.x, (bar.left(), bar.right()), state.load_max());
-            state.enter_parameter(Key::Load, load);
+            // A still hand on the bar asks nothing more.
+            if load != state.model().load_p() || response.clicked() {
+                actions.push(Action::Enter {
+                    key: Key::Load,
+                    value: load,
+                });
+            }
         }
         let painter = ui.painter_at(rect);
         let load_max = state.load_max();

@@ -3,6 +3,7 @@
 //! it shows lives in [`state::AppState`]; every part of the window is a
 //! [`View`] of it in a file of its own.
 
+mod action;
 mod analysis_cache;
 mod analysis_worker;
 mod camera;
@@ -30,9 +31,12 @@ use eframe::egui::{self, RichText, vec2};
 
 use crate::model::PresetId;
 use crate::sim::{SimError, Simulation};
+use action::Actions;
 use command::Command;
 use theme::Theme;
 
+pub use action::Action;
+pub use command::Command as NamedAction;
 pub use layout::Layout;
 pub use notice::{Level, Notice};
 pub use pace::{MAX_FRAME_SECS, MAX_STEPS_PER_FRAME};
@@ -55,10 +59,11 @@ const ANSWER_HIDDEN_NOTE: &str =
 /// eframe's name for the app (its storage folder).
 const APP_ID: &str = "zieglerlab";
 
-/// One part of the window, drawn from the app's state and changing it only
-/// through its methods: a sidebar section or a tab.
+/// One part of the window, drawn from the app's state: a sidebar section or
+/// a tab. It reads the state and asks for changes in `actions`; they are
+/// applied before the next frame is drawn.
 pub trait View {
-    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme);
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme);
 }
 
 /// What a headless picture shows: the whole window, the scene, or one tab.
@@ -105,6 +110,10 @@ pub struct ZieglerApp {
     /// When the window's last frame began (the headless paths never set it:
     /// their frames advance by fixed, given times).
     last_frame: Option<std::time::Instant>,
+    /// What the views asked for while the last frame was drawn.
+    actions: Actions,
+    /// The input's clock at the last frame (a recording starts by it).
+    input_secs: f64,
     /// Whether what draws the frames clears them to the panels' colour
     /// first (the window; a headless picture starts transparent).
     cleared_to_panel_fill: bool,
@@ -133,6 +142,8 @@ impl ZieglerApp {
             record_choice: recorder::RecordChoice::default(),
             recorder: recorder::Recorder::default(),
             last_frame: None,
+            actions: Actions::default(),
+            input_secs: 0.0,
             cleared_to_panel_fill: false,
             for_pictures: false,
         }
@@ -181,7 +192,7 @@ impl ZieglerApp {
         self.tab = layout.tab;
         if let Some(name) = &layout.overlay {
             match name.parse::<PresetId>() {
-                Ok(id) => self.state.set_overlay(Some(id)),
+                Ok(id) => self.apply(Action::Overlay(Some(id))),
                 Err(_) => self.state.tell(Notice::warning(format!(
                     "stored overlay {name} is not a preset; no overlay"
                 ))),
@@ -208,9 +219,40 @@ impl ZieglerApp {
         &self.state
     }
 
-    /// The state, to change through its methods.
+    /// The state, for what is not an action: the clock, the background
+    /// analysis, notices of the app's own.
     pub fn state_mut(&mut self) -> &mut AppState {
         &mut self.state
+    }
+
+    /// Carries out `action` now, and all that follows from it (a lesson
+    /// step's actions, in order): the one place the app changes at a
+    /// person's request. Views' actions come here before the next frame.
+    pub fn apply(&mut self, action: Action) {
+        let mut queue = std::collections::VecDeque::from([action]);
+        while let Some(action) = queue.pop_front() {
+            match action {
+                Action::Tab(tab) => self.tab = tab,
+                Action::Record { folder, secs } => {
+                    self.recorder.start(folder, secs, self.input_secs);
+                }
+                action => {
+                    for (i, next) in self.state.apply(action).into_iter().enumerate() {
+                        queue.insert(i, next);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Applies every action the views asked for while the last frame was
+    /// drawn, before anything of this one is: every panel of a frame shows
+    /// the same state.
+    fn apply_pending(&mut self, ctx: &egui::Context) {
+        self.input_secs = ctx.input(|i| i.time);
+        for action in self.actions.take() {
+            self.apply(action);
+        }
     }
 
     /// The settings in use.
@@ -233,7 +275,7 @@ impl ZieglerApp {
 
     /// Shows `tab` in the lower half of the window.
     pub fn show_tab(&mut self, tab: Tab) {
-        self.tab = tab;
+        self.apply(Action::Tab(tab));
     }
 
     /// Advances the run by `wall_secs` of wall-clock time at the chosen speed.
@@ -268,7 +310,7 @@ impl ZieglerApp {
     /// window's logic calls it first; tests that type keys call it too).
     pub fn take_keys(&mut self, ctx: &egui::Context) {
         for command in Command::pressed(ctx) {
-            command.execute(&mut self.state);
+            self.apply(command.into());
         }
     }
 
@@ -286,6 +328,7 @@ impl ZieglerApp {
     /// The whole window's contents. Reads the state; the simulation advances
     /// only in [`ZieglerApp::advance`], so a picture depends on the state alone.
     pub fn contents_ui(&mut self, ui: &mut egui::Ui) {
+        self.apply_pending(ui.ctx());
         let theme = self.applied_theme(ui.ctx());
         // A recording's frames are pictures too.
         self.state
@@ -300,9 +343,6 @@ impl ZieglerApp {
                 .say(Notice::error(format!("recording failed: {why}"))),
             None => {}
         }
-        if let Some(tab) = self.state.take_requested_tab() {
-            self.tab = Tab::from(tab);
-        }
         if self.view_generation != self.state.view_generation() {
             self.view_generation = self.state.view_generation();
             self.tab = Tab::default();
@@ -313,7 +353,7 @@ impl ZieglerApp {
             .frame(self.panel_frame(egui::Frame::side_top_panel(&style)))
             .exact_size(1.6 * theme.text_size + 8.0)
             .show(ui, |ui| {
-                sidebar::status_line_ui(ui, &mut self.state, &theme);
+                sidebar::status_line_ui(ui, &self.state, &mut self.actions, &theme);
             });
         egui::Panel::left("controls")
             .frame(self.panel_frame(egui::Frame::side_top_panel(&style)))
@@ -321,13 +361,27 @@ impl ZieglerApp {
             .exact_size(320.0)
             .show(ui, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| {
-                    self.sidebar.ui(ui, &mut self.state, &theme);
-                    recorder::record_ui(ui, &mut self.record_choice, &mut self.recorder);
+                    self.sidebar.ui(ui, &self.state, &mut self.actions, &theme);
+                    recorder::record_ui(
+                        ui,
+                        &mut self.record_choice,
+                        &self.recorder,
+                        &mut self.actions,
+                    );
                 });
             });
         egui::CentralPanel::default()
             .frame(self.panel_frame(egui::Frame::central_panel(&style)))
             .show(ui, |ui| self.central_ui(ui, &theme));
+        self.ask_for_a_frame_if_asked(ui.ctx());
+    }
+
+    /// Another frame soon when the views asked for something: it is applied
+    /// before that frame is drawn.
+    fn ask_for_a_frame_if_asked(&self, ctx: &egui::Context) {
+        if !self.actions.is_empty() {
+            ctx.request_repaint();
+        }
     }
 
     /// The central panel: the scene (with the root locus beside it on a
@@ -358,7 +412,7 @@ impl ZieglerApp {
             (top, None)
         };
         ui.scope_builder(egui::UiBuilder::new().max_rect(scene_rect), |ui| {
-            scene::scene_ui(ui, &mut self.state, &mut self.scene, theme);
+            scene::scene_ui(ui, &self.state, &mut self.actions, &mut self.scene, theme);
         });
         if let Some(rect) = locus_rect {
             ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
@@ -371,8 +425,8 @@ impl ZieglerApp {
                 }
             });
         }
-        load_bar::load_bar_ui(ui, &mut self.state, theme);
-        tabs::Tabs::bar_ui(ui, &mut self.tab);
+        load_bar::load_bar_ui(ui, &self.state, &mut self.actions, theme);
+        tabs::Tabs::bar_ui(ui, self.tab, &mut self.actions);
         if ui.available_height() < min_plot_height {
             ui.weak(if locus_beside {
                 "The root locus is beside the column; the other plots need a taller window, or projector mode off (P)."
@@ -388,27 +442,33 @@ impl ZieglerApp {
                 .color(theme.info),
             );
         } else {
-            self.tabs.view(self.tab).ui(ui, &mut self.state, theme);
+            self.tabs
+                .view(self.tab)
+                .ui(ui, &self.state, &mut self.actions, theme);
         }
     }
 
     /// One panel alone (for snapshots and figures).
     pub fn panel_ui(&mut self, ui: &mut egui::Ui, panel: Panel) {
+        self.apply_pending(ui.ctx());
         let theme = self.applied_theme(ui.ctx());
         self.state.set_for_picture(self.for_pictures);
         match panel {
             Panel::Window => self.contents_ui(ui),
             Panel::Scene => {
                 egui::CentralPanel::default().show(ui, |ui| {
-                    scene::scene_ui(ui, &mut self.state, &mut self.scene, &theme);
+                    scene::scene_ui(ui, &self.state, &mut self.actions, &mut self.scene, &theme);
                 });
             }
             Panel::Tab(tab) => {
                 egui::CentralPanel::default().show(ui, |ui| {
-                    self.tabs.view(tab).ui(ui, &mut self.state, &theme);
+                    self.tabs
+                        .view(tab)
+                        .ui(ui, &self.state, &mut self.actions, &theme);
                 });
             }
         }
+        self.ask_for_a_frame_if_asked(ui.ctx());
     }
 }
 
@@ -421,6 +481,7 @@ fn below_scene_height(theme: &Theme) -> f32 {
 impl eframe::App for ZieglerApp {
     fn logic(&mut self, ctx: &egui::Context, _frame: &mut eframe::Frame) {
         self.take_keys(ctx);
+        self.apply_pending(ctx);
         // The wall clock, read here and only here: everything below takes the
         // elapsed time as a number, so tests and pictures can give their own.
         let now = std::time::Instant::now();

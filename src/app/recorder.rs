@@ -11,6 +11,7 @@ use std::sync::{Arc, OnceLock, mpsc};
 
 use eframe::egui::{self, ColorImage};
 
+use crate::app::action::{Action, Actions};
 use crate::recording::GifRecording;
 
 /// The window's title, also after a recording has shown its progress there.
@@ -350,7 +351,12 @@ impl Default for RecordChoice {
 }
 
 /// The record controls: seconds, folder, the button, and the progress.
-pub fn record_ui(ui: &mut egui::Ui, choice: &mut RecordChoice, recorder: &mut Recorder) {
+pub fn record_ui(
+    ui: &mut egui::Ui,
+    choice: &mut RecordChoice,
+    recorder: &Recorder,
+    actions: &mut Actions,
+) {
     egui::CollapsingHeader::new("record a GIF").show(ui, |ui| {
         ui.horizontal(|ui| {
             ui.label("the next");
@@ -366,7 +372,6 @@ pub fn record_ui(ui: &mut egui::Ui, choice: &mut RecordChoice, recorder: &mut Re
         ui.add(egui::TextEdit::singleline(&mut choice.folder).desired_width(220.0))
             .accessible_name("record folder")
             .on_hover_text("the folder the GIF goes in");
-        let now_secs = ui.input(|i| i.time);
         if recorder.is_capturing() {
             // Nothing here that the pictures would show: the window's
             // title counts down.
@@ -384,7 +389,10 @@ pub fn record_ui(ui: &mut egui::Ui, choice: &mut RecordChoice, recorder: &mut Re
             .on_disabled_hover_text("the folder does not exist")
             .clicked()
         {
-            recorder.start(folder, choice.secs, now_secs);
+            actions.push(Action::Record {
+                folder,
+                secs: choice.secs,
+            });
         }
     });
 }

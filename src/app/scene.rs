@@ -10,6 +10,7 @@ use eframe::egui::{
     pos2, vec2,
 };
 
+use super::action::{Action, Actions};
 use super::camera::{Camera, FOLLOW_SECS, WorldBox, target};
 use super::state::{AppState, TRAIL_SECS};
 use super::theme::Theme;
@@ -108,7 +109,13 @@ pub fn grab_angles(
 /// by the camera, with the camera's "whole reach" switch in its corner;
 /// a drag from a joint or the tip displaces the column (held at rest while
 /// the button is down), and letting go lets it move.
-pub fn scene_ui(ui: &mut egui::Ui, state: &mut AppState, scene: &mut SceneView, theme: &Theme) {
+pub fn scene_ui(
+    ui: &mut egui::Ui,
+    state: &AppState,
+    actions: &mut Actions,
+    scene: &mut SceneView,
+    theme: &Theme,
+) {
     let camera = &mut scene.camera;
     let now = state.simulation().observe();
     let model = state.model();
@@ -172,17 +179,23 @@ pub fn scene_ui(ui: &mut egui::Ui, state: &mut AppState, scene: &mut SceneView, 
             .map(|(handle, _)| handle);
     }
     if let Some(handle) = scene.grabbed {
+        // Asked again only when the pointer moves: a still hand asks nothing.
+        let moved = drag.drag_started() || drag.drag_delta() != Vec2::ZERO;
         if drag.dragged()
+            && moved
             && let Some(pointer) = drag.interact_pointer_pos()
         {
             let world = view.screen_from_world.inverse().transform_pos(pointer);
             let point = [f64::from(world.x), f64::from(world.y)];
             let (phi1, phi2) = grab_angles(handle, (l1, l2), (phi1_now, phi2_now), point);
-            state.hold(phi1, phi2);
+            actions.push(Action::Hold {
+                phi1_rad: phi1,
+                phi2_rad: phi2,
+            });
         }
         if drag.drag_stopped() {
             scene.grabbed = None;
-            state.release();
+            actions.push(Action::Release);
         }
     }
     camera_corner_ui(ui, &mut scene.camera, rect, theme);

@@ -2,10 +2,12 @@
 //! simulation, the analysis of the current parameters, the overlay and the
 //! notices, with the only ways to change them.
 
+mod apply;
 mod classroom;
 mod lesson;
 mod overlay;
 mod ramp;
+mod startup;
 
 use std::collections::VecDeque;
 
@@ -28,8 +30,6 @@ pub use super::settings::Settings;
 
 /// The size of a kick, in rad on both angles.
 const KICK_RAD: f64 = 0.01;
-/// The step of the load keys, as a fraction of the slider's range.
-pub const LOAD_KEY_STEP: f64 = 0.01;
 
 /// How long the tip's trail lasts, in simulated seconds.
 pub const TRAIL_SECS: f64 = 6.0;
@@ -104,9 +104,8 @@ pub struct AppState {
     view_generation: u64,
     /// The column is held by the mouse: time stands still until released.
     held: bool,
-    /// The lesson under way, and the tab its step asks the window for.
+    /// The lesson under way.
     lesson: Option<LessonRun>,
-    requested_tab: Option<crate::lesson::LessonTab>,
 }
 
 /// Whom the window's frames are drawn for.
@@ -164,7 +163,6 @@ impl AppState {
             view_generation: 0,
             held: false,
             lesson: None,
-            requested_tab: None,
         };
         state.refresh_analysis();
         Ok(state)
@@ -256,17 +254,13 @@ impl AppState {
         self.notice = Some(notice);
     }
 
-    pub fn dismiss_notice(&mut self) {
-        self.notice = None;
-    }
-
     /// Sets one parameter by its key (as `--set` does): the model changes for
     /// the running simulation and the analysis follows; a refused value
     /// changes nothing and the error says why.
     ///
     /// # Errors
     /// The key's or the model's validation error.
-    pub fn set_parameter(&mut self, key: Key, value: f64) -> Result<(), ModelError> {
+    fn set_parameter(&mut self, key: Key, value: f64) -> Result<(), ModelError> {
         let mut candidate = self.settings.model;
         apply_assignments(&mut candidate, &[Assignment { key, value }])?;
         self.set_model(candidate);
@@ -276,7 +270,7 @@ impl AppState {
     /// [`Self::set_parameter`] as typed or dragged in a field: a refusal is
     /// kept to show beside the field until a value for it is taken (the
     /// other fields' refusals stay as they are).
-    pub fn enter_parameter(&mut self, key: Key, value: f64) {
+    fn enter_parameter(&mut self, key: Key, value: f64) {
         if key == Key::Load {
             // The hand takes the load over from a ramp.
             self.ramp = None;
@@ -288,13 +282,13 @@ impl AppState {
     }
 
     /// Refuses text typed for `key` that is not a value at all, saying why.
-    pub fn refuse(&mut self, key: Key, why: String) {
+    fn refuse(&mut self, key: Key, why: String) {
         self.clear_refusal(key);
         self.refused.push((key, why));
     }
 
     /// Forgets a refusal of `key` (the user went back to the applied value).
-    pub fn clear_refusal(&mut self, key: Key) {
+    fn clear_refusal(&mut self, key: Key) {
         self.refused.retain(|(k, _)| *k != key);
     }
 
@@ -306,7 +300,7 @@ impl AppState {
 
     /// Moves the load by `delta_p`, within the slider's range (or toward it
     /// from beyond).
-    pub fn nudge_load(&mut self, delta_p: f64) {
+    fn nudge_load(&mut self, delta_p: f64) {
         let p = self.settings.model.load_p();
         let moved = if delta_p > 0.0 {
             (p + delta_p).min(self.load_max().max(p))
@@ -318,13 +312,13 @@ impl AppState {
 
     /// Switches to the preset `id` at the current load (or, beyond its
     /// slider, its own): its parameters, a fresh run, the overlay at its `a`.
-    pub fn set_preset(&mut self, id: PresetId) {
+    fn set_preset(&mut self, id: PresetId) {
         self.switch_column(id, id.switched_from(&self.settings.model));
     }
 
     /// Shows `model` of preset `id`: as a switch of preset (a fresh run)
     /// when `id` is another, as a change of parameters otherwise.
-    pub fn set_column(&mut self, id: PresetId, model: Model) {
+    fn set_column(&mut self, id: PresetId, model: Model) {
         if id == self.settings.preset {
             self.set_model(model);
         } else {
@@ -338,7 +332,7 @@ impl AppState {
     ///
     /// # Errors
     /// Settings that make no valid simulation.
-    pub fn take_settings(&mut self, settings: Settings) -> Result<(), SimError> {
+    fn take_settings(&mut self, settings: Settings) -> Result<(), SimError> {
         // Would the run start? (Cheap: no analysis.) The engine it settles on.
         let mut trial = settings;
         start(&mut trial)?;
@@ -347,7 +341,7 @@ impl AppState {
             self.set_engine(trial.engine);
         }
         self.set_speed(trial.speed);
-        self.set_projector(trial.projector);
+        self.settings.projector = trial.projector;
         Ok(())
     }
 
@@ -362,7 +356,7 @@ impl AppState {
     }
 
     /// Runs the simulation on `engine` from the current state.
-    pub fn set_engine(&mut self, engine: EngineKind) {
+    fn set_engine(&mut self, engine: EngineKind) {
         match self.sim.restart_from(engine, self.sim.state()) {
             Ok(()) => self.settings.engine = engine,
             Err(error) => self.say(Notice::error(error.to_string())),
@@ -370,21 +364,13 @@ impl AppState {
     }
 
     /// Simulated seconds per wall second.
-    pub fn set_speed(&mut self, speed: f64) {
+    fn set_speed(&mut self, speed: f64) {
         self.settings.speed = speed;
-    }
-
-    pub fn set_projector(&mut self, on: bool) {
-        self.settings.projector = on;
-    }
-
-    pub fn toggle_running(&mut self) {
-        self.running = !self.running;
     }
 
     /// Applies a changed model to the running simulation; the analysis and
     /// the overlay follow.
-    pub fn set_model(&mut self, model: Model) {
+    fn set_model(&mut self, model: Model) {
         let rods_before = self.sim.model().column.rods;
         let result = match self.sim.set_model(model) {
             Err(SimError::TooStiffForRapier { .. }) => {
@@ -429,7 +415,7 @@ impl AppState {
 
     /// What a click on the map does: the load and the map's second
     /// parameter are set (the run goes on with them); a refused value says why.
-    pub fn set_map_point(&mut self, axis: &Axis, load: f64, value: f64) {
+    fn set_map_point(&mut self, axis: &Axis, load: f64, value: f64) {
         match axis.apply(&self.settings.model, value) {
             Ok(model) => self.set_model(model.at_load(load)),
             Err(error) => self.say(Notice::error(format!("map: {error}"))),
@@ -458,7 +444,7 @@ impl AppState {
     }
 
     /// One engine step, then paused (the step button).
-    pub fn step(&mut self) {
+    fn step(&mut self) {
         self.running = false;
         self.pace.restart();
         self.take_step();
@@ -502,7 +488,7 @@ impl AppState {
     }
 
     /// Disturbs both angles by [`KICK_RAD`] and runs on.
-    pub fn kick(&mut self) {
+    fn kick(&mut self) {
         self.hint = false;
         let mut x = self.sim.state();
         x[0] += KICK_RAD;
@@ -514,7 +500,7 @@ impl AppState {
     }
 
     /// A fresh run of the current model from the standard kick.
-    pub fn reset(&mut self) {
+    fn reset(&mut self) {
         match start(&mut self.settings) {
             Ok((sim, notice)) => {
                 if let Some(notice) = notice {

@@ -2,12 +2,58 @@
 //! number that reads and keeps the model valid is taken, each other one is
 //! named with the reason, so one bad entry does not cost the rest.
 
-use ron::value::RawValue;
+use std::collections::BTreeMap;
 
-use super::stored::{Fields, field};
+use ron::value::RawValue;
+use serde::Deserialize;
+use serde::de::{MapAccess, Visitor};
+
 use crate::model::{
     Assignment, Key, Load, Model, SpinInertia, analysis_range_text, apply_assignments,
 };
+
+/// The fields of a RON struct (the settings, or a part of the model), each
+/// as unparsed RON, by name.
+#[derive(Default)]
+pub(super) struct Fields(pub(super) BTreeMap<String, Box<RawValue>>);
+
+impl<'de> Deserialize<'de> for Fields {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct FieldsVisitor;
+        impl<'de> Visitor<'de> for FieldsVisitor {
+            type Value = Fields;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a struct, (name: value, ...)")
+            }
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Fields, A::Error> {
+                let mut fields = Fields::default();
+                while let Some(name) = map.next_key::<String>()? {
+                    let value = map.next_value()?;
+                    fields.0.insert(name, value);
+                }
+                Ok(fields)
+            }
+        }
+        // The names are not checked here: the reader names what it does not know.
+        deserializer.deserialize_struct("Fields", &[], FieldsVisitor)
+    }
+}
+
+/// One field as a `T`, or its reason for being ignored in `ignored`.
+pub(super) fn field<T: for<'de> Deserialize<'de>>(
+    raw: Option<&RawValue>,
+    name: &str,
+    ignored: &mut Vec<String>,
+) -> Option<T> {
+    let raw = raw?;
+    match raw.into_rust::<T>() {
+        Ok(value) => Some(value),
+        Err(error) => {
+            ignored.push(format!("{name} ({})", error.code));
+            None
+        }
+    }
+}
 
 /// Writes one number of a model.
 type Setter = fn(&mut Model, f64);

@@ -7,7 +7,7 @@ use std::io::Write;
 use anyhow::Result;
 use zieglerlab::format::Shown;
 
-use zieglerlab::app::{Settings, ZieglerApp};
+use zieglerlab::app::{Action, Settings, ZieglerApp};
 use zieglerlab::recording::GifRecording;
 use zieglerlab::sim::Ramp;
 
@@ -80,7 +80,7 @@ pub fn run(args: &Args) -> Result<()> {
         projector: args.look.projector,
     })?;
     if let Some(ramp) = args.ramp {
-        app.state_mut().start_ramp(ramp);
+        app.apply(Action::RampStart(ramp));
     }
     let panel = args.look.panel();
     #[expect(

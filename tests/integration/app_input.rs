@@ -362,7 +362,9 @@ fn page_down_and_page_up_step_through_a_lesson() {
     assert!(harness.state().state().lesson().is_none());
     let (_, text) = zieglerlab::lesson::BUILT_IN[0];
     let lesson = zieglerlab::lesson::Lesson::read(text).unwrap();
-    harness.state_mut().state_mut().open_lesson(lesson);
+    harness
+        .state_mut()
+        .apply(zieglerlab::app::Action::LessonOpen(Box::new(lesson)));
     harness.run();
     let step = |h: &Harness<'_, ZieglerApp>| h.state().state().lesson().unwrap().step;
     assert_eq!(step(&harness), 0);
@@ -507,4 +509,40 @@ fn a_lesson_file_is_read_off_the_ui_thread_and_checked() {
     assert!(harness.query_by_label_contains("step 1 of 1").is_some());
     drop(harness);
     assert_eq!(app.settings().preset, zieglerlab::model::PresetId::Tabletop);
+}
+
+/// Every panel of a frame shows the same state: V = 0 typed into the
+/// roller's band speed leaves no linear analysis, and frame by frame after
+/// Enter the status line's message (drawn first), the status card and the
+/// root-locus tab (drawn last) either all still show the old parameters
+/// or all say why there is no analysis. The change is applied between
+/// frames, never while one is drawn.
+#[test]
+fn every_panel_of_a_frame_shows_the_same_state() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    let mut harness = harness(&mut app);
+    type_into(&mut harness, "V", "0");
+    harness.key_press(egui::Key::Enter);
+    let mut changed_at = None;
+    for frame in 0..4 {
+        harness.step();
+        let status_line = harness
+            .query_by_label_contains("analysis unavailable: V = 0")
+            .is_some();
+        let card = harness
+            .query_by_label_contains("no stability figures: V = 0")
+            .is_some();
+        let locus = harness
+            .query_by_label_contains("No root locus for these parameters")
+            .is_some();
+        assert_eq!(
+            [status_line, card],
+            [locus, locus],
+            "frame {frame}: the status line, the card and the locus disagree"
+        );
+        if locus && changed_at.is_none() {
+            changed_at = Some(frame);
+        }
+    }
+    assert!(changed_at.is_some(), "V = 0 was applied");
 }

@@ -4,7 +4,7 @@
 //! what was ignored.
 
 use egui_kittest::kittest::Queryable as _;
-use zieglerlab::app::{MAX_FRAME_SECS, Settings, ZieglerApp};
+use zieglerlab::app::{Action, MAX_FRAME_SECS, NamedAction, Settings, ZieglerApp};
 use zieglerlab::model::{Axis, Key, PresetId};
 use zieglerlab::sim::{DEFAULT_STEP_SECS, EngineKind, Status};
 
@@ -227,7 +227,7 @@ fn a_bad_number_in_the_stored_model_costs_only_that_number() {
 fn a_column_too_stiff_for_rapier_switches_engines_and_says_so() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     assert_eq!(app.simulation().engine(), EngineKind::Rapier);
-    app.state_mut().set_parameter(Key::C1, 1e6).unwrap();
+    crate::common::enter(&mut app, Key::C1, 1e6);
     assert_eq!(app.simulation().engine(), EngineKind::Reference);
     assert_eq!(app.settings().engine, EngineKind::Reference);
     assert_eq!(app.settings().model.column.c1_nms_per_rad, 1e6);
@@ -252,7 +252,7 @@ fn a_blow_up_stops_with_a_status_and_finite_data() {
         ..Settings::default()
     })
     .unwrap();
-    app.state_mut().set_parameter(Key::Load, 1e6).unwrap();
+    crate::common::enter(&mut app, Key::Load, 1e6);
     for _ in 0..120 {
         app.advance(1.0 / 60.0);
     }
@@ -267,7 +267,7 @@ fn pasted_garbage_changes_nothing_and_says_so() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     app.advance(0.05);
     let before = (app.settings().clone(), app.simulation().time_secs());
-    app.state_mut().paste_settings("{{ this is not a setup }}");
+    app.apply(Action::Paste("{{ this is not a setup }}".to_owned()));
     assert_eq!(
         (app.settings().clone(), app.simulation().time_secs()),
         before
@@ -280,8 +280,7 @@ fn pasted_garbage_changes_nothing_and_says_so() {
     // Well-formed text with an invalid model is refused too.
     let mut bad = Settings::default();
     bad.model.column.k1_nm_per_rad = -1.0;
-    app.state_mut()
-        .paste_settings(&ron::to_string(&bad).unwrap());
+    app.apply(Action::Paste(ron::to_string(&bad).unwrap()));
     assert_eq!(app.settings(), &before.0);
     assert!(
         app.message().unwrap().contains("k1 = -1"),
@@ -293,27 +292,26 @@ fn pasted_garbage_changes_nothing_and_says_so() {
         speed: 0.5,
         ..Settings::default()
     };
-    app.state_mut()
-        .paste_settings(&ron::to_string(&good).unwrap());
+    app.apply(Action::Paste(ron::to_string(&good).unwrap()));
     assert_eq!(app.settings(), &good);
     // An empty box says what to do, not "Expected opening `(`".
-    app.state_mut().paste_settings("  ");
+    app.apply(Action::Paste("  ".to_owned()));
     assert!(
         app.message().unwrap().starts_with("nothing to paste"),
         "{:?}",
         app.message()
     );
     // Another preset pasted keeps the overlay chosen and the lesson open.
-    app.state_mut().set_overlay(Some(PresetId::UniformRods));
-    app.state_mut()
-        .open_lesson(zieglerlab::lesson::Lesson::read(zieglerlab::lesson::BUILT_IN[0].1).unwrap());
+    app.apply(Action::Overlay(Some(PresetId::UniformRods)));
+    app.apply(Action::LessonOpen(Box::new(
+        zieglerlab::lesson::Lesson::read(zieglerlab::lesson::BUILT_IN[0].1).unwrap(),
+    )));
     let tabletop = Settings {
         preset: PresetId::Tabletop,
         model: PresetId::Tabletop.model(),
         ..Settings::default()
     };
-    app.state_mut()
-        .paste_settings(&ron::to_string(&tabletop).unwrap());
+    app.apply(Action::Paste(ron::to_string(&tabletop).unwrap()));
     assert_eq!(app.settings(), &tabletop);
     assert_eq!(
         app.state().overlay().map(|o| o.preset),
@@ -327,7 +325,7 @@ fn a_model_without_analysis_shows_no_stale_locus() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     assert!(app.state().analysis().is_some());
     // The band stops: the simulation goes on, the linear analysis cannot.
-    app.state_mut().set_parameter(Key::V, 0.0).unwrap();
+    crate::common::enter(&mut app, Key::V, 0.0);
     assert!(app.state().analysis().is_none());
     assert!(
         app.message().unwrap().contains("V = 0"),
@@ -346,10 +344,10 @@ fn a_model_without_analysis_shows_no_stale_locus() {
         harness.get_by_label_contains("no stability figures: V = 0");
     }
     // Moving the load at V = 0 is not a new failure each frame.
-    app.state_mut().dismiss_notice();
-    app.state_mut().set_parameter(Key::Load, 2.0).unwrap();
+    app.apply(Action::DismissNotice);
+    crate::common::enter(&mut app, Key::Load, 2.0);
     assert_eq!(app.message(), None);
-    app.state_mut().set_parameter(Key::V, 0.1).unwrap();
+    crate::common::enter(&mut app, Key::V, 0.1);
     assert!(app.state().analysis().is_some());
     assert!(app.state().analysis_failure().is_none());
 }
@@ -359,13 +357,20 @@ fn a_model_without_analysis_shows_no_stale_locus() {
 #[test]
 fn a_map_point_sets_both_parameters_and_the_run_follows() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
-    app.state_mut().set_map_point(&Axis::Key(Key::Nu), 3.0, 0.4);
+    app.apply(Action::MapPick {
+        axis: Axis::Key(Key::Nu),
+        load: 3.0,
+        value: 0.4,
+    });
     let model = app.settings().model;
     assert!((model.load_p() - 3.0).abs() < 1e-12);
     assert!((Axis::Key(Key::Nu).get(&model) - 0.4).abs() < 1e-12);
     assert_eq!(app.simulation().model(), &model);
-    app.state_mut()
-        .set_map_point(&Axis::Key(Key::Nu), 2.0, -1.0);
+    app.apply(Action::MapPick {
+        axis: Axis::Key(Key::Nu),
+        load: 2.0,
+        value: -1.0,
+    });
     assert_eq!(app.settings().model, model);
     assert!(app.message().unwrap().contains("nu = -1"));
 }
@@ -476,7 +481,7 @@ fn extreme_stored_values_start_the_app_with_an_answer_or_a_refusal() {
 /// The inline analysis of the default parameters with nu set to `nu`.
 fn inline_app(nu: f64) -> ZieglerApp {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
-    app.state_mut().set_parameter(Key::Nu, nu).unwrap();
+    crate::common::enter(&mut app, Key::Nu, nu);
     app
 }
 
@@ -488,7 +493,7 @@ fn the_analysis_thread_follows_the_newest_parameters() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     app.state_mut().analyse_in_background();
     for nu in [0.2, 0.3] {
-        app.state_mut().set_parameter(Key::Nu, nu).unwrap();
+        crate::common::enter(&mut app, Key::Nu, nu);
     }
     let expected = inline_app(0.3);
     // Not waited for: the spectrum is already the new parameters'.
@@ -513,10 +518,10 @@ fn the_analysis_thread_follows_the_newest_parameters() {
 fn a_late_analysis_of_parameters_left_behind_is_dropped() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     app.state_mut().analyse_in_background();
-    app.state_mut().set_parameter(Key::Nu, 0.2).unwrap();
+    crate::common::enter(&mut app, Key::Nu, 0.2);
     app.state_mut().settle_analysis();
-    app.state_mut().set_parameter(Key::Nu, 0.3).unwrap();
-    app.state_mut().set_parameter(Key::Nu, 0.2).unwrap();
+    crate::common::enter(&mut app, Key::Nu, 0.3);
+    crate::common::enter(&mut app, Key::Nu, 0.2);
     app.state_mut().settle_analysis();
     assert_eq!(
         app.state().analysis().unwrap().transitions,
@@ -537,25 +542,33 @@ fn a_finished_ramp_leaves_the_next_lesson_its_load() {
         Lesson::read(text).unwrap()
     };
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
-    let state = app.state_mut();
-    state.open_lesson(lesson("where-flutter-starts.ron"));
+    app.apply(Action::LessonOpen(Box::new(lesson(
+        "where-flutter-starts.ron",
+    ))));
     // To the ramp's step, then its 60 s of simulated time and more.
-    while state.ramp().is_none() {
-        let before = state.lesson().unwrap().step;
-        state.lesson_step(true);
-        assert_ne!(state.lesson().unwrap().step, before, "a ramp step exists");
+    while app.state().ramp().is_none() {
+        let before = app.state().lesson().unwrap().step;
+        app.apply(NamedAction::LessonNext.into());
+        assert_ne!(
+            app.state().lesson().unwrap().step,
+            before,
+            "a ramp step exists"
+        );
     }
-    state.set_speed(10.0);
+    app.apply(Action::Speed(10.0));
     for _ in 0..900 {
-        state.advance(0.1);
+        app.advance(0.1);
     }
-    let ramp = state.ramp().expect("a finished ramp keeps its marks");
+    let ramp = app.state().ramp().expect("a finished ramp keeps its marks");
     assert_eq!(ramp.load(), 4.0);
-    assert_eq!(state.model().load_p(), 4.0);
-    state.open_lesson(lesson("is-the-roller-a-follower.ron"));
+    assert_eq!(app.state().model().load_p(), 4.0);
+    app.apply(Action::LessonOpen(Box::new(lesson(
+        "is-the-roller-a-follower.ron",
+    ))));
     for _ in 0..10 {
-        state.advance(1.0 / 60.0);
+        app.advance(1.0 / 60.0);
     }
+    let state = app.state();
     assert_eq!(state.settings().preset, PresetId::Roller);
     assert_eq!(state.model().load_p(), 1.0);
     assert!(state.ramp().is_none(), "the tabletop's ramp marks are gone");
@@ -571,17 +584,16 @@ fn the_answer_is_hidden_from_the_prediction_to_the_reveal() {
         let asked = lesson.steps.iter().position(|s| s.predict.is_some());
         let revealed = lesson.steps.iter().position(|s| s.reveal.is_some());
         let mut app = ZieglerApp::new(Settings::default()).unwrap();
-        let state = app.state_mut();
-        state.open_lesson(lesson.clone());
+        app.apply(Action::LessonOpen(Box::new(lesson.clone())));
         for step in 0..lesson.steps.len() {
-            assert_eq!(state.lesson().unwrap().step, step);
+            assert_eq!(app.state().lesson().unwrap().step, step);
             let expected = asked.is_some_and(|a| step >= a && revealed.is_none_or(|r| step < r));
-            assert_eq!(state.answer_hidden(), expected, "{name}, step {step}");
-            state.lesson_step(true);
+            assert_eq!(app.state().answer_hidden(), expected, "{name}, step {step}");
+            app.apply(NamedAction::LessonNext.into());
         }
-        assert!(!state.answer_hidden(), "{name}: revealed at the end");
-        state.close_lesson();
-        assert!(!state.answer_hidden());
+        assert!(!app.state().answer_hidden(), "{name}: revealed at the end");
+        app.apply(Action::LessonClose);
+        assert!(!app.state().answer_hidden());
     }
 }
 
@@ -627,8 +639,7 @@ fn walk_lesson(lesson: &zieglerlab::lesson::Lesson, start: PresetId) {
         ..Settings::default()
     })
     .unwrap();
-    let state = app.state_mut();
-    state.open_lesson(lesson.clone());
+    app.apply(Action::LessonOpen(Box::new(lesson.clone())));
     let column = Column {
         preset: start,
         model: start.model(),
@@ -636,8 +647,13 @@ fn walk_lesson(lesson: &zieglerlab::lesson::Lesson, start: PresetId) {
     let last = lesson.steps.len() - 1;
     for (turn, step) in (0..=last).chain((0..last).rev()).enumerate() {
         if turn > 0 {
-            state.lesson_step(turn <= last);
+            app.apply(if turn <= last {
+                NamedAction::LessonNext.into()
+            } else {
+                NamedAction::LessonBack.into()
+            });
         }
+        let state = app.state();
         assert_eq!(state.lesson().unwrap().step, step);
         if lesson.steps[step].sets_column() {
             let expected = lesson.column_at(column, step).unwrap();

@@ -127,3 +127,10 @@ pub fn simpson(f: impl Fn(f64) -> f64, length: f64) -> f64 {
         * h
         / 3.0
 }
+
+/// Enters `value` for `key` in the app as a field or the load bar does,
+/// and checks it was taken.
+pub fn enter(app: &mut zieglerlab::app::ZieglerApp, key: zieglerlab::model::Key, value: f64) {
+    app.apply(zieglerlab::app::Action::Enter { key, value });
+    assert_eq!(app.state().refusal(key), None, "{key} = {value}");
+}

@@ -63,8 +63,9 @@ fn the_ramp_raises_the_load_at_its_rate_and_a_pause_holds_it() {
 /// from 2 at `rate` per simulated second.
 fn seen_at(rate: f64) -> f64 {
     let mut app = tabletop();
-    app.state_mut()
-        .start_ramp(Ramp::new(2.0, 8.0, rate).unwrap());
+    app.apply(zieglerlab::app::Action::RampStart(
+        Ramp::new(2.0, 8.0, rate).unwrap(),
+    ));
     for _ in 0..60 * 60 {
         app.advance(1.0 / 60.0);
         if let Some(seen) = app.state().ramp().unwrap().seen_at_p {

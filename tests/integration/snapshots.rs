@@ -5,14 +5,14 @@
 //! look at every new image before committing it.
 
 use egui_kittest::{Harness, SnapshotResults};
-use zieglerlab::app::{Panel, Settings, Tab, ZieglerApp};
+use zieglerlab::app::{Action, Panel, Settings, Tab, ZieglerApp};
 use zieglerlab::model::{Key, PRESETS, preset};
 
 /// The app in `settings`, at `load`, after `secs` whole seconds simulated
 /// from the standard kick, in 1/60 s frames.
 fn app_at(settings: Settings, load: f64, secs: u32) -> ZieglerApp {
     let mut app = ZieglerApp::new(settings).unwrap();
-    app.state_mut().set_parameter(Key::Load, load).unwrap();
+    crate::common::enter(&mut app, Key::Load, load);
     for _ in 0..secs * 60 {
         app.advance(1.0 / 60.0);
     }
@@ -132,7 +132,7 @@ fn a_refused_field_and_a_panel_without_analysis() {
     results.extend(harness.take_snapshot_results());
     drop(harness);
     let mut stopped = app_at(Settings::default(), 1.0, 0);
-    stopped.state_mut().set_parameter(Key::V, 0.0).unwrap();
+    crate::common::enter(&mut stopped, Key::V, 0.0);
     let mut harness = Harness::builder()
         .wgpu()
         .with_size([1280.0, 800.0])
@@ -152,7 +152,7 @@ fn the_overlay_has_a_legend_with_its_own_critical_loads() {
     use zieglerlab::analysis::State;
     use zieglerlab::model::PresetId;
     let mut app = app_at(preset_settings("roller"), 1.0, 0);
-    app.state_mut().set_overlay(Some(PresetId::UniformRods));
+    app.apply(Action::Overlay(Some(PresetId::UniformRods)));
     let overlay = app.state().overlay().unwrap();
     let closed_form = [
         (

@@ -4,6 +4,8 @@
 
 use eframe::egui::{self, RichText};
 
+use crate::app::action::{Action, Actions};
+use crate::app::command::Command;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::app::{Notice, View};
@@ -43,31 +45,33 @@ impl Reading {
 
 impl LessonSection {
     /// Opens the file read, or says why not, once the reading is done.
-    fn take_reading(&mut self, ctx: &egui::Context, state: &mut AppState) {
+    fn take_reading(&mut self, ctx: &egui::Context, actions: &mut Actions) {
         let Some(reading) = &self.reading else {
             return;
         };
         match reading.answer.try_recv() {
-            Ok(Ok(lesson)) => state.open_lesson(lesson),
-            Ok(Err(error)) => state.say(Notice::error(error.to_string())),
+            Ok(Ok(lesson)) => actions.push(Action::LessonOpen(Box::new(lesson))),
+            Ok(Err(error)) => actions.push(Action::Say(Notice::error(error.to_string()))),
             Err(std::sync::mpsc::TryRecvError::Empty) => {
                 ctx.request_repaint_after(std::time::Duration::from_millis(50));
                 return;
             }
-            Err(std::sync::mpsc::TryRecvError::Disconnected) => state.say(Notice::error(format!(
-                "{}: the reading stopped without an answer",
-                reading.path
-            ))),
+            Err(std::sync::mpsc::TryRecvError::Disconnected) => {
+                actions.push(Action::Say(Notice::error(format!(
+                    "{}: the reading stopped without an answer",
+                    reading.path
+                ))));
+            }
         }
         self.reading = None;
     }
 }
 
 impl View for LessonSection {
-    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
-        self.take_reading(ui.ctx(), state);
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
+        self.take_reading(ui.ctx(), actions);
         if state.lesson().is_some() {
-            step_ui(ui, state, theme);
+            step_ui(ui, state, actions, theme);
             return;
         }
         let built_in = self.built_in.get_or_insert_with(|| {
@@ -85,7 +89,7 @@ impl View for LessonSection {
                             .on_hover_text(format!("the built-in lesson {name}"))
                             .clicked()
                         {
-                            state.open_lesson(lesson.clone());
+                            actions.push(Action::LessonOpen(Box::new(lesson.clone())));
                         }
                     }
                     Err(error) => {
@@ -116,7 +120,7 @@ impl View for LessonSection {
 }
 
 /// The step shown, its prediction and its result.
-fn step_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+fn step_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
     let Some(run) = state.lesson().cloned() else {
         return;
     };
@@ -137,14 +141,14 @@ fn step_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
                 .accessible_name("predicted load")
                 .on_hover_text("where you expect it; the load bar marks it");
             if response.changed() {
-                state.predict_load(load);
+                actions.push(Action::LessonPredict(load));
             }
         }
         Some(Predict::Choice { prompt, answers }) => {
             ui.label(RichText::new(prompt).color(theme.info));
             for (i, answer) in answers.iter().enumerate() {
                 if ui.radio(run.chosen == Some(i), answer.as_str()).clicked() {
-                    state.choose(i);
+                    actions.push(Action::LessonChoose(i));
                 }
             }
         }
@@ -169,21 +173,21 @@ fn step_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
             .on_hover_text("the previous step (Page Up)")
             .clicked()
         {
-            state.lesson_step(false);
+            actions.push(Command::LessonBack);
         }
         if ui
             .add_enabled(!last, egui::Button::new("next"))
             .on_hover_text("the next step: it sets and starts what it says (Page Down, as a presenter's remote sends)")
             .clicked()
         {
-            state.lesson_step(true);
+            actions.push(Command::LessonNext);
         }
         if ui
             .button("close lesson")
             .on_hover_text("leave the lesson; the model stays as it is")
             .clicked()
         {
-            state.close_lesson();
+            actions.push(Action::LessonClose);
         }
     });
 }

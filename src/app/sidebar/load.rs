@@ -5,6 +5,7 @@ use eframe::egui::{self, RichText};
 
 use super::number_field::{NumberFields, refusal_ui};
 use crate::app::View;
+use crate::app::action::Actions;
 use crate::app::state::{AppState, VISIBLE_FRACTION};
 use crate::app::theme::Theme;
 use crate::format::{load_text, number_text};
@@ -17,14 +18,16 @@ pub struct LoadSection {
 }
 
 impl View for LoadSection {
-    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
         self.field.prune(ui, state);
         ui.horizontal(|ui| {
             // The wide bar under the scene is the slider; this field takes a
             // typed load, also beyond the bar's range (not clamped).
-            self.field.show(ui, state, theme, Key::Load).on_hover_text(
-                "type a load (Enter applies, Escape restores); beyond the bar's end too",
-            );
+            self.field
+                .show(ui, state, actions, theme, Key::Load)
+                .on_hover_text(
+                    "type a load (Enter applies, Escape restores); beyond the bar's end too",
+                );
             ui.label("load p = P l/k");
         });
         refusal_ui(ui, state, theme, Key::Load);

@@ -15,6 +15,7 @@ mod time;
 use eframe::egui;
 
 use super::View;
+use super::action::{Action, Actions};
 use super::command::Command;
 use super::state::AppState;
 use super::theme::Theme;
@@ -31,52 +32,52 @@ pub struct Sidebar {
 }
 
 impl View for Sidebar {
-    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
         ui.heading("zieglerlab");
         ui.separator();
-        self.lesson.ui(ui, state, theme);
+        self.lesson.ui(ui, state, actions, theme);
         ui.separator();
-        model::ModelSection.ui(ui, state, theme);
+        model::ModelSection.ui(ui, state, actions, theme);
         ui.separator();
         if state.settings().projector {
             // In front of a class: time and the status card first, the load
             // typed, and the parameters folded, so that everything the
             // teacher needs fits a 1024x768 projector without scrolling.
-            time::TimeSection.ui(ui, state, theme);
+            time::TimeSection.ui(ui, state, actions, theme);
             ui.separator();
-            status::StatusSection.ui(ui, state, theme);
+            status::StatusSection.ui(ui, state, actions, theme);
             ui.separator();
-            self.load.ui(ui, state, theme);
-            self.ramp.ui(ui, state, theme);
+            self.load.ui(ui, state, actions, theme);
+            self.ramp.ui(ui, state, actions, theme);
             egui::CollapsingHeader::new("parameters")
-                .show(ui, |ui| self.parameters.ui(ui, state, theme));
+                .show(ui, |ui| self.parameters.ui(ui, state, actions, theme));
         } else {
-            self.load.ui(ui, state, theme);
-            self.ramp.ui(ui, state, theme);
+            self.load.ui(ui, state, actions, theme);
+            self.ramp.ui(ui, state, actions, theme);
             ui.separator();
-            self.parameters.ui(ui, state, theme);
+            self.parameters.ui(ui, state, actions, theme);
             ui.separator();
-            time::TimeSection.ui(ui, state, theme);
+            time::TimeSection.ui(ui, state, actions, theme);
             ui.separator();
-            status::StatusSection.ui(ui, state, theme);
+            status::StatusSection.ui(ui, state, actions, theme);
         }
         ui.separator();
-        overlay_ui(ui, state);
+        overlay_ui(ui, state, actions);
         let mut projector = state.settings().projector;
         if ui
             .checkbox(&mut projector, "projector mode (P)")
             .on_hover_text(Command::Projector.tooltip())
             .changed()
         {
-            state.set_projector(projector);
+            actions.push(Action::Projector(projector));
         }
-        self.share.ui(ui, state, theme);
+        self.share.ui(ui, state, actions, theme);
         egui::CollapsingHeader::new("keys").show(ui, Command::keys_help_ui);
     }
 }
 
 /// Another preset's locus behind the current one.
-fn overlay_ui(ui: &mut egui::Ui, state: &mut AppState) {
+fn overlay_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions) {
     let current = state.overlay().map(|o| o.preset);
     let mut chosen = current;
     egui::ComboBox::from_label("overlay")
@@ -90,7 +91,7 @@ fn overlay_ui(ui: &mut egui::Ui, state: &mut AppState) {
         .response
         .on_hover_text("another model's locus in grey, at the same a (as Fig. 8 sets the ideal column beside the roller)");
     if chosen != current {
-        state.set_overlay(chosen);
+        actions.push(Action::Overlay(chosen));
     }
 }
 
@@ -99,7 +100,7 @@ fn overlay_ui(ui: &mut egui::Ui, state: &mut AppState) {
 /// place, so that a message never moves a control. A picture (the command
 /// line's, a recording's frames) shows no message: it is for the person at
 /// the window, not for the class.
-pub fn status_line_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+pub fn status_line_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
     ui.horizontal(|ui| {
         let notice = state.notice().cloned().filter(|_| !state.for_picture());
         if let Some(notice) = notice {
@@ -108,7 +109,7 @@ pub fn status_line_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
                 .on_hover_text("clear this message")
                 .clicked()
             {
-                state.dismiss_notice();
+                actions.push(Action::DismissNotice);
             }
             ui.add(
                 egui::Label::new(
@@ -123,7 +124,7 @@ pub fn status_line_ui(ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
                 .on_hover_text("hide the hint")
                 .clicked()
             {
-                state.dismiss_hint();
+                actions.push(Action::DismissHint);
             }
             ui.label(hint);
         } else {

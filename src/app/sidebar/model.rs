@@ -3,6 +3,7 @@
 use eframe::egui::{self, RichText};
 
 use crate::app::View;
+use crate::app::action::{Action, Actions};
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::model::{PRESETS, PresetId};
@@ -11,7 +12,7 @@ use crate::sim::EngineKind;
 pub struct ModelSection;
 
 impl View for ModelSection {
-    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, _theme: &Theme) {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, _theme: &Theme) {
         let current = state.settings().preset;
         let mut chosen = current;
         let shown = |id: PresetId| format!("{} ({})", id.name(), id.preset().source);
@@ -34,7 +35,7 @@ impl View for ModelSection {
                 .on_hover_text(chosen.preset().description);
         });
         if chosen != current {
-            state.set_preset(chosen);
+            actions.push(Action::Preset(chosen));
         }
         // In front of a class the picker's tooltip holds the description;
         // while a lesson keeps the answer it is not shown (some name their
@@ -67,7 +68,7 @@ impl View for ModelSection {
             .response
             .on_hover_text("what integrates the motion: the run goes on from where it is");
         if engine != state.settings().engine {
-            state.set_engine(engine);
+            actions.push(Action::Engine(engine));
         }
     }
 }

@@ -8,6 +8,7 @@ use std::collections::HashMap;
 
 use eframe::egui;
 
+use crate::app::action::{Action, Actions};
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::number_text;
@@ -49,7 +50,8 @@ impl NumberFields {
     pub fn show(
         &mut self,
         ui: &mut egui::Ui,
-        state: &mut AppState,
+        state: &AppState,
+        actions: &mut Actions,
         theme: &Theme,
         key: Key,
     ) -> egui::Response {
@@ -73,17 +75,15 @@ impl NumberFields {
         let escaped = response.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Escape));
         if escaped {
             self.drafts.remove(&key);
-            state.clear_refusal(key);
+            actions.push(Action::ClearRefusal(key));
         } else if response.lost_focus() && (refused || text != applied_text) {
-            match parse(&text) {
-                Ok(value) => state.enter_parameter(key, value),
-                Err(why) => state.refuse(key, why),
-            }
-            if state.refusal(key).is_some() {
-                self.drafts.insert(key, text);
-            } else {
-                self.drafts.remove(&key);
-            }
+            // The text stays until the value is applied: a refused one stays
+            // on (see `prune`). A pass egui reruns asks only once.
+            actions.push_once(match parse(&text) {
+                Ok(value) => Action::Enter { key, value },
+                Err(why) => Action::Refuse { key, why },
+            });
+            self.drafts.insert(key, text);
         } else if response.has_focus() {
             self.drafts.insert(key, text);
         }

@@ -5,6 +5,7 @@ use eframe::egui;
 
 use super::number_field::{NumberFields, refusal_ui};
 use crate::app::View;
+use crate::app::action::Actions;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::model::{KEYS, Key, KeySpec};
@@ -18,7 +19,7 @@ pub struct ParametersSection {
 impl View for ParametersSection {
     /// Values go through the same validation as `--set`: a refused value
     /// leaves the model as it was and says why.
-    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
         self.fields.prune(ui, state);
         let model = *state.model();
         let applicable: Vec<&'static KeySpec> = KEYS
@@ -29,11 +30,11 @@ impl View for ParametersSection {
         let (groups, si): (Vec<_>, Vec<_>) = applicable.into_iter().partition(|k| k.is_group);
         ui.label("dimensionless groups");
         for spec in groups {
-            self.field(ui, state, theme, spec);
+            self.field(ui, state, actions, theme, spec);
         }
         egui::CollapsingHeader::new("SI parameters").show(ui, |ui| {
             for spec in si {
-                self.field(ui, state, theme, spec);
+                self.field(ui, state, actions, theme, spec);
             }
         });
     }
@@ -43,13 +44,14 @@ impl ParametersSection {
     fn field(
         &mut self,
         ui: &mut egui::Ui,
-        state: &mut AppState,
+        state: &AppState,
+        actions: &mut Actions,
         theme: &Theme,
         spec: &'static KeySpec,
     ) {
         let key = spec.key;
         ui.horizontal(|ui| {
-            self.fields.show(ui, state, theme, key);
+            self.fields.show(ui, state, actions, theme, key);
             // Only mu R enters the equations: the mu field keeps R and so
             // moves the load, and says so.
             let note = if key == Key::Mu {

@@ -4,6 +4,7 @@
 use eframe::egui;
 
 use crate::app::View;
+use crate::app::action::{Action, Actions};
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::{load_text, number_text};
@@ -41,7 +42,7 @@ impl Default for RampSection {
 }
 
 impl View for RampSection {
-    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
         // Another column's bar (a chain's is shorter): its whole range.
         let bar_max_p = state.load_max();
         if bar_max_p != self.bar_max_p {
@@ -71,7 +72,7 @@ impl View for RampSection {
                 if start.clicked()
                     && let Ok(ramp) = &ramp
                 {
-                    state.start_ramp(*ramp);
+                    actions.push(Action::RampStart(*ramp));
                 }
                 if let Some(run) = state.ramp() {
                     let label = if run.paused { "resume" } else { "pause ramp" };
@@ -80,10 +81,10 @@ impl View for RampSection {
                         .on_hover_text("hold the load where it is; the run goes on")
                         .clicked()
                     {
-                        state.toggle_ramp_pause();
+                        actions.push(Action::RampPauseResume);
                     }
                     if ui.button("stop").on_hover_text("end the ramp").clicked() {
-                        state.stop_ramp();
+                        actions.push(Action::RampStop);
                     }
                 }
             });

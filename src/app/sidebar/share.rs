@@ -3,6 +3,7 @@
 use eframe::egui;
 
 use crate::app::View;
+use crate::app::action::{Action, Actions};
 use crate::app::notice::Notice;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
@@ -14,7 +15,7 @@ pub struct ShareSection {
 }
 
 impl View for ShareSection {
-    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, _theme: &Theme) {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, _theme: &Theme) {
         egui::CollapsingHeader::new("share settings").show(ui, |ui| {
             ui.horizontal(|ui| {
                 if ui
@@ -30,7 +31,9 @@ impl View for ShareSection {
                             self.text = text;
                         }
                         Err(error) => {
-                            state.say(Notice::error(format!("settings not copied: {error}")));
+                            actions.push(Action::Say(Notice::error(format!(
+                                "settings not copied: {error}"
+                            ))));
                         }
                     }
                 }
@@ -39,7 +42,7 @@ impl View for ShareSection {
                     .on_hover_text("paste the text below first")
                     .clicked()
                 {
-                    state.paste_settings(&self.text);
+                    actions.push(Action::Paste(self.text.clone()));
                 }
             });
             ui.add(

@@ -5,6 +5,7 @@ use eframe::egui::{self, RichText};
 
 use crate::analysis::{State, classify};
 use crate::app::View;
+use crate::app::action::Actions;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::{duration_text, percent_text, rate_text, secs_text};
@@ -16,7 +17,7 @@ const TOO_SLOW_TO_SEE_SECS: f64 = 3000.0;
 pub struct StatusSection;
 
 impl View for StatusSection {
-    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, _actions: &mut Actions, theme: &Theme) {
         if state.answer_hidden() {
             ui.label(RichText::new("stable or not?").heading().color(theme.info));
             ui.weak("The verdict is hidden until the lesson reveals it: watch the column.");

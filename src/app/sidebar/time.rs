@@ -3,6 +3,7 @@
 use eframe::egui;
 
 use crate::app::View;
+use crate::app::action::{Action, Actions};
 use crate::app::command::Command;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
@@ -20,7 +21,7 @@ pub const PACES: [(&str, f64, &str); 3] = [
 pub struct TimeSection;
 
 impl View for TimeSection {
-    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
         ui.horizontal_wrapped(|ui| {
             for command in [
                 Command::PlayPause,
@@ -29,7 +30,7 @@ impl View for TimeSection {
                 Command::Reset,
                 Command::ResetAll,
             ] {
-                command.button(ui, state);
+                command.button(ui, state, actions);
             }
         });
         ui.horizontal(|ui| {
@@ -40,7 +41,7 @@ impl View for TimeSection {
                     .on_hover_text(tip)
                     .clicked()
                 {
-                    state.set_speed(speed);
+                    actions.push(Action::Speed(speed));
                 }
             }
         });
@@ -53,7 +54,7 @@ impl View for TimeSection {
             )
             .on_hover_text("simulated seconds per second of wall-clock time");
         if response.changed() {
-            state.set_speed(speed);
+            actions.push(Action::Speed(speed));
         }
         let sim = state.simulation();
         let shown = if !state.running() && sim.status() == Status::Running {

@@ -40,14 +40,10 @@ impl AppState {
         };
     }
 
-    pub fn dismiss_hint(&mut self) {
-        self.hint = false;
-    }
-
     /// Everything back to the preset: its parameters and load, no ramp, no
     /// overlay, no refusals, normal speed, a fresh run, and the views at
     /// their defaults.
-    pub fn reset_all(&mut self) {
+    pub(super) fn reset_all(&mut self) {
         let preset = self.settings.preset;
         self.ramp = None;
         self.overlay = None;
@@ -60,7 +56,7 @@ impl AppState {
 
     /// Holds the column at rest at the angles `(phi1, phi2)` (a drag in the
     /// scene): time stands still until [`Self::release`].
-    pub fn hold(&mut self, phi1_rad: f64, phi2_rad: f64) {
+    pub(super) fn hold(&mut self, phi1_rad: f64, phi2_rad: f64) {
         let mut x = self.sim.state();
         x[0] = phi1_rad;
         x[1] = phi2_rad;
@@ -77,7 +73,7 @@ impl AppState {
 
     /// Lets a held column go: the run goes on from rest where it was left,
     /// and the growth measurement starts again there.
-    pub fn release(&mut self) {
+    pub(super) fn release(&mut self) {
         if self.held {
             self.held = false;
             self.running = true;

@@ -1,10 +1,13 @@
 //! A lesson under way: which step is shown, what the student predicted,
-//! and a step's actions carried out on the state (preset, parameters,
-//! speed, overlay, a kick or a ramp; the tab is asked of the window).
+//! and each step as the list of actions it asks for (preset, parameters,
+//! speed, overlay, tab, a kick or a ramp).
 
 use super::AppState;
+use crate::app::action::Action;
+use crate::app::command::Command;
 use crate::app::notice::Notice;
-use crate::lesson::{Column, Lesson, LessonTab, Predict, Reveal, Run};
+use crate::app::tabs::Tab;
+use crate::lesson::{Column, Lesson, Predict, Reveal, Run};
 use crate::sim::Ramp;
 
 /// A lesson and where the class is in it.
@@ -93,8 +96,8 @@ impl LessonRun {
 }
 
 impl AppState {
-    /// Opens `lesson` at its first step, carrying that step out.
-    pub fn open_lesson(&mut self, lesson: Lesson) {
+    /// Opens `lesson` at its first step; that step's actions follow.
+    pub(super) fn open_lesson(&mut self, lesson: Lesson) -> Vec<Action> {
         self.lesson = Some(LessonRun {
             lesson,
             step: 0,
@@ -106,7 +109,7 @@ impl AppState {
                 model: self.settings.model,
             },
         });
-        self.carry_out_step();
+        self.step_actions()
     }
 
     /// The lesson under way.
@@ -122,10 +125,10 @@ impl AppState {
         self.lesson.as_ref().is_some_and(LessonRun::answer_hidden)
     }
 
-    /// Moves to the next step (or back, `forward` false) and carries it out.
-    pub fn lesson_step(&mut self, forward: bool) {
+    /// Moves to the next step (or back, `forward` false); its actions follow.
+    pub(super) fn lesson_step(&mut self, forward: bool) -> Vec<Action> {
         let Some(run) = &mut self.lesson else {
-            return;
+            return Vec::new();
         };
         let last = run.lesson.steps.len() - 1;
         let step = if forward {
@@ -133,77 +136,64 @@ impl AppState {
         } else {
             run.step.saturating_sub(1)
         };
-        if step != run.step {
-            run.step = step;
-            self.carry_out_step();
+        if step == run.step {
+            return Vec::new();
         }
+        run.step = step;
+        self.step_actions()
     }
 
     /// The student's predicted load.
-    pub fn predict_load(&mut self, load: f64) {
+    pub(super) fn predict_load(&mut self, load: f64) {
         if let Some(run) = &mut self.lesson {
             run.predicted_load = Some(load);
         }
     }
 
     /// The student's answer to the choice shown.
-    pub fn choose(&mut self, answer: usize) {
+    pub(super) fn choose(&mut self, answer: usize) {
         if let Some(run) = &mut self.lesson {
             run.chosen = Some(answer);
         }
     }
 
-    pub fn close_lesson(&mut self) {
-        self.lesson = None;
-    }
-
-    /// The tab the lesson asks for, taken once by the window.
-    pub fn take_requested_tab(&mut self) -> Option<LessonTab> {
-        self.requested_tab.take()
-    }
-
-    /// What the step shown sets and starts.
-    fn carry_out_step(&mut self) {
+    /// What the step shown asks for, in order: its column (taking it over
+    /// from any ramp, a finished one too), speed, overlay, tab and run. A
+    /// step that only reveals keeps the ramp and its marks.
+    fn step_actions(&mut self) -> Vec<Action> {
         let Some(run) = &mut self.lesson else {
-            return;
+            return Vec::new();
         };
         let step = run.current().clone();
         if let Some(Predict::Choice { answers, .. }) = &step.predict {
             run.last_choice = Some(answers.clone());
         }
-        // A step that sets the column takes it over from any ramp (a
-        // finished one too); a step that only reveals keeps the ramp's marks.
+        let mut actions = Vec::new();
         if step.sets_column() {
-            let column = run.lesson.column_at(run.start, run.step);
-            self.stop_ramp();
-            match column {
-                Ok(column) => self.set_column(column.preset, column.model),
+            actions.push(Action::RampStop);
+            actions.push(match run.lesson.column_at(run.start, run.step) {
+                Ok(column) => Action::Column {
+                    preset: column.preset,
+                    model: column.model,
+                },
                 Err((index, error)) => {
-                    self.say(Notice::error(format!("lesson step {}: {error}", index + 1)));
+                    Action::Say(Notice::error(format!("lesson step {}: {error}", index + 1)))
                 }
-            }
+            });
         }
-        if let Some(speed) = step.speed {
-            self.set_speed(speed);
-        }
-        if let Some(overlay) = step.overlay {
-            self.set_overlay(Some(overlay));
-        }
-        if let Some(tab) = step.tab {
-            self.requested_tab = Some(tab);
-        }
+        actions.extend(step.speed.map(Action::Speed));
+        actions.extend(step.overlay.map(|id| Action::Overlay(Some(id))));
+        actions.extend(step.tab.map(|tab| Action::Tab(Tab::from(tab))));
         match step.run {
-            Some(Run::Kick) => self.kick(),
+            Some(Run::Kick) => actions.push(Command::Kick.into()),
             // A ramp starts from a quiet column: a fresh run from the
             // standard small disturbance, whatever the class did before.
             Some(Run::Ramp { from, to, rate }) => match Ramp::new(from, to, rate) {
-                Ok(ramp) => {
-                    self.reset();
-                    self.start_ramp(ramp);
-                }
-                Err(error) => self.say(Notice::error(format!("lesson: {error}"))),
+                Ok(ramp) => actions.extend([Command::Reset.into(), Action::RampStart(ramp)]),
+                Err(error) => actions.push(Action::Say(Notice::error(format!("lesson: {error}")))),
             },
             None => {}
         }
+        actions
     }
 }

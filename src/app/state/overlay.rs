@@ -31,7 +31,7 @@ enum OverlayError {
 impl AppState {
     /// Shows `name`'s locus behind the current one, at the current `a`
     /// (`None`: no overlay).
-    pub fn set_overlay(&mut self, id: Option<PresetId>) {
+    pub(super) fn set_overlay(&mut self, id: Option<PresetId>) {
         let Some(id) = id else {
             self.overlay = None;
             return;

@@ -77,7 +77,7 @@ impl RampRun {
 impl AppState {
     /// Starts `ramp`: the load goes to its start and moves on as the run
     /// does; the run starts if it was paused.
-    pub fn start_ramp(&mut self, ramp: Ramp) {
+    pub(super) fn start_ramp(&mut self, ramp: Ramp) {
         if let Err(why) = ramp.check_for(&self.settings.model) {
             self.say(Notice::error(format!("ramp: {why}")));
             return;
@@ -92,15 +92,10 @@ impl AppState {
     }
 
     /// Holds the ramp's load (the run goes on), or lets it move again.
-    pub fn toggle_ramp_pause(&mut self) {
+    pub(super) fn toggle_ramp_pause(&mut self) {
         if let Some(run) = &mut self.ramp {
             run.paused = !run.paused;
         }
-    }
-
-    /// Ends the ramp; the load stays where it is.
-    pub fn stop_ramp(&mut self) {
-        self.ramp = None;
     }
 
     /// The ramp, under way or finished.

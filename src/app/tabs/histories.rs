@@ -4,6 +4,7 @@
 use eframe::egui;
 
 use crate::app::View;
+use crate::app::action::Actions;
 use crate::app::plot_frame::Fit;
 use crate::app::plots::histories_ui;
 use crate::app::state::AppState;
@@ -17,7 +18,7 @@ pub struct HistoriesTab {
 }
 
 impl View for HistoriesTab {
-    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, _actions: &mut Actions, theme: &Theme) {
         self.fit.bar_ui(ui, state.for_picture());
         let refit = self.fit.refit(state.view_generation());
         let band = state.model().roller().is_some();

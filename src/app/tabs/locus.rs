@@ -6,6 +6,7 @@ use eframe::egui::{self, vec2};
 
 use crate::analysis::Locus;
 use crate::app::View;
+use crate::app::action::Actions;
 use crate::app::plot_frame::{Fit, Swatch, legend_row};
 use crate::app::plots::{root_locus_ui, versus_load_ui};
 use crate::app::state::AppState;
@@ -22,7 +23,7 @@ pub struct LocusTab {
 }
 
 impl View for LocusTab {
-    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, _actions: &mut Actions, theme: &Theme) {
         let Some(analysis) = state.analysis() else {
             if state.analysis_pending() {
                 // A long chain's first analysis takes seconds, off this thread.

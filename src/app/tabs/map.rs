@@ -12,6 +12,7 @@ use egui_plot::{Line, Plot, PlotImage, PlotPoint, PlotPoints, Points};
 
 use crate::analysis::{MapSpec, Row, RowResult, State, Transition, compute_map};
 use crate::app::View;
+use crate::app::action::{Action, Actions};
 use crate::app::plot_frame::{Fit, SingleClick, axes, refit_if};
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
@@ -365,12 +366,16 @@ impl MapPanel {
 impl View for MapPanel {
     /// The stability map of the current parameters; a click on it sets the
     /// load and the map's second parameter.
-    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
         let model = *state.model();
         self.follow(&model, model.load_bar_max_p());
         self.generation = state.view_generation();
         if let Some(pick) = self.draw(ui, &model, state.for_picture(), theme) {
-            state.set_map_point(&pick.axis, pick.load, pick.value);
+            actions.push(Action::MapPick {
+                axis: pick.axis,
+                load: pick.load,
+                value: pick.value,
+            });
         }
     }
 }

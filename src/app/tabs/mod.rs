@@ -10,6 +10,7 @@ mod paradox;
 use eframe::egui;
 
 use super::View;
+use super::action::{Action, Actions};
 use super::state::AppState;
 
 /// The choice of plots in the lower half of the window.
@@ -89,11 +90,16 @@ impl Tabs {
     }
 
     /// The tab bar: a click shows another tab.
-    pub fn bar_ui(ui: &mut egui::Ui, open: &mut Tab) {
+    pub fn bar_ui(ui: &mut egui::Ui, open: Tab, actions: &mut Actions) {
         ui.horizontal(|ui| {
             for tab in Tab::ALL {
-                ui.selectable_value(open, tab, tab.title())
-                    .on_hover_text(tab.tooltip());
+                if ui
+                    .selectable_label(open == tab, tab.title())
+                    .on_hover_text(tab.tooltip())
+                    .clicked()
+                {
+                    actions.push(Action::Tab(tab));
+                }
             }
         });
     }

@@ -14,6 +14,7 @@ use crate::analysis::{
     first_instability, flutter_load_damped, flutter_load_external, natural_load_max,
 };
 use crate::app::View;
+use crate::app::action::Actions;
 use crate::app::plot_frame::{Fit, axes, refit_if};
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
@@ -456,7 +457,7 @@ impl ParadoxPanel {
 }
 
 impl View for ParadoxPanel {
-    fn ui(&mut self, ui: &mut egui::Ui, state: &mut AppState, theme: &Theme) {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, _actions: &mut Actions, theme: &Theme) {
         let known = state
             .analysis()
             .and_then(crate::app::analysis_cache::Analysis::first_instability);
