@@ -7,7 +7,8 @@ use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use super::AnalysisError;
-use super::critical::{Transition, bracketing_locus, critical_loads_along};
+use super::critical::{bracketing_locus, critical_loads_along};
+use super::crossing::Transition;
 use super::locus::{load_grid, locus};
 use super::pencil::AffinePencil;
 use super::stability::{State, classify};

@@ -2,6 +2,7 @@
 //! classification, tracked root loci and critical loads. Pure f64 (no UI, no clock).
 
 mod critical;
+mod crossing;
 mod locus;
 mod map;
 mod paradox;
@@ -11,9 +12,10 @@ mod roots;
 mod stability;
 
 pub use critical::{
-    BRACKET_SAMPLES, DEFAULT_LOAD_MAX, LARGEST_LOAD, Transition, bracketing_locus,
-    bracketing_locus_reporting, critical_loads, critical_loads_along, natural_load_max,
+    BRACKET_SAMPLES, DEFAULT_LOAD_MAX, LARGEST_LOAD, bracketing_locus, bracketing_locus_reporting,
+    critical_loads, critical_loads_along, natural_load_max,
 };
+pub use crossing::Transition;
 pub use locus::{Locus, MAX_HELD_EIGENVALUES, load_grid, locus, locus_streamed, max_samples};
 pub use map::{Cell, MapSpec, Row, RowResult, compute as compute_map};
 pub use paradox::{

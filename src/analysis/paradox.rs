@@ -4,7 +4,8 @@
 //! as its mass goes to zero), next to the undamped value.
 
 use super::AnalysisError;
-use super::critical::{Transition, first_loss_within};
+use super::critical::first_loss_within;
+use super::crossing::Transition;
 use super::pencil::AffinePencil;
 use super::stability::State;
 use crate::model::{Axis, Model};

@@ -12,11 +12,21 @@ use super::tabs::Tab;
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct Layout {
+    /// The open tab; one this version has not (or a layout from before tabs
+    /// were stored by name) opens the first.
+    #[serde(deserialize_with = "tab_or_first")]
     pub tab: Tab,
     /// The preset whose locus is drawn behind the current one.
     pub overlay: Option<String>,
     /// The stability map's second axis, by name, and its range.
     pub map_axis: Option<(String, f64, f64)>,
+}
+
+/// The stored tab if it names one, else the first: the rest of the layout
+/// is kept either way.
+fn tab_or_first<'de, D: serde::Deserializer<'de>>(deserializer: D) -> Result<Tab, D::Error> {
+    let stored = ron::Value::deserialize(deserializer)?;
+    Ok(stored.into_rust::<Tab>().unwrap_or_default())
 }
 
 impl Layout {
@@ -34,5 +44,25 @@ impl Layout {
                 )),
             ),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_layout_reads_back_and_an_old_tab_spelling_keeps_the_rest() {
+        let layout = Layout {
+            tab: Tab::MAP,
+            overlay: Some("beck".to_owned()),
+            map_axis: Some(("nu".to_owned(), 0.0, 1.0)),
+        };
+        let text = ron::to_string(&layout).unwrap();
+        assert_eq!(Layout::read(&text), (layout, None));
+        let (old, note) = Layout::read("(tab: Map, overlay: Some(\"beck\"))");
+        assert_eq!(note, None);
+        assert_eq!(old.tab, Tab::LOCUS);
+        assert_eq!(old.overlay.as_deref(), Some("beck"));
     }
 }

@@ -7,7 +7,7 @@ mod action;
 mod analysis_cache;
 mod analysis_worker;
 mod camera;
-mod command;
+mod grab;
 mod history;
 mod layout;
 mod load_bar;
@@ -32,11 +32,9 @@ use eframe::egui::{self, RichText, vec2};
 use crate::model::PresetId;
 use crate::sim::{SimError, Simulation};
 use action::Actions;
-use command::Command;
 use theme::Theme;
 
-pub use action::Action;
-pub use command::Command as NamedAction;
+pub use action::{Action, Command};
 pub use layout::Layout;
 pub use notice::{Level, Notice};
 pub use pace::{MAX_FRAME_SECS, MAX_STEPS_PER_FRAME};
@@ -74,11 +72,31 @@ pub enum Panel {
     Tab(Tab),
 }
 
+impl std::str::FromStr for Panel {
+    type Err = String;
+
+    fn from_str(name: &str) -> Result<Self, String> {
+        match name {
+            "window" => Ok(Self::Window),
+            "scene" => Ok(Self::Scene),
+            _ => Tab::named(name)
+                .map(Self::Tab)
+                .map_err(|_| format!("expected one of {}", Self::names().join(", "))),
+        }
+    }
+}
+
 /// The smallest window, in points: the window cannot be made smaller, and
 /// the sidebar, the scene and the plots all fit in it.
 pub const SMALLEST_WINDOW_POINTS: [f32; 2] = [1024.0, 700.0];
 
 impl Panel {
+    /// Every panel's name: the window, the scene, each tab's.
+    #[must_use]
+    pub fn names() -> Vec<&'static str> {
+        ["window", "scene"].into_iter().chain(Tab::ids()).collect()
+    }
+
     /// The smallest area, in points, this panel is laid out in without
     /// labels running into each other: the window's own minimum for the
     /// whole window, 480x300 for one panel.
@@ -182,7 +200,10 @@ impl ZieglerApp {
         Layout {
             tab: self.tab,
             overlay: self.state.overlay().map(|o| o.preset.name().to_owned()),
-            map_axis: self.tabs.map().axis_choice(),
+            map_axis: self
+                .tabs
+                .get::<tabs::MapPanel>()
+                .and_then(tabs::MapPanel::axis_choice),
         }
     }
 
@@ -200,7 +221,9 @@ impl ZieglerApp {
         }
         if let Some((name, lo, hi)) = &layout.map_axis {
             let model = *self.state.model();
-            if let Err(why) = self.tabs.map_mut().choose_axis(&model, (name, *lo, *hi)) {
+            if let Some(map) = self.tabs.get_mut::<tabs::MapPanel>()
+                && let Err(why) = map.choose_axis(&model, (name, *lo, *hi))
+            {
                 self.state
                     .tell(Notice::warning(format!("stored map axis not used: {why}")));
             }
@@ -418,22 +441,20 @@ impl ZieglerApp {
             ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
                 if self.state.answer_hidden() {
                     ui.colored_label(theme.info, ANSWER_HIDDEN_NOTE);
-                } else {
-                    self.tabs
-                        .locus_mut()
-                        .complex_plane_ui(ui, &self.state, theme);
+                } else if let Some(locus) = self.tabs.get_mut::<tabs::LocusTab>() {
+                    locus.complex_plane_ui(ui, &self.state, theme);
                 }
             });
         }
         load_bar::load_bar_ui(ui, &self.state, &mut self.actions, theme);
-        tabs::Tabs::bar_ui(ui, self.tab, &mut self.actions);
+        tab_bar_ui(ui, self.tab, &mut self.actions);
         if ui.available_height() < min_plot_height {
             ui.weak(if locus_beside {
                 "The root locus is beside the column; the other plots need a taller window, or projector mode off (P)."
             } else {
                 "The plots need more room here: a taller window, or projector mode off (P)."
             });
-        } else if self.state.answer_hidden() && self.tab != Tab::Histories {
+        } else if self.state.answer_hidden() && self.tab != Tab::HISTORIES {
             ui.label(
                 RichText::new(format!(
                     "{ANSWER_HIDDEN_NOTE} The time histories show what the column does."
@@ -470,6 +491,21 @@ impl ZieglerApp {
         }
         self.ask_for_a_frame_if_asked(ui.ctx());
     }
+}
+
+/// The tab bar: a click asks for another tab.
+fn tab_bar_ui(ui: &mut egui::Ui, open: Tab, actions: &mut Actions) {
+    ui.horizontal(|ui| {
+        for tab in Tab::all() {
+            if ui
+                .selectable_label(open == tab, tab.title())
+                .on_hover_text(tab.tooltip())
+                .clicked()
+            {
+                actions.push(Action::Tab(tab));
+            }
+        }
+    });
 }
 
 /// The height the load bar and the tab bar take under the scene, in

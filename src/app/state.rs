@@ -2,27 +2,27 @@
 //! simulation, the analysis of the current parameters, the overlay and the
 //! notices, with the only ways to change them.
 
+mod analysis;
 mod apply;
 mod classroom;
 mod lesson;
 mod overlay;
 mod ramp;
+mod run;
 mod startup;
 
 use std::collections::VecDeque;
 
-use crate::analysis::{AffinePencil, AnalysisError, C64, Spectrum};
+use crate::analysis::{AnalysisError, C64, Spectrum};
 use crate::model::{Assignment, Axis, Key, Model, ModelError, PresetId, apply_assignments};
-use crate::sim::{
-    DEFAULT_STEP_SECS, EngineKind, Observables, SimError, Simulation, Status, initial_state,
-};
+use crate::sim::{DEFAULT_STEP_SECS, EngineKind, Observables, SimError, Simulation, initial_state};
 
 pub use lesson::LessonRun;
 pub use overlay::Overlay;
 pub use ramp::{RampRun, VISIBLE_FRACTION};
 
 use super::analysis_cache::Analysis;
-use super::analysis_worker::{AnalysisWorker, Finished};
+use super::analysis_worker::AnalysisWorker;
 use super::history::History;
 use super::notice::Notice;
 use super::pace::Pace;
@@ -422,213 +422,6 @@ impl AppState {
         }
     }
 
-    /// Advances the run by `wall_secs` of wall-clock time at the chosen speed
-    /// (whole engine steps, the remainder carried; see [`Pace`]).
-    pub fn advance(&mut self, wall_secs: f64) {
-        if !self.running || self.held {
-            self.pace.restart();
-            return;
-        }
-        let steps = self
-            .pace
-            .steps(wall_secs, self.settings.speed, self.sim.step_secs());
-        let mut taken = 0_u32;
-        for _ in 0..steps {
-            if !self.take_step() {
-                break;
-            }
-            taken += 1;
-        }
-        self.follow_ramp(f64::from(taken) * self.sim.step_secs());
-        self.refresh_measured();
-    }
-
-    /// One engine step, then paused (the step button).
-    fn step(&mut self) {
-        self.running = false;
-        self.pace.restart();
-        self.take_step();
-        self.refresh_measured();
-    }
-
-    /// One engine step with what follows it: the trail and the history; a
-    /// run that ends stops. Whether it goes on.
-    fn take_step(&mut self) -> bool {
-        if self.sim.step() != Status::Running {
-            self.running = false;
-            self.pace.restart();
-            return false;
-        }
-        let now = self.sim.observe();
-        push_trail(&mut self.trail, &now);
-        self.history.push(now);
-        true
-    }
-
-    /// Drops the measured eigenvalues; the next refit comes as soon as the
-    /// history allows.
-    fn forget_measured(&mut self) {
-        self.measured = None;
-        self.measured_at_secs = f64::NEG_INFINITY;
-    }
-
-    /// The eigenvalues measured from the run, refitted about once a
-    /// simulated second (not every step: at 10x a frame holds ten seconds).
-    fn refresh_measured(&mut self) {
-        let t = self.sim.time_secs();
-        if t - self.measured_at_secs >= 1.0 {
-            // Two exponentials per oscillating mode of the two-rod column. A
-            // chain's many modes, some with periods far beyond the history,
-            // are not measured: a fit of a few would show made-up values.
-            self.measured = (self.sim.model().column.rods == 2)
-                .then(|| self.history.measured(4))
-                .flatten();
-            self.measured_at_secs = t;
-        }
-    }
-
-    /// Disturbs both angles by [`KICK_RAD`] and runs on.
-    fn kick(&mut self) {
-        self.hint = false;
-        let mut x = self.sim.state();
-        x[0] += KICK_RAD;
-        x[1] += KICK_RAD;
-        if let Err(error) = self.sim.restart_from(self.sim.engine(), x) {
-            self.say(Notice::error(error.to_string()));
-        }
-        self.running = true;
-    }
-
-    /// A fresh run of the current model from the standard kick.
-    fn reset(&mut self) {
-        match start(&mut self.settings) {
-            Ok((sim, notice)) => {
-                if let Some(notice) = notice {
-                    self.say(notice);
-                }
-                self.sim = sim;
-                self.trail.clear();
-                self.history.clear();
-                self.forget_measured();
-                self.pace.restart();
-                self.running = true;
-            }
-            Err(error) => self.say(Notice::error(error.to_string())),
-        }
-    }
-
-    /// Analyses new parameters on a thread of their own from now on: the
-    /// locus and the critical loads follow a frame or so behind a dragged
-    /// slider, and the frame never waits for them. Stays inline when the
-    /// system gives no thread.
-    pub fn analyse_in_background(&mut self) {
-        if self.worker.is_none() {
-            self.worker = AnalysisWorker::start().ok();
-        }
-    }
-
-    /// Whether an analysis of the current parameters is still being computed.
-    #[must_use]
-    pub fn analysis_pending(&self) -> bool {
-        self.pending.is_some()
-    }
-
-    /// Takes what the analysis thread finished (call once a frame).
-    pub fn receive_analysis(&mut self) {
-        let finished = self.worker.as_ref().map(AnalysisWorker::finished);
-        for result in finished.into_iter().flatten() {
-            self.install(result);
-        }
-    }
-
-    /// Waits until the analysis of the current parameters is in (for
-    /// pictures and tests; the window never waits).
-    pub fn settle_analysis(&mut self) {
-        while self.pending.is_some() {
-            if let Some(result) = self.worker.as_ref().and_then(AnalysisWorker::wait) {
-                self.install(result);
-            } else {
-                // The thread is gone: analyse here.
-                self.worker = None;
-                self.pending = None;
-                self.refresh_analysis();
-            }
-        }
-    }
-
-    /// Recomputes the locus and the critical loads when the parameters
-    /// (anything but the load) changed, inline or on the analysis thread;
-    /// the spectrum at the current load always here and now.
-    fn refresh_analysis(&mut self) {
-        self.receive_analysis();
-        let key = self.settings.model.at_load(0.0);
-        if !self.shows_analysis_of(&key) && self.pending != Some(key) {
-            let sent = self.worker.as_ref().is_some_and(|w| w.request(key));
-            if sent {
-                self.pending = Some(key);
-            } else {
-                self.worker = None;
-                self.install((key, Analysis::new(&key)));
-            }
-        }
-        let model = self.settings.model;
-        let spectrum = match &self.analysis {
-            Some(analysis) if analysis.key == key => analysis.pencil.spectrum(model.load_p()),
-            // The locus is on its way; the spectrum here cannot wait for it.
-            _ => AffinePencil::new(&key).and_then(|pencil| pencil.spectrum(model.load_p())),
-        };
-        self.current = spectrum.ok().map(|spectrum| (model, spectrum));
-    }
-
-    /// Whether the analysis (or its failure) shown is that of `key`.
-    fn shows_analysis_of(&self, key: &Model) -> bool {
-        self.analysis.as_ref().is_some_and(|a| a.key == *key)
-            || self
-                .analysis_failure
-                .as_ref()
-                .is_some_and(|(k, _)| k == key)
-    }
-
-    /// Shows a finished analysis: the current parameters' or, while a
-    /// slider is dragged on, the newest there is (it is dropped once the
-    /// current parameters' own analysis is shown).
-    fn install(&mut self, (key, result): Finished) {
-        if self.pending == Some(key) {
-            self.pending = None;
-        }
-        let current = self.settings.model.at_load(0.0);
-        if key != current && self.shows_analysis_of(&current) {
-            return;
-        }
-        self.analysis_failure = None;
-        match result {
-            Ok(analysis) => self.analysis = Some(analysis),
-            Err(error) => {
-                // No stale plots: the old locus belongs to other parameters.
-                self.analysis = None;
-                self.say(Notice::error(format!("analysis unavailable: {error}")));
-                self.analysis_failure = Some((key, error));
-            }
-        }
-    }
-
-    /// The spectrum at the current load, if the current model has one.
-    #[must_use]
-    pub fn current_spectrum(&self) -> Option<&Spectrum> {
-        self.current
-            .as_ref()
-            .filter(|(m, _)| *m == self.settings.model && self.analysis.is_some())
-            .map(|(_, spectrum)| spectrum)
-    }
-
-    /// Every eigenvalue at the current load (none without an analysis).
-    #[must_use]
-    pub fn current_eigenvalues(&self) -> Vec<C64> {
-        self.current_spectrum()
-            .map(|s| s.all().collect())
-            .unwrap_or_default()
-    }
-
     /// The current model's `a = k/(m l^2)`.
     fn group_a(&self) -> f64 {
         Key::A.get(&self.settings.model)
@@ -638,67 +431,6 @@ impl AppState {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn the_step_button_steps_through_advance_s_bookkeeping() {
-        let mut state = AppState::new(Settings::default()).unwrap();
-        let before = state.history().thinned(usize::MAX).count();
-        state.step();
-        assert!(!state.running());
-        assert_eq!(state.history().thinned(usize::MAX).count(), before + 1);
-        assert!(state.simulation().time_secs() > 0.0);
-    }
-
-    /// A chain's eigenvalues are not measured from the run: its many modes
-    /// (the slowest with periods of minutes) are beyond a fit of two, and
-    /// the same run on two rods is measured.
-    #[test]
-    fn a_chain_s_eigenvalues_are_not_made_up_from_the_run() {
-        for (rods, measured) in [(2.0, true), (4.0, false)] {
-            let mut state = AppState::new(Settings::default()).unwrap();
-            state.set_parameter(Key::Rods, rods).unwrap();
-            for _ in 0..(40 * 60) {
-                state.advance(1.0 / 60.0);
-            }
-            assert_eq!(state.measured().is_some(), measured, "rods = {rods}");
-        }
-    }
-
-    /// A change of load mid-run restarts the measurement: the eigenvalues
-    /// measured before belong to the old column, and a window that
-    /// straddled the change would mix the two.
-    #[test]
-    fn a_change_of_load_restarts_the_measurement() {
-        let mut state = AppState::new(Settings::default()).unwrap();
-        for _ in 0..(25 * 60) {
-            state.advance(1.0 / 60.0);
-        }
-        assert!(state.measured().is_some(), "measured after 25 s");
-        state.set_parameter(Key::Load, 1.24).unwrap();
-        assert!(state.measured().is_none());
-        for _ in 0..(15 * 60) {
-            state.advance(1.0 / 60.0);
-        }
-        assert!(
-            state.measured().is_none(),
-            "15 s since the change: too short"
-        );
-        for _ in 0..(7 * 60) {
-            state.advance(1.0 / 60.0);
-        }
-        let measured = state.measured().expect("22 s since the change");
-        let predicted = state.current_spectrum().unwrap();
-        let growth = crate::analysis::classify(&predicted.eigenvalues, predicted.scale_per_s)
-            .growth_rate_per_s();
-        let fastest = measured
-            .iter()
-            .map(|z| z.re)
-            .fold(f64::NEG_INFINITY, f64::max);
-        assert!(
-            (fastest - growth).abs() < 0.2 * growth.abs(),
-            "measured {fastest} against predicted {growth}"
-        );
-    }
 
     #[test]
     fn switching_preset_recomputes_the_overlay_and_clears_a_refusal() {

@@ -4,34 +4,18 @@
 
 use std::str::FromStr;
 
+use clap::builder::TypedValueParser as _;
+
 use anyhow::Result;
-use clap::ValueEnum;
 
 use zieglerlab::app::{Panel, Tab, ZieglerApp};
 
 use super::tiles::TiledRenderer;
 
-#[derive(Clone, Copy, Debug, ValueEnum)]
-pub enum PanelArg {
-    Window,
-    Locus,
-    Scene,
-    Histories,
-    Map,
-    Paradox,
-}
-
-impl From<PanelArg> for Panel {
-    fn from(panel: PanelArg) -> Self {
-        match panel {
-            PanelArg::Window => Self::Window,
-            PanelArg::Locus => Self::Tab(Tab::Locus),
-            PanelArg::Scene => Self::Scene,
-            PanelArg::Histories => Self::Tab(Tab::Histories),
-            PanelArg::Map => Self::Tab(Tab::Map),
-            PanelArg::Paradox => Self::Tab(Tab::Paradox),
-        }
-    }
+/// The `--panel` values: the window, the scene and every tab of the app's
+/// registry, listed in `--help`.
+fn panel_parser() -> impl clap::builder::TypedValueParser<Value = Panel> {
+    clap::builder::PossibleValuesParser::new(Panel::names()).try_map(|name| Panel::from_str(&name))
 }
 
 /// A picture's size in pixels, `WIDTHxHEIGHT`, each 64 to 8192.
@@ -66,14 +50,14 @@ pub struct Look {
     pub scale: f32,
     #[arg(long)]
     pub projector: bool,
-    #[arg(long, value_enum, default_value_t = PanelArg::Window)]
-    pub panel: PanelArg,
+    #[arg(long, default_value = "window", value_parser = panel_parser())]
+    pub panel: Panel,
 }
 
 impl Look {
     /// The panel these arguments picture.
     pub fn panel(&self) -> Panel {
-        Panel::from(self.panel)
+        self.panel
     }
 
     /// Pixels per point must be 0.5 to 8, and `size` at that scale must lay
@@ -148,7 +132,7 @@ pub fn render_frames(
     let (width, height) = (f32::from(size.width), f32::from(size.height));
     app.draw_for_pictures();
     let background = match panel {
-        Panel::Tab(tab @ (Tab::Map | Tab::Paradox)) => Some(tab),
+        Panel::Tab(tab @ (Tab::MAP | Tab::PARADOX)) => Some(tab),
         _ => None,
     };
     if let Some(tab) = background {

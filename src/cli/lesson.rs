@@ -18,7 +18,7 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     let Some(path) = &args.check else {
         writeln!(out, "built-in lessons (check your own with --check FILE):")?;
         for (name, text) in BUILT_IN {
-            let lesson = Lesson::read(text)?;
+            let lesson = Lesson::read(text, &zieglerlab::app::Tab::ids())?;
             writeln!(
                 out,
                 "  {name}: {} ({} steps)",
@@ -28,7 +28,7 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
         }
         return Ok(());
     };
-    let lesson = Lesson::read_file(path)?;
+    let lesson = Lesson::read_file(path, &zieglerlab::app::Tab::ids())?;
     writeln!(
         out,
         "{}: ok: \"{}\", {} steps, from every preset, forward and back",

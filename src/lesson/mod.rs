@@ -57,8 +57,8 @@ pub struct Step {
     pub set: BTreeMap<Key, f64>,
     /// Simulated seconds per wall second.
     pub speed: Option<f64>,
-    /// The tab to open.
-    pub tab: Option<LessonTab>,
+    /// The tab to open, by its name (one of those the reader was given).
+    pub tab: Option<String>,
     /// Another preset's root locus to draw behind the current one.
     pub overlay: Option<PresetId>,
     /// Something to start.
@@ -143,33 +143,6 @@ fn keys_once<'de, D: serde::Deserializer<'de>>(
     deserializer.deserialize_map(Once)
 }
 
-/// The app's tabs, by the names a lesson uses: "locus", "histories",
-/// "map", "paradox".
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
-#[serde(try_from = "String")]
-pub enum LessonTab {
-    Locus,
-    Histories,
-    Map,
-    Paradox,
-}
-
-impl TryFrom<String> for LessonTab {
-    type Error = String;
-
-    fn try_from(name: String) -> Result<Self, String> {
-        match name.as_str() {
-            "locus" => Ok(Self::Locus),
-            "histories" => Ok(Self::Histories),
-            "map" => Ok(Self::Map),
-            "paradox" => Ok(Self::Paradox),
-            _ => Err(format!(
-                "unknown tab '{name}': expected locus, histories, map or paradox"
-            )),
-        }
-    }
-}
-
 /// What a step starts.
 #[derive(Clone, Copy, Debug, PartialEq, Deserialize)]
 pub enum Run {
@@ -226,21 +199,21 @@ impl Lesson {
     ///
     /// # Errors
     /// The file cannot be read, or the lesson's first problem.
-    pub fn read_file(path: &Path) -> Result<Self, LessonFileError> {
+    pub fn read_file(path: &Path, tabs: &[&str]) -> Result<Self, LessonFileError> {
         let text = crate::files::read_text(path, MOST_BYTES)?;
-        Self::read(&text).map_err(|error| LessonFileError::Lesson {
+        Self::read(&text, tabs).map_err(|error| LessonFileError::Lesson {
             path: path.display().to_string(),
             error,
         })
     }
 
-    /// Reads and checks a lesson's text: its syntax and field names, then
-    /// every step against the column it would act on, whichever preset the
-    /// lesson is opened on.
+    /// Reads and checks a lesson's text: its syntax and field names, every
+    /// step against the column it would act on, whichever preset the lesson
+    /// is opened on, and each tab it opens among `tabs` (the app's, by name).
     ///
     /// # Errors
     /// The first problem, with its line.
-    pub fn read(text: &str) -> Result<Self, LessonError> {
+    pub fn read(text: &str, tabs: &[&str]) -> Result<Self, LessonError> {
         // Optional fields are written bare (`preset: "tabletop"`), not
         // wrapped in `Some(..)`.
         let options = ron::Options::default()
@@ -249,7 +222,7 @@ impl Lesson {
             line: e.span.start.line,
             message: e.code.to_string(),
         })?;
-        lesson.check(text)?;
+        lesson.check(text, tabs)?;
         Ok(lesson)
     }
 
@@ -274,7 +247,7 @@ impl Lesson {
     /// takes (from every preset the lesson may be opened on), a speed in
     /// range, a choice of two answers or more, and a revealed answer among
     /// them.
-    fn check(&self, text: &str) -> Result<(), LessonError> {
+    fn check(&self, text: &str, tabs: &[&str]) -> Result<(), LessonError> {
         let at_step = |index: usize, message: String| LessonError {
             line: step_line(text, index),
             message: format!("step {}: {message}", index + 1),
@@ -318,6 +291,14 @@ impl Lesson {
         for (index, step) in self.steps.iter().enumerate() {
             if step.text.trim().is_empty() {
                 return Err(at_step(index, "expected a `text` to show".to_owned()));
+            }
+            if let Some(tab) = &step.tab
+                && !tabs.contains(&tab.as_str())
+            {
+                return Err(at_step(
+                    index,
+                    format!("unknown tab '{tab}': expected one of {}", tabs.join(", ")),
+                ));
             }
             if let Some(speed) = step.speed
                 && !SPEED_RANGE.contains(&speed)
@@ -434,7 +415,8 @@ mod tests {
     #[test]
     fn every_built_in_lesson_reads_and_checks() {
         for (name, text) in BUILT_IN {
-            let lesson = Lesson::read(text).unwrap_or_else(|e| panic!("{name}: {e}"));
+            let lesson = Lesson::read(text, &crate::app::Tab::ids())
+                .unwrap_or_else(|e| panic!("{name}: {e}"));
             assert!(lesson.steps.len() >= 3, "{name}");
             assert!(
                 lesson.steps.iter().any(|s| s.predict.is_some())
@@ -514,10 +496,16 @@ mod tests {
                 4,
                 "ramp from = 1e300",
             ),
+            // A tab the app has not, with the names it has.
+            (
+                "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\"),\n  Step(text: \"b\", tab: \"plots\"),\n ],\n)",
+                5,
+                "step 2: unknown tab 'plots': expected one of locus, histories, map, paradox",
+            ),
         ];
         for (text, line, says) in cases {
             let text: &str = text;
-            let error = Lesson::read(text).unwrap_err();
+            let error = Lesson::read(text, &crate::app::Tab::ids()).unwrap_err();
             assert_eq!(error.line, line, "{text}: {error}");
             assert!(error.message.contains(says), "{text}: {error}");
         }
@@ -529,7 +517,8 @@ mod tests {
     fn a_step_gives_the_same_column_forward_and_back() {
         let lesson = Lesson::read(
             "Lesson(title: \"t\", steps: [\n Step(text: \"a\", preset: \"tabletop\", set: {\"eta\": 0.5, \"load\": 1.0}),\n Step(text: \"b\", preset: \"roller\"),\n Step(text: \"c\", set: {\"load\": 2.0}),\n])",
-        )
+&crate::app::Tab::ids(),
+)
         .unwrap();
         let start = Column {
             preset: PresetId::Beck,

@@ -13,6 +13,7 @@ mod keys;
 mod linear;
 mod params;
 mod presets;
+mod validate;
 
 pub use crate::format::Shown;
 pub use axis::{Axis, DAMPER_RATIO, DAMPING_LEVEL, MASS_RATIO};

@@ -361,7 +361,7 @@ fn page_down_and_page_up_step_through_a_lesson() {
     harness.run();
     assert!(harness.state().state().lesson().is_none());
     let (_, text) = zieglerlab::lesson::BUILT_IN[0];
-    let lesson = zieglerlab::lesson::Lesson::read(text).unwrap();
+    let lesson = zieglerlab::lesson::Lesson::read(text, &zieglerlab::app::Tab::ids()).unwrap();
     harness
         .state_mut()
         .apply(zieglerlab::app::Action::LessonOpen(Box::new(lesson)));
@@ -447,7 +447,7 @@ fn the_words_fit_the_column() {
             ..Settings::default()
         })
         .unwrap();
-        app.show_tab(Tab::Histories);
+        app.show_tab(Tab::HISTORIES);
         // The analysis alone: the map's and paradox's work is not shown.
         app.state_mut().settle_analysis();
         let mut harness = Harness::builder()

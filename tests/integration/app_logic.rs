@@ -4,7 +4,7 @@
 //! what was ignored.
 
 use egui_kittest::kittest::Queryable as _;
-use zieglerlab::app::{Action, MAX_FRAME_SECS, NamedAction, Settings, ZieglerApp};
+use zieglerlab::app::{Action, Command, MAX_FRAME_SECS, Settings, ZieglerApp};
 use zieglerlab::model::{Axis, Key, PresetId};
 use zieglerlab::sim::{DEFAULT_STEP_SECS, EngineKind, Status};
 
@@ -304,7 +304,11 @@ fn pasted_garbage_changes_nothing_and_says_so() {
     // Another preset pasted keeps the overlay chosen and the lesson open.
     app.apply(Action::Overlay(Some(PresetId::UniformRods)));
     app.apply(Action::LessonOpen(Box::new(
-        zieglerlab::lesson::Lesson::read(zieglerlab::lesson::BUILT_IN[0].1).unwrap(),
+        zieglerlab::lesson::Lesson::read(
+            zieglerlab::lesson::BUILT_IN[0].1,
+            &zieglerlab::app::Tab::ids(),
+        )
+        .unwrap(),
     )));
     let tabletop = Settings {
         preset: PresetId::Tabletop,
@@ -382,7 +386,7 @@ fn the_window_layout_comes_back_and_a_misfit_is_said() {
     use zieglerlab::app::{Layout, Tab};
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     let arranged = Layout {
-        tab: Tab::Map,
+        tab: Tab::MAP,
         overlay: Some("ziegler-1952".to_owned()),
         map_axis: Some(("V".to_owned(), 0.05, 0.5)),
     };
@@ -404,12 +408,12 @@ fn the_window_layout_comes_back_and_a_misfit_is_said() {
     };
     let mut other = ZieglerApp::new(column).unwrap();
     other.arrange(&Layout {
-        tab: Tab::Paradox,
+        tab: Tab::PARADOX,
         overlay: Some("no-such-preset".to_owned()),
         map_axis: Some(("nu".to_owned(), 0.01, 1.0)),
     });
     let layout = other.layout();
-    assert_eq!(layout.tab, Tab::Paradox);
+    assert_eq!(layout.tab, Tab::PARADOX);
     assert_eq!(layout.overlay, None);
     assert_eq!(
         layout.map_axis, None,
@@ -539,7 +543,7 @@ fn a_finished_ramp_leaves_the_next_lesson_its_load() {
     use zieglerlab::lesson::{BUILT_IN, Lesson};
     let lesson = |name: &str| {
         let (_, text) = BUILT_IN.iter().find(|(n, _)| *n == name).unwrap();
-        Lesson::read(text).unwrap()
+        Lesson::read(text, &zieglerlab::app::Tab::ids()).unwrap()
     };
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     app.apply(Action::LessonOpen(Box::new(lesson(
@@ -548,7 +552,7 @@ fn a_finished_ramp_leaves_the_next_lesson_its_load() {
     // To the ramp's step, then its 60 s of simulated time and more.
     while app.state().ramp().is_none() {
         let before = app.state().lesson().unwrap().step;
-        app.apply(NamedAction::LessonNext.into());
+        app.apply(Command::LessonNext.into());
         assert_ne!(
             app.state().lesson().unwrap().step,
             before,
@@ -580,7 +584,7 @@ fn a_finished_ramp_leaves_the_next_lesson_its_load() {
 fn the_answer_is_hidden_from_the_prediction_to_the_reveal() {
     use zieglerlab::lesson::{BUILT_IN, Lesson};
     for (name, text) in BUILT_IN {
-        let lesson = Lesson::read(text).unwrap();
+        let lesson = Lesson::read(text, &zieglerlab::app::Tab::ids()).unwrap();
         let asked = lesson.steps.iter().position(|s| s.predict.is_some());
         let revealed = lesson.steps.iter().position(|s| s.reveal.is_some());
         let mut app = ZieglerApp::new(Settings::default()).unwrap();
@@ -589,7 +593,7 @@ fn the_answer_is_hidden_from_the_prediction_to_the_reveal() {
             assert_eq!(app.state().lesson().unwrap().step, step);
             let expected = asked.is_some_and(|a| step >= a && revealed.is_none_or(|r| step < r));
             assert_eq!(app.state().answer_hidden(), expected, "{name}, step {step}");
-            app.apply(NamedAction::LessonNext.into());
+            app.apply(Command::LessonNext.into());
         }
         assert!(!app.state().answer_hidden(), "{name}: revealed at the end");
         app.apply(Action::LessonClose);
@@ -609,7 +613,7 @@ fn the_answer_is_hidden_from_the_prediction_to_the_reveal() {
 fn a_lesson_shows_the_same_column_forward_and_back_from_any_preset() {
     use zieglerlab::lesson::{BUILT_IN, Lesson};
     for (_, text) in BUILT_IN {
-        let lesson = Lesson::read(text).unwrap();
+        let lesson = Lesson::read(text, &zieglerlab::app::Tab::ids()).unwrap();
         assert!(lesson.steps[0].preset.is_some());
         for start in [PresetId::Roller, PresetId::Beck] {
             walk_lesson(&lesson, start);
@@ -620,7 +624,8 @@ fn a_lesson_shows_the_same_column_forward_and_back_from_any_preset() {
     // eta on the roller).
     let crossing = Lesson::read(
         "Lesson(title: \"t\", steps: [\n Step(text: \"a\", set: {\"load\": 0.5}),\n Step(text: \"b\", preset: \"tabletop\", set: {\"eta\": 0.5}),\n Step(text: \"c\", preset: \"roller\", set: {\"nu\": 0.2}),\n])",
-    )
+&zieglerlab::app::Tab::ids(),
+)
     .unwrap();
     for start in PresetId::ALL {
         if start.model().column.rods == 2 || start == PresetId::Beck {
@@ -648,9 +653,9 @@ fn walk_lesson(lesson: &zieglerlab::lesson::Lesson, start: PresetId) {
     for (turn, step) in (0..=last).chain((0..last).rev()).enumerate() {
         if turn > 0 {
             app.apply(if turn <= last {
-                NamedAction::LessonNext.into()
+                Command::LessonNext.into()
             } else {
-                NamedAction::LessonBack.into()
+                Command::LessonBack.into()
             });
         }
         let state = app.state();

@@ -4,8 +4,7 @@
 
 use eframe::egui::{self, RichText};
 
-use crate::app::action::{Action, Actions};
-use crate::app::command::Command;
+use crate::app::action::{Action, Actions, Command};
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::app::{Notice, View};
@@ -34,7 +33,7 @@ impl Reading {
         let file = std::path::PathBuf::from(path);
         std::thread::spawn(move || {
             // The window may have closed meanwhile: nobody to tell.
-            let _ = send.send(Lesson::read_file(&file));
+            let _ = send.send(Lesson::read_file(&file, &crate::app::Tab::ids()));
         });
         Self {
             path: path.to_owned(),
@@ -77,7 +76,7 @@ impl View for LessonSection {
         let built_in = self.built_in.get_or_insert_with(|| {
             BUILT_IN
                 .iter()
-                .map(|&(name, text)| (name, Lesson::read(text)))
+                .map(|&(name, text)| (name, Lesson::read(text, &crate::app::Tab::ids())))
                 .collect()
         });
         egui::CollapsingHeader::new("lessons").show(ui, |ui| {

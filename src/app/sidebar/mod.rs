@@ -15,8 +15,7 @@ mod time;
 use eframe::egui;
 
 use super::View;
-use super::action::{Action, Actions};
-use super::command::Command;
+use super::action::{Action, Actions, Command};
 use super::state::AppState;
 use super::theme::Theme;
 use crate::model::{PRESETS, PresetId};

@@ -3,8 +3,7 @@
 use eframe::egui;
 
 use crate::app::View;
-use crate::app::action::{Action, Actions};
-use crate::app::command::Command;
+use crate::app::action::{Action, Actions, Command};
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::number_text;
@@ -30,7 +29,7 @@ impl View for TimeSection {
                 Command::Reset,
                 Command::ResetAll,
             ] {
-                command.button(ui, state, actions);
+                command.button(ui, state.running(), actions);
             }
         });
         ui.horizontal(|ui| {

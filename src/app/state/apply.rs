@@ -3,8 +3,7 @@
 //! (the tab, a recording).
 
 use super::AppState;
-use crate::app::action::Action;
-use crate::app::command::Command;
+use crate::app::action::{Action, Command};
 
 /// The step of the load keys, as a fraction of the slider's range.
 const LOAD_KEY_STEP: f64 = 0.01;

@@ -3,8 +3,7 @@
 //! speed, overlay, tab, a kick or a ramp).
 
 use super::AppState;
-use crate::app::action::Action;
-use crate::app::command::Command;
+use crate::app::action::{Action, Command};
 use crate::app::notice::Notice;
 use crate::app::tabs::Tab;
 use crate::lesson::{Column, Lesson, Predict, Reveal, Run};
@@ -183,7 +182,13 @@ impl AppState {
         }
         actions.extend(step.speed.map(Action::Speed));
         actions.extend(step.overlay.map(|id| Action::Overlay(Some(id))));
-        actions.extend(step.tab.map(|tab| Action::Tab(Tab::from(tab))));
+        if let Some(name) = &step.tab {
+            // Read against the registry: a name it has not was refused then.
+            actions.push(Tab::named(name).map_or_else(
+                |why| Action::Say(Notice::error(format!("lesson: {why}"))),
+                Action::Tab,
+            ));
+        }
         match step.run {
             Some(Run::Kick) => actions.push(Command::Kick.into()),
             // A ramp starts from a quiet column: a fresh run from the

@@ -3,6 +3,7 @@
 
 use eframe::egui;
 
+use super::{TabSpec, TabView};
 use crate::app::View;
 use crate::app::action::Actions;
 use crate::app::plot_frame::Fit;
@@ -10,12 +11,21 @@ use crate::app::plots::histories_ui;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 
+pub const TAB: TabSpec = TabSpec {
+    id: "histories",
+    title: "time histories",
+    tooltip: "the angles, the energy and the band's power over the run",
+    make: || Box::new(HistoriesTab::default()),
+};
+
 /// The plots follow the run until they are zoomed or panned; "fit" (or a
 /// double-click) makes them follow it again.
 #[derive(Default)]
 pub struct HistoriesTab {
     fit: Fit<u64>,
 }
+
+impl TabView for HistoriesTab {}
 
 impl View for HistoriesTab {
     fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, _actions: &mut Actions, theme: &Theme) {

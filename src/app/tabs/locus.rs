@@ -4,6 +4,7 @@
 
 use eframe::egui::{self, vec2};
 
+use super::{TabSpec, TabView};
 use crate::analysis::Locus;
 use crate::app::View;
 use crate::app::action::Actions;
@@ -15,12 +16,21 @@ use crate::app::theme::load_color;
 use crate::format::number_text;
 use crate::model::{Model, PresetId};
 
+pub const TAB: TabSpec = TabSpec {
+    id: "locus",
+    title: "root locus",
+    tooltip: "the eigenvalues in the complex plane and against the load",
+    make: || Box::new(LocusTab::default()),
+};
+
 /// The plots refit when the analysis drawn (of other parameters) or the
 /// overlay changes, and on "reset all".
 #[derive(Default)]
 pub struct LocusTab {
     fit: Fit<(u64, Model, Option<PresetId>)>,
 }
+
+impl TabView for LocusTab {}
 
 impl View for LocusTab {
     fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, _actions: &mut Actions, theme: &Theme) {

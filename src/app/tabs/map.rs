@@ -10,6 +10,7 @@ use std::thread::JoinHandle;
 use eframe::egui::{self, Color32, ColorImage, TextureHandle, TextureOptions};
 use egui_plot::{Line, Plot, PlotImage, PlotPoint, PlotPoints, Points};
 
+use super::{TabSpec, TabView};
 use crate::analysis::{MapSpec, Row, RowResult, State, Transition, compute_map};
 use crate::app::View;
 use crate::app::action::{Action, Actions};
@@ -115,6 +116,13 @@ impl Drop for Job {
 /// What the map's view shows: the "reset all" count, the second axis, its
 /// range, the load range.
 type MapAxes = (u64, String, (f64, f64), (f64, f64));
+
+pub const TAB: TabSpec = TabSpec {
+    id: "map",
+    title: "stability map",
+    tooltip: "the stability of every load against a second parameter",
+    make: || Box::new(MapPanel::default()),
+};
 
 /// The panel's choices and its current job.
 pub struct MapPanel {
@@ -360,6 +368,14 @@ impl MapPanel {
                 self.range = (lo, hi);
             }
         });
+    }
+}
+
+impl TabView for MapPanel {
+    fn complete_background_work(&mut self, state: &AppState) {
+        let model = state.model();
+        self.follow(model, model.load_bar_max_p());
+        self.wait();
     }
 }
 

@@ -1,133 +1,191 @@
-//! The tabs of the lower half of the window, each a [`View`] in a file of
-//! its own: the root locus, the time histories, the stability map and the
-//! paradox explorer.
+//! The tabs of the lower half of the window, in one registry ([`TABS`]):
+//! each tab is a file of its own with its [`TabSpec`], and the tab bar, the
+//! lessons' `tab`, the command line's `--panel`, the stored layout and the
+//! pictures all read the list. A new tab is one file and one line here.
 
 mod histories;
 mod locus;
 pub mod map;
 mod paradox;
 
-use eframe::egui;
+use std::any::Any;
 
 use super::View;
-use super::action::{Action, Actions};
 use super::state::AppState;
 
-/// The choice of plots in the lower half of the window.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-pub enum Tab {
-    #[default]
-    Locus,
-    Histories,
-    Map,
-    Paradox,
+/// A tab's view: it draws itself from the state (a [`View`]) and can finish
+/// its background work for a picture.
+pub trait TabView: View + Any {
+    /// Computes this tab's background work for the current state and waits
+    /// until it is complete (for pictures and tests; the window never waits).
+    fn complete_background_work(&mut self, _state: &AppState) {}
 }
 
-impl From<crate::lesson::LessonTab> for Tab {
-    fn from(tab: crate::lesson::LessonTab) -> Self {
-        use crate::lesson::LessonTab;
-        match tab {
-            LessonTab::Locus => Self::Locus,
-            LessonTab::Histories => Self::Histories,
-            LessonTab::Map => Self::Map,
-            LessonTab::Paradox => Self::Paradox,
-        }
-    }
+/// What a tab is, for everything that names it.
+pub struct TabSpec {
+    /// The name lessons, `--panel` and the stored layout use.
+    pub id: &'static str,
+    /// The tab bar's name.
+    pub title: &'static str,
+    /// What it shows (the tab bar's tooltip).
+    pub tooltip: &'static str,
+    /// Its view, as the window starts.
+    pub make: fn() -> Box<dyn TabView>,
 }
+
+/// Every tab, in the tab bar's order.
+pub const TABS: [TabSpec; 4] = [locus::TAB, histories::TAB, map::TAB, paradox::TAB];
+
+/// A tab of [`TABS`], by its place there.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Tab(usize);
 
 impl Tab {
-    /// Every tab, in the order the tab bar shows them.
-    pub const ALL: [Self; 4] = [Self::Locus, Self::Histories, Self::Map, Self::Paradox];
+    /// The root locus (the first tab, shown at launch).
+    pub const LOCUS: Self = Self(0);
+    pub const HISTORIES: Self = Self(1);
+    pub const MAP: Self = Self(2);
+    pub const PARADOX: Self = Self(3);
 
-    /// What the tab shows, for its tooltip.
-    #[must_use]
-    pub fn tooltip(self) -> &'static str {
-        match self {
-            Self::Locus => "the eigenvalues in the complex plane and against the load",
-            Self::Histories => "the angles, the energy and the band's power over the run",
-            Self::Map => "the stability of every load against a second parameter",
-            Self::Paradox => {
-                "the first critical load as the damping (or the roller's mass) vanishes"
-            }
-        }
+    /// Every tab, in the tab bar's order.
+    pub fn all() -> impl Iterator<Item = Self> {
+        (0..TABS.len()).map(Self)
     }
 
-    /// The tab bar's name for it.
+    /// The tab named `id`.
+    ///
+    /// # Errors
+    /// No tab has that name: the message lists those that do.
+    pub fn named(id: &str) -> Result<Self, String> {
+        Self::all().find(|tab| tab.id() == id).ok_or_else(|| {
+            format!(
+                "unknown tab '{id}': expected one of {}",
+                Self::ids().join(", ")
+            )
+        })
+    }
+
+    /// Every tab's name, in order.
+    #[must_use]
+    pub fn ids() -> Vec<&'static str> {
+        TABS.iter().map(|spec| spec.id).collect()
+    }
+
+    #[must_use]
+    pub fn spec(self) -> &'static TabSpec {
+        &TABS[self.0]
+    }
+
+    #[must_use]
+    pub fn id(self) -> &'static str {
+        self.spec().id
+    }
+
     #[must_use]
     pub fn title(self) -> &'static str {
-        match self {
-            Self::Locus => "root locus",
-            Self::Histories => "time histories",
-            Self::Map => "stability map",
-            Self::Paradox => "paradox",
-        }
+        self.spec().title
+    }
+
+    #[must_use]
+    pub fn tooltip(self) -> &'static str {
+        self.spec().tooltip
     }
 }
 
-/// Every tab's view (the map and the paradox keep their background work).
-#[derive(Default)]
+impl std::fmt::Display for Tab {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.id())
+    }
+}
+
+impl serde::Serialize for Tab {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(self.id())
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for Tab {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let id = String::deserialize(deserializer)?;
+        Self::named(&id).map_err(serde::de::Error::custom)
+    }
+}
+
+/// Every tab's view, made from the registry.
 pub struct Tabs {
-    locus: locus::LocusTab,
-    histories: histories::HistoriesTab,
-    map: map::MapPanel,
-    paradox: paradox::ParadoxPanel,
+    views: Vec<Box<dyn TabView>>,
+}
+
+impl Default for Tabs {
+    fn default() -> Self {
+        Self {
+            views: TABS.iter().map(|spec| (spec.make)()).collect(),
+        }
+    }
 }
 
 impl Tabs {
-    /// The locus tab, for its complex plane alone.
-    pub fn locus_mut(&mut self) -> &mut locus::LocusTab {
-        &mut self.locus
-    }
-
     /// The view that draws `tab`.
-    pub fn view(&mut self, tab: Tab) -> &mut dyn View {
-        match tab {
-            Tab::Locus => &mut self.locus,
-            Tab::Histories => &mut self.histories,
-            Tab::Map => &mut self.map,
-            Tab::Paradox => &mut self.paradox,
-        }
+    pub fn view(&mut self, tab: Tab) -> &mut dyn TabView {
+        self.views[tab.0].as_mut()
     }
 
-    /// The tab bar: a click shows another tab.
-    pub fn bar_ui(ui: &mut egui::Ui, open: Tab, actions: &mut Actions) {
-        ui.horizontal(|ui| {
-            for tab in Tab::ALL {
-                if ui
-                    .selectable_label(open == tab, tab.title())
-                    .on_hover_text(tab.tooltip())
-                    .clicked()
-                {
-                    actions.push(Action::Tab(tab));
-                }
-            }
-        });
-    }
-
-    /// The stability map's view (its axis choice).
+    /// The view of type `T` (the locus drawn beside the scene, the map's
+    /// axis kept in the layout).
     #[must_use]
-    pub fn map(&self) -> &map::MapPanel {
-        &self.map
+    pub fn get<T: TabView>(&self) -> Option<&T> {
+        self.views
+            .iter()
+            .find_map(|view| (view.as_ref() as &dyn Any).downcast_ref())
     }
 
-    /// The stability map's view, to choose its axis.
-    pub fn map_mut(&mut self) -> &mut map::MapPanel {
-        &mut self.map
+    /// [`Self::get`], to change.
+    pub fn get_mut<T: TabView>(&mut self) -> Option<&mut T> {
+        self.views
+            .iter_mut()
+            .find_map(|view| (view.as_mut() as &mut dyn Any).downcast_mut())
     }
 
-    /// Computes the background work of `tab` (the stability map, the
-    /// paradox curves) for the current parameters and waits until it is
-    /// complete (for pictures and tests). Other tabs' work is not started:
-    /// a picture of the paradox on a chain once computed the map too.
+    /// Computes the background work of `tab` for the current parameters and
+    /// waits until it is complete (for pictures and tests). Other tabs'
+    /// work is not started: a picture of the paradox on a chain once
+    /// computed the map too.
     pub fn complete_background_work(&mut self, state: &AppState, tab: Tab) {
-        let model = state.model();
-        match tab {
-            Tab::Map => {
-                self.map.follow(model, model.load_bar_max_p());
-                self.map.wait();
-            }
-            Tab::Paradox => self.paradox.wait(model),
-            Tab::Locus | Tab::Histories => {}
+        self.view(tab).complete_background_work(state);
+    }
+}
+
+pub use locus::LocusTab;
+pub use map::MapPanel;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The named tabs are the registry's, and names are unique.
+    #[test]
+    fn the_named_tabs_are_the_registry_s() {
+        for (tab, id) in [
+            (Tab::LOCUS, "locus"),
+            (Tab::HISTORIES, "histories"),
+            (Tab::MAP, "map"),
+            (Tab::PARADOX, "paradox"),
+        ] {
+            assert_eq!(tab.id(), id);
+            assert_eq!(Tab::named(id), Ok(tab));
         }
+        let mut ids = Tab::ids();
+        ids.sort_unstable();
+        ids.dedup();
+        assert_eq!(ids.len(), TABS.len());
+        assert!(Tab::named("plots").unwrap_err().contains("locus"));
+    }
+
+    /// A tab is written and read by its name.
+    #[test]
+    fn a_tab_is_written_and_read_by_its_name() {
+        assert_eq!(ron::to_string(&Tab::MAP).unwrap(), "\"map\"");
+        assert_eq!(ron::from_str::<Tab>("\"map\""), Ok(Tab::MAP));
+        assert!(ron::from_str::<Tab>("\"plots\"").is_err());
     }
 }

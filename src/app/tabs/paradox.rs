@@ -10,6 +10,7 @@ use std::sync::{Arc, mpsc};
 use eframe::egui;
 use egui_plot::{Corner, HLine, Legend, Line, Plot, PlotPoints, Points, log_grid_spacer};
 
+use super::{TabSpec, TabView};
 use crate::analysis::{
     first_instability, flutter_load_damped, flutter_load_external, natural_load_max,
 };
@@ -263,6 +264,13 @@ impl Drop for Job {
     }
 }
 
+pub const TAB: TabSpec = TabSpec {
+    id: "paradox",
+    title: "paradox",
+    tooltip: "the first critical load as the damping (or the roller's mass) vanishes",
+    make: || Box::new(ParadoxPanel::default()),
+};
+
 /// The panel and its job.
 #[derive(Default)]
 pub struct ParadoxPanel {
@@ -453,6 +461,12 @@ impl ParadoxPanel {
                 );
             }
         });
+    }
+}
+
+impl TabView for ParadoxPanel {
+    fn complete_background_work(&mut self, state: &AppState) {
+        self.wait(state.model());
     }
 }
 

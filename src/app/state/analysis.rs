@@ -1,0 +1,125 @@
+//! The state following the analysis of its parameters: the locus and the
+//! critical loads computed inline or on the analysis thread (the newest
+//! parameters win, a late answer for parameters left behind is dropped),
+//! and the spectrum at the current load, always exact at once.
+
+use super::AppState;
+use crate::analysis::{AffinePencil, C64, Spectrum};
+use crate::app::analysis_cache::Analysis;
+use crate::app::analysis_worker::{AnalysisWorker, Finished};
+use crate::app::notice::Notice;
+use crate::model::Model;
+
+impl AppState {
+    /// Analyses new parameters on a thread of their own from now on: the
+    /// locus and the critical loads follow a frame or so behind a dragged
+    /// slider, and the frame never waits for them. Stays inline when the
+    /// system gives no thread.
+    pub fn analyse_in_background(&mut self) {
+        if self.worker.is_none() {
+            self.worker = AnalysisWorker::start().ok();
+        }
+    }
+
+    /// Whether an analysis of the current parameters is still being computed.
+    #[must_use]
+    pub fn analysis_pending(&self) -> bool {
+        self.pending.is_some()
+    }
+
+    /// Takes what the analysis thread finished (call once a frame).
+    pub fn receive_analysis(&mut self) {
+        let finished = self.worker.as_ref().map(AnalysisWorker::finished);
+        for result in finished.into_iter().flatten() {
+            self.install(result);
+        }
+    }
+
+    /// Waits until the analysis of the current parameters is in (for
+    /// pictures and tests; the window never waits).
+    pub fn settle_analysis(&mut self) {
+        while self.pending.is_some() {
+            if let Some(result) = self.worker.as_ref().and_then(AnalysisWorker::wait) {
+                self.install(result);
+            } else {
+                // The thread is gone: analyse here.
+                self.worker = None;
+                self.pending = None;
+                self.refresh_analysis();
+            }
+        }
+    }
+
+    /// Recomputes the locus and the critical loads when the parameters
+    /// (anything but the load) changed, inline or on the analysis thread;
+    /// the spectrum at the current load always here and now.
+    pub(super) fn refresh_analysis(&mut self) {
+        self.receive_analysis();
+        let key = self.settings.model.at_load(0.0);
+        if !self.shows_analysis_of(&key) && self.pending != Some(key) {
+            let sent = self.worker.as_ref().is_some_and(|w| w.request(key));
+            if sent {
+                self.pending = Some(key);
+            } else {
+                self.worker = None;
+                self.install((key, Analysis::new(&key)));
+            }
+        }
+        let model = self.settings.model;
+        let spectrum = match &self.analysis {
+            Some(analysis) if analysis.key == key => analysis.pencil.spectrum(model.load_p()),
+            // The locus is on its way; the spectrum here cannot wait for it.
+            _ => AffinePencil::new(&key).and_then(|pencil| pencil.spectrum(model.load_p())),
+        };
+        self.current = spectrum.ok().map(|spectrum| (model, spectrum));
+    }
+
+    /// Whether the analysis (or its failure) shown is that of `key`.
+    fn shows_analysis_of(&self, key: &Model) -> bool {
+        self.analysis.as_ref().is_some_and(|a| a.key == *key)
+            || self
+                .analysis_failure
+                .as_ref()
+                .is_some_and(|(k, _)| k == key)
+    }
+
+    /// Shows a finished analysis: the current parameters' or, while a
+    /// slider is dragged on, the newest there is (it is dropped once the
+    /// current parameters' own analysis is shown).
+    fn install(&mut self, (key, result): Finished) {
+        if self.pending == Some(key) {
+            self.pending = None;
+        }
+        let current = self.settings.model.at_load(0.0);
+        if key != current && self.shows_analysis_of(&current) {
+            return;
+        }
+        self.analysis_failure = None;
+        match result {
+            Ok(analysis) => self.analysis = Some(analysis),
+            Err(error) => {
+                // No stale plots: the old locus belongs to other parameters.
+                self.analysis = None;
+                self.say(Notice::error(format!("analysis unavailable: {error}")));
+                self.analysis_failure = Some((key, error));
+            }
+        }
+    }
+
+    /// The spectrum at the current load, if the current model has one.
+    #[must_use]
+    pub fn current_spectrum(&self) -> Option<&Spectrum> {
+        self.current
+            .as_ref()
+            .filter(|(m, _)| *m == self.settings.model && self.analysis.is_some())
+            .map(|(_, spectrum)| spectrum)
+    }
+
+    /// Every eigenvalue at the current load (none without an analysis).
+    #[must_use]
+    pub fn current_eigenvalues(&self) -> Vec<C64> {
+        self.current_spectrum()
+            .map(|s| s.all().collect())
+            .unwrap_or_default()
+    }
+}

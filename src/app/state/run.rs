@@ -1,0 +1,172 @@
+//! The run: advancing it with the wall clock's elapsed time at the chosen
+//! speed, one step at a time, a kick, a fresh start, and the eigenvalues
+//! measured from it.
+
+use super::{AppState, KICK_RAD, push_trail, start};
+use crate::app::notice::Notice;
+use crate::sim::Status;
+
+impl AppState {
+    /// Advances the run by `wall_secs` of wall-clock time at the chosen speed
+    /// (whole engine steps, the remainder carried; see [`Pace`]).
+    pub fn advance(&mut self, wall_secs: f64) {
+        if !self.running || self.held {
+            self.pace.restart();
+            return;
+        }
+        let steps = self
+            .pace
+            .steps(wall_secs, self.settings.speed, self.sim.step_secs());
+        let mut taken = 0_u32;
+        for _ in 0..steps {
+            if !self.take_step() {
+                break;
+            }
+            taken += 1;
+        }
+        self.follow_ramp(f64::from(taken) * self.sim.step_secs());
+        self.refresh_measured();
+    }
+
+    /// One engine step, then paused (the step button).
+    pub(super) fn step(&mut self) {
+        self.running = false;
+        self.pace.restart();
+        self.take_step();
+        self.refresh_measured();
+    }
+
+    /// One engine step with what follows it: the trail and the history; a
+    /// run that ends stops. Whether it goes on.
+    fn take_step(&mut self) -> bool {
+        if self.sim.step() != Status::Running {
+            self.running = false;
+            self.pace.restart();
+            return false;
+        }
+        let now = self.sim.observe();
+        push_trail(&mut self.trail, &now);
+        self.history.push(now);
+        true
+    }
+
+    /// Drops the measured eigenvalues; the next refit comes as soon as the
+    /// history allows.
+    pub(super) fn forget_measured(&mut self) {
+        self.measured = None;
+        self.measured_at_secs = f64::NEG_INFINITY;
+    }
+
+    /// The eigenvalues measured from the run, refitted about once a
+    /// simulated second (not every step: at 10x a frame holds ten seconds).
+    pub(super) fn refresh_measured(&mut self) {
+        let t = self.sim.time_secs();
+        if t - self.measured_at_secs >= 1.0 {
+            // Two exponentials per oscillating mode of the two-rod column. A
+            // chain's many modes, some with periods far beyond the history,
+            // are not measured: a fit of a few would show made-up values.
+            self.measured = (self.sim.model().column.rods == 2)
+                .then(|| self.history.measured(4))
+                .flatten();
+            self.measured_at_secs = t;
+        }
+    }
+
+    /// Disturbs both angles by [`KICK_RAD`] and runs on.
+    pub(super) fn kick(&mut self) {
+        self.hint = false;
+        let mut x = self.sim.state();
+        x[0] += KICK_RAD;
+        x[1] += KICK_RAD;
+        if let Err(error) = self.sim.restart_from(self.sim.engine(), x) {
+            self.say(Notice::error(error.to_string()));
+        }
+        self.running = true;
+    }
+
+    /// A fresh run of the current model from the standard kick.
+    pub(super) fn reset(&mut self) {
+        match start(&mut self.settings) {
+            Ok((sim, notice)) => {
+                if let Some(notice) = notice {
+                    self.say(notice);
+                }
+                self.sim = sim;
+                self.trail.clear();
+                self.history.clear();
+                self.forget_measured();
+                self.pace.restart();
+                self.running = true;
+            }
+            Err(error) => self.say(Notice::error(error.to_string())),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::app::state::Settings;
+    use crate::model::Key;
+
+    #[test]
+    fn the_step_button_steps_through_advance_s_bookkeeping() {
+        let mut state = AppState::new(Settings::default()).unwrap();
+        let before = state.history().thinned(usize::MAX).count();
+        state.step();
+        assert!(!state.running());
+        assert_eq!(state.history().thinned(usize::MAX).count(), before + 1);
+        assert!(state.simulation().time_secs() > 0.0);
+    }
+
+    /// A chain's eigenvalues are not measured from the run: its many modes
+    /// (the slowest with periods of minutes) are beyond a fit of two, and
+    /// the same run on two rods is measured.
+    #[test]
+    fn a_chain_s_eigenvalues_are_not_made_up_from_the_run() {
+        for (rods, measured) in [(2.0, true), (4.0, false)] {
+            let mut state = AppState::new(Settings::default()).unwrap();
+            state.set_parameter(Key::Rods, rods).unwrap();
+            for _ in 0..(40 * 60) {
+                state.advance(1.0 / 60.0);
+            }
+            assert_eq!(state.measured().is_some(), measured, "rods = {rods}");
+        }
+    }
+
+    /// A change of load mid-run restarts the measurement: the eigenvalues
+    /// measured before belong to the old column, and a window that
+    /// straddled the change would mix the two.
+    #[test]
+    fn a_change_of_load_restarts_the_measurement() {
+        let mut state = AppState::new(Settings::default()).unwrap();
+        for _ in 0..(25 * 60) {
+            state.advance(1.0 / 60.0);
+        }
+        assert!(state.measured().is_some(), "measured after 25 s");
+        state.set_parameter(Key::Load, 1.24).unwrap();
+        assert!(state.measured().is_none());
+        for _ in 0..(15 * 60) {
+            state.advance(1.0 / 60.0);
+        }
+        assert!(
+            state.measured().is_none(),
+            "15 s since the change: too short"
+        );
+        for _ in 0..(7 * 60) {
+            state.advance(1.0 / 60.0);
+        }
+        let measured = state.measured().expect("22 s since the change");
+        let predicted = state.current_spectrum().unwrap();
+        let growth = crate::analysis::classify(&predicted.eigenvalues, predicted.scale_per_s)
+            .growth_rate_per_s();
+        let fastest = measured
+            .iter()
+            .map(|z| z.re)
+            .fold(f64::NEG_INFINITY, f64::max);
+        assert!(
+            (fastest - growth).abs() < 0.2 * growth.abs(),
+            "measured {fastest} against predicted {growth}"
+        );
+    }
+}
