@@ -19,7 +19,8 @@ pub use crossing::Transition;
 pub use locus::{Locus, MAX_HELD_EIGENVALUES, load_grid, locus, locus_streamed, max_samples};
 pub use map::{Cell, MapSpec, Row, RowResult, compute as compute_map};
 pub use paradox::{
-    first_instability, first_loss_of_stability, flutter_load_damped, flutter_load_external,
+    Curves, DampingKind, curves as paradox_curves, first_instability, first_loss_of_stability,
+    flutter_load_damped, flutter_load_external,
 };
 pub use pencil::{AffinePencil, Spectrum, spectrum};
 pub use resolution::resolution_warning;

@@ -5,10 +5,10 @@
 
 mod action;
 mod analysis_cache;
-mod analysis_worker;
 mod camera;
 mod grab;
 mod history;
+mod jobs;
 mod layout;
 mod load_bar;
 mod notice;
@@ -199,7 +199,7 @@ impl ZieglerApp {
     pub fn layout(&self) -> Layout {
         Layout {
             tab: self.tab,
-            overlay: self.state.overlay().map(|o| o.preset.name().to_owned()),
+            overlay: self.state.overlay_choice().map(|id| id.name().to_owned()),
             map_axis: self
                 .tabs
                 .get::<tabs::MapPanel>()
@@ -527,7 +527,7 @@ impl eframe::App for ZieglerApp {
         self.last_frame = Some(now);
         self.state.advance(wall_secs);
         self.state.receive_analysis();
-        if self.state.running() || self.state.analysis_pending() {
+        if self.state.running() || self.state.background_pending() {
             ctx.request_repaint();
         }
     }

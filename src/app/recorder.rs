@@ -12,6 +12,7 @@ use std::sync::{Arc, OnceLock, mpsc};
 use eframe::egui::{self, ColorImage};
 
 use crate::app::action::{Action, Actions};
+use crate::app::jobs::Jobs;
 use crate::recording::GifRecording;
 
 /// The window's title, also after a recording has shown its progress there.
@@ -54,33 +55,34 @@ pub struct Encoder {
     /// Frames delivered by the window, and those left out of a full queue.
     delivered: Arc<AtomicUsize>,
     left_out: Arc<AtomicUsize>,
-    result: mpsc::Receiver<Result<PathBuf, String>>,
+    /// The thread, and the file it wrote (or why not).
+    job: Jobs<PathBuf, Result<PathBuf, String>>,
+    /// Why the thread could not start, if it could not.
+    failed: Option<String>,
 }
 
 impl Encoder {
     /// Starts the thread that writes the GIF into `folder`.
     fn start(folder: PathBuf) -> Self {
         let (frames, queue) = mpsc::sync_channel(QUEUED_FRAMES);
-        let (sender, result) = mpsc::channel();
         let end_secs = Arc::new(OnceLock::new());
         let done = Arc::new(AtomicUsize::new(0));
         let (end, counter) = (Arc::clone(&end_secs), Arc::clone(&done));
-        let failed = sender.clone();
-        let spawned = std::thread::Builder::new()
-            .name("recording".to_owned())
-            .spawn(move || {
-                drop(sender.send(encode_stream(&folder, &queue, &end, &counter)));
-            });
-        if let Err(error) = spawned {
-            drop(failed.send(Err(format!("no thread for the recording: {error}"))));
-        }
+        let mut job = Jobs::new("recording");
+        let failed = job
+            .request(folder, move |folder, _, send| {
+                send(encode_stream(folder, &queue, &end, &counter));
+            })
+            .err()
+            .map(|error| format!("no thread for the recording: {error}"));
         Self {
             frames,
             end_secs,
             done,
             delivered: Arc::default(),
             left_out: Arc::default(),
-            result,
+            job,
+            failed,
         }
     }
 
@@ -197,20 +199,31 @@ impl Recorder {
                 ctx.request_repaint();
                 None
             }
-            Self::Encoding { encoder } => match encoder.result.try_recv() {
-                Ok(done) => {
-                    *self = Self::Idle;
-                    Some(done)
+            Self::Encoding { encoder } => {
+                // Whether it runs is asked first: a result sent meanwhile is
+                // then still found below.
+                let running = encoder.job.busy();
+                let result = encoder
+                    .job
+                    .drain()
+                    .next()
+                    .map(|(_, result)| result)
+                    .or_else(|| encoder.failed.take().map(Err));
+                match result {
+                    Some(done) => {
+                        *self = Self::Idle;
+                        Some(done)
+                    }
+                    None if running => {
+                        ctx.request_repaint_after(ENCODER_POLL);
+                        None
+                    }
+                    None => {
+                        *self = Self::Idle;
+                        Some(Err("the recording stopped unexpectedly".to_owned()))
+                    }
                 }
-                Err(mpsc::TryRecvError::Empty) => {
-                    ctx.request_repaint_after(ENCODER_POLL);
-                    None
-                }
-                Err(mpsc::TryRecvError::Disconnected) => {
-                    *self = Self::Idle;
-                    Some(Err("the recording stopped unexpectedly".to_owned()))
-                }
-            },
+            }
         }
     }
 

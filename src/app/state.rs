@@ -22,7 +22,6 @@ pub use overlay::Overlay;
 pub use ramp::{RampRun, VISIBLE_FRACTION};
 
 use super::analysis_cache::Analysis;
-use super::analysis_worker::AnalysisWorker;
 use super::history::History;
 use super::notice::Notice;
 use super::pace::Pace;
@@ -76,7 +75,7 @@ pub struct AppState {
     analysis_failure: Option<(Model, AnalysisError)>,
     /// The thread that analyses new parameters (none: they are analysed
     /// inline, as pictures and tests want), and the parameters asked of it.
-    worker: Option<AnalysisWorker>,
+    worker: Option<analysis::AnalysisJobs>,
     pending: Option<Model>,
     /// Simulated time against wall-clock time.
     pace: Pace,
@@ -93,6 +92,9 @@ pub struct AppState {
     measured_at_secs: f64,
     /// A second model's locus drawn behind the current one (Fig. 8).
     overlay: Option<Overlay>,
+    /// The overlay chosen (preset and `a`), and the jobs computing it.
+    overlay_wanted: Option<overlay::OverlayKey>,
+    overlay_jobs: Option<overlay::OverlayJobs>,
     /// The quasi-static load ramp, under way or finished.
     ramp: Option<RampRun>,
     /// The one-line hint of a first launch, until the first kick.
@@ -133,12 +135,15 @@ impl AppState {
     /// # Errors
     /// Settings that make no valid simulation.
     pub fn new_analysing_in_background(settings: Settings) -> Result<Self, SimError> {
-        Self::started(settings, AnalysisWorker::start().ok())
+        Self::started(settings, Some(crate::app::jobs::Jobs::new("analysis")))
     }
 
     /// The state with `settings`, its analysis asked of `worker` (computed
     /// here without one).
-    fn started(mut settings: Settings, worker: Option<AnalysisWorker>) -> Result<Self, SimError> {
+    fn started(
+        mut settings: Settings,
+        worker: Option<analysis::AnalysisJobs>,
+    ) -> Result<Self, SimError> {
         let (sim, notice) = start(&mut settings)?;
         let mut state = Self {
             settings,
@@ -157,6 +162,8 @@ impl AppState {
             measured: None,
             measured_at_secs: f64::NEG_INFINITY,
             overlay: None,
+            overlay_wanted: None,
+            overlay_jobs: None,
             ramp: None,
             hint: false,
             drawn_for: DrawnFor::Window,
@@ -403,10 +410,10 @@ impl AppState {
                 }
                 self.settings.model = model;
                 self.refresh_analysis();
-                if let Some(overlay) = &self.overlay
-                    && overlay.a != self.group_a()
+                if let Some((id, a)) = self.overlay_wanted
+                    && a != self.group_a()
                 {
-                    self.set_overlay(Some(overlay.preset));
+                    self.set_overlay(Some(id));
                 }
             }
             Err(error) => self.say(Notice::error(error.to_string())),

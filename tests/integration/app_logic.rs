@@ -676,3 +676,30 @@ fn walk_lesson(lesson: &zieglerlab::lesson::Lesson, start: PresetId) {
         );
     }
 }
+
+/// The overlay is computed off the UI thread when the analysis is: chosen,
+/// it is the preset's locus at the current `a` once in, the same as the
+/// one computed inline; a change of `a` recomputes it and the choice stays.
+#[test]
+fn the_overlay_follows_on_the_analysis_thread() {
+    let inline = |a: f64| {
+        let mut app = ZieglerApp::new(Settings::default()).unwrap();
+        crate::common::enter(&mut app, Key::A, a);
+        app.apply(Action::Overlay(Some(PresetId::Ziegler1952)));
+        app.state().overlay().unwrap().transitions.clone()
+    };
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.state_mut().analyse_in_background();
+    app.apply(Action::Overlay(Some(PresetId::Ziegler1952)));
+    assert_eq!(app.state().overlay_choice(), Some(PresetId::Ziegler1952));
+    app.state_mut().settle_analysis();
+    assert!(!app.state().background_pending());
+    let a_before = app.state().overlay().unwrap().transitions.clone();
+    assert_eq!(a_before, inline(0.1));
+    crate::common::enter(&mut app, Key::A, 0.3);
+    assert_eq!(app.state().overlay_choice(), Some(PresetId::Ziegler1952));
+    app.state_mut().settle_analysis();
+    let after = app.state().overlay().unwrap().transitions.clone();
+    assert_eq!(after, inline(0.3));
+    assert_ne!(after, a_before, "a moves the overlay's critical loads");
+}

@@ -77,7 +77,7 @@ impl View for Sidebar {
 
 /// Another preset's locus behind the current one.
 fn overlay_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions) {
-    let current = state.overlay().map(|o| o.preset);
+    let current = state.overlay_choice();
     let mut chosen = current;
     egui::ComboBox::from_label("overlay")
         .selected_text(chosen.map_or("none", PresetId::name))

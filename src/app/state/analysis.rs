@@ -4,11 +4,19 @@
 //! and the spectrum at the current load, always exact at once.
 
 use super::AppState;
+use crate::analysis::AnalysisError;
 use crate::analysis::{AffinePencil, C64, Spectrum};
 use crate::app::analysis_cache::Analysis;
-use crate::app::analysis_worker::{AnalysisWorker, Finished};
+use crate::app::jobs::Jobs;
 use crate::app::notice::Notice;
 use crate::model::Model;
+
+/// The analyses computed off the UI thread, each tagged with the
+/// parameters (at p = 0) it is for.
+pub type AnalysisJobs = Jobs<Model, Result<Analysis, AnalysisError>>;
+
+/// A finished analysis and the parameters it is for.
+type Finished = (Model, Result<Analysis, AnalysisError>);
 
 impl AppState {
     /// Analyses new parameters on a thread of their own from now on: the
@@ -17,7 +25,7 @@ impl AppState {
     /// system gives no thread.
     pub fn analyse_in_background(&mut self) {
         if self.worker.is_none() {
-            self.worker = AnalysisWorker::start().ok();
+            self.worker = Some(Jobs::new("analysis"));
         }
     }
 
@@ -27,26 +35,43 @@ impl AppState {
         self.pending.is_some()
     }
 
+    /// Whether anything is still computed off the UI thread (the analysis or
+    /// the overlay): the window keeps drawing until it is in.
+    #[must_use]
+    pub fn background_pending(&self) -> bool {
+        self.pending.is_some() || self.overlay_pending()
+    }
+
     /// Takes what the analysis thread finished (call once a frame).
     pub fn receive_analysis(&mut self) {
-        let finished = self.worker.as_ref().map(AnalysisWorker::finished);
-        for result in finished.into_iter().flatten() {
+        let finished: Vec<Finished> = self
+            .worker
+            .as_ref()
+            .map(|jobs| jobs.drain().collect())
+            .unwrap_or_default();
+        for result in finished {
             self.install(result);
         }
+        self.receive_overlay(false);
     }
 
     /// Waits until the analysis of the current parameters is in (for
     /// pictures and tests; the window never waits).
     pub fn settle_analysis(&mut self) {
-        while self.pending.is_some() {
-            if let Some(result) = self.worker.as_ref().and_then(AnalysisWorker::wait) {
-                self.install(result);
-            } else {
-                // The thread is gone: analyse here.
-                self.worker = None;
-                self.pending = None;
-                self.refresh_analysis();
-            }
+        self.receive_overlay(true);
+        if self.pending.is_none() {
+            return;
+        }
+        if let Some(jobs) = &mut self.worker {
+            jobs.wait();
+        }
+        self.receive_analysis();
+        if self.pending.is_some() {
+            // The job ended without an answer (its thread panicked): from now
+            // on, analyse here.
+            self.worker = None;
+            self.pending = None;
+            self.refresh_analysis();
         }
     }
 
@@ -57,7 +82,10 @@ impl AppState {
         self.receive_analysis();
         let key = self.settings.model.at_load(0.0);
         if !self.shows_analysis_of(&key) && self.pending != Some(key) {
-            let sent = self.worker.as_ref().is_some_and(|w| w.request(key));
+            let sent = self.worker.as_mut().is_some_and(|jobs| {
+                jobs.request(key, |key, _, send| send(Analysis::new(key)))
+                    .is_ok()
+            });
             if sent {
                 self.pending = Some(key);
             } else {

@@ -47,6 +47,7 @@ impl AppState {
         let preset = self.settings.preset;
         self.ramp = None;
         self.overlay = None;
+        self.overlay_wanted = None;
         self.refused.clear();
         self.settings.speed = 1.0;
         self.set_model(preset.model());

@@ -6,6 +6,7 @@ use crate::analysis::{
     AffinePencil, AnalysisError, Locus, Transition, critical_loads_along, locus,
 };
 use crate::app::analysis_cache::LOCUS_SAMPLES;
+use crate::app::jobs::Jobs;
 use crate::app::notice::Notice;
 use crate::model::{Assignment, Key, ModelError, PresetId, apply_assignments};
 
@@ -28,40 +29,100 @@ enum OverlayError {
     Analysis(#[from] AnalysisError),
 }
 
+/// What an overlay is computed for: the preset and the group `a`.
+pub(super) type OverlayKey = (PresetId, f64);
+
+/// Overlays computed off the UI thread.
+pub(super) type OverlayJobs = Jobs<OverlayKey, Result<Overlay, String>>;
+
+/// `id`'s locus and critical loads at the group `a`.
+fn build(id: PresetId, a: f64) -> Result<Overlay, OverlayError> {
+    let mut model = id.model();
+    apply_assignments(
+        &mut model,
+        &[Assignment {
+            key: Key::A,
+            value: a,
+        }],
+    )?;
+    let pencil = AffinePencil::new(&model)?;
+    let locus = locus(&pencil, 0.0, model.load_bar_max_p(), LOCUS_SAMPLES)?;
+    let transitions = critical_loads_along(&pencil, &locus)?;
+    Ok(Overlay {
+        preset: id,
+        a,
+        locus,
+        transitions,
+    })
+}
+
 impl AppState {
-    /// Shows `name`'s locus behind the current one, at the current `a`
-    /// (`None`: no overlay).
+    /// Shows `id`'s locus behind the current one, at the current `a`
+    /// (`None`: no overlay): on the analysis thread's side when the state
+    /// analyses in the background (the overlay drawn until then stays),
+    /// here otherwise.
     pub(super) fn set_overlay(&mut self, id: Option<PresetId>) {
         let Some(id) = id else {
             self.overlay = None;
+            self.overlay_wanted = None;
             return;
         };
-        let a = self.group_a();
-        let build = || -> Result<(Locus, Vec<Transition>), OverlayError> {
-            let mut model = id.model();
-            apply_assignments(
-                &mut model,
-                &[Assignment {
-                    key: Key::A,
-                    value: a,
-                }],
-            )?;
-            let pencil = AffinePencil::new(&model)?;
-            let locus = locus(&pencil, 0.0, model.load_bar_max_p(), LOCUS_SAMPLES)?;
-            let transitions = critical_loads_along(&pencil, &locus)?;
-            Ok((locus, transitions))
-        };
-        match build() {
-            Ok((locus, transitions)) => {
-                self.overlay = Some(Overlay {
-                    preset: id,
-                    a,
-                    locus,
-                    transitions,
-                });
+        let key = (id, self.group_a());
+        self.overlay_wanted = Some(key);
+        if self.worker.is_some() {
+            let jobs = self
+                .overlay_jobs
+                .get_or_insert_with(|| Jobs::new("overlay"));
+            if jobs.key() == Some(&key) {
+                return;
             }
+            let started = jobs.request(key, |&(id, a), _, send| {
+                send(build(id, a).map_err(|e| e.to_string()));
+            });
+            if started.is_ok() {
+                return;
+            }
+        }
+        self.install_overlay(key, build(key.0, key.1).map_err(|e| e.to_string()));
+    }
+
+    /// The preset chosen for the overlay (shown once computed).
+    #[must_use]
+    pub fn overlay_choice(&self) -> Option<PresetId> {
+        self.overlay_wanted.map(|(id, _)| id)
+    }
+
+    /// Whether the overlay chosen is still being computed.
+    pub(super) fn overlay_pending(&self) -> bool {
+        self.overlay_wanted.is_some()
+            && self.overlay.as_ref().map(|o| (o.preset, o.a)) != self.overlay_wanted
+    }
+
+    /// Takes the overlays computed off the UI thread (once a frame), and
+    /// with `wait` first waits for the one chosen.
+    pub(super) fn receive_overlay(&mut self, wait: bool) {
+        let Some(jobs) = &mut self.overlay_jobs else {
+            return;
+        };
+        if wait {
+            jobs.wait();
+        }
+        let finished: Vec<_> = jobs.drain().collect();
+        for (key, result) in finished {
+            self.install_overlay(key, result);
+        }
+    }
+
+    /// Shows an overlay computed for `key` if it is still the one chosen.
+    fn install_overlay(&mut self, key: OverlayKey, result: Result<Overlay, String>) {
+        if self.overlay_wanted != Some(key) {
+            return;
+        }
+        match result {
+            Ok(overlay) => self.overlay = Some(overlay),
             Err(error) => {
                 self.overlay = None;
+                self.overlay_wanted = None;
                 self.say(Notice::error(format!("overlay unavailable: {error}")));
             }
         }

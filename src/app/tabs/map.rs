@@ -2,10 +2,7 @@
 //! off the UI thread on every core (coarse first), drawn as coloured cells
 //! with the boundaries as curves; a click sets both parameters.
 
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-use std::sync::mpsc;
-use std::thread::JoinHandle;
+use std::sync::atomic::AtomicUsize;
 
 use eframe::egui::{self, Color32, ColorImage, TextureHandle, TextureOptions};
 use egui_plot::{Line, Plot, PlotImage, PlotPoint, PlotPoints, Points};
@@ -14,6 +11,7 @@ use super::{TabSpec, TabView};
 use crate::analysis::{MapSpec, Row, RowResult, State, Transition, compute_map};
 use crate::app::View;
 use crate::app::action::{Action, Actions};
+use crate::app::jobs::{Cancel, Jobs};
 use crate::app::plot_frame::{Fit, SingleClick, axes, refit_if};
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
@@ -24,14 +22,10 @@ use crate::model::{Axis, Key, Model};
 pub const MAP_LOADS: usize = 256;
 pub const MAP_VALUES: usize = 256;
 
-/// A map being computed (or done): its rows as they arrive.
-struct Job {
+/// The map shown: its spec, its rows as they arrive, its picture.
+struct Shown {
     spec: MapSpec,
     rows: Vec<Option<RowResult>>,
-    receiver: mpsc::Receiver<(usize, RowResult)>,
-    cancel: Arc<AtomicBool>,
-    done: Arc<AtomicUsize>,
-    thread: Option<JoinHandle<()>>,
     texture: Option<TextureHandle>,
     /// Rows arrived since the texture was made.
     stale: bool,
@@ -39,77 +33,37 @@ struct Job {
     error: Option<String>,
 }
 
-impl Job {
-    /// Starts computing `spec` once `previous` (a cancelled job's thread,
-    /// which ends within a row) has ended: while a slider is dragged the
-    /// restarts queue up behind each other instead of running side by side.
-    fn start(spec: MapSpec, previous: Option<JoinHandle<()>>) -> Self {
-        let (sender, receiver) = mpsc::channel();
-        let grids = spec.load_grid().and_then(|_| spec.value_grid());
-        let cancel = Arc::new(AtomicBool::new(false));
-        let done = Arc::new(AtomicUsize::new(0));
-        // One core is left to the window, so the frame rate holds while the map is computed.
-        let threads = std::thread::available_parallelism()
-            .map_or(1, |n| n.get().saturating_sub(1))
-            .max(1);
-        let thread = grids.map_err(|e| e.to_string()).and_then(|_| {
-            let (spec, cancel, done) = (spec.clone(), Arc::clone(&cancel), Arc::clone(&done));
-            std::thread::Builder::new()
-                .name("stability map".to_owned())
-                .spawn(move || {
-                    if let Some(previous) = previous {
-                        // A panic there was that job's; this one goes on.
-                        drop(previous.join());
-                    }
-                    // A closed channel means the panel moved on: nothing to do.
-                    let on_row = |j, row| drop(sender.send((j, row)));
-                    // The grids were checked above.
-                    drop(compute_map(&spec, threads, &cancel, &done, &on_row));
-                })
-                .map_err(|e| format!("no thread for the map: {e}"))
-        });
-        let (thread, error) = match thread {
-            Ok(handle) => (Some(handle), None),
-            Err(error) => (None, Some(error)),
-        };
+impl Shown {
+    fn new(spec: MapSpec, error: Option<String>) -> Self {
         Self {
             rows: vec![None; spec.values],
             spec,
-            receiver,
-            cancel,
-            done,
-            thread,
             texture: None,
             stale: true,
             error,
         }
     }
 
-    fn drain(&mut self) {
-        while let Ok((j, row)) = self.receiver.try_recv() {
-            if let Some(slot) = self.rows.get_mut(j) {
-                *slot = Some(row);
-                self.stale = true;
-            }
-        }
-    }
-
-    fn finished(&self) -> bool {
-        self.rows.iter().all(Option::is_some) || self.thread.is_none()
-    }
-
-    /// Waits for the computation to end and takes every row.
-    fn wait(&mut self) {
-        if let Some(handle) = self.thread.take() {
-            let _ = handle.join();
-        }
-        self.drain();
+    /// Rows computed so far.
+    fn done(&self) -> usize {
+        self.rows.iter().flatten().count()
     }
 }
 
-impl Drop for Job {
-    fn drop(&mut self) {
-        self.cancel.store(true, Ordering::Relaxed);
+/// What the map's job sends: a row as it is done, or why the map stopped.
+type RowMessage = Result<(usize, RowResult), String>;
+
+/// Computes the rows of `spec`, each sent as it is done. One core is left
+/// to the window, so the frame rate holds while the map is computed.
+fn compute_rows(spec: &MapSpec, cancel: &Cancel, send: &(dyn Fn(RowMessage) + Sync)) {
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |n| n.get().saturating_sub(1))
+        .max(1);
+    let done = AtomicUsize::new(0);
+    // A cancelled map stops between rows: what it did not compute is for no one.
+    let on_row = |j, row| send(Ok((j, row)));
+    if let Err(error) = compute_map(spec, threads, cancel.flag(), &done, &on_row) {
+        send(Err(error.to_string()));
     }
 }
 
@@ -128,7 +82,9 @@ pub const TAB: TabSpec = TabSpec {
 pub struct MapPanel {
     axis: Option<Axis>,
     range: (f64, f64),
-    job: Option<Job>,
+    /// The rows being computed, newest spec first.
+    jobs: Jobs<MapSpec, RowMessage>,
+    shown: Option<Shown>,
     /// The view refits when the axes change: (second axis, its range, loads).
     fit: Fit<MapAxes>,
     /// A click sets the load and the parameter unless it was a double-click.
@@ -142,7 +98,8 @@ impl Default for MapPanel {
         Self {
             axis: None,
             range: (0.0, 1.0),
-            job: None,
+            jobs: Jobs::new("stability map"),
+            shown: None,
             fit: Fit::default(),
             click: SingleClick::default(),
             generation: 0,
@@ -199,7 +156,7 @@ impl MapPanel {
         let Some(spec) = self.spec(model, load_max) else {
             return;
         };
-        if self.job.as_ref().is_some_and(|job| job.spec == spec) {
+        if self.jobs.key() == Some(&spec) {
             return;
         }
         // While a slider is dragged the map restarts every frame: the last
@@ -208,24 +165,44 @@ impl MapPanel {
             (&old.axis, old.axis_range, old.load_range)
                 == (&spec.axis, spec.axis_range, spec.load_range)
         };
-        let (kept, previous) = match self.job.take() {
-            // Dropping the old job (at the end of this arm) cancels it.
-            Some(mut old) => {
-                let texture = if same_axes(&old.spec) {
-                    old.texture.take()
-                } else {
-                    None
-                };
-                (texture, old.thread.take())
-            }
-            None => (None, None),
-        };
-        let mut job = Job::start(spec, previous);
+        let kept = self
+            .shown
+            .take()
+            .filter(|old| same_axes(&old.spec))
+            .and_then(|old| old.texture);
+        let grids = spec.load_grid().and_then(|_| spec.value_grid());
+        let started = grids.map_err(|e| e.to_string()).and_then(|_| {
+            self.jobs
+                .request(spec.clone(), compute_rows)
+                .map_err(|e| format!("no thread for the map: {e}"))
+        });
+        let mut shown = Shown::new(spec, started.err());
         if kept.is_some() {
-            job.texture = kept;
-            job.stale = false;
+            shown.texture = kept;
+            shown.stale = false;
         }
-        self.job = Some(job);
+        self.shown = Some(shown);
+    }
+
+    /// Takes the rows that came in for the map shown.
+    fn receive(&mut self) {
+        let Some(shown) = &mut self.shown else {
+            return;
+        };
+        for (spec, message) in self.jobs.drain() {
+            if spec != shown.spec {
+                continue;
+            }
+            match message {
+                Ok((j, row)) => {
+                    if let Some(slot) = shown.rows.get_mut(j) {
+                        *slot = Some(row);
+                        shown.stale = true;
+                    }
+                }
+                Err(why) => shown.error = Some(format!("the map stopped: {why}")),
+            }
+        }
     }
 
     /// The second axis chosen, by name, and its range.
@@ -256,9 +233,8 @@ impl MapPanel {
 
     /// Blocks until the current map is complete (for pictures and tests).
     pub fn wait(&mut self) {
-        if let Some(job) = &mut self.job {
-            job.wait();
-        }
+        self.jobs.wait();
+        self.receive();
     }
 
     /// The panel: axis choice and range, progress, the map. Returns a click.
@@ -270,13 +246,14 @@ impl MapPanel {
         theme: &Theme,
     ) -> Option<Pick> {
         self.controls_ui(ui, model);
-        let job = self.job.as_mut()?;
-        job.drain();
-        if !job.finished() {
+        self.receive();
+        let busy = self.jobs.busy();
+        let job = self.shown.as_mut()?;
+        let done = job.done();
+        let total = job.spec.values;
+        if busy || (done < total && job.error.is_none()) {
             ui.ctx().request_repaint();
         }
-        let done = job.done.load(Ordering::Relaxed);
-        let total = job.spec.values;
         if let Some(error) = &job.error {
             ui.colored_label(theme.error, error);
         }
@@ -484,7 +461,7 @@ fn boundaries(rows: &[Option<RowResult>]) -> Vec<Vec<[f64; 2]>> {
 /// pick this frame, and whether the frame completed a double-click.
 fn map_plot_ui(
     ui: &mut egui::Ui,
-    job: &Job,
+    job: &Shown,
     texture: &TextureHandle,
     model: &Model,
     refit: bool,
