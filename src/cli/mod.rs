@@ -282,6 +282,13 @@ pub fn run() -> ExitCode {
 }
 
 fn execute(command: &Command) -> Result<()> {
+    // What writes its answer to standard output stops when nobody reads it.
+    if matches!(
+        command,
+        Command::Critical(_) | Command::Locus(_) | Command::Simulate(_) | Command::Bench(_)
+    ) {
+        output::stop_when_the_reader_goes();
+    }
     let mut out = std::io::stdout().lock();
     match command {
         Command::Presets(args) => presets::run(args, &mut out),

@@ -73,3 +73,35 @@ pub fn write_png(out: &Path, image: &image::RgbaImage) -> Result<()> {
         w.write_all(&encoded)
     })
 }
+
+/// Ends the process quietly (status 0, as a Unix tool ends when its reader
+/// has gone) as soon as the reader of standard output goes away, watched on
+/// a thread of its own: a long computation whose output nobody reads stops
+/// at once instead of at its first write. Standard output that is a file or
+/// a terminal is never closed under the process, so this then does nothing.
+pub fn stop_when_the_reader_goes() {
+    use rustix::event::{PollFd, PollFlags, Timespec, poll};
+    use std::os::fd::AsFd as _;
+    let watch = || {
+        let stdout = std::io::stdout();
+        let fd = stdout.as_fd();
+        let every = Timespec {
+            tv_sec: 0,
+            tv_nsec: 100_000_000,
+        };
+        loop {
+            // No event asked for: poll reports only an error or a hang-up,
+            // which is what the write end of a pipe gets when its reader
+            // closes it.
+            let mut fds = [PollFd::new(&fd, PollFlags::empty())];
+            let gone = poll(&mut fds, Some(&every))
+                .is_ok_and(|_| fds[0].revents().intersects(PollFlags::ERR | PollFlags::HUP));
+            if gone {
+                zieglerlab::files::remove_unfinished();
+                std::process::exit(0);
+            }
+        }
+    };
+    // Without a thread the closed pipe is still noticed at the first write.
+    drop(std::thread::Builder::new().name("reader".to_owned()).spawn(watch));
+}

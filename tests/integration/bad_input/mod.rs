@@ -336,3 +336,47 @@ fn a_closed_pipe_ends_quietly() {
         assert!(stderr.is_empty(), "{extra:?}: {stderr}");
     }
 }
+
+/// A reader that goes before anything is written: a command whose answer
+/// comes only at the end of a long computation (the critical loads of 64
+/// rods up to p = 1e150: more than a minute; a long bench) ends quietly
+/// within a second of the pipe's closing, not when it would first write.
+#[test]
+fn a_reader_gone_before_the_first_line_ends_the_work() {
+    let cases: [&[&str]; 2] = [
+        &[
+            "critical",
+            "--preset",
+            "beck",
+            "--set",
+            "rods=64",
+            "--load-max",
+            "1e150",
+        ],
+        &["bench", "--frames", "10000", "--no-window"],
+    ];
+    for args in cases {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+            .args(args)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(Duration::from_millis(300));
+        assert!(child.try_wait().unwrap().is_none(), "{args:?} still at work");
+        drop(child.stdout.take());
+        let closed = Instant::now();
+        while child.try_wait().unwrap().is_none() {
+            if closed.elapsed() > Duration::from_secs(5) {
+                child.kill().unwrap();
+                panic!("{args:?}: still computing 5 s after its reader went");
+            }
+            std::thread::sleep(Duration::from_millis(20));
+        }
+        let out = child.wait_with_output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{args:?}: {stderr}");
+        // (A debug build of bench notes that its numbers are not representative.)
+        assert!(!stderr.contains("error"), "{args:?}: {stderr}");
+    }
+}
