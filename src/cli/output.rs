@@ -103,5 +103,9 @@ pub fn stop_when_the_reader_goes() {
         }
     };
     // Without a thread the closed pipe is still noticed at the first write.
-    drop(std::thread::Builder::new().name("reader".to_owned()).spawn(watch));
+    drop(
+        std::thread::Builder::new()
+            .name("reader".to_owned())
+            .spawn(watch),
+    );
 }

@@ -363,7 +363,10 @@ fn a_reader_gone_before_the_first_line_ends_the_work() {
             .spawn()
             .unwrap();
         std::thread::sleep(Duration::from_millis(300));
-        assert!(child.try_wait().unwrap().is_none(), "{args:?} still at work");
+        assert!(
+            child.try_wait().unwrap().is_none(),
+            "{args:?} still at work"
+        );
         drop(child.stdout.take());
         let closed = Instant::now();
         while child.try_wait().unwrap().is_none() {
@@ -379,4 +382,216 @@ fn a_reader_gone_before_the_first_line_ends_the_work() {
         // (A debug build of bench notes that its numbers are not representative.)
         assert!(!stderr.contains("error"), "{args:?}: {stderr}");
     }
+}
+
+/// A lesson file `lesson --check` refuses, as the window does: status 2
+/// and one line naming the file, the line of the problem and what was
+/// expected. Syntax and unknown fields, presets, keys and tabs; values the
+/// column refuses at the step that sets them, from any preset the lesson
+/// may be opened on; ramps the column cannot take; a key written twice; a
+/// title that would reach a terminal as an escape sequence; `Step(` in a
+/// string or comment.
+#[test]
+fn a_broken_lesson_file_is_refused_at_its_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases: [(&str, usize, &str); 13] = [
+        (
+            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", presett: \"tabletop\"),\n ],\n)",
+            4,
+            "presett",
+        ),
+        (
+            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", preset: \"nope\"),\n ],\n)",
+            4,
+            "unknown preset 'nope'",
+        ),
+        (
+            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\"),\n  Step(text: \"b\",\n   set: {\"load\": -1.0}),\n ],\n)",
+            5,
+            "step 2: load = -1",
+        ),
+        (
+            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", set: {\"zeta\": 1.0}),\n ],\n)",
+            4,
+            "unknown key 'zeta'",
+        ),
+        (
+            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", predict: Choice(prompt: \"?\", answers: [\"x\", \"y\"])),\n  Step(text: \"b\", reveal: Answer(2)),\n ],\n)",
+            5,
+            "expected 0 to 1",
+        ),
+        (
+            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", run: Ramp(from: 0.0, to: 4.0, rate: 0.0)),\n ],\n)",
+            4,
+            "ramp rate = 0",
+        ),
+        (
+            "Lesson(\n title: \"t\",\n steps: [],\n)",
+            1,
+            "at least one step",
+        ),
+        // A key written twice is refused, not overwritten.
+        (
+            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", set: {\"load\": 1.0, \"load\": 2.0}),\n ],\n)",
+            4,
+            "the key 'load' is written twice in `set`",
+        ),
+        // A title that would reach a terminal as an escape sequence.
+        (
+            "Lesson(\n title: \"t\\u{1b}[2J\",\n steps: [\n  Step(text: \"a\"),\n ],\n)",
+            2,
+            "control character U+001B",
+        ),
+        // `Step(` inside a string or a comment is not a step.
+        (
+            "Lesson(\n title: \"Step(\",\n // Step( here\n steps: [\n  Step(text: \"Step(, Step(\"),\n  Step(text: \"b\", speed: 50.0),\n ],\n)",
+            6,
+            "step 2: speed = 50",
+        ),
+        // A first step's parameter that one preset lacks: refused,
+        // naming the preset the window would fail on.
+        (
+            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", set: {\"nu\": 0.2}),\n ],\n)",
+            4,
+            "(the lesson opened on the ziegler-1952 preset)",
+        ),
+        // A ramp to a load the column cannot take, as the window refuses it.
+        (
+            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", preset: \"tabletop\",\n   run: Ramp(from: 1e300, to: 1.0, rate: 1.0)),\n ],\n)",
+            4,
+            "ramp from = 1e300",
+        ),
+        // A tab the app has not, with the names it has.
+        (
+            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\"),\n  Step(text: \"b\", tab: \"plots\"),\n ],\n)",
+            5,
+            "step 2: unknown tab 'plots': expected one of locus, histories, map, paradox",
+        ),
+    ];
+    for (i, (text, line, says)) in cases.into_iter().enumerate() {
+        let path = dir.path().join(format!("case{i}.ron"));
+        std::fs::write(&path, text).unwrap();
+        let out = run_limited(&["lesson", "--check", path.to_str().unwrap()]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{text}: {stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{text}: {stderr}");
+        assert!(
+            stderr.contains(&format!("line {line}: ")) && stderr.contains(says),
+            "{text}: {stderr}"
+        );
+    }
+}
+
+/// The standard output of a command that must succeed.
+fn answer(args: &[&str]) -> String {
+    let out = run_limited(args);
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+/// Data files carry no negative zero: a rate or an angle that rounds to
+/// zero is written `0` (`-0` reads as negative to a sign test).
+#[test]
+fn data_files_write_zero_without_a_sign() {
+    let map = answer(&[
+        "map",
+        "--preset",
+        "beck",
+        "--x",
+        "load:0:0.1:2",
+        "--y",
+        "mass_ratio:0.05:0.1:2",
+        "--out",
+        "/dev/stdout",
+    ]);
+    let locus = answer(&[
+        "locus",
+        "--preset",
+        "roller",
+        "--load-min",
+        "0",
+        "--load-max",
+        "1",
+        "--samples",
+        "3",
+    ]);
+    for text in [map, locus] {
+        assert!(text.lines().count() > 2, "{text}");
+        for line in text.lines() {
+            assert!(!line.split(',').any(|field| field == "-0"), "{line}");
+        }
+    }
+}
+
+/// `--out` through a symbolic link writes the file the link names and
+/// keeps the link (it used to replace the link by the file).
+#[cfg(unix)]
+#[test]
+fn an_output_through_a_link_writes_the_file_it_names() {
+    let dir = tempfile::tempdir().unwrap();
+    let (target, link) = (dir.path().join("data.csv"), dir.path().join("link.csv"));
+    std::fs::write(&target, "old").unwrap();
+    std::os::unix::fs::symlink(&target, &link).unwrap();
+    let out = run_limited(&[
+        "map",
+        "--preset",
+        "roller",
+        "--x",
+        "load:0:1:2",
+        "--y",
+        "nu:0.1:0.2:2",
+        "--out",
+        link.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        std::fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert!(
+        std::fs::read_to_string(&target)
+            .unwrap()
+            .starts_with("load")
+    );
+}
+
+/// Ctrl-C or SIGTERM stops a long command at once with status 130, and no
+/// file is left where the output would have gone.
+#[cfg(unix)]
+#[test]
+fn a_stopping_signal_ends_a_long_command_at_once() {
+    let folder = tempfile::tempdir().expect("a temporary folder");
+    let out = folder.path().join("never.png");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+        .args([
+            "snapshot", "--preset", "roller", "--time", "100000", "--out",
+        ])
+        .arg(&out)
+        .spawn()
+        .expect("the binary runs");
+    std::thread::sleep(std::time::Duration::from_millis(500));
+    let sent = Command::new("kill")
+        .args(["-TERM", &child.id().to_string()])
+        .status()
+        .expect("kill runs");
+    assert!(sent.success());
+    // 100000 simulated seconds would take hours: 130 is the handler's.
+    let status = child.wait().expect("it ends");
+    assert_eq!(status.code(), Some(130));
+    assert_eq!(
+        std::fs::read_dir(folder.path())
+            .expect("the folder")
+            .count(),
+        0
+    );
 }
