@@ -93,6 +93,14 @@ pub struct Args {
     out: std::path::PathBuf,
 }
 
+impl Args {
+    /// Whether the map goes to a pipe or a device (`--out /dev/stdout`)
+    /// rather than a file.
+    pub fn streams(&self) -> bool {
+        std::fs::metadata(&self.out).is_ok_and(|m| !m.is_file() && !m.is_dir())
+    }
+}
+
 pub fn run(args: &Args) -> Result<()> {
     let Args { x, y, out, .. } = args;
     check_output(out, args.format == Format::Png)?;

@@ -282,11 +282,14 @@ pub fn run() -> ExitCode {
 }
 
 fn execute(command: &Command) -> Result<()> {
-    // What writes its answer to standard output stops when nobody reads it.
-    if matches!(
-        command,
-        Command::Critical(_) | Command::Locus(_) | Command::Simulate(_) | Command::Bench(_)
-    ) {
+    // What writes its answer to standard output stops when nobody reads it
+    // (a map written to a file goes on).
+    let to_stdout = match command {
+        Command::Critical(_) | Command::Locus(_) | Command::Simulate(_) | Command::Bench(_) => true,
+        Command::Map(args) => args.streams(),
+        _ => false,
+    };
+    if to_stdout {
         output::stop_when_the_reader_goes();
     }
     let mut out = std::io::stdout().lock();

@@ -339,11 +339,12 @@ fn a_closed_pipe_ends_quietly() {
 
 /// A reader that goes before anything is written: a command whose answer
 /// comes only at the end of a long computation (the critical loads of 64
-/// rods up to p = 1e150: more than a minute; a long bench) ends quietly
+/// rods up to p = 1e150: more than a minute; a long bench; a map written
+/// to standard output) ends quietly
 /// within a second of the pipe's closing, not when it would first write.
 #[test]
 fn a_reader_gone_before_the_first_line_ends_the_work() {
-    let cases: [&[&str]; 2] = [
+    let cases: [&[&str]; 3] = [
         &[
             "critical",
             "--preset",
@@ -354,6 +355,17 @@ fn a_reader_gone_before_the_first_line_ends_the_work() {
             "1e150",
         ],
         &["bench", "--frames", "10000", "--no-window"],
+        &[
+            "map",
+            "--preset",
+            "beck",
+            "--x",
+            "load:0:0.15:200",
+            "--y",
+            "mass_ratio:0.01:1:200",
+            "--out",
+            "/dev/stdout",
+        ],
     ];
     for args in cases {
         let mut child = Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
