@@ -45,10 +45,9 @@ pub enum Action {
     /// Simulated seconds per wall-clock second.
     Speed(f64),
     Projector(bool),
-    /// The mouse holds the column at these angles (the two-rod scene).
+    /// The mouse holds the column at rest with its rods at these angles.
     Hold {
-        phi1_rad: f64,
-        phi2_rad: f64,
+        angles_rad: Vec<f64>,
     },
     Release,
     RampStart(Ramp),

@@ -12,7 +12,7 @@ use eframe::egui::{
 
 use super::action::{Action, Actions};
 use super::camera::{Camera, FOLLOW_SECS, WorldBox, target};
-use super::grab::{GRAB_RADIUS, Handle, grab_angles};
+use super::grab::{GRAB_RADIUS, grab_angles};
 use super::state::{AppState, TRAIL_SECS};
 use super::theme::Theme;
 use crate::model::Model;
@@ -58,7 +58,8 @@ impl View {
 #[derive(Default)]
 pub struct SceneView {
     pub camera: Camera,
-    grabbed: Option<Handle>,
+    /// The joint held: the end of rod k (1 to N, N the tip).
+    grabbed: Option<usize>,
 }
 
 /// Draws the scene of the app's state in the space left in `ui`, framed
@@ -75,7 +76,6 @@ pub fn scene_ui(
     let camera = &mut scene.camera;
     let now = state.simulation().observe();
     let model = state.model();
-    let l1 = model.column.rod1.length_m;
     let reach_m = model.column.reach_m();
     let rods = model.column.rods;
     let joints_m = state.simulation().joints_m();
@@ -101,16 +101,8 @@ pub fn scene_ui(
             theme,
         },
     );
-    let l2 = reach_m - l1;
-    let (phi1_now, phi2_now) = (now.phi1_rad, now.phi2_rad);
-    let tip_m = now.tip_m;
     // No tooltip: the mouse rests over the scene in a lecture, and a
     // tooltip would cover the load bar. The corner says it instead.
-    if rods != 2 {
-        // The drag bends two rods; a chain is not grabbed (yet).
-        camera_corner_ui(ui, &mut scene.camera, rect, theme);
-        return;
-    }
     let drag = ui.interact(rect, ui.scope_id().with("drag the column"), Sense::drag());
     if !state.for_picture() {
         plate(
@@ -127,14 +119,17 @@ pub fn scene_ui(
     if drag.drag_started()
         && let Some(pointer) = ui.input(|i| i.pointer.press_origin())
     {
-        scene.grabbed = [(Handle::Tip, tip_m), (Handle::Joint, joint_m)]
-            .into_iter()
-            .map(|(handle, at)| (handle, view.to(at[0], at[1]).distance(pointer)))
+        // Any joint above the base, the tip included: the nearest.
+        scene.grabbed = joints_m
+            .iter()
+            .enumerate()
+            .skip(1)
+            .map(|(held, at)| (held, view.to(at[0], at[1]).distance(pointer)))
             .filter(|&(_, d)| d <= GRAB_RADIUS)
             .min_by(|a, b| a.1.total_cmp(&b.1))
-            .map(|(handle, _)| handle);
+            .map(|(held, _)| held);
     }
-    if let Some(handle) = scene.grabbed {
+    if let Some(held) = scene.grabbed {
         // Asked again only when the pointer moves: a still hand asks nothing.
         let moved = drag.drag_started() || drag.drag_delta() != Vec2::ZERO;
         if drag.dragged()
@@ -143,10 +138,11 @@ pub fn scene_ui(
         {
             let world = view.screen_from_world.inverse().transform_pos(pointer);
             let point = [f64::from(world.x), f64::from(world.y)];
-            let (phi1, phi2) = grab_angles(handle, (l1, l2), (phi1_now, phi2_now), point);
+            let lengths_m: Vec<f64> = (0..rods).map(|i| model.column.rod(i).length_m).collect();
+            let x = state.simulation().state();
+            let angles_now_rad: Vec<f64> = x.iter().take(rods).copied().collect();
             actions.push(Action::Hold {
-                phi1_rad: phi1,
-                phi2_rad: phi2,
+                angles_rad: grab_angles(held, &lengths_m, &angles_now_rad, point),
             });
         }
         if drag.drag_stopped() {

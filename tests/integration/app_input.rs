@@ -546,3 +546,62 @@ fn every_panel_of_a_frame_shows_the_same_state() {
     }
     assert!(changed_at.is_some(), "V = 0 was applied");
 }
+
+/// Any joint of a chain is grabbed as a person would grab it: on a straight
+/// column of four rods, the middle joint (the end of rod 2) pressed and
+/// moved up holds the column there at rest, rods 1 and 2 bent to reach the
+/// pointer and rods 3 and 4 carried along with their directions kept; let
+/// go, it moves on.
+#[test]
+fn dragging_a_joint_of_a_chain_bends_the_rods_before_it() {
+    use zieglerlab::app::{Action, Panel};
+    let mut app = ZieglerApp::new(Settings {
+        preset: zieglerlab::model::PresetId::UniformRods,
+        model: zieglerlab::model::PresetId::UniformRods.model(),
+        ..Settings::default()
+    })
+    .unwrap();
+    app.apply(Action::Enter {
+        key: Key::Rods,
+        value: 4.0,
+    });
+    assert_eq!(app.settings().model.column.rods, 4);
+    let before: Vec<f64> = app.simulation().state().iter().take(4).copied().collect();
+    let mut harness = Harness::builder().with_size([800.0, 400.0]).build_ui_state(
+        |ui, app: &mut ZieglerApp| app.panel_ui(ui, Panel::Scene),
+        app,
+    );
+    harness.run();
+    // The camera frames the straight column as on two rods (x from -0.12
+    // to 1.12 of its reach in the 784 x 384 panel): the middle joint is at
+    // half the reach, the panel's middle.
+    let joint = egui::pos2(400.0, 200.0);
+    harness.drag_at(joint);
+    harness.run();
+    // Up and in, within the reach of rods 1 and 2.
+    for step in 1..=6_u8 {
+        let s = f32::from(step);
+        harness.hover_at(joint + egui::vec2(-6.0 * s, -8.0 * s));
+        harness.run();
+    }
+    let app = harness.state_mut();
+    assert!(app.state().held(), "the column is held");
+    let x = app.simulation().state();
+    assert!(x[0] < -0.1 && x[1] > 0.1, "rods 1 and 2 bend: {x}");
+    // (rapier keeps angles in f32: the same to its rounding)
+    for i in [2, 3] {
+        assert!(
+            (x[i] - before[i]).abs() < 1e-6,
+            "rod {} keeps its direction: {x}",
+            i + 1
+        );
+    }
+    // The joint went up and in, toward the pointer (the camera follows the
+    // column as it bends, so screen points are not fixed world points).
+    let reach = app.settings().model.column.reach_m();
+    let at = app.simulation().joints_m()[2];
+    assert!(at[1] > 0.02 * reach && at[0] < 0.5 * reach, "{at:?}");
+    harness.drop_at(joint + egui::vec2(-36.0, -48.0));
+    harness.run();
+    assert!(!harness.state().state().held(), "let go");
+}

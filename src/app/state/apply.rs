@@ -24,7 +24,7 @@ impl AppState {
             Action::Engine(engine) => self.set_engine(engine),
             Action::Speed(speed) => self.set_speed(speed),
             Action::Projector(on) => self.settings.projector = on,
-            Action::Hold { phi1_rad, phi2_rad } => self.hold(phi1_rad, phi2_rad),
+            Action::Hold { angles_rad } => self.hold(&angles_rad),
             Action::Release => self.release(),
             Action::RampStart(ramp) => self.start_ramp(ramp),
             Action::RampPauseResume => self.toggle_ramp_pause(),

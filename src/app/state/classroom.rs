@@ -55,18 +55,27 @@ impl AppState {
         self.view_generation += 1;
     }
 
-    /// Holds the column at rest at the angles `(phi1, phi2)` (a drag in the
-    /// scene): time stands still until [`Self::release`].
-    pub(super) fn hold(&mut self, phi1_rad: f64, phi2_rad: f64) {
+    /// Holds the column at rest with its rods at `angles_rad` (a drag in
+    /// the scene): time stands still until [`Self::release`]. The state is
+    /// the N angles, the roller's spin, the N rates and the spin's rate; an
+    /// angle list of another length (a chain changed under the mouse) is
+    /// not taken.
+    pub(super) fn hold(&mut self, angles_rad: &[f64]) {
+        let rods = self.sim.model().column.rods;
+        if angles_rad.len() != rods {
+            return;
+        }
         let mut x = self.sim.state();
-        x[0] = phi1_rad;
-        x[1] = phi2_rad;
-        x[3] = 0.0;
-        x[4] = 0.0;
+        for (i, &angle) in angles_rad.iter().enumerate() {
+            x[i] = angle;
+            x[rods + 1 + i] = 0.0;
+        }
         match self.sim.restart_from(self.sim.engine(), x) {
             Ok(()) => {
                 self.held = true;
                 self.hint = false;
+                // The tip was moved by hand: its path before is not motion.
+                self.trail.clear();
             }
             Err(error) => self.say(Notice::error(error.to_string())),
         }
@@ -126,7 +135,7 @@ mod tests {
     #[test]
     fn a_held_column_stands_still_and_moves_on_when_released() {
         let mut state = AppState::defaults();
-        state.hold(0.2, 0.5);
+        state.hold(&[0.2, 0.5]);
         let t = state.simulation().time_secs();
         for _ in 0..30 {
             state.advance(1.0 / 60.0);
