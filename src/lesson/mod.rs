@@ -283,7 +283,7 @@ impl Lesson {
                 if let Some(Run::Ramp { from, to, rate }) = step.run {
                     Ramp::new(from, to, rate)
                         .and_then(|ramp| ramp.check_for(&column.model))
-                        .map_err(|e| at_step(index, opened_on(e)))?;
+                        .map_err(|e| at_step(index, opened_on(e.to_string())))?;
                 }
             }
         }

@@ -9,7 +9,7 @@ mod reference;
 
 pub use identify::identify;
 pub use observe::{Observables, observe};
-pub use ramp::Ramp;
+pub use ramp::{Ramp, RampError};
 pub use reference::{Advance, MAX_STEPS_PER_ADVANCE, Reference};
 
 use crate::model::{

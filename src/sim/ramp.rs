@@ -4,8 +4,32 @@
 
 use super::{Observables, SimError, Simulation, Status};
 use crate::format::Shown;
-use crate::model::Model;
+use crate::model::{Model, ModelError};
 use std::ops::ControlFlow;
+
+/// Why a ramp is refused; each names the end or the rate at fault.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum RampError {
+    /// An end that is not a load.
+    #[error("ramp {end} = {}: must be a load p >= 0", Shown(*.value))]
+    End { end: &'static str, value: f64 },
+    /// A rate that is not a positive load per second.
+    #[error("ramp rate = {}: must be a positive load per second", Shown(*.0))]
+    Rate(f64),
+    /// An end the model does not take, with the model's reason.
+    #[error("ramp {end} = {}: {why}", Shown(*.value))]
+    Refused {
+        end: &'static str,
+        value: f64,
+        why: ModelError,
+    },
+    /// Text that is not `FROM:TO:RATE`.
+    #[error("'{0}': must be FROM:TO:RATE (loads p and p per second, e.g. 0:4:0.05)")]
+    Form(String),
+    /// A part of `FROM:TO:RATE` that is not a number.
+    #[error("ramp {part} '{text}' is not a number")]
+    NotANumber { part: &'static str, text: String },
+}
 
 /// A load ramp: `p` from `from_p` toward `to_p` at `rate_p_per_s` (> 0) per
 /// simulated second, then held at `to_p`.
@@ -21,17 +45,14 @@ impl Ramp {
     ///
     /// # Errors
     /// A negative or non-finite end, or a rate that is not positive and finite.
-    pub fn new(from_p: f64, to_p: f64, rate_p_per_s: f64) -> Result<Self, String> {
-        for (name, p) in [("from", from_p), ("to", to_p)] {
-            if !(p.is_finite() && p >= 0.0) {
-                return Err(format!("ramp {name} = {}: must be a load p >= 0", Shown(p)));
+    pub fn new(from_p: f64, to_p: f64, rate_p_per_s: f64) -> Result<Self, RampError> {
+        for (end, value) in [("from", from_p), ("to", to_p)] {
+            if !(value.is_finite() && value >= 0.0) {
+                return Err(RampError::End { end, value });
             }
         }
         if !(rate_p_per_s.is_finite() && rate_p_per_s > 0.0) {
-            return Err(format!(
-                "ramp rate = {}: must be a positive load per second",
-                Shown(rate_p_per_s)
-            ));
+            return Err(RampError::Rate(rate_p_per_s));
         }
         Ok(Self {
             from_p,
@@ -46,12 +67,12 @@ impl Ramp {
     ///
     /// # Errors
     /// The end the model refuses, with the model's reason.
-    pub fn check_for(&self, model: &Model) -> Result<(), String> {
-        for (name, p) in [("from", self.from_p), ("to", self.to_p)] {
+    pub fn check_for(&self, model: &Model) -> Result<(), RampError> {
+        for (end, value) in [("from", self.from_p), ("to", self.to_p)] {
             model
-                .at_load(p)
+                .at_load(value)
                 .validate()
-                .map_err(|why| format!("ramp {name} = {}: {why}", Shown(p)))?;
+                .map_err(|why| RampError::Refused { end, value, why })?;
         }
         Ok(())
     }
@@ -75,20 +96,21 @@ impl Ramp {
 }
 
 impl std::str::FromStr for Ramp {
-    type Err = String;
+    type Err = RampError;
 
     /// `FROM:TO:RATE`, e.g. `0:4:0.05` (loads p, rate in p per second).
-    fn from_str(text: &str) -> Result<Self, String> {
+    fn from_str(text: &str) -> Result<Self, RampError> {
         let parts: Vec<&str> = text.split(':').collect();
         let [from, to, rate] = parts.as_slice() else {
-            return Err(format!(
-                "'{text}': must be FROM:TO:RATE (loads p and p per second, e.g. 0:4:0.05)"
-            ));
+            return Err(RampError::Form(text.to_owned()));
         };
-        let number = |name: &str, part: &str| {
+        let number = |name: &'static str, part: &str| {
             part.trim()
                 .parse::<f64>()
-                .map_err(|_| format!("ramp {name} '{part}' is not a number"))
+                .map_err(|_| RampError::NotANumber {
+                    part: name,
+                    text: (*part).to_owned(),
+                })
         };
         Self::new(
             number("from", from)?,

@@ -89,7 +89,7 @@ impl View for RampSection {
                 }
             });
             if let Err(why) = &ramp {
-                ui.colored_label(theme.error, why);
+                ui.colored_label(theme.error, why.to_string());
             }
             if let Some(run) = state.ramp() {
                 let doing = if run.finished() {
