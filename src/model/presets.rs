@@ -189,14 +189,14 @@ pub const PRESETS: [Preset; 11] = [
         id: PresetId::Beck,
         name: "beck",
         source: "Beck 1952, a chain of 16 rods",
-        description: "Beck's column as a chain of 16 uniform rods with springs k at every joint (a beam of EI = k l, L = 16 l), follower force: flutter at P L^2/EI = 18.78 (Beck's continuous column: 20.05); runs on the reference engine",
+        description: "Beck's column as a chain of 16 uniform rods with springs k at every joint (a beam of EI = k l, L = 16 l), follower force: flutter at P L^2/EI = 18.78 (Beck's continuous column: 20.05)",
         build: beck,
     },
     Preset {
         id: PresetId::Pflueger,
         name: "pflueger",
         source: "Pflueger's column, a chain of 16 rods",
-        description: "Pflueger's column: Beck's chain of 16 rods with a tip mass of half the column's mass, follower force: the tip mass lowers the flutter load to P L^2/EI = 15.06; runs on the reference engine",
+        description: "Pflueger's column: Beck's chain of 16 rods with a tip mass of half the column's mass, follower force: the tip mass lowers the flutter load to P L^2/EI = 15.06",
         build: pflueger,
     },
     Preset {
