@@ -72,12 +72,14 @@ impl AppState {
         }
     }
 
-    /// Disturbs both angles by [`KICK_RAD`] and runs on.
+    /// Turns every rod by [`KICK_RAD`] (both of two, all of a chain: the
+    /// column turns as a whole, with no kink at a joint) and runs on.
     pub(super) fn kick(&mut self) {
         self.hint = false;
         let mut x = self.sim.state();
-        x[0] += KICK_RAD;
-        x[1] += KICK_RAD;
+        for angle in x.rows_mut(0, self.sim.model().column.rods).iter_mut() {
+            *angle += KICK_RAD;
+        }
         if let Err(error) = self.sim.restart_from(self.sim.engine(), x) {
             self.say(Notice::error(error.to_string()));
         }
@@ -168,5 +170,27 @@ mod tests {
             (fastest - growth).abs() < 0.2 * growth.abs(),
             "measured {fastest} against predicted {growth}"
         );
+    }
+
+    /// A kick turns every rod of a chain by the same angle: the column turns
+    /// as a whole (it used to turn the first two rods only, a kink at the
+    /// third joint).
+    #[test]
+    fn a_kick_turns_every_rod_of_a_chain() {
+        let mut state = AppState::new(Settings::default()).unwrap();
+        state.set_parameter(Key::Rods, 5.0).unwrap();
+        let before: Vec<f64> = state.simulation().state().iter().take(5).copied().collect();
+        state.kick();
+        let after = state.simulation().state();
+        for (i, angle) in before.iter().enumerate() {
+            // (rapier keeps angles in f32)
+            assert!(
+                (after[i] - angle - KICK_RAD).abs() < 1e-6,
+                "rod {}: {} -> {}",
+                i + 1,
+                angle,
+                after[i]
+            );
+        }
     }
 }
