@@ -471,24 +471,22 @@ impl ZieglerApp {
 
     /// One panel alone (for snapshots and figures).
     pub fn panel_ui(&mut self, ui: &mut egui::Ui, panel: Panel) {
+        let tab = match panel {
+            // The whole window does its own frame's work.
+            Panel::Window => return self.contents_ui(ui),
+            Panel::Scene => None,
+            Panel::Tab(tab) => Some(tab),
+        };
         self.apply_pending(ui.ctx());
         let theme = self.applied_theme(ui.ctx());
         self.state.set_for_picture(self.for_pictures);
-        match panel {
-            Panel::Window => self.contents_ui(ui),
-            Panel::Scene => {
-                egui::CentralPanel::default().show(ui, |ui| {
-                    scene::scene_ui(ui, &self.state, &mut self.actions, &mut self.scene, &theme);
-                });
-            }
-            Panel::Tab(tab) => {
-                egui::CentralPanel::default().show(ui, |ui| {
-                    self.tabs
-                        .view(tab)
-                        .ui(ui, &self.state, &mut self.actions, &theme);
-                });
-            }
-        }
+        egui::CentralPanel::default().show(ui, |ui| match tab {
+            None => scene::scene_ui(ui, &self.state, &mut self.actions, &mut self.scene, &theme),
+            Some(tab) => self
+                .tabs
+                .view(tab)
+                .ui(ui, &self.state, &mut self.actions, &theme),
+        });
         self.ask_for_a_frame_if_asked(ui.ctx());
     }
 }

@@ -140,7 +140,7 @@ pub fn scene_ui(
             let point = [f64::from(world.x), f64::from(world.y)];
             let lengths_m: Vec<f64> = (0..rods).map(|i| model.column.rod(i).length_m).collect();
             let x = state.simulation().state();
-            let angles_now_rad: Vec<f64> = x.iter().take(rods).copied().collect();
+            let angles_now_rad: Vec<f64> = x.rows(0, rods).iter().copied().collect();
             actions.push(Action::Hold {
                 angles_rad: grab_angles(held, &lengths_m, &angles_now_rad, point),
             });

@@ -66,10 +66,8 @@ impl AppState {
             return;
         }
         let mut x = self.sim.state();
-        for (i, &angle) in angles_rad.iter().enumerate() {
-            x[i] = angle;
-            x[rods + 1 + i] = 0.0;
-        }
+        x.rows_mut(0, rods).copy_from_slice(angles_rad);
+        x.rows_mut(rods + 1, rods).fill(0.0);
         match self.sim.restart_from(self.sim.engine(), x) {
             Ok(()) => {
                 self.held = true;

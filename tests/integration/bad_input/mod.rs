@@ -5,7 +5,7 @@
 //! caveat. The README's table "Bad input and extremes" lists the same cases.
 
 use std::io::Read as _;
-use std::process::{Command, Output, Stdio};
+use std::process::{Child, Command, ExitStatus, Output, Stdio};
 use std::time::{Duration, Instant};
 
 use zieglerlab::analysis::{
@@ -24,14 +24,35 @@ use cli_extremes::CLI_EXTREMES;
 /// freezing CI.
 const CASE_LIMIT: Duration = Duration::from_mins(1);
 
-/// Runs the binary with `args`, killed after [`CASE_LIMIT`].
-fn run_limited(args: &[&str]) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+/// The binary started on `args`, its standard output and error piped.
+fn spawn(args: &[&str]) -> Child {
+    Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
         .args(args)
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
-        .expect("the binary runs");
+        .expect("the binary runs")
+}
+
+/// Waits for `child` to end; after `limit` it is killed and the test fails,
+/// saying `why` (so a hang fails instead of freezing CI).
+fn wait_within(child: &mut Child, limit: Duration, why: &str) -> ExitStatus {
+    let start = Instant::now();
+    loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            return status;
+        }
+        if start.elapsed() > limit {
+            child.kill().unwrap();
+            panic!("{why} after {limit:?}");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+/// Runs the binary with `args`, killed after [`CASE_LIMIT`].
+fn run_limited(args: &[&str]) -> Output {
+    let mut child = spawn(args);
     // Readers on their own threads, so a full pipe cannot stall the child.
     let mut stdout = child.stdout.take().unwrap();
     let mut stderr = child.stderr.take().unwrap();
@@ -43,17 +64,7 @@ fn run_limited(args: &[&str]) -> Output {
         let mut bytes = Vec::new();
         stderr.read_to_end(&mut bytes).map(|_| bytes)
     });
-    let start = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        if start.elapsed() > CASE_LIMIT {
-            child.kill().unwrap();
-            panic!("{args:?}: no answer within {CASE_LIMIT:?}");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
+    let status = wait_within(&mut child, CASE_LIMIT, &format!("{args:?}: no answer"));
     Output {
         status,
         stdout: out_reader.join().unwrap().unwrap(),
@@ -307,13 +318,12 @@ fn a_refused_output_leaves_the_existing_file_alone() {
 fn a_closed_pipe_ends_quietly() {
     let with_ramp = ["--ramp", "0:0.1:0.000001"];
     for extra in [&[][..], &with_ramp[..]] {
-        let mut child = Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
-            .args(["simulate", "--preset", "beck", "--duration", "40000"])
-            .args(extra)
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .unwrap();
+        let args = [
+            &["simulate", "--preset", "beck", "--duration", "40000"],
+            extra,
+        ]
+        .concat();
+        let mut child = spawn(&args);
         let mut first = [0u8; 64];
         child
             .stdout
@@ -322,14 +332,8 @@ fn a_closed_pipe_ends_quietly() {
             .read_exact(&mut first)
             .unwrap();
         drop(child.stdout.take());
-        let start = Instant::now();
-        while child.try_wait().unwrap().is_none() {
-            if start.elapsed() > CASE_LIMIT {
-                child.kill().unwrap();
-                panic!("{extra:?}: still computing for a closed pipe after {CASE_LIMIT:?}");
-            }
-            std::thread::sleep(Duration::from_millis(20));
-        }
+        let why = format!("{extra:?}: still computing for a closed pipe");
+        wait_within(&mut child, CASE_LIMIT, &why);
         let out = child.wait_with_output().unwrap();
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(0), "{extra:?}: {stderr}");
@@ -368,26 +372,15 @@ fn a_reader_gone_before_the_first_line_ends_the_work() {
         ],
     ];
     for args in cases {
-        let mut child = Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
-            .args(args)
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .unwrap();
+        let mut child = spawn(args);
         std::thread::sleep(Duration::from_millis(300));
         assert!(
             child.try_wait().unwrap().is_none(),
             "{args:?} still at work"
         );
         drop(child.stdout.take());
-        let closed = Instant::now();
-        while child.try_wait().unwrap().is_none() {
-            if closed.elapsed() > Duration::from_secs(5) {
-                child.kill().unwrap();
-                panic!("{args:?}: still computing 5 s after its reader went");
-            }
-            std::thread::sleep(Duration::from_millis(20));
-        }
+        let why = format!("{args:?}: still computing since its reader went");
+        wait_within(&mut child, Duration::from_secs(5), &why);
         let out = child.wait_with_output().unwrap();
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(0), "{args:?}: {stderr}");
