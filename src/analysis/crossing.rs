@@ -341,7 +341,7 @@ mod tests {
         let mut checked = 0;
         let two_rods = PRESETS.iter().filter(|p| p.model().column.rods == 2);
         for p in two_rods.clone() {
-            checked += assert_fast_bisection_matches_schur(p.name, &p.model());
+            checked += assert_fast_bisection_matches_schur(p.id.name(), &p.model());
         }
         assert!(checked >= 2 * two_rods.count(), "{checked} changes checked");
         let column = PresetId::Ziegler1952.model();

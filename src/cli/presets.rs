@@ -33,7 +33,7 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
                         })
                     })
                     .collect();
-                json!({"name": preset.name, "source": preset.source, "description": preset.description, "parameters": parameters})
+                json!({"name": preset.id.name(), "source": preset.source, "description": preset.description, "parameters": parameters})
             })
             .collect();
         writeln!(out, "{}", serde_json::to_string_pretty(&presets)?)?;
@@ -44,7 +44,9 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
         writeln!(
             out,
             "{} ({})\n  {}",
-            preset.name, preset.source, preset.description
+            preset.id.name(),
+            preset.source,
+            preset.description
         )?;
         for key in KEYS.iter().filter(|key| key.applies_to(&model)) {
             let unit = if key.unit.is_empty() { "-" } else { key.unit };

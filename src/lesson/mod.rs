@@ -264,7 +264,7 @@ impl Lesson {
                 message: "expected at least one step in `steps`".to_owned(),
             });
         }
-        for start in PresetId::ALL {
+        for &start in PresetId::all() {
             let opened_on = |message: String| {
                 if self.steps[0].preset.is_some() {
                     message

@@ -2,7 +2,9 @@
 //! explorer's): any key, or the joints' damper ratio c1/c2 or damping level
 //! with the other held.
 
-use super::keys::{Assignment, KEYS, Key, apply_assignments};
+use super::assign::{Assignment, apply_assignments};
+use super::key_table::KEYS;
+use super::keys::Key;
 use super::{Model, ModelError};
 
 /// The name of the damper-ratio axis, `c1/c2` (the damping level held).

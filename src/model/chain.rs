@@ -1,20 +1,49 @@
-//! The nonlinear equations of motion of a chain of N rods under any tip load
-//! (follower, partial, dead or the roller), with the joints' springs and
-//! dampers and the drag along the rods: state in, state derivative out.
+//! The nonlinear equations of motion of a chain of N rods (physics.md
+//! section 3) under any tip load (follower, partial, dead or the roller),
+//! with the joints' springs and dampers and the drag along the rods: state
+//! in, state derivative out. The entry point for every column; two rods go
+//! the closed-form fast path of `two_rods`.
 
 use nalgebra::{Cholesky, DMatrix, DVector, Dyn, Matrix2, Vector2};
 
-use super::dynamics::{StateVec, joint_torques_nm, normal, rods_drag, slaved_spin_rate, tip_load};
-use super::linear::chain_mass_matrix;
+use super::kinematics::normal;
+use super::loads::{joint_torques_nm, rods_drag, slaved_spin_rate, tip_load};
+use super::mass::chain_mass_matrix;
 use super::params::{Column, Model};
+use super::state::{StateVec, StateView, StateViewMut};
+use super::two_rods;
+
+/// The state derivative of the nonlinear equations of motion (section 3,
+/// eqs 29-30 corrected), with the joint dampers. For a massless roller the
+/// spin follows its slaved rate: `psi''` is that rate's time derivative, so a
+/// state that starts consistent stays so.
+///
+/// Two rods take the closed-form 2x2 solve of `two_rods` (a test holds it
+/// to [`chain_derivative`]); any other chain moves by [`chain_derivative`].
+/// A state whose mass matrix cannot be factored gets NaN, which the engines
+/// stop on.
+#[must_use]
+pub fn state_derivative(model: &Model, x: &StateVec) -> StateVec {
+    if model.column.rods == 2 {
+        return two_rods::state_derivative(model, x);
+    }
+    chain_derivative(model, x).unwrap_or_else(|| StateVec::from_element(x.len(), f64::NAN))
+}
+
+/// Kinetic energy (rods and the roller's spin, eq. 13) and spring energy
+/// (eq. 14), in joules.
+#[must_use]
+pub fn energy_j(model: &Model, x: &StateVec) -> (f64, f64) {
+    if model.column.rods == 2 {
+        return two_rods::energy_j(model, x);
+    }
+    chain_energy_j(model, x)
+}
 
 /// The rods' angles and rates of a chain's state.
-fn angles_and_rates(column: &Column, x: &StateVec) -> (Vec<f64>, Vec<f64>) {
-    let n = column.rods;
-    (
-        x.rows(0, n).iter().copied().collect(),
-        x.rows(n + 1, n).iter().copied().collect(),
-    )
+fn angles_and_rates(x: &StateVec) -> (&[f64], &[f64]) {
+    let state = StateView::new(x);
+    (state.angles_rad(), state.rates_rad_per_s())
 }
 
 /// The generalized forces on the rods' angles of everything but the tip
@@ -57,11 +86,11 @@ fn lagrange(
     x: &StateVec,
     tip_q: &[f64],
 ) -> Option<(Cholesky<f64, Dyn>, DVector<f64>)> {
-    let (phi, rate) = angles_and_rates(&model.column, x);
+    let (phi, rate) = angles_and_rates(x);
     let n = phi.len();
     let mu = chain_mass_matrix(model);
     let mass = DMatrix::from_fn(n, n, |j, k| mu[(j, k)] * (phi[j] - phi[k]).cos());
-    let q = joint_and_drag_forces(&model.column, x, &phi, &rate);
+    let q = joint_and_drag_forces(&model.column, x, phi, rate);
     let rhs = DVector::from_fn(n, |j, _| {
         q[j] + tip_q[j]
             - (0..n)
@@ -89,7 +118,10 @@ pub fn tip_mobility(model: &Model, x: &StateVec) -> Option<(Matrix2<f64>, DVecto
     let column = &model.column;
     let n = column.rods;
     let (factor, rhs) = lagrange(model, x, &vec![0.0; n])?;
-    let jacobian = DMatrix::from_fn(2, n, |row, i| column.rod(i).length_m * normal(x[i])[row]);
+    let angles = StateView::new(x).angles_rad();
+    let jacobian = DMatrix::from_fn(2, n, |row, i| {
+        column.rod(i).length_m * normal(angles[i])[row]
+    });
     let product = &jacobian * factor.solve(&jacobian.transpose());
     let mobility = Matrix2::new(
         product[(0, 0)],
@@ -110,21 +142,23 @@ pub fn chain_derivative(model: &Model, x: &StateVec) -> Option<StateVec> {
     let n = column.rods;
     let tip = tip_load(model, x);
     let accelerations = rod_accelerations(model, x, &tip.generalized_n_m[..n])?;
+    let state = StateView::new(x);
+    let (angles, rates) = (state.angles_rad(), state.rates_rad_per_s());
     let (psi_dot, psi_ddot) = match model.roller() {
         None => (0.0, 0.0),
         Some(roller) if roller.mass_kg > 0.0 => (
-            x[2 * n + 1],
+            state.spin_rate_rad_per_s(),
             tip.generalized_n_m[n] / roller.spin_inertia_kg_m2(column.rod2.length_m),
         ),
         Some(roller) => {
             // r psi' = l_N phi_N' + sum_{i<N} l_i phi_i' cos(phi_N - phi_i)
             // - V sin(phi_N), differentiated along the motion.
             let last = n - 1;
-            let (phi_n, rate_n) = (x[last], x[n + 1 + last]);
+            let (phi_n, rate_n) = (angles[last], rates[last]);
             let mut slip_rate = column.rod(last).length_m * accelerations[last]
                 - roller.band_speed_m_per_s * phi_n.cos() * rate_n;
             for i in 0..last {
-                let (angle, rate) = (phi_n - x[i], x[n + 1 + i]);
+                let (angle, rate) = (phi_n - angles[i], rates[i]);
                 slip_rate += column.rod(i).length_m
                     * (accelerations[i] * angle.cos() - rate * angle.sin() * (rate_n - rate));
             }
@@ -135,19 +169,20 @@ pub fn chain_derivative(model: &Model, x: &StateVec) -> Option<StateVec> {
         }
     };
     let mut derivative = StateVec::zeros(x.len());
-    for i in 0..n {
-        derivative[i] = x[n + 1 + i];
-        derivative[n + 1 + i] = accelerations[i];
-    }
-    derivative[n] = psi_dot;
-    derivative[2 * n + 1] = psi_ddot;
+    let mut write = StateViewMut::new(&mut derivative);
+    write.angles_rad().copy_from_slice(rates);
+    write
+        .rates_rad_per_s()
+        .copy_from_slice(accelerations.as_slice());
+    *write.spin_rad() = psi_dot;
+    *write.spin_rate_rad_per_s() = psi_ddot;
     Some(derivative)
 }
 
 /// Kinetic (rods and roller's spin) and spring energy of the chain, in joules.
 #[must_use]
 pub fn chain_energy_j(model: &Model, x: &StateVec) -> (f64, f64) {
-    let (phi, rate) = angles_and_rates(&model.column, x);
+    let (phi, rate) = angles_and_rates(x);
     let n = phi.len();
     let mu = chain_mass_matrix(model);
     let mut kinetic = 0.0;
@@ -157,7 +192,7 @@ pub fn chain_energy_j(model: &Model, x: &StateVec) -> (f64, f64) {
         }
     }
     if let Some(roller) = model.roller() {
-        let spin_rate = x[2 * n + 1];
+        let spin_rate = StateView::new(x).spin_rate_rad_per_s();
         kinetic +=
             0.5 * roller.spin_inertia_kg_m2(model.column.rod2.length_m) * spin_rate * spin_rate;
     }
@@ -168,4 +203,32 @@ pub fn chain_energy_j(model: &Model, x: &StateVec) -> (f64, f64) {
         })
         .sum();
     (kinetic, spring)
+}
+
+/// How the tip's velocity answers a force at the tip, for a step of `dt`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TipResponse {
+    /// `J M^-1 J^T`: the change of the tip's velocity per unit impulse
+    /// there, in (m/s) / (N s), with `J` the tip's Jacobian `[l_i t_i]`.
+    pub mobility: Matrix2<f64>,
+    /// The rods' rates after `dt` with no tip load (explicit).
+    pub free_rates: Vec<f64>,
+}
+
+/// The tip's response in state `x` over a step `dt` (for a friction force
+/// that is solved implicitly with the rods' motion).
+#[must_use]
+pub fn tip_response(model: &Model, x: &StateVec, dt: f64) -> TipResponse {
+    let n = model.column.rods;
+    let (mobility, free) = tip_mobility(model, x)
+        .unwrap_or_else(|| (Matrix2::zeros(), DVector::from_element(n, f64::NAN)));
+    TipResponse {
+        mobility,
+        free_rates: StateView::new(x)
+            .rates_rad_per_s()
+            .iter()
+            .zip(free.iter())
+            .map(|(rate, acceleration)| rate + dt * acceleration)
+            .collect(),
+    }
 }

@@ -2,6 +2,8 @@
 //! reads and writes a model (a group such as `a` or `nu` writes the SI
 //! values it stands for).
 
+use strum::VariantArray;
+
 use super::keys::{Key, KeySpec, Scope, Sign};
 use super::params::{Load, MAX_RODS, Model, Rod, Roller};
 
@@ -413,3 +415,61 @@ pub const KEYS: [KeySpec; 26] = [
         },
     },
 ];
+
+// `Key::spec` indexes the table by the variant: the two orders are tied
+// when the crate compiles.
+const _: () = {
+    let mut i = 0;
+    while i < KEYS.len() {
+        assert!(KEYS[i].key as usize == i, "KEYS is not in the order of Key");
+        i += 1;
+    }
+    assert!(
+        KEYS.len() == Key::VARIANTS.len(),
+        "a key without its row in KEYS"
+    );
+};
+
+impl Key {
+    /// What the key is: unit, range, scope, how it reads and writes a model.
+    #[must_use]
+    pub fn spec(self) -> &'static KeySpec {
+        &KEYS[self as usize]
+    }
+
+    /// The parameter's current value in `model` (NaN where the key does not
+    /// apply, e.g. the roller's keys on a column).
+    #[must_use]
+    pub fn get(self, model: &Model) -> f64 {
+        self.spec().get(model)
+    }
+
+    /// Whether the key exists for this model's load.
+    #[must_use]
+    pub fn applies_to(self, model: &Model) -> bool {
+        self.spec().applies_to(model)
+    }
+
+    /// Why the key is not a parameter of `model`, where that needs saying
+    /// (beyond listing the keys that are).
+    #[must_use]
+    pub fn why_absent(self, model: &Model) -> Option<&'static str> {
+        match self {
+            Self::Eta if model.roller().is_some() => Some(
+                "the roller has no eta: the band's friction sets the force's direction, against the contact's slip, and its angle delta from rod 2 is an outcome of the motion, not a parameter",
+            ),
+            _ => None,
+        }
+    }
+
+    /// The names of the keys that apply to `model`, for messages.
+    #[must_use]
+    pub fn names_for(model: &Model) -> String {
+        Self::VARIANTS
+            .iter()
+            .filter(|key| key.applies_to(model))
+            .map(|key| key.name())
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+}

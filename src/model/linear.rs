@@ -3,6 +3,7 @@
 use nalgebra::DMatrix;
 
 use super::ModelError;
+use super::mass::chain_mass_matrix;
 use super::params::{Column, Model};
 
 /// `M x'' + D x' + K x = 0` about the straight column, `x = (phi_1 .. phi_N[, psi])`.
@@ -16,40 +17,6 @@ pub struct LinearModel {
     /// Zero roots of the model that the matrices above do not carry: a massless
     /// roller's free spin angle, whose rate is slaved (see [`linearize`]).
     pub extra_zero_roots: usize,
-}
-
-/// The chain's mass matrix about the straight column, on the rods' angles
-/// `(phi_1 .. phi_N)`: with rod i's points at `sum_{j<i} l_j e_j + s e_i`,
-/// `M_jk = sum_i m_i c_ij c_ik + delta_jk I_j + m_end l_j l_k`, where
-/// `c_ij = l_j` (j < i), `s_i` (j = i), 0 (j > i), and the end mass (tip
-/// mass and roller) with the roller's yaw inertia on the last rod.
-#[must_use]
-pub fn chain_mass_matrix(model: &Model) -> DMatrix<f64> {
-    let column = &model.column;
-    let n = column.rods;
-    let (roller_kg, yaw_kg_m2) = model
-        .roller()
-        .map_or((0.0, 0.0), |r| (r.mass_kg, r.yaw_inertia_kg_m2()));
-    let end_kg = column.tip_mass_kg + roller_kg;
-    let length = |i: usize| column.rod(i).length_m;
-    // The mass of the rods beyond rod i, for i from the tip down.
-    let mut beyond_kg = vec![0.0; n];
-    for i in (0..n.saturating_sub(1)).rev() {
-        beyond_kg[i] = beyond_kg[i + 1] + column.rod(i + 1).mass_kg;
-    }
-    DMatrix::from_fn(n, n, |j, k| {
-        let (lo, hi) = (j.min(k), j.max(k));
-        let rod = column.rod(hi);
-        let end = end_kg * length(j) * length(k);
-        if j == k {
-            beyond_kg[j] * length(j).powi(2)
-                + rod.inertia_about_joint_kg_m2()
-                + end
-                + if j + 1 == n { yaw_kg_m2 } else { 0.0 }
-        } else {
-            beyond_kg[hi] * length(lo) * length(hi) + rod.mass_kg * rod.com_m * length(lo) + end
-        }
-    })
 }
 
 /// The external drag's damping matrix on the rods' angles, from its

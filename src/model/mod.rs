@@ -5,32 +5,43 @@
 //! how every number is checked; code comments cite them by section.
 #![doc = include_str!("physics.md")]
 
+mod assign;
 mod axis;
 mod chain;
-mod dynamics;
 mod key_table;
 mod keys;
+mod kinematics;
 mod linear;
+mod loads;
+mod mass;
 mod params;
 mod presets;
+mod state;
+mod two_rods;
 mod validate;
 
 pub use crate::format::Shown;
+pub use assign::{Assignment, apply_assignments, parse_assignment};
 pub use axis::{Axis, DAMPER_RATIO, DAMPING_LEVEL, MASS_RATIO};
-pub use chain::{chain_derivative, chain_energy_j, tip_mobility};
-pub use dynamics::{
-    Friction, RodDrag, SLIP_REGULARIZATION_M_PER_S, StateVec, TipLoad, TipResponse, energy_j,
-    friction, joint_torques_nm, joints_m, normal, rest_state, rods_drag, state_derivative,
-    tip_load, tip_m, tip_response, unit,
+pub use chain::{
+    TipResponse, chain_derivative, chain_energy_j, energy_j, state_derivative, tip_mobility,
+    tip_response,
 };
-pub use keys::{Assignment, KEYS, Key, KeySpec, apply_assignments, parse_assignment};
-pub use linear::{LinearModel, chain_mass_matrix, joint_matrices, linearize};
+pub use key_table::KEYS;
+pub use keys::{Key, KeySpec};
+pub use kinematics::{joints_m, normal, tip_m, unit};
+pub use linear::{LinearModel, joint_matrices, linearize};
+pub use loads::{
+    Friction, RodDrag, SLIP_REGULARIZATION_M_PER_S, TipLoad, friction, joint_torques_nm, rods_drag,
+    tip_load,
+};
+pub use mass::{Inertia, chain_mass_matrix};
 pub(crate) use params::analysis_range_text;
 pub use params::{
-    Column, Inertia, LARGEST_DERIVED, LOAD_BAR_MAX_P, Load, MAX_RODS, Model, Rod, Roller,
-    SpinInertia,
+    Column, LARGEST_DERIVED, LOAD_BAR_MAX_P, Load, MAX_RODS, Model, Rod, Roller, SpinInertia,
 };
 pub use presets::{PRESETS, Preset, PresetId, preset};
+pub use state::{StateVec, StateView, StateViewMut, rest_state, state_len};
 
 /// A parameter value that makes no model, named so the user can fix it.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

@@ -245,17 +245,6 @@ pub struct Model {
     pub load: Load,
 }
 
-/// The three inertia coefficients of the kinetic energy,
-/// `T = A phi1'^2/2 + B cos(phi2 - phi1) phi1' phi2' + C phi2'^2/2 + J psi'^2/2` (eq. 13).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Inertia {
-    pub a_kg_m2: f64,
-    pub b_kg_m2: f64,
-    pub c_kg_m2: f64,
-    /// Spin inertia of the roller (0 without a roller).
-    pub spin_kg_m2: f64,
-}
-
 impl Model {
     /// Degrees of freedom: one angle per rod, and the roller's spin.
     #[must_use]
@@ -346,32 +335,6 @@ impl Model {
         let mut model = *self;
         model.set_load_p(p);
         model
-    }
-
-    /// Inertia coefficients of the kinetic energy (13), for any mass model.
-    #[must_use]
-    pub fn inertia(&self) -> Inertia {
-        let Column {
-            rod1,
-            rod2,
-            tip_mass_kg,
-            ..
-        } = self.column;
-        let (roller_mass_kg, yaw_kg_m2, spin_kg_m2) = self.roller().map_or((0.0, 0.0, 0.0), |r| {
-            (
-                r.mass_kg,
-                r.yaw_inertia_kg_m2(),
-                r.spin_inertia_kg_m2(rod2.length_m),
-            )
-        });
-        let outer_mass_kg = tip_mass_kg + roller_mass_kg;
-        let (l1, l2) = (rod1.length_m, rod2.length_m);
-        Inertia {
-            a_kg_m2: rod1.inertia_about_joint_kg_m2() + (rod2.mass_kg + outer_mass_kg) * l1 * l1,
-            b_kg_m2: (rod2.mass_kg * rod2.com_m + outer_mass_kg * l2) * l1,
-            c_kg_m2: rod2.inertia_about_joint_kg_m2() + outer_mass_kg * l2 * l2 + yaw_kg_m2,
-            spin_kg_m2,
-        }
     }
 
     /// The first derived quantity beyond [`LARGEST_DERIVED`] in size (or not

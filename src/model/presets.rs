@@ -1,12 +1,28 @@
 //! The named models of the paper, each one `Model` value with its source.
 
+use strum::VariantArray;
+
 use super::ModelError;
 use super::params::{Column, Load, Model, Rod, Roller, SpinInertia};
 
 /// A preset, by the name the command line and the settings use.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+#[derive(
+    Clone,
+    Copy,
+    Debug,
+    PartialEq,
+    Eq,
+    Hash,
+    serde::Serialize,
+    serde::Deserialize,
+    strum::VariantArray,
+    strum::IntoStaticStr,
+    strum::Display,
+)]
 #[serde(try_from = "String", into = "String")]
+#[strum(serialize_all = "kebab-case")]
 pub enum PresetId {
+    #[strum(serialize = "ziegler-1952")]
     Ziegler1952,
     UniformRods,
     MidpointMasses,
@@ -22,36 +38,15 @@ pub enum PresetId {
 
 impl PresetId {
     /// Every preset, in the order of [`PRESETS`].
-    pub const ALL: [Self; 11] = [
-        Self::Ziegler1952,
-        Self::UniformRods,
-        Self::MidpointMasses,
-        Self::Roller,
-        Self::RollerAsPrinted,
-        Self::Tabletop,
-        Self::TabletopRoller,
-        Self::Beck,
-        Self::Pflueger,
-        Self::BeckRoller,
-        Self::PfluegerRoller,
-    ];
+    #[must_use]
+    pub fn all() -> &'static [Self] {
+        Self::VARIANTS
+    }
 
     /// The preset's name, as typed.
     #[must_use]
     pub fn name(self) -> &'static str {
-        match self {
-            Self::Ziegler1952 => "ziegler-1952",
-            Self::UniformRods => "uniform-rods",
-            Self::MidpointMasses => "midpoint-masses",
-            Self::Roller => "roller",
-            Self::RollerAsPrinted => "roller-as-printed",
-            Self::Tabletop => "tabletop",
-            Self::TabletopRoller => "tabletop-roller",
-            Self::Beck => "beck",
-            Self::Pflueger => "pflueger",
-            Self::BeckRoller => "beck-roller",
-            Self::PfluegerRoller => "pflueger-roller",
-        }
+        self.into()
     }
 
     /// The preset itself.
@@ -81,22 +76,21 @@ impl PresetId {
     }
 }
 
-impl std::fmt::Display for PresetId {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
 impl std::str::FromStr for PresetId {
     type Err = ModelError;
 
     fn from_str(name: &str) -> Result<Self, ModelError> {
-        Self::ALL
-            .into_iter()
+        Self::VARIANTS
+            .iter()
+            .copied()
             .find(|id| id.name() == name)
             .ok_or_else(|| ModelError::UnknownPreset {
                 name: name.to_owned(),
-                known: Self::ALL.map(Self::name).join(", "),
+                known: Self::VARIANTS
+                    .iter()
+                    .map(|id| id.name())
+                    .collect::<Vec<_>>()
+                    .join(", "),
             })
     }
 }
@@ -119,12 +113,28 @@ impl From<PresetId> for String {
 #[derive(Clone, Copy, Debug)]
 pub struct Preset {
     pub id: PresetId,
-    pub name: &'static str,
     /// Where in the paper the model is: a figure or equations.
     pub source: &'static str,
     pub description: &'static str,
     build: fn() -> Model,
 }
+
+// `PresetId::preset` indexes the table by the variant: the two orders are
+// tied when the crate compiles.
+const _: () = {
+    let mut i = 0;
+    while i < PRESETS.len() {
+        assert!(
+            PRESETS[i].id as usize == i,
+            "PRESETS is not in the order of PresetId"
+        );
+        i += 1;
+    }
+    assert!(
+        PRESETS.len() == PresetId::VARIANTS.len(),
+        "a preset without its row"
+    );
+};
 
 impl Preset {
     /// The preset's model at its default load.
@@ -138,77 +148,66 @@ impl Preset {
 pub const PRESETS: [Preset; 11] = [
     Preset {
         id: PresetId::Ziegler1952,
-        name: "ziegler-1952",
         source: "Ziegler 1952",
         description: "Ziegler's column: massless rods, point mass 2m at the joint A and m at the tip, ideal follower force",
         build: ziegler_1952,
     },
     Preset {
         id: PresetId::UniformRods,
-        name: "uniform-rods",
         source: "Fig. 1a",
         description: "Uniform rigid rods of mass m (Fig. 1a), ideal follower force",
         build: uniform_rods,
     },
     Preset {
         id: PresetId::MidpointMasses,
-        name: "midpoint-masses",
         source: "Fig. 1b, eqs 1-7",
         description: "Massless rods with a point mass m at each midpoint (Fig. 1b, eqs 1-7), ideal follower force",
         build: midpoint_masses,
     },
     Preset {
         id: PresetId::Roller,
-        name: "roller",
         source: "Fig. 7, eqs 8-38",
         description: "Uniform rods with a roller dragged by a moving band (Fig. 7, eqs 8-38), consistent spin inertia; Fig. 8 parameters",
         build: roller,
     },
     Preset {
         id: PresetId::RollerAsPrinted,
-        name: "roller-as-printed",
         source: "eq. 39, Fig. 8",
         description: "The roller model as printed in eq. (39): spin inertia multiplied by r/l2 (physics.md erratum); Fig. 8 parameters",
         build: roller_as_printed,
     },
     Preset {
         id: PresetId::Tabletop,
-        name: "tabletop",
         source: "lecture pace",
         description: "A desk-sized column for a lecture: uniform rods of 25 cm and 100 g, springs of 0.0625 N m/rad (a = 10 1/s^2), ideal follower force; past p = 2.54 it flutters with a period of about 1.5 s",
         build: tabletop,
     },
     Preset {
         id: PresetId::TabletopRoller,
-        name: "tabletop-roller",
         source: "lecture pace",
         description: "The tabletop column pushed by a 10 g roller of radius 2.5 cm on a band at 0.1 m/s (nu = rho = mu = 0.1): a weak flutter from p = 0.024 that takes minutes to grow, a strong one near the ideal column's load",
         build: tabletop_roller,
     },
     Preset {
         id: PresetId::Beck,
-        name: "beck",
         source: "Beck 1952, a chain of 16 rods",
         description: "Beck's column as a chain of 16 uniform rods with springs k at every joint (a beam of EI = k l, L = 16 l), follower force: flutter at P L^2/EI = 18.78 (Beck's continuous column: 20.05)",
         build: beck,
     },
     Preset {
         id: PresetId::Pflueger,
-        name: "pflueger",
         source: "Pflueger's column, a chain of 16 rods",
         description: "Pflueger's column: Beck's chain of 16 rods with a tip mass of half the column's mass, follower force: the tip mass lowers the flutter load to P L^2/EI = 15.06",
         build: pflueger,
     },
     Preset {
         id: PresetId::BeckRoller,
-        name: "beck-roller",
         source: "Beck's chain loaded as in Bigoni et al. 2018",
         description: "Beck's chain of 16 rods loaded by the roller on the moving band (the paper's groups on each rod: roller mass 0.1 m, radius 0.1 l, mu = 0.1, V = 0.1 m/s): the slip's damping makes it flutter weakly from P L^2/EI = 0.025 (growth below 3e-4 1/s), and strongly from about 18.8, where the follower chain flutters",
         build: beck_roller,
     },
     Preset {
         id: PresetId::PfluegerRoller,
-        name: "pflueger-roller",
         source: "Pflueger's chain loaded as in Bigoni et al. 2018",
         description: "Pflueger's chain of 16 rods (tip mass half the rods' mass) loaded by the same roller on the moving band: weak flutter from P L^2/EI = 0.008 (growth below 4e-5 1/s), strong flutter from 15.06, where the follower chain flutters",
         build: pflueger_roller,
@@ -397,9 +396,8 @@ mod tests {
     /// and the stored form is the name (settings files stay readable).
     #[test]
     fn every_preset_reads_back_from_its_name() {
-        for id in PresetId::ALL {
+        for &id in PresetId::VARIANTS {
             assert_eq!(id.preset().id, id);
-            assert_eq!(id.preset().name, id.name());
             assert_eq!(id.name().parse::<PresetId>().unwrap(), id);
             assert_eq!(ron::to_string(&id).unwrap(), format!("\"{}\"", id.name()));
         }

@@ -110,7 +110,7 @@ impl Model {
         if rods > 2 {
             // Every copy of rod 2 must carry mass or inertia of its own: the
             // Cholesky factor's pivots stay well away from zero.
-            let mass = super::linear::chain_mass_matrix(self);
+            let mass = super::mass::chain_mass_matrix(self);
             let pivots_ok = mass.clone().cholesky().is_some_and(|factor| {
                 let l = factor.l();
                 (0..rods).all(|i| l[(i, i)].powi(2) > 1e-12 * mass[(i, i)])

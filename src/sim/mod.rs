@@ -13,8 +13,8 @@ pub use ramp::{Ramp, RampError};
 pub use reference::{Advance, MAX_STEPS_PER_ADVANCE, Reference};
 
 use crate::model::{
-    Model, ModelError, StateVec, chain_mass_matrix, joint_matrices, joints_m, rest_state,
-    state_derivative,
+    Model, ModelError, StateVec, StateView, StateViewMut, chain_mass_matrix, joint_matrices,
+    joints_m, rest_state, state_derivative, state_len,
 };
 use std::ops::ControlFlow;
 
@@ -179,13 +179,11 @@ fn check_rapier_step(model: &Model, step_secs: f64) -> Result<(), SimError> {
 #[must_use]
 pub fn initial_state(model: &Model, perturb_rad: f64) -> StateVec {
     let mut x = rest_state(&model.column);
-    for angle in x.rows_mut(0, model.column.rods).iter_mut() {
-        *angle = perturb_rad;
-    }
+    StateViewMut::new(&mut x).angles_rad().fill(perturb_rad);
     if model.roller().is_some_and(|roller| roller.mass_kg == 0.0) {
         // psi' is slaved: state_derivative returns it as d(psi)/dt.
-        let n = model.column.rods;
-        x[2 * n + 1] = state_derivative(model, &x)[n];
+        let slaved = StateView::new(&state_derivative(model, &x)).spin_rad();
+        *StateViewMut::new(&mut x).spin_rate_rad_per_s() = slaved;
     }
     x
 }
@@ -244,7 +242,7 @@ impl Simulation {
         step_secs: f64,
     ) -> Result<Self, SimError> {
         model.validate()?;
-        if x0.len() != 2 * (model.column.rods + 1) {
+        if x0.len() != state_len(model.column.rods) {
             #[expect(clippy::cast_precision_loss, reason = "a state's length")]
             return Err(SimError::Bad {
                 what: "the state's length",

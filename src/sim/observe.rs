@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use crate::model::{Model, StateVec, energy_j, tip_load, tip_m};
+use crate::model::{Model, StateVec, StateView, energy_j, tip_load, tip_m};
 
 /// The observables of one state.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -48,7 +48,7 @@ impl Observables {
 /// The observables of `model` in state `x` at time `t_secs`.
 #[must_use]
 pub fn observe(model: &Model, t_secs: f64, x: &StateVec) -> Observables {
-    let n = model.column.rods;
+    let state = StateView::new(x);
     let tip = tip_m(&model.column, x);
     let (kinetic_j, spring_j) = energy_j(model, x);
     let load = tip_load(model, x);
@@ -56,19 +56,19 @@ pub fn observe(model: &Model, t_secs: f64, x: &StateVec) -> Observables {
     let band_power_w = load
         .generalized_n_m
         .iter()
-        .zip(x.rows(n + 1, n + 1).iter())
+        .zip(state.all_rates())
         .map(|(q, v)| q * v)
         .sum();
     Observables {
         t_secs,
-        angles_rad: x.rows(0, n).iter().copied().collect(),
-        rates_rad_per_s: x.rows(n + 1, n).iter().copied().collect(),
-        phi1_rad: x[0],
-        phi2_rad: x[1],
-        psi_rad: x[n],
-        phi1_dot_rad_per_s: x[n + 1],
-        phi2_dot_rad_per_s: x[n + 2],
-        psi_dot_rad_per_s: x[2 * n + 1],
+        angles_rad: state.angles_rad().to_vec(),
+        rates_rad_per_s: state.rates_rad_per_s().to_vec(),
+        phi1_rad: state.angles_rad()[0],
+        phi2_rad: state.angles_rad()[1],
+        psi_rad: state.spin_rad(),
+        phi1_dot_rad_per_s: state.rates_rad_per_s()[0],
+        phi2_dot_rad_per_s: state.rates_rad_per_s()[1],
+        psi_dot_rad_per_s: state.spin_rate_rad_per_s(),
         delta_rad: load.delta_rad,
         tip_force_n: [load.force_n.x, load.force_n.y],
         kinetic_j,

@@ -8,8 +8,9 @@ use nalgebra::Vector2;
 use rapier2d::prelude::*;
 
 use crate::model::{
-    Column, Load, Model, Roller, SLIP_REGULARIZATION_M_PER_S, StateVec, TipResponse, friction,
-    joint_torques_nm, joints_m, normal, rods_drag, tip_load, tip_response, unit,
+    Column, Load, Model, Roller, SLIP_REGULARIZATION_M_PER_S, StateVec, StateView, StateViewMut,
+    TipResponse, friction, joint_torques_nm, joints_m, normal, rods_drag, state_len, tip_load,
+    tip_response, unit,
 };
 
 /// The rapier world of one column, and the roller's spin (f64, ours).
@@ -129,8 +130,8 @@ impl RapierEngine {
             world,
             rods,
             joints,
-            psi_rad: x[n],
-            psi_dot_rad_per_s: x[2 * n + 1],
+            psi_rad: StateView::new(x).spin_rad(),
+            psi_dot_rad_per_s: StateView::new(x).spin_rate_rad_per_s(),
             previous_rates: None,
             built_for: *model,
         };
@@ -150,18 +151,21 @@ impl RapierEngine {
         }
         // rapier's multibody joints carry a default damping of 0.1: none here.
         multibody.damping_mut().fill(0.0);
-        let relative = |i: usize, first: usize| {
+        // Each joint turns its rod relative to the rod before it.
+        let relative = |values: &[f64], i: usize| {
             if i == 0 {
-                x[first]
+                values[0]
             } else {
-                x[first + i] - x[first + i - 1]
+                values[i] - values[i - 1]
             }
         };
-        let displacements: Vec<f32> = (0..n).map(|i| f32_of(relative(i, 0))).collect();
+        let state = StateView::new(x);
+        let (angles, rates) = (state.angles_rad(), state.rates_rad_per_s());
+        let displacements: Vec<f32> = (0..n).map(|i| f32_of(relative(angles, i))).collect();
         multibody.apply_displacements(&displacements);
         let mut velocity = multibody.generalized_velocity_mut();
         for i in 0..n {
-            velocity[i] = f32_of(relative(i, n + 1));
+            velocity[i] = f32_of(relative(rates, i));
         }
         multibody.forward_kinematics(&self.world.bodies, false);
         multibody.update_rigid_bodies(&mut self.world.bodies, true);
@@ -171,8 +175,8 @@ impl RapierEngine {
     /// `(phi_1 .. phi_N, psi, phi_1' .. phi_N', psi')` in f64.
     #[must_use]
     pub fn state(&self) -> StateVec {
-        let n = self.rods.len();
-        let mut x = StateVec::zeros(2 * n + 2);
+        let mut x = StateVec::zeros(state_len(self.rods.len()));
+        let mut write = StateViewMut::new(&mut x);
         let (mut angle, mut rate) = (0.0, 0.0);
         for (i, &handle) in self.joints.iter().enumerate() {
             let (relative_angle, relative_rate) = self
@@ -187,11 +191,11 @@ impl RapierEngine {
                 .unwrap_or((f64::NAN, f64::NAN));
             angle += relative_angle;
             rate += relative_rate;
-            x[i] = angle;
-            x[n + 1 + i] = rate;
+            write.angles_rad()[i] = angle;
+            write.rates_rad_per_s()[i] = rate;
         }
-        x[n] = self.psi_rad;
-        x[2 * n + 1] = self.psi_dot_rad_per_s;
+        *write.spin_rad() = self.psi_rad;
+        *write.spin_rate_rad_per_s() = self.psi_dot_rad_per_s;
         x
     }
 
@@ -208,10 +212,13 @@ impl RapierEngine {
         // shifts growth rates by O(dt); the rates extrapolated to mid-step
         // make them second order.
         let mut x = now.clone();
-        let rates: Vec<f64> = now.rows(n + 1, n).iter().copied().collect();
+        let rates = StateView::new(&now).rates_rad_per_s().to_vec();
         if let Some(previous) = &self.previous_rates {
-            for (i, before) in previous.iter().enumerate() {
-                x[n + 1 + i] = 1.5 * rates[i] - 0.5 * before;
+            let mut write = StateViewMut::new(&mut x);
+            for ((mid, rate), before) in
+                write.rates_rad_per_s().iter_mut().zip(&rates).zip(previous)
+            {
+                *mid = 1.5 * rate - 0.5 * before;
             }
         }
         self.previous_rates = Some(rates);
@@ -309,16 +316,17 @@ fn implicit_roller_step(
     let column = &model.column;
     let n = column.rods;
     let (l_last, r) = (column.rod2.length_m, roller.radius_m);
-    let (e_last, t_last) = (unit(x[n - 1]), normal(x[n - 1]));
+    let state = StateView::new(x);
+    let (e_last, t_last) = (unit(state.last_angle_rad()), normal(state.last_angle_rad()));
     let band = Vector2::new(roller.band_speed_m_per_s, 0.0);
     let spin_inertia = roller.spin_inertia_kg_m2(l_last);
     let swing = (0..n).fold(Vector2::zeros(), |v, i| {
-        v + column.rod(i).length_m * response.free_rates[i] * normal(x[i])
+        v + column.rod(i).length_m * response.free_rates[i] * normal(state.angles_rad()[i])
     });
     let without_spin = swing + band;
     let (w_free, mobility) = if spin_inertia > 0.0 {
         (
-            without_spin - r * x[2 * n + 1] * t_last,
+            without_spin - r * state.spin_rate_rad_per_s() * t_last,
             response.mobility + (r * r / spin_inertia) * t_last * t_last.transpose(),
         )
     } else {
@@ -353,7 +361,7 @@ fn implicit_roller_step(
     };
     let force = -mu_r / s * slip_at(s);
     let psi_dot = if spin_inertia > 0.0 {
-        x[2 * n + 1] - dt * r * t_last.dot(&force) / spin_inertia
+        state.spin_rate_rad_per_s() - dt * r * t_last.dot(&force) / spin_inertia
     } else {
         // The slaved spin of the rods' velocities at the step's end.
         let mobility_force = response.mobility * force * dt;
@@ -374,19 +382,21 @@ fn roller_step(column: &Column, roller: &Roller, x: &StateVec, dt: f64) -> (Vect
     let n = column.rods;
     let last = n - 1;
     let (l_last, r) = (column.rod2.length_m, roller.radius_m);
-    let phi_last = x[last];
+    let state = StateView::new(x);
+    let (angles, rates) = (state.angles_rad(), state.rates_rad_per_s());
+    let phi_last = angles[last];
     let v = roller.band_speed_m_per_s;
     let mu_r = roller.friction_force_n();
     // Slip across the last rod without the spin's part, and along it: the
     // inner rods' swing seen from the last rod, its own swing, the band.
     let (across_inner, along_inner) = (0..last).fold((0.0, 0.0), |(across, along), i| {
-        let (bend, swing) = (phi_last - x[i], column.rod(i).length_m * x[n + 1 + i]);
+        let (bend, swing) = (phi_last - angles[i], column.rod(i).length_m * rates[i]);
         (across + swing * bend.cos(), along + swing * bend.sin())
     });
-    let across_without_spin = across_inner + l_last * x[2 * n] - v * phi_last.sin();
+    let across_without_spin = across_inner + l_last * rates[last] - v * phi_last.sin();
     let along = along_inner + v * phi_last.cos();
     let spin_inertia = roller.spin_inertia_kg_m2(l_last);
-    let u_n = across_without_spin - r * x[2 * n + 1];
+    let u_n = across_without_spin - r * state.spin_rate_rad_per_s();
     let u = if spin_inertia > 0.0 {
         let kappa = mu_r * r * r * dt / spin_inertia;
         let residual = |u: f64| {

@@ -456,12 +456,12 @@ fn the_words_fit_the_column() {
         harness.run();
         let band = preset.model().roller().is_some();
         let shown = |text: &str| harness.query_by_label_contains(text).is_some();
-        assert_eq!(shown("power from the band"), band, "{}", preset.name);
-        assert_eq!(shown("the band force's angle"), band, "{}", preset.name);
+        assert_eq!(shown("power from the band"), band, "{}", preset.id);
+        assert_eq!(shown("the band force's angle"), band, "{}", preset.id);
         if shown("growth rate  0 (to within") {
             neutral_seen += 1;
-            assert!(shown("neutral: no growth, no decay"), "{}", preset.name);
-            assert!(!shown("decay time"), "{}", preset.name);
+            assert!(shown("neutral: no growth, no decay"), "{}", preset.id);
+            assert!(!shown("decay time"), "{}", preset.id);
         }
     }
     assert!(

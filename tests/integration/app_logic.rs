@@ -627,7 +627,7 @@ fn a_lesson_shows_the_same_column_forward_and_back_from_any_preset() {
 &zieglerlab::app::Tab::ids(),
 )
     .unwrap();
-    for start in PresetId::ALL {
+    for &start in PresetId::all() {
         if start.model().column.rods == 2 || start == PresetId::Beck {
             walk_lesson(&crossing, start);
         }

@@ -82,7 +82,7 @@ fn projector_mode() {
 fn root_locus_panel_of_each_preset() {
     use egui_kittest::kittest::Queryable as _;
     for p in &PRESETS {
-        let mut app = app_at(preset_settings(p.name), 1.0, 0);
+        let mut app = app_at(preset_settings(p.id.name()), 1.0, 0);
         let mut harness = Harness::builder()
             .with_size([960.0, 520.0])
             .build_ui(|ui| app.panel_ui(ui, Panel::Tab(Tab::LOCUS)));
@@ -90,7 +90,7 @@ fn root_locus_panel_of_each_preset() {
         assert!(
             harness.query_by_label_contains("No root locus").is_none(),
             "{}",
-            p.name
+            p.id
         );
         // The locus spans the column's own load bar (a chain's is shorter).
         harness.get_by_label_contains(&format!(

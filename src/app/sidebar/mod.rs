@@ -84,7 +84,7 @@ fn overlay_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions) {
         .show_ui(ui, |ui| {
             ui.selectable_value(&mut chosen, None, "none");
             for p in &PRESETS {
-                ui.selectable_value(&mut chosen, Some(p.id), p.name);
+                ui.selectable_value(&mut chosen, Some(p.id), p.id.name());
             }
         })
         .response

@@ -4,6 +4,7 @@
 
 use super::AppState;
 use crate::app::notice::Notice;
+use crate::model::StateViewMut;
 
 /// The hint a first launch shows in the status line.
 pub const FIRST_LAUNCH_HINT: &str =
@@ -66,8 +67,9 @@ impl AppState {
             return;
         }
         let mut x = self.sim.state();
-        x.rows_mut(0, rods).copy_from_slice(angles_rad);
-        x.rows_mut(rods + 1, rods).fill(0.0);
+        let mut write = StateViewMut::new(&mut x);
+        write.angles_rad().copy_from_slice(angles_rad);
+        write.rates_rad_per_s().fill(0.0);
         match self.sim.restart_from(self.sim.engine(), x) {
             Ok(()) => {
                 self.held = true;
