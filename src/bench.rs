@@ -28,9 +28,9 @@ use crate::app::{Action, Settings, Tab, ZieglerApp};
 use crate::model::{Assignment, Axis, Key, Model, PresetId, apply_assignments};
 use crate::sim::{DEFAULT_STEP_SECS, EngineKind, Simulation, initial_state};
 
-/// Loads of the benchmarked root loci, over `p` in `[0, LOCUS_LOAD_MAX]`.
+/// Loads of the benchmarked root loci, over the column's analysis range
+/// (`Model::analysis_max_p`).
 pub const LOCUS_LOADS: usize = 1000;
-const LOCUS_LOAD_MAX: f64 = 10.0;
 /// Pencils solved for the bare eigenvalue throughput.
 pub const EIG_PENCILS: usize = 100_000;
 /// Simulated time per engine run, in s.
@@ -213,7 +213,7 @@ times.sort()
 print(times[len(times) // 2] * 1e6 / len(a))
 ";
     let mut matrices = Vec::with_capacity(LOCUS_LOADS);
-    for p in load_grid(0.0, LOCUS_LOAD_MAX, LOCUS_LOADS)? {
+    for p in load_grid(0.0, pencil.natural_load_max(), LOCUS_LOADS)? {
         let lin = pencil.at(p);
         let n = lin.mass.nrows();
         let Some(mass_inv) = lin.mass.clone().try_inverse() else {
@@ -278,14 +278,14 @@ pub fn quantile(values: &[f64], q: f64) -> f64 {
 
 fn locus_us_per_load(pencil: &AffinePencil) -> Result<f64> {
     let secs = median_secs(31, || {
-        black_box(locus(pencil, 0.0, LOCUS_LOAD_MAX, LOCUS_LOADS)?);
+        black_box(locus(pencil, 0.0, pencil.natural_load_max(), LOCUS_LOADS)?);
         Ok(())
     })?;
     Ok(secs * 1e6 / LOCUS_LOADS as f64)
 }
 
 fn eig_us_per_pencil(pencil: &AffinePencil) -> Result<f64> {
-    let loads = load_grid(0.0, LOCUS_LOAD_MAX, EIG_PENCILS)?;
+    let loads = load_grid(0.0, pencil.natural_load_max(), EIG_PENCILS)?;
     let secs = median_secs(3, || {
         for &p in &loads {
             black_box(pencil.spectrum(black_box(p))?);
@@ -297,7 +297,7 @@ fn eig_us_per_pencil(pencil: &AffinePencil) -> Result<f64> {
 
 fn critical_ms(pencil: &AffinePencil) -> Result<f64> {
     let secs = median_secs(31, || {
-        black_box(critical_loads(pencil, 0.0, LOCUS_LOAD_MAX)?);
+        black_box(critical_loads(pencil, 0.0, pencil.natural_load_max())?);
         Ok(())
     })?;
     Ok(secs * 1e3)
@@ -316,7 +316,7 @@ fn critical_chain32_ms() -> Result<f64> {
         }],
     )?;
     let pencil = AffinePencil::new(&chain)?;
-    let load_max = LOCUS_LOAD_MAX * chain.column.load_range_scale();
+    let load_max = chain.analysis_max_p();
     let secs = median_secs(3, || {
         black_box(critical_loads(&pencil, 0.0, load_max)?);
         Ok(())

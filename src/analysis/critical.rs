@@ -8,18 +8,6 @@ use super::locus::{Locus, load_resolution, locus_until};
 use super::pencil::AffinePencil;
 use super::stability::{State, classify};
 
-/// Default upper end of the load range searched, `p = 10` (twice the ideal
-/// columns' divergence loads).
-pub const DEFAULT_LOAD_MAX: f64 = 10.0;
-
-/// The column's own load range searched by default, `[0, natural_load_max]`:
-/// p to [`DEFAULT_LOAD_MAX`] for two rods, the same range of `P L^2/EI` for
-/// a chain (see `Column::load_range_scale`).
-#[must_use]
-pub fn natural_load_max(model: &crate::model::Model) -> f64 {
-    DEFAULT_LOAD_MAX * model.column.load_range_scale()
-}
-
 /// Samples of the locus that brackets the transitions before they are refined.
 pub const BRACKET_SAMPLES: usize = 1000;
 

@@ -293,14 +293,14 @@ fn polish_crossing(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::analysis::{DEFAULT_LOAD_MAX, bracketing_locus};
+    use crate::analysis::bracketing_locus;
     use crate::model::{Axis, Key, Model, PRESETS, PresetId};
 
     /// Bisects every change of stability that the bracketing locus of
     /// `model` shows both ways and returns how many there were.
     fn assert_fast_bisection_matches_schur(name: &str, model: &Model) -> usize {
         let pencil = AffinePencil::new(model).unwrap();
-        let bracket_locus = bracketing_locus(&pencil, 0.0, DEFAULT_LOAD_MAX).unwrap();
+        let bracket_locus = bracketing_locus(&pencil, 0.0, model.analysis_max_p()).unwrap();
         let states: Vec<State> = bracket_locus
             .loads
             .iter()

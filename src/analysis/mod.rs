@@ -12,8 +12,8 @@ mod roots;
 mod stability;
 
 pub use critical::{
-    BRACKET_SAMPLES, DEFAULT_LOAD_MAX, LARGEST_LOAD, bracketing_locus, bracketing_locus_reporting,
-    critical_loads, critical_loads_along, natural_load_max,
+    BRACKET_SAMPLES, LARGEST_LOAD, bracketing_locus, bracketing_locus_reporting, critical_loads,
+    critical_loads_along,
 };
 pub use crossing::Transition;
 pub use locus::{Locus, MAX_HELD_EIGENVALUES, load_grid, locus, locus_streamed, max_samples};

@@ -6,7 +6,7 @@
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use super::AnalysisError;
-use super::critical::{first_loss_within, natural_load_max};
+use super::critical::first_loss_within;
 use super::crossing::Transition;
 use super::pencil::AffinePencil;
 use super::stability::State;
@@ -209,9 +209,9 @@ fn empty_reason(failures: impl IntoIterator<Item = Option<String>>, load_max: f6
 #[must_use]
 pub fn curves(model: &Model, kind: DampingKind, cancel: &AtomicBool) -> Curves {
     // The first loss of stability is sought over the column's own range, as
-    // `critical` does by default (a chain of 16 rods searched to p = 10, 64
-    // times its range, took ten minutes per picture).
-    let load_max = natural_load_max(model);
+    // `critical` does by default (a chain of 16 rods searched over two rods' range, 64
+    // times its own, took ten minutes per picture).
+    let load_max = model.analysis_max_p();
     let first = |m: &Model| first_instability(m, load_max).ok().flatten();
     match model.load {
         Load::Follower { eta: 0.0, .. } => Curves {

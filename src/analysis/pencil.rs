@@ -5,7 +5,7 @@ use nalgebra::{DMatrix, linalg::Schur};
 
 use super::roots::{MAX_DEGREE, Poly, aberth};
 use super::{AnalysisError, C64};
-use crate::model::{LinearModel, Model, linearize};
+use crate::model::{AsValid, LinearModel, linearize};
 
 /// The eigenvalues of one pencil.
 #[derive(Clone, Debug, PartialEq)]
@@ -223,9 +223,10 @@ impl AffinePencil {
     ///
     /// # Errors
     /// Whatever [`linearize`] rejects.
-    pub fn new(model: &Model) -> Result<Self, AnalysisError> {
-        let at_zero = linearize(&model.at_load(0.0))?;
-        let at_one = linearize(&model.at_load(1.0))?;
+    pub fn new(model: &impl AsValid) -> Result<Self, AnalysisError> {
+        let model = model.as_valid()?;
+        let at_zero = linearize(&model.at_load(0.0)?)?;
+        let at_one = linearize(&model.at_load(1.0)?)?;
         let per_unit_load = LinearModel {
             mass: DMatrix::zeros(at_zero.mass.nrows(), at_zero.mass.ncols()),
             damping: &at_one.damping - &at_zero.damping,
@@ -243,7 +244,7 @@ impl AffinePencil {
             per_unit_load,
             cyclic: always_cyclic,
             characteristic,
-            natural_load_max: super::natural_load_max(model),
+            natural_load_max: model.analysis_max_p(),
         })
     }
 
@@ -353,7 +354,7 @@ impl AffinePencil {
         }
     }
 
-    /// The upper end of the column's own load range (see [`super::natural_load_max`]).
+    /// The upper end of the column's own load range (see `Model::analysis_max_p`).
     #[must_use]
     pub fn natural_load_max(&self) -> f64 {
         self.natural_load_max

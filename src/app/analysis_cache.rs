@@ -6,7 +6,7 @@ use crate::analysis::{
     AffinePencil, AnalysisError, BRACKET_SAMPLES, Locus, State, Transition, classify,
     critical_loads_along, first_loss_of_stability, locus, resolution_warning,
 };
-use crate::model::Model;
+use crate::model::ValidModel;
 
 /// Evenly spaced loads of the plotted locus (plus the refinement). The same
 /// locus brackets the critical loads, with the sample count `critical` uses.
@@ -15,7 +15,7 @@ pub const LOCUS_SAMPLES: usize = BRACKET_SAMPLES;
 /// The linear analysis of the current parameters, over the slider's range.
 pub struct Analysis {
     /// The model at p = 0: the locus depends on everything but the load.
-    pub(super) key: Model,
+    pub(super) key: ValidModel,
     pub(super) pencil: AffinePencil,
     pub locus: Locus,
     pub transitions: Vec<Transition>,
@@ -26,8 +26,8 @@ pub struct Analysis {
 }
 
 impl Analysis {
-    pub(super) fn new(model: &Model) -> Result<Self, AnalysisError> {
-        let key = model.at_load(0.0);
+    pub(super) fn new(model: &ValidModel) -> Result<Self, AnalysisError> {
+        let key = model.at_load(0.0)?;
         let pencil = AffinePencil::new(&key)?;
         let load_max = model.load_bar_max_p();
         let locus = locus(&pencil, 0.0, load_max, LOCUS_SAMPLES)?;

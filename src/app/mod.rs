@@ -18,6 +18,7 @@ mod plots;
 mod recorder;
 mod scene;
 mod settings;
+mod settings_text;
 mod sidebar;
 mod state;
 mod store_check;
@@ -539,12 +540,7 @@ impl eframe::App for ZieglerApp {
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
-        match ron::to_string(self.state.settings()) {
-            Ok(text) => storage.set_string(SETTINGS_KEY, text),
-            Err(error) => self
-                .state
-                .say(Notice::error(format!("settings not saved: {error}"))),
-        }
+        storage.set_string(SETTINGS_KEY, self.state.settings().to_text());
         match ron::to_string(&self.layout()) {
             Ok(text) => storage.set_string(LAYOUT_KEY, text),
             Err(error) => self

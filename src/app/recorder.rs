@@ -56,9 +56,9 @@ pub struct Encoder {
     delivered: Arc<AtomicUsize>,
     left_out: Arc<AtomicUsize>,
     /// The thread, and the file it wrote (or why not).
-    job: Jobs<PathBuf, Result<PathBuf, String>>,
+    job: Jobs<PathBuf, Result<PathBuf, RecordError>>,
     /// Why the thread could not start, if it could not.
-    failed: Option<String>,
+    failed: Option<RecordError>,
 }
 
 impl Encoder {
@@ -74,7 +74,7 @@ impl Encoder {
                 send(encode_stream(folder, &queue, &end, &counter));
             })
             .err()
-            .map(|error| format!("no thread for the recording: {error}"));
+            .map(RecordError::NoThread);
         Self {
             frames,
             end_secs,
@@ -157,7 +157,7 @@ impl Recorder {
     /// One frame of the window: a screenshot when one is due; at the end,
     /// the encoder told and then waited for. Returns a finished file's
     /// path, or why the recording failed.
-    pub fn frame(&mut self, ctx: &egui::Context) -> Option<Result<PathBuf, String>> {
+    pub fn frame(&mut self, ctx: &egui::Context) -> Option<Result<PathBuf, RecordError>> {
         let now_secs = ctx.input(|i| i.time);
         match self {
             Self::Idle => None,
@@ -220,7 +220,7 @@ impl Recorder {
                     }
                     None => {
                         *self = Self::Idle;
-                        Some(Err("the recording stopped unexpectedly".to_owned()))
+                        Some(Err(RecordError::Stopped))
                     }
                 }
             }
@@ -278,7 +278,7 @@ fn encode_stream(
     queue: &mpsc::Receiver<TimedFrame>,
     end_secs: &OnceLock<f64>,
     done: &AtomicUsize,
-) -> Result<PathBuf, String> {
+) -> Result<PathBuf, RecordError> {
     let mut gif: Option<GifRecording> = None;
     let mut clock: Option<DelayClock> = None;
     let mut held: Option<TimedFrame> = None;
@@ -288,10 +288,9 @@ fn encode_stream(
             .iter()
             .flat_map(egui::Color32::to_array)
             .collect();
-        gif.push_lasting(&mut rgba, delay_cs)
-            .map_err(|e| e.to_string())?;
+        gif.push_lasting(&mut rgba, delay_cs)?;
         done.fetch_add(1, Ordering::Relaxed);
-        Ok::<(), String>(())
+        Ok::<(), RecordError>(())
     };
     loop {
         let (time_secs, image) = match queue.recv_timeout(ENCODER_POLL) {
@@ -308,11 +307,8 @@ fn encode_stream(
         }
         if gif.is_none() {
             let [width, height] = image.size;
-            let side = |n: usize| u16::try_from(n).map_err(|_| format!("a frame {n} pixels wide"));
-            gif = Some(
-                GifRecording::new(side(width)?, side(height)?, RECORD_FPS)
-                    .map_err(|e| e.to_string())?,
-            );
+            let side = |n: usize| u16::try_from(n).map_err(|_| RecordError::FrameTooLarge(n));
+            gif = Some(GifRecording::new(side(width)?, side(height)?, RECORD_FPS)?);
             clock = Some(DelayClock {
                 start_secs: time_secs,
                 shown_cs: 0,
@@ -333,11 +329,11 @@ fn encode_stream(
     }
     let (Some(mut recording), Some((held_secs, frame)), Some(clock)) = (gif, held, &mut clock)
     else {
-        return Err("no frame was captured".to_owned());
+        return Err(RecordError::NoFrame);
     };
     let end = end_secs.get().copied().unwrap_or(held_secs).max(held_secs);
     add(&mut recording, &frame, clock.until(end))?;
-    let bytes = recording.finish().map_err(|e| e.to_string())?;
+    let bytes = recording.finish()?;
     let stamp = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| d.as_secs());
@@ -345,7 +341,24 @@ fn encode_stream(
     crate::files::write_new(folder, &format!("zieglerlab-{stamp}"), "gif", |w| {
         std::io::Write::write_all(w, &bytes)
     })
-    .map_err(|e| e.to_string())
+    .map_err(RecordError::from)
+}
+
+/// Why a recording from the window made no GIF.
+#[derive(Debug, thiserror::Error)]
+pub enum RecordError {
+    #[error("no thread for the recording: {0}")]
+    NoThread(std::io::Error),
+    #[error("the recording stopped unexpectedly")]
+    Stopped,
+    #[error("no frame was captured")]
+    NoFrame,
+    #[error("a frame {0} pixels wide or high: more than a GIF holds")]
+    FrameTooLarge(usize),
+    #[error(transparent)]
+    Encode(#[from] crate::recording::RecordingError),
+    #[error(transparent)]
+    Write(#[from] crate::files::WriteError),
 }
 
 /// What the next recording will be: its length and its folder.
@@ -475,7 +488,7 @@ mod tests {
         folder: &std::path::Path,
         frames: &[TimedFrame],
         end: f64,
-    ) -> Result<PathBuf, String> {
+    ) -> Result<PathBuf, RecordError> {
         let (send, queue) = mpsc::sync_channel(QUEUED_FRAMES);
         let end_secs = OnceLock::new();
         let done = AtomicUsize::new(0);
@@ -512,10 +525,10 @@ mod tests {
             delays.push(frame.delay);
         }
         assert_eq!(delays, [40, 60]);
-        assert_eq!(
+        assert!(matches!(
             gif_of(folder.path(), &[], 1.0).unwrap_err(),
-            "no frame was captured"
-        );
+            RecordError::NoFrame
+        ));
         // Recordings finished in the same second keep their own files.
         let again = gif_of(folder.path(), &frames, 1.0).unwrap();
         let third = gif_of(folder.path(), &frames, 1.0).unwrap();

@@ -14,7 +14,9 @@ mod startup;
 use std::collections::VecDeque;
 
 use crate::analysis::{AnalysisError, C64, Spectrum};
-use crate::model::{Assignment, Axis, Key, Model, ModelError, PresetId, apply_assignments};
+use crate::model::{
+    Assignment, Axis, Key, Model, ModelError, PresetId, ValidModel, apply_assignments,
+};
 use crate::sim::{DEFAULT_STEP_SECS, EngineKind, Observables, SimError, Simulation, initial_state};
 
 pub use lesson::LessonRun;
@@ -72,11 +74,11 @@ pub struct AppState {
     trail: VecDeque<(f64, [f64; 2])>,
     analysis: Option<Analysis>,
     /// Why there is no analysis, and the parameters (at p = 0) it is for.
-    analysis_failure: Option<(Model, AnalysisError)>,
+    analysis_failure: Option<(ValidModel, AnalysisError)>,
     /// The thread that analyses new parameters (none: they are analysed
     /// inline, as pictures and tests want), and the parameters asked of it.
     worker: Option<analysis::AnalysisJobs>,
-    pending: Option<Model>,
+    pending: Option<ValidModel>,
     /// Simulated time against wall-clock time.
     pace: Pace,
     /// The spectrum at the current load and the model it is for.
@@ -269,8 +271,8 @@ impl AppState {
     /// The key's or the model's validation error.
     fn set_parameter(&mut self, key: Key, value: f64) -> Result<(), ModelError> {
         let mut candidate = self.settings.model;
-        apply_assignments(&mut candidate, &[Assignment { key, value }])?;
-        self.set_model(candidate);
+        let valid = apply_assignments(&mut candidate, &[Assignment { key, value }])?;
+        self.set_model(valid);
         Ok(())
     }
 
@@ -327,7 +329,7 @@ impl AppState {
     /// when `id` is another, as a change of parameters otherwise.
     fn set_column(&mut self, id: PresetId, model: Model) {
         if id == self.settings.preset {
-            self.set_model(model);
+            self.check_and_set_model(model);
         } else {
             self.switch_column(id, model);
         }
@@ -358,7 +360,7 @@ impl AppState {
         self.refused.clear();
         // A ramp and its marks belong to the column it ran on.
         self.ramp = None;
-        self.set_model(model);
+        self.check_and_set_model(model);
         self.reset();
     }
 
@@ -375,18 +377,29 @@ impl AppState {
         self.settings.speed = speed;
     }
 
+    /// [`Self::set_model`] for a model made elsewhere (a preset, a map's
+    /// point, pasted settings): checked here, once; a refusal is said.
+    fn check_and_set_model(&mut self, model: Model) {
+        match ValidModel::new(model) {
+            Ok(valid) => self.set_model(valid),
+            Err(error) => self.say(Notice::error(error.to_string())),
+        }
+    }
+
     /// Applies a changed model to the running simulation; the analysis and
-    /// the overlay follow.
-    fn set_model(&mut self, model: Model) {
+    /// the overlay follow. The model was checked where it was made: nothing
+    /// on the way checks it again.
+    fn set_model(&mut self, valid: ValidModel) {
+        let model = *valid;
         let rods_before = self.sim.model().column.rods;
-        let result = match self.sim.set_model(model) {
+        let result = match self.sim.set_model(valid) {
             Err(SimError::TooStiffForRapier { .. }) => {
                 // rapier cannot follow: the reference engine takes over, and says so.
                 let state = self.sim.state();
                 let switched = self
                     .sim
                     .restart_from(EngineKind::Reference, state)
-                    .and_then(|()| self.sim.set_model(model));
+                    .and_then(|()| self.sim.set_model(valid));
                 if switched.is_ok() {
                     self.settings.engine = EngineKind::Reference;
                     self.say(Notice::warning(SWITCHED_TO_REFERENCE));
@@ -424,7 +437,7 @@ impl AppState {
     /// parameter are set (the run goes on with them); a refused value says why.
     fn set_map_point(&mut self, axis: &Axis, load: f64, value: f64) {
         match axis.apply(&self.settings.model, value) {
-            Ok(model) => self.set_model(model.at_load(load)),
+            Ok(model) => self.check_and_set_model(model.at_load(load)),
             Err(error) => self.say(Notice::error(format!("map: {error}"))),
         }
     }

@@ -172,7 +172,7 @@ fn check_stored_entries(path: &Path) -> Option<String> {
         .collect();
     let settings_unreadable = entries
         .get(SETTINGS_KEY)
-        .is_some_and(|settings| super::stored::read(settings).is_err());
+        .is_some_and(|settings| super::settings_text::read(settings).is_err());
     if dropped.is_empty() && !settings_unreadable {
         return None;
     }

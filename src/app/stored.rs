@@ -1,29 +1,21 @@
-//! Settings read back from text (eframe's store, or pasted) field by field,
-//! the model number by number: what can be read is kept, what cannot is
-//! named with the reason.
+//! Settings in the earlier stored format (RON: the settings struct with the
+//! whole model's fields), read once as a migration, field by field and the
+//! model number by number: what can be read is kept, what cannot is named
+//! with the reason. They are saved again as `name = value` text.
 
 use super::settings::Settings;
+use super::settings_text::{Read, SettingsError, take_speed};
 use super::stored_model::{Fields, field, read_model};
 use crate::model::PresetId;
 
-use crate::sim::SPEED_RANGE;
-
-/// Settings read from text, and what was left at its default and why.
-#[derive(Debug)]
-pub struct Read {
-    pub settings: Settings,
-    pub ignored: Vec<String>,
-}
-
-/// Reads settings written by the app (RON), keeping every field that reads
-/// and makes sense, and naming the others.
+/// Reads settings in the earlier format (RON), keeping every field that
+/// reads and makes sense, and naming the others.
 ///
 /// # Errors
-/// Text that is not settings at all.
-pub fn read(text: &str) -> Result<Read, String> {
-    // Text saved by an editor that writes a byte-order mark reads the same.
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let Fields(mut fields) = ron::from_str(text).map_err(|e| format!("not settings text: {e}"))?;
+/// Text that is not RON settings at all.
+pub(super) fn read_ron(text: &str) -> Result<Read, SettingsError> {
+    let Fields(mut fields) =
+        ron::from_str(text).map_err(|e| SettingsError::NotSettings(e.to_string()))?;
     let mut ignored = Vec::new();
     let mut take = |name: &str| fields.remove(name);
     let (preset_raw, model_raw, engine_raw, speed_raw, projector_raw) = (
@@ -64,15 +56,7 @@ pub fn read(text: &str) -> Result<Read, String> {
         settings.engine = engine;
     }
     if let Some(speed) = field::<f64>(speed_raw.as_deref(), "speed", &mut ignored) {
-        if SPEED_RANGE.contains(&speed) {
-            settings.speed = speed;
-        } else {
-            ignored.push(format!(
-                "speed ({speed} is outside {} to {})",
-                SPEED_RANGE.start(),
-                SPEED_RANGE.end()
-            ));
-        }
+        take_speed(&mut settings, speed, &mut ignored);
     }
     if let Some(projector) = field(projector_raw.as_deref(), "projector", &mut ignored) {
         settings.projector = projector;

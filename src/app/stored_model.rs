@@ -8,9 +8,7 @@ use ron::value::RawValue;
 use serde::Deserialize;
 use serde::de::{MapAccess, Visitor};
 
-use crate::model::{
-    Assignment, Key, Load, Model, SpinInertia, analysis_range_text, apply_assignments,
-};
+use crate::model::{Assignment, Key, Load, Model, SpinInertia, ValidModel, apply_assignments};
 
 /// The fields of a RON struct (the settings, or a part of the model), each
 /// as unparsed RON, by name.
@@ -106,17 +104,17 @@ fn with_roller(model: &mut Model, set: impl FnOnce(&mut crate::model::Roller)) {
 }
 
 /// One stored number: where it goes, what it is called, its value.
-struct Entry {
-    name: String,
-    set: Write,
-    value: f64,
+pub(super) struct Entry {
+    pub(super) name: String,
+    pub(super) set: Write,
+    pub(super) value: f64,
 }
 
 /// How a stored number is written: into its field, or as the key of
 /// `--set` (checked as the command line checks it: `rods = 2.5: must be a
 /// whole number from 2 to 64`).
 #[derive(Clone, Copy)]
-enum Write {
+pub(super) enum Write {
     Field(Setter),
     Key(Key),
 }
@@ -258,16 +256,17 @@ fn read_load(raw: &RawValue, base: &Model, entries: &mut Vec<Entry>, ignored: &m
 /// Applies the entries in order, each kept when the model stays valid and
 /// within the analysis's range; a refused one is tried again once the others
 /// are in (a centre of mass may need its rod's new length).
-fn apply(mut model: Model, entries: Vec<Entry>, ignored: &mut Vec<String>) -> Model {
+pub(super) fn apply(mut model: Model, entries: Vec<Entry>, ignored: &mut Vec<String>) -> Model {
     let mut pending = entries;
     for last_pass in [false, true] {
         let mut refused = Vec::new();
         for entry in pending {
             let mut candidate = model;
+            // Validation covers the analysis's range too (`beyond_analysis`).
             let written = match entry.set {
                 Write::Field(set) => {
                     set(&mut candidate, entry.value);
-                    Ok(())
+                    ValidModel::new(candidate)
                 }
                 Write::Key(key) => apply_assignments(
                     &mut candidate,
@@ -277,15 +276,8 @@ fn apply(mut model: Model, entries: Vec<Entry>, ignored: &mut Vec<String>) -> Mo
                     }],
                 ),
             };
-            let verdict = written
-                .and_then(|()| candidate.validate())
-                .map_err(|e| e.to_string())
-                .and_then(|()| match candidate.beyond_analysis() {
-                    Some((what, _)) => Err(format!("makes {what} {}", analysis_range_text())),
-                    None => Ok(()),
-                });
-            match verdict {
-                Ok(()) => model = candidate,
+            match written.map_err(|e| e.to_string()) {
+                Ok(_) => model = candidate,
                 Err(why) if last_pass => ignored.push(format!("{} ({why})", entry.name)),
                 Err(_) => refused.push(entry),
             }

@@ -6,8 +6,7 @@ use anyhow::Result;
 use serde_json::json;
 
 use zieglerlab::analysis::{
-    AffinePencil, bracketing_locus_reporting, critical_loads_along, natural_load_max,
-    resolution_warning,
+    AffinePencil, bracketing_locus_reporting, critical_loads_along, resolution_warning,
 };
 use zieglerlab::format::Shown;
 
@@ -35,7 +34,7 @@ const UNRESOLVED_LISTED: usize = 20;
 pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     let (name, model) = args.model.build()?;
     let load_min = args.load_min;
-    let load_max = args.load_max.unwrap_or_else(|| natural_load_max(&model));
+    let load_max = args.load_max.unwrap_or_else(|| model.analysis_max_p());
     if load_max == load_min {
         anyhow::bail!(
             "load-max = {}: must exceed load-min: the changes of stability are sought over a range of loads",

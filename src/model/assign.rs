@@ -4,6 +4,7 @@
 use super::ModelError;
 use super::keys::{Key, KeySpec, Sign};
 use super::params::{Model, analysis_range_text};
+use super::valid::ValidModel;
 
 /// A parsed `key=value`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -53,14 +54,20 @@ const CONFLICTS: [(Key, Key); 6] = [
 /// # Errors
 /// Unknown or inapplicable key, a key given twice or with a conflicting
 /// partner, a value out of range (named by the key the user typed), or a
-/// resulting model that [`Model::validate`] rejects.
-pub fn apply_assignments(model: &mut Model, assignments: &[Assignment]) -> Result<(), ModelError> {
+/// resulting model that [`Model::validate`] rejects. On success `model`
+/// holds the result, and the same model comes back checked, as a
+/// [`ValidModel`] the simulation and the analysis take without checking it
+/// again.
+pub fn apply_assignments(
+    model: &mut Model,
+    assignments: &[Assignment],
+) -> Result<ValidModel, ModelError> {
     let mut specs: Vec<&KeySpec> = Vec::with_capacity(assignments.len());
     for assignment in assignments {
         let key = assignment.key;
         if !key.applies_to(model) {
             if let Some(why) = key.why_absent(model) {
-                return Err(ModelError::invalid(key.name(), assignment.value, why));
+                return Err(ModelError::invalid(key, assignment.value, why));
             }
             return Err(ModelError::UnknownKey {
                 key: key.name().to_owned(),
@@ -75,8 +82,8 @@ pub fn apply_assignments(model: &mut Model, assignments: &[Assignment]) -> Resul
                 });
             if clash {
                 return Err(ModelError::Conflict {
-                    first: earlier.key.name().to_owned(),
-                    second: spec.key.name().to_owned(),
+                    first: earlier.key,
+                    second: spec.key,
                 });
             }
         }
@@ -92,13 +99,13 @@ pub fn apply_assignments(model: &mut Model, assignments: &[Assignment]) -> Resul
         (spec.set)(model, value);
         if let Some((what, _)) = model.beyond_analysis() {
             return Err(ModelError::invalid(
-                spec.key.name(),
+                spec.key,
                 value,
                 &format!("makes {what} {}", analysis_range_text()),
             ));
         }
     }
-    model.validate()
+    ValidModel::new(*model)
 }
 
 fn check_sign(spec: &KeySpec, value: f64) -> Result<(), ModelError> {
@@ -120,11 +127,7 @@ fn check_sign(spec: &KeySpec, value: f64) -> Result<(), ModelError> {
     if ok {
         Ok(())
     } else {
-        Err(ModelError::invalid(
-            spec.key.name(),
-            value,
-            allowed.trim_end(),
-        ))
+        Err(ModelError::invalid(spec.key, value, allowed.trim_end()))
     }
 }
 

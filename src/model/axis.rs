@@ -137,7 +137,7 @@ impl Axis {
 }
 
 /// Refuses a value of a derived axis that is negative or not finite.
-fn non_negative(axis: &str, value: f64) -> Result<(), ModelError> {
+fn non_negative(axis: &'static str, value: f64) -> Result<(), ModelError> {
     if value.is_finite() && value >= 0.0 {
         Ok(())
     } else {

@@ -154,10 +154,14 @@ pub struct KeySpec {
     pub scope: Scope,
     /// True for the paper's dimensionless groups (and the load p).
     pub is_group: bool,
+    /// True for a key that stands for other parameters (the load p for P or
+    /// R, `a` for k1 and k2, `nu` for m3, `rho` for r): settings are stored
+    /// without them, by the parameters they stand for.
+    pub derived: bool,
     pub(super) sign: Sign,
     /// Keys are applied in increasing stage, so that the load is set last and
     /// a group is computed from the final lengths and masses.
-    pub(super) stage: u8,
+    pub stage: u8,
     pub(super) get: fn(&Model) -> f64,
     pub(super) set: fn(&mut Model, f64),
 }

@@ -4,7 +4,8 @@ use nalgebra::DMatrix;
 
 use super::ModelError;
 use super::mass::chain_mass_matrix;
-use super::params::{Column, Model};
+use super::params::Column;
+use super::valid::AsValid;
 
 /// `M x'' + D x' + K x = 0` about the straight column, `x = (phi_1 .. phi_N[, psi])`.
 #[derive(Clone, Debug, PartialEq)]
@@ -73,14 +74,15 @@ pub fn joint_matrices(column: &Column) -> (DMatrix<f64>, DMatrix<f64>) {
 /// # Errors
 /// The model's own validation; and a roller with `V = 0`, where Coulomb
 /// friction is not differentiable about the state of rest.
-pub fn linearize(model: &Model) -> Result<LinearModel, ModelError> {
-    model.validate()?;
+pub fn linearize(model: &impl AsValid) -> Result<LinearModel, ModelError> {
+    let valid = model.as_valid()?;
+    let model = valid.model();
     let column = &model.column;
     if let Some(roller) = model.roller()
         && roller.band_speed_m_per_s <= 0.0
     {
         return Err(ModelError::invalid(
-            "V",
+            super::Key::V,
             roller.band_speed_m_per_s,
             "must be > 0 for the linear analysis: at V = 0 Coulomb friction is not differentiable about rest (stick-slip)",
         ));

@@ -12,12 +12,14 @@ mod key_table;
 mod keys;
 mod kinematics;
 mod linear;
+mod load_axis;
 mod loads;
 mod mass;
 mod params;
 mod presets;
 mod state;
 mod two_rods;
+mod valid;
 mod validate;
 
 pub use crate::format::Shown;
@@ -31,24 +33,53 @@ pub use key_table::KEYS;
 pub use keys::{Key, KeySpec};
 pub use kinematics::{joints_m, normal, tip_m, unit};
 pub use linear::{LinearModel, joint_matrices, linearize};
+pub use load_axis::{ANALYSIS_MAX_P, LOAD_BAR_MAX_P};
 pub use loads::{
     Friction, RodDrag, SLIP_REGULARIZATION_M_PER_S, TipLoad, friction, joint_torques_nm, rods_drag,
     tip_load,
 };
 pub use mass::{Inertia, chain_mass_matrix};
-pub(crate) use params::analysis_range_text;
-pub use params::{
-    Column, LARGEST_DERIVED, LOAD_BAR_MAX_P, Load, MAX_RODS, Model, Rod, Roller, SpinInertia,
-};
+pub use params::{Column, LARGEST_DERIVED, Load, MAX_RODS, Model, Rod, Roller, SpinInertia};
 pub use presets::{PRESETS, Preset, PresetId, preset};
 pub use state::{StateVec, StateView, StateViewMut, rest_state, state_len};
+pub use valid::{AsValid, ValidModel};
+
+/// What a refused value is: a parameter the user sets by its key, or a
+/// quantity made of several (the mass matrix, a map's derived axis, the
+/// load P behind the load p).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Subject {
+    Key(Key),
+    Derived(&'static str),
+}
+
+impl std::fmt::Display for Subject {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Key(key) => f.write_str(key.name()),
+            Self::Derived(what) => f.write_str(what),
+        }
+    }
+}
+
+impl From<Key> for Subject {
+    fn from(key: Key) -> Self {
+        Self::Key(key)
+    }
+}
+
+impl From<&'static str> for Subject {
+    fn from(what: &'static str) -> Self {
+        Self::Derived(what)
+    }
+}
 
 /// A parameter value that makes no model, named so the user can fix it.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ModelError {
-    #[error("{key} = {}: {allowed}", Shown(*.value))]
+    #[error("{subject} = {}: {allowed}", Shown(*.value))]
     Invalid {
-        key: String,
+        subject: Subject,
         value: f64,
         allowed: String,
     },
@@ -59,23 +90,45 @@ pub enum ModelError {
     #[error("'{text}' is not key=value with a number (e.g. load=2.5): {reason}")]
     Malformed { text: String, reason: String },
     #[error("{first} and {second} both set the same quantity; give only one")]
-    Conflict { first: String, second: String },
+    Conflict { first: Key, second: Key },
 }
 
 impl ModelError {
-    /// The parameter (key) the error is about, when it is about one.
+    /// The name of what the error is about (a key, also one that is not
+    /// known, or a derived quantity), when it is about one.
     #[must_use]
     pub fn parameter(&self) -> Option<&str> {
         match self {
-            Self::Invalid { key, .. } | Self::UnknownKey { key, .. } => Some(key),
-            Self::Conflict { first, .. } => Some(first),
+            Self::Invalid {
+                subject: Subject::Key(key),
+                ..
+            }
+            | Self::Conflict { first: key, .. } => Some(key.name()),
+            Self::Invalid {
+                subject: Subject::Derived(what),
+                ..
+            } => Some(what),
+            Self::UnknownKey { key, .. } => Some(key),
             Self::UnknownPreset { .. } | Self::Malformed { .. } => None,
         }
     }
 
-    pub(crate) fn invalid(key: &str, value: f64, allowed: &str) -> Self {
+    /// The settable parameter the error is about, when it is one.
+    #[must_use]
+    pub fn key(&self) -> Option<Key> {
+        match self {
+            Self::Invalid {
+                subject: Subject::Key(key),
+                ..
+            }
+            | Self::Conflict { first: key, .. } => Some(*key),
+            _ => None,
+        }
+    }
+
+    pub(crate) fn invalid(subject: impl Into<Subject>, value: f64, allowed: &str) -> Self {
         Self::Invalid {
-            key: key.to_owned(),
+            subject: subject.into(),
             value,
             allowed: allowed.to_owned(),
         }

@@ -2,10 +2,6 @@
 
 use serde::{Deserialize, Serialize};
 
-/// The top of the load bar for two rods, on the common axis p (see
-/// [`Model::load_bar_max_p`]).
-pub const LOAD_BAR_MAX_P: f64 = 8.0;
-
 /// One rigid rod of the column: its own mass distribution, reduced to what the
 /// kinetic energy needs (mass, centre of mass, moment of inertia).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -118,15 +114,6 @@ impl Column {
         #[expect(clippy::cast_precision_loss, reason = "at most 64 rods")]
         let copies = (self.rods - 1) as f64;
         self.rod1.length_m + copies * self.rod2.length_m
-    }
-
-    /// The factor that takes a load range of two rods on the axis p to the
-    /// same range of `P L^2 / EI` for this chain: `(2/N)^2` (1 for two rods).
-    #[must_use]
-    pub fn load_range_scale(&self) -> f64 {
-        #[expect(clippy::cast_precision_loss, reason = "at most 64 rods")]
-        let rods = self.rods as f64;
-        (2.0 / rods).powi(2)
     }
 
     /// Whether every rod is the same and so is every spring: the chain that
@@ -318,15 +305,6 @@ impl Model {
             Load::Follower { force_n: f, .. } => *f = force_n,
             Load::Roller(roller) => roller.normal_force_n = force_n / roller.mu,
         }
-    }
-
-    /// The top of the load bar (the slider and the root locus) for this
-    /// column: [`LOAD_BAR_MAX_P`] for two rods; for a chain of N rods
-    /// `LOAD_BAR_MAX_P (2/N)^2`, the same range in the continuous column's
-    /// units `P L^2 / EI` (0 to 32).
-    #[must_use]
-    pub fn load_bar_max_p(&self) -> f64 {
-        LOAD_BAR_MAX_P * self.column.load_range_scale()
     }
 
     /// This model at another load `p`.

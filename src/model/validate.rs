@@ -4,6 +4,7 @@
 
 use super::MAX_RODS;
 use super::ModelError;
+use super::keys::Key;
 use super::params::{Column, Load, Model, Roller, analysis_range_text};
 
 impl Model {
@@ -26,30 +27,33 @@ impl Model {
         if !(2..=MAX_RODS).contains(&rods) {
             #[expect(clippy::cast_precision_loss, reason = "a count shown in a message")]
             return Err(ModelError::invalid(
-                "rods",
+                Key::Rods,
                 rods as f64,
                 &format!("must be a whole number from 2 to {MAX_RODS}"),
             ));
         }
-        for (i, rod) in [(1, rod1), (2, rod2)] {
-            positive(&format!("l{i}"), rod.length_m)?;
-            non_negative(&format!("m{i}"), rod.mass_kg)?;
-            non_negative(&format!("I{i}"), rod.inertia_kg_m2)?;
-            within(&format!("s{i}"), rod.com_m, 0.0, rod.length_m, "l{i}", i)?;
+        for (rod, [length, mass, inertia, com]) in [
+            (rod1, [Key::L1, Key::M1, Key::I1, Key::S1]),
+            (rod2, [Key::L2, Key::M2, Key::I2, Key::S2]),
+        ] {
+            positive(length, rod.length_m)?;
+            non_negative(mass, rod.mass_kg)?;
+            non_negative(inertia, rod.inertia_kg_m2)?;
+            within(com, rod.com_m, 0.0, rod.length_m, length)?;
         }
-        non_negative("m_tip", tip_mass_kg)?;
-        positive("k1", k1_nm_per_rad)?;
-        positive("k2", k2_nm_per_rad)?;
-        non_negative("c1", c1_nms_per_rad)?;
-        non_negative("c2", c2_nms_per_rad)?;
-        non_negative("c_ext", drag_ns_per_m2)?;
+        non_negative(Key::MTip, tip_mass_kg)?;
+        positive(Key::K1, k1_nm_per_rad)?;
+        positive(Key::K2, k2_nm_per_rad)?;
+        non_negative(Key::C1, c1_nms_per_rad)?;
+        non_negative(Key::C2, c2_nms_per_rad)?;
+        non_negative(Key::CExt, drag_ns_per_m2)?;
         match self.load {
             Load::Follower { force_n, eta } => {
-                non_negative("P", force_n)?;
-                finite("eta", eta)?;
+                non_negative(Key::P, force_n)?;
+                finite(Key::Eta, eta)?;
                 if !(0.0..=1.0).contains(&eta) {
                     return Err(ModelError::invalid(
-                        "eta",
+                        Key::Eta,
                         eta,
                         "must lie between 0 (dead load) and 1 (follower force)",
                     ));
@@ -64,19 +68,19 @@ impl Model {
                     band_speed_m_per_s,
                     spin: _,
                 } = roller;
-                non_negative("m3", mass_kg)?;
-                positive("r", radius_m)?;
-                within("r", radius_m, 0.0, rod2.length_m, "l2", 2)?;
+                non_negative(Key::M3, mass_kg)?;
+                positive(Key::RollerRadius, radius_m)?;
+                within(Key::RollerRadius, radius_m, 0.0, rod2.length_m, Key::L2)?;
                 if mu == 0.0 {
                     return Err(ModelError::invalid(
-                        "mu",
+                        Key::Mu,
                         mu,
                         "must be > 0: without friction the band exerts no load at all (use load=0 for an unloaded column)",
                     ));
                 }
-                positive("mu", mu)?;
-                non_negative("R", normal_force_n)?;
-                non_negative("V", band_speed_m_per_s)?;
+                positive(Key::Mu, mu)?;
+                non_negative(Key::NormalForce, normal_force_n)?;
+                non_negative(Key::V, band_speed_m_per_s)?;
             }
         }
         if let Some((what, value)) = self.beyond_analysis() {
@@ -118,7 +122,7 @@ impl Model {
             if !pivots_ok {
                 #[expect(clippy::cast_precision_loss, reason = "a count shown in a message")]
                 return Err(ModelError::invalid(
-                    "rods",
+                    Key::Rods,
                     rods as f64,
                     "a chain needs mass or inertia on every copy of rod 2 (m2 or I2 > 0): with rod 2 massless the chain's mass matrix is singular",
                 ));
@@ -128,7 +132,7 @@ impl Model {
     }
 }
 
-fn finite(key: &str, value: f64) -> Result<(), ModelError> {
+fn finite(key: Key, value: f64) -> Result<(), ModelError> {
     if value.is_finite() {
         Ok(())
     } else {
@@ -136,7 +140,7 @@ fn finite(key: &str, value: f64) -> Result<(), ModelError> {
     }
 }
 
-fn positive(key: &str, value: f64) -> Result<(), ModelError> {
+fn positive(key: Key, value: f64) -> Result<(), ModelError> {
     finite(key, value)?;
     if value > 0.0 {
         Ok(())
@@ -145,7 +149,7 @@ fn positive(key: &str, value: f64) -> Result<(), ModelError> {
     }
 }
 
-fn non_negative(key: &str, value: f64) -> Result<(), ModelError> {
+fn non_negative(key: Key, value: f64) -> Result<(), ModelError> {
     finite(key, value)?;
     if value >= 0.0 {
         Ok(())
@@ -154,20 +158,12 @@ fn non_negative(key: &str, value: f64) -> Result<(), ModelError> {
     }
 }
 
-/// `min <= value <= max`, where `max` is another parameter named by `max_key`.
-fn within(
-    key: &str,
-    value: f64,
-    min: f64,
-    max: f64,
-    max_key: &str,
-    index: usize,
-) -> Result<(), ModelError> {
+/// `min <= value <= max`, where `max` is the parameter `max_key`.
+fn within(key: Key, value: f64, min: f64, max: f64, max_key: Key) -> Result<(), ModelError> {
     finite(key, value)?;
     if (min..=max).contains(&value) {
         Ok(())
     } else {
-        let max_key = max_key.replace("{i}", &index.to_string());
         Err(ModelError::invalid(
             key,
             value,

@@ -13,8 +13,8 @@ pub use ramp::{Ramp, RampError};
 pub use reference::{Advance, MAX_STEPS_PER_ADVANCE, Reference};
 
 use crate::model::{
-    Model, ModelError, StateVec, StateView, StateViewMut, chain_mass_matrix, joint_matrices,
-    joints_m, rest_state, state_derivative, state_len,
+    AsValid, Model, ModelError, StateVec, StateView, StateViewMut, ValidModel, chain_mass_matrix,
+    joint_matrices, joints_m, rest_state, state_derivative, state_len,
 };
 use std::ops::ControlFlow;
 
@@ -35,12 +35,40 @@ pub const MAX_RATE_RAD_PER_S: f64 = 1.0e6;
 pub const MAX_TURN_PER_STEP_RAD: f64 = 0.5;
 
 /// Which engine advances the state.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[derive(
+    Clone,
+    Copy,
+    Debug,
+    PartialEq,
+    Eq,
+    serde::Serialize,
+    serde::Deserialize,
+    strum::VariantArray,
+    strum::IntoStaticStr,
+)]
+#[strum(serialize_all = "lowercase")]
 pub enum EngineKind {
     /// rapier2d multibody with explicit forces and an implicit spin (the app's).
     Rapier,
     /// Adaptive Dormand-Prince 5(4) on the exact equations (f64).
     Reference,
+}
+
+impl EngineKind {
+    /// The engine's name, as the command line and the settings text write it.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        self.into()
+    }
+
+    /// The engine named `name`, if one is.
+    #[must_use]
+    pub fn named(name: &str) -> Option<Self> {
+        <Self as strum::VariantArray>::VARIANTS
+            .iter()
+            .copied()
+            .find(|engine| engine.name() == name)
+    }
 }
 
 /// Whether a run goes on.
@@ -95,7 +123,7 @@ enum Engine {
 /// next step uses it); the same inputs give a bit-identical run.
 #[derive(Debug)]
 pub struct Simulation {
-    model: Model,
+    model: ValidModel,
     engine: Engine,
     step_secs: f64,
     /// Steps taken: the time is `steps * step_secs`, free of accumulated rounding.
@@ -236,12 +264,12 @@ impl Simulation {
     /// # Errors
     /// An invalid model, or a step that is not a positive finite time.
     pub fn new(
-        model: Model,
+        model: impl AsValid,
         kind: EngineKind,
         x0: StateVec,
         step_secs: f64,
     ) -> Result<Self, SimError> {
-        model.validate()?;
+        let model = model.into_valid()?;
         if x0.len() != state_len(model.column.rods) {
             #[expect(clippy::cast_precision_loss, reason = "a state's length")]
             return Err(SimError::Bad {
@@ -276,6 +304,13 @@ impl Simulation {
     /// The model the next step uses.
     #[must_use]
     pub fn model(&self) -> &Model {
+        self.model.model()
+    }
+
+    /// The model the next step uses, as checked when it was given: the
+    /// analysis takes it without checking it again.
+    #[must_use]
+    pub fn valid_model(&self) -> &ValidModel {
         &self.model
     }
 
@@ -284,8 +319,8 @@ impl Simulation {
     /// # Errors
     /// An invalid model, or one too stiff for the rapier engine at this step
     /// (the run keeps its previous one).
-    pub fn set_model(&mut self, model: Model) -> Result<(), SimError> {
-        model.validate()?;
+    pub fn set_model(&mut self, model: impl AsValid) -> Result<(), SimError> {
+        let model = model.into_valid()?;
         if model.column.rods != self.model.column.rods {
             // Another chain needs another state: it starts afresh from the
             // standard perturbation.

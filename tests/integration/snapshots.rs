@@ -1,5 +1,7 @@
-//! What the app shows, as images: the whole window in a few states, every
-//! tab of the registry, and the root-locus panel of each preset. These test
+//! What the app shows, as images: the whole window where its layout is the
+//! point (the first launch, a refused field, the classroom's two screens),
+//! the scene panel in each state of the motion, every tab of the registry.
+//! These test
 //! the pictures; the physics behind them is pinned by numeric tests. A run
 //! before a picture uses the reference engine (f64, the same motion on
 //! every machine), no wall clock is read, and `kittest.toml` allows a few
@@ -34,6 +36,17 @@ fn window_snapshot(name: &str, mut app: ZieglerApp) {
     harness.snapshot(name);
 }
 
+/// One panel of `app` alone, at a small size: a picture of that panel's
+/// state, not of the window's layout.
+fn panel_snapshot(name: &str, mut app: ZieglerApp, panel: Panel) {
+    let mut harness = Harness::builder()
+        .wgpu()
+        .with_size([640.0, 480.0])
+        .build_ui(|ui| app.panel_ui(ui, panel));
+    harness.run_steps(4);
+    harness.snapshot(name);
+}
+
 fn preset_settings(name: &str) -> Settings {
     Settings {
         preset: name.parse().unwrap(),
@@ -49,19 +62,28 @@ fn default_launch() {
 
 #[test]
 fn roller_in_flutter() {
-    window_snapshot("roller_flutter", app_at(Settings::default(), 3.0, 25));
+    panel_snapshot(
+        "scene_roller_flutter",
+        app_at(Settings::default(), 3.0, 25),
+        Panel::Scene,
+    );
 }
 
 #[test]
 fn roller_in_divergence() {
-    window_snapshot("roller_divergence", app_at(Settings::default(), 5.4, 12));
+    panel_snapshot(
+        "scene_roller_divergence",
+        app_at(Settings::default(), 5.4, 12),
+        Panel::Scene,
+    );
 }
 
 #[test]
 fn midpoint_masses_stable() {
-    window_snapshot(
-        "midpoint_masses_stable",
+    panel_snapshot(
+        "scene_midpoint_masses_stable",
         app_at(preset_settings("midpoint-masses"), 1.5, 10),
+        Panel::Scene,
     );
 }
 
@@ -71,7 +93,7 @@ fn projector_mode() {
         projector: true,
         ..Settings::default()
     };
-    window_snapshot("projector", app_at(settings, 3.0, 25));
+    panel_snapshot("scene_projector", app_at(settings, 3.0, 25), Panel::Scene);
 }
 
 /// Every preset's root-locus panel is drawn over the column's own load
@@ -156,15 +178,19 @@ fn a_refused_field_and_a_panel_without_analysis() {
     harness.snapshot("refused_field");
     results.extend(harness.take_snapshot_results());
     drop(harness);
-    let mut stopped = app_at(Settings::default(), 1.0, 0);
-    crate::common::enter(&mut stopped, Key::V, 0.0);
-    let mut harness = Harness::builder()
-        .wgpu()
-        .with_size([1280.0, 800.0])
-        .build_ui(|ui| stopped.contents_ui(ui));
-    harness.run_steps(4);
-    harness.snapshot("band_stopped");
-    results.extend(harness.take_snapshot_results());
+    for (name, panel) in [
+        ("band_stopped_scene", Panel::Scene),
+        ("band_stopped_locus", Panel::Tab(Tab::LOCUS)),
+    ] {
+        let mut stopped = app_at(Settings::default(), 1.0, 0);
+        crate::common::enter(&mut stopped, Key::V, 0.0);
+        let mut harness = Harness::builder()
+            .wgpu()
+            .with_size([640.0, 480.0])
+            .build_ui(|ui| stopped.panel_ui(ui, panel));
+        harness.run_steps(4);
+        results.add(harness.try_snapshot(name));
+    }
     results.unwrap();
 }
 

@@ -4,7 +4,6 @@ use eframe::egui;
 
 use crate::app::View;
 use crate::app::action::{Action, Actions};
-use crate::app::notice::Notice;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 
@@ -25,17 +24,9 @@ impl View for ShareSection {
                     )
                     .clicked()
                 {
-                    match ron::to_string(state.settings()) {
-                        Ok(text) => {
-                            ui.ctx().copy_text(text.clone());
-                            self.text = text;
-                        }
-                        Err(error) => {
-                            actions.push(Action::Say(Notice::error(format!(
-                                "settings not copied: {error}"
-                            ))));
-                        }
-                    }
+                    let text = state.settings().to_text();
+                    ui.ctx().copy_text(text.clone());
+                    self.text = text;
                 }
                 if ui
                     .button("paste settings")

@@ -9,14 +9,14 @@ use crate::analysis::{AffinePencil, C64, Spectrum};
 use crate::app::analysis_cache::Analysis;
 use crate::app::jobs::Jobs;
 use crate::app::notice::Notice;
-use crate::model::Model;
+use crate::model::ValidModel;
 
 /// The analyses computed off the UI thread, each tagged with the
 /// parameters (at p = 0) it is for.
-pub type AnalysisJobs = Jobs<Model, Result<Analysis, AnalysisError>>;
+pub type AnalysisJobs = Jobs<ValidModel, Result<Analysis, AnalysisError>>;
 
 /// A finished analysis and the parameters it is for.
-type Finished = (Model, Result<Analysis, AnalysisError>);
+type Finished = (ValidModel, Result<Analysis, AnalysisError>);
 
 impl AppState {
     /// Analyses new parameters on a thread of their own from now on: the
@@ -80,7 +80,10 @@ impl AppState {
     /// the spectrum at the current load always here and now.
     pub(super) fn refresh_analysis(&mut self) {
         self.receive_analysis();
-        let key = self.settings.model.at_load(0.0);
+        // The model as the simulation checked it: nothing here checks it again.
+        let Ok(key) = self.sim.valid_model().at_load(0.0) else {
+            return;
+        };
         if !self.shows_analysis_of(&key) && self.pending != Some(key) {
             let sent = self.worker.as_mut().is_some_and(|jobs| {
                 jobs.request(key, |key, _, send| send(Analysis::new(key)))
@@ -103,7 +106,7 @@ impl AppState {
     }
 
     /// Whether the analysis (or its failure) shown is that of `key`.
-    fn shows_analysis_of(&self, key: &Model) -> bool {
+    fn shows_analysis_of(&self, key: &ValidModel) -> bool {
         self.analysis.as_ref().is_some_and(|a| a.key == *key)
             || self
                 .analysis_failure
@@ -118,8 +121,10 @@ impl AppState {
         if self.pending == Some(key) {
             self.pending = None;
         }
-        let current = self.settings.model.at_load(0.0);
-        if key != current && self.shows_analysis_of(&current) {
+        if let Ok(current) = self.sim.valid_model().at_load(0.0)
+            && key != current
+            && self.shows_analysis_of(&current)
+        {
             return;
         }
         self.analysis_failure = None;

@@ -51,7 +51,7 @@ impl AppState {
         self.overlay_wanted = None;
         self.refused.clear();
         self.settings.speed = 1.0;
-        self.set_model(preset.model());
+        self.check_and_set_model(preset.model());
         self.reset();
         self.view_generation += 1;
     }

@@ -22,7 +22,7 @@ pub struct Overlay {
 
 /// Why the overlay could not be drawn.
 #[derive(Debug, thiserror::Error)]
-enum OverlayError {
+pub(super) enum OverlayError {
     #[error(transparent)]
     Model(#[from] ModelError),
     #[error(transparent)]
@@ -33,19 +33,19 @@ enum OverlayError {
 pub(super) type OverlayKey = (PresetId, f64);
 
 /// Overlays computed off the UI thread.
-pub(super) type OverlayJobs = Jobs<OverlayKey, Result<Overlay, String>>;
+pub(super) type OverlayJobs = Jobs<OverlayKey, Result<Overlay, OverlayError>>;
 
 /// `id`'s locus and critical loads at the group `a`.
 fn build(id: PresetId, a: f64) -> Result<Overlay, OverlayError> {
     let mut model = id.model();
-    apply_assignments(
+    let valid = apply_assignments(
         &mut model,
         &[Assignment {
             key: Key::A,
             value: a,
         }],
     )?;
-    let pencil = AffinePencil::new(&model)?;
+    let pencil = AffinePencil::new(&valid)?;
     let locus = locus(&pencil, 0.0, model.load_bar_max_p(), LOCUS_SAMPLES)?;
     let transitions = critical_loads_along(&pencil, &locus)?;
     Ok(Overlay {
@@ -77,13 +77,13 @@ impl AppState {
                 return;
             }
             let started = jobs.request(key, |&(id, a), _, send| {
-                send(build(id, a).map_err(|e| e.to_string()));
+                send(build(id, a));
             });
             if started.is_ok() {
                 return;
             }
         }
-        self.install_overlay(key, build(key.0, key.1).map_err(|e| e.to_string()));
+        self.install_overlay(key, build(key.0, key.1));
     }
 
     /// The preset chosen for the overlay (shown once computed).
@@ -114,7 +114,7 @@ impl AppState {
     }
 
     /// Shows an overlay computed for `key` if it is still the one chosen.
-    fn install_overlay(&mut self, key: OverlayKey, result: Result<Overlay, String>) {
+    fn install_overlay(&mut self, key: OverlayKey, result: Result<Overlay, OverlayError>) {
         if self.overlay_wanted != Some(key) {
             return;
         }

@@ -4,7 +4,7 @@
 use super::AppState;
 use crate::app::notice::Notice;
 use crate::app::settings::Settings;
-use crate::app::stored::read;
+use crate::app::settings_text::read;
 
 impl AppState {
     /// The state from settings stored as text (RON, as eframe writes them):

@@ -58,7 +58,7 @@ impl View for LocusTab {
         // The analysis drawn (it may come in a frame after the parameters).
         let refit = self.fit.refit((
             state.view_generation(),
-            analysis.key,
+            *analysis.key,
             overlay.map(|o| o.preset),
         ));
         let load = state.model().load_p();
@@ -107,7 +107,7 @@ impl LocusTab {
         let overlay = state.overlay();
         let refit = self.fit.refit((
             state.view_generation(),
-            analysis.key,
+            *analysis.key,
             overlay.map(|o| o.preset),
         ));
         let loads = &analysis.locus.loads;

@@ -8,7 +8,7 @@ use eframe::egui::{self, Color32, ColorImage, TextureHandle, TextureOptions};
 use egui_plot::{Line, Plot, PlotImage, PlotPoint, PlotPoints, Points};
 
 use super::{TabSpec, TabView};
-use crate::analysis::{MapSpec, Row, RowResult, State, Transition, compute_map};
+use crate::analysis::{AnalysisError, MapSpec, Row, RowResult, State, Transition, compute_map};
 use crate::app::View;
 use crate::app::action::{Action, Actions};
 use crate::app::jobs::{Cancel, Jobs};
@@ -30,11 +30,11 @@ struct Shown {
     /// Rows arrived since the texture was made.
     stale: bool,
     /// Why the map could not start, if it could not.
-    error: Option<String>,
+    error: Option<MapError>,
 }
 
 impl Shown {
-    fn new(spec: MapSpec, error: Option<String>) -> Self {
+    fn new(spec: MapSpec, error: Option<MapError>) -> Self {
         Self {
             rows: vec![None; spec.values],
             spec,
@@ -50,8 +50,23 @@ impl Shown {
     }
 }
 
+/// Why the map shows no map, or stopped.
+#[derive(Debug, thiserror::Error)]
+pub enum MapError {
+    #[error(transparent)]
+    Axis(#[from] crate::model::ModelError),
+    #[error("map range {lo} to {hi} is empty")]
+    EmptyRange { lo: f64, hi: f64 },
+    #[error(transparent)]
+    Grid(AnalysisError),
+    #[error("no thread for the map: {0}")]
+    NoThread(std::io::Error),
+    #[error("the map stopped: {0}")]
+    Stopped(AnalysisError),
+}
+
 /// What the map's job sends: a row as it is done, or why the map stopped.
-type RowMessage = Result<(usize, RowResult), String>;
+type RowMessage = Result<(usize, RowResult), AnalysisError>;
 
 /// Computes the rows of `spec`, each sent as it is done. One core is left
 /// to the window, so the frame rate holds while the map is computed.
@@ -63,7 +78,7 @@ fn compute_rows(spec: &MapSpec, cancel: &Cancel, send: &(dyn Fn(RowMessage) + Sy
     // A cancelled map stops between rows: what it did not compute is for no one.
     let on_row = |j, row| send(Ok((j, row)));
     if let Err(error) = compute_map(spec, threads, cancel.flag(), &done, &on_row) {
-        send(Err(error.to_string()));
+        send(Err(error));
     }
 }
 
@@ -171,10 +186,10 @@ impl MapPanel {
             .filter(|old| same_axes(&old.spec))
             .and_then(|old| old.texture);
         let grids = spec.load_grid().and_then(|_| spec.value_grid());
-        let started = grids.map_err(|e| e.to_string()).and_then(|_| {
+        let started = grids.map_err(MapError::Grid).and_then(|_| {
             self.jobs
                 .request(spec.clone(), compute_rows)
-                .map_err(|e| format!("no thread for the map: {e}"))
+                .map_err(MapError::NoThread)
         });
         let mut shown = Shown::new(spec, started.err());
         if kept.is_some() {
@@ -200,7 +215,7 @@ impl MapPanel {
                         shown.stale = true;
                     }
                 }
-                Err(why) => shown.error = Some(format!("the map stopped: {why}")),
+                Err(why) => shown.error = Some(MapError::Stopped(why)),
             }
         }
     }
@@ -221,10 +236,10 @@ impl MapPanel {
         &mut self,
         model: &Model,
         (name, lo, hi): (&str, f64, f64),
-    ) -> Result<(), String> {
-        let axis = Axis::parse(name, model).map_err(|e| e.to_string())?;
+    ) -> Result<(), MapError> {
+        let axis = Axis::parse(name, model)?;
         if !(lo.is_finite() && hi.is_finite() && hi > lo) {
-            return Err(format!("map range {lo} to {hi} is empty"));
+            return Err(MapError::EmptyRange { lo, hi });
         }
         self.axis = Some(axis);
         self.range = (lo, hi);
@@ -255,7 +270,7 @@ impl MapPanel {
             ui.ctx().request_repaint();
         }
         if let Some(error) = &job.error {
-            ui.colored_label(theme.error, error);
+            ui.colored_label(theme.error, error.to_string());
         }
         if done < total {
             #[expect(clippy::cast_precision_loss, reason = "row counts")]

@@ -8,7 +8,7 @@ use eframe::egui;
 use egui_plot::{Corner, HLine, Legend, Line, Plot, PlotPoints, Points, log_grid_spacer};
 
 use super::{TabSpec, TabView};
-use crate::analysis::{Curves, DampingKind, first_instability, natural_load_max, paradox_curves};
+use crate::analysis::{Curves, DampingKind, first_instability, paradox_curves};
 use crate::app::View;
 use crate::app::action::Actions;
 use crate::app::jobs::Jobs;
@@ -127,13 +127,7 @@ impl ParadoxPanel {
             Load::Follower { .. } => self.kind.ratio(model),
         };
         let point = (x > 0.0 && x.is_finite())
-            .then(|| {
-                known.or_else(|| {
-                    first_instability(&key, natural_load_max(&key))
-                        .ok()
-                        .flatten()
-                })
-            })
+            .then(|| known.or_else(|| first_instability(&key, key.analysis_max_p()).ok().flatten()))
             .flatten()
             .map(|p| [x.log10(), p]);
         self.current = Some(((key, self.kind), point));
@@ -230,7 +224,7 @@ impl View for ParadoxPanel {
         // its load is not this model's point.
         let known = state
             .analysis()
-            .filter(|analysis| analysis.key == model.at_load(0.0))
+            .filter(|analysis| *analysis.key == model.at_load(0.0))
             .and_then(crate::app::analysis_cache::Analysis::first_instability);
         self.generation = state.view_generation();
         if matches!(model.load, Load::Follower { eta, .. } if eta > 0.0) {

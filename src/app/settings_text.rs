@@ -1,0 +1,361 @@
+//! Settings as text, stored and shared: the preset, then `name = value`
+//! lines in the vocabulary of `--set` and the lessons, read line by line so
+//! one bad line costs that line only. Text in the earlier format (RON, the
+//! whole model's fields) is still read, once, as a migration.
+
+use std::fmt::Write as _;
+
+use strum::VariantArray;
+
+use super::settings::Settings;
+use super::stored::read_ron;
+use super::stored_model::{Entry, Write, apply};
+use crate::format::clipped;
+use crate::model::{Key, Model, PresetId};
+use crate::sim::{EngineKind, SPEED_RANGE};
+
+/// Settings read from text, and what was left at its default and why.
+#[derive(Debug)]
+pub struct Read {
+    pub settings: Settings,
+    pub ignored: Vec<String>,
+}
+
+/// Text that holds no settings at all.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum SettingsError {
+    #[error("not settings text: {0}")]
+    NotSettings(String),
+}
+
+/// The most characters of a line a message repeats.
+const MOST_LINE_CHARS: usize = 60;
+
+impl Settings {
+    /// The settings as text: the preset, every parameter that differs from
+    /// the preset's (by the keys that write one number each, so the text
+    /// reads back to the same model to the last bit), the engine, the speed
+    /// and projector mode.
+    #[must_use]
+    pub fn to_text(&self) -> String {
+        let preset = self.preset.model();
+        let mut text = format!("preset = {}\n", self.preset);
+        for &key in Key::all() {
+            let spec = key.spec();
+            if spec.derived || !spec.applies_to(&self.model) {
+                continue;
+            }
+            let value = key.get(&self.model);
+            if value.to_bits() != key.get(&preset).to_bits() {
+                // Writing to a String cannot fail.
+                let _ = writeln!(text, "{key} = {value}");
+            }
+        }
+        let _ = write!(
+            text,
+            "engine = {}\nspeed = {}\nprojector = {}\n",
+            self.engine.name(),
+            self.speed,
+            self.projector
+        );
+        text
+    }
+}
+
+/// Reads settings text: `name = value` lines (blank lines and `#` comments
+/// skipped), or the earlier RON format. Every line that reads and makes
+/// sense is kept; the others are named in [`Read::ignored`].
+///
+/// # Errors
+/// Text with no settings in it at all.
+pub fn read(text: &str) -> Result<Read, SettingsError> {
+    // Text saved by an editor that writes a byte-order mark reads the same.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    if text.trim_start().starts_with('(') {
+        return read_ron(text);
+    }
+    let mut lines = Vec::new();
+    let mut ignored = Vec::new();
+    for (number, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        match line.split_once('=') {
+            Some((name, value)) if !name.trim().is_empty() => {
+                lines.push((name.trim(), value.trim()));
+            }
+            _ => ignored.push(format!(
+                "line {} '{}' (not name = value)",
+                number + 1,
+                clipped(line, MOST_LINE_CHARS)
+            )),
+        }
+    }
+    if lines.is_empty() {
+        return Err(SettingsError::NotSettings(
+            "no line of name = value (e.g. preset = roller)".to_owned(),
+        ));
+    }
+    let mut settings = Settings::default();
+    let mut seen: Vec<&str> = Vec::new();
+    let mut entries = Vec::new();
+    let mut preset = None;
+    for (name, value) in lines {
+        if seen.contains(&name) {
+            ignored.push(format!("{name} (given twice; the first is kept)"));
+            continue;
+        }
+        seen.push(name);
+        match name {
+            "preset" => match value.parse::<PresetId>() {
+                Ok(id) => preset = Some(id),
+                Err(error) => ignored.push(format!("preset ({error})")),
+            },
+            "engine" => match EngineKind::named(value) {
+                Some(engine) => settings.engine = engine,
+                None => ignored.push(format!(
+                    "engine ('{}' is none of {})",
+                    clipped(value, MOST_LINE_CHARS),
+                    EngineKind::VARIANTS
+                        .iter()
+                        .map(|engine| engine.name())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )),
+            },
+            "speed" => match value.parse::<f64>() {
+                Ok(speed) => take_speed(&mut settings, speed, &mut ignored),
+                Err(_) => ignored.push(format!("speed ('{value}' is not a number)")),
+            },
+            "projector" => match value.parse::<bool>() {
+                Ok(on) => settings.projector = on,
+                Err(_) => ignored.push(format!("projector ('{value}' is not true or false)")),
+            },
+            _ => match (name.parse::<Key>(), value.parse::<f64>()) {
+                (Ok(key), Ok(number)) => entries.push(Entry {
+                    name: name.to_owned(),
+                    set: Write::Key(key),
+                    value: number,
+                }),
+                (Ok(_), Err(_)) => ignored.push(format!("{name} ('{value}' is not a number)")),
+                (Err(_), _) => ignored.push(format!(
+                    "{} (not a setting)",
+                    clipped(name, MOST_LINE_CHARS)
+                )),
+            },
+        }
+    }
+    let preset = preset.unwrap_or_else(|| {
+        if !entries.is_empty() {
+            ignored.push(format!(
+                "the parameters ({}: no preset says what they belong to)",
+                entries
+                    .iter()
+                    .map(|e| e.name.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ));
+            entries.clear();
+        }
+        settings.preset
+    });
+    settings.preset = preset;
+    settings.model = read_parameters(preset.model(), entries, &mut ignored);
+    Ok(Read { settings, ignored })
+}
+
+/// The parameters onto `base` (the preset's model) in the order that sets
+/// the load last, each kept when the model stays valid: a key of another
+/// load (`R` on a follower column) or a value out of range is named.
+fn read_parameters(base: Model, mut entries: Vec<Entry>, ignored: &mut Vec<String>) -> Model {
+    entries.sort_by_key(|entry| match entry.set {
+        Write::Key(key) => key.spec().stage,
+        Write::Field(_) => 0,
+    });
+    apply(base, entries, ignored)
+}
+
+/// Takes a speed within [`SPEED_RANGE`], naming one outside it.
+pub(super) fn take_speed(settings: &mut Settings, speed: f64, ignored: &mut Vec<String>) {
+    if SPEED_RANGE.contains(&speed) {
+        settings.speed = speed;
+    } else {
+        ignored.push(format!(
+            "speed ({speed} is outside {} to {})",
+            SPEED_RANGE.start(),
+            SPEED_RANGE.end()
+        ));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{Assignment, apply_assignments};
+
+    fn changed(id: PresetId, sets: &[(Key, f64)]) -> Settings {
+        let mut model = id.model();
+        let assignments: Vec<Assignment> = sets
+            .iter()
+            .map(|&(key, value)| Assignment { key, value })
+            .collect();
+        apply_assignments(&mut model, &assignments).unwrap();
+        Settings {
+            preset: id,
+            model,
+            engine: EngineKind::Reference,
+            speed: 0.3,
+            projector: true,
+        }
+    }
+
+    /// Every preset with parameters changed the way a user changes them
+    /// (groups that write several numbers, lengths that scale their rod)
+    /// reads back to the same settings, bit for bit, with nothing ignored.
+    #[test]
+    fn every_preset_changed_reads_back_to_the_last_bit() {
+        for &id in PresetId::all() {
+            let roller = id.model().roller().is_some();
+            let mut sets = vec![
+                (Key::L2, 0.7 * id.model().column.rod2.length_m),
+                (Key::C1, 0.013),
+                (Key::CExt, 0.0021),
+                (Key::A, 0.37),
+                (Key::Load, 0.3 * id.model().load_bar_max_p() + 1e-9),
+            ];
+            if roller {
+                sets.extend([(Key::Nu, 0.21), (Key::Rho, 0.11), (Key::V, 0.031)]);
+            } else {
+                sets.push((Key::Eta, 0.83));
+            }
+            let settings = changed(id, &sets);
+            let text = settings.to_text();
+            let read = read(&text).unwrap();
+            assert_eq!(read.ignored, Vec::<String>::new(), "{id}: {text}");
+            assert_eq!(read.settings, settings, "{id}: {text}");
+            let bits = |m: &Model| {
+                Key::all()
+                    .iter()
+                    .map(|k| k.get(m).to_bits())
+                    .collect::<Vec<_>>()
+            };
+            assert_eq!(bits(&read.settings.model), bits(&settings.model), "{id}");
+        }
+    }
+
+    /// The preset's own values are not repeated: the default settings are
+    /// four lines.
+    #[test]
+    fn only_what_differs_from_the_preset_is_written() {
+        assert_eq!(
+            Settings::default().to_text(),
+            "preset = roller\nengine = rapier\nspeed = 1\nprojector = false\n"
+        );
+        let text = changed(PresetId::Ziegler1952, &[(Key::Rods, 4.0), (Key::M2, 1.0)]).to_text();
+        assert_eq!(
+            text,
+            "preset = ziegler-1952\nm2 = 1\nrods = 4\nengine = reference\nspeed = 0.3\nprojector = true\n"
+        );
+    }
+
+    /// One bad line costs that line: the rest is kept, and each refusal
+    /// names its line and its reason.
+    #[test]
+    fn one_bad_line_costs_that_line_only() {
+        let text = "# shared by a colleague\n\
+                    preset = roller\n\
+                    k1 = -1\n\
+                    colour = blue\n\
+                    s2 = 0.4\n\
+                    l2 = 0.5\n\
+                    R = lots\n\
+                    this line has no equals sign\n\
+                    speed = 2\n\
+                    speed = 3\n\
+                    eta = 0.5\n\
+                    engine = bullet\n";
+        let read = read(text).unwrap();
+        let model = read.settings.model;
+        assert_eq!(model.column.rod2.length_m, 0.5);
+        assert_eq!(model.column.rod2.com_m, 0.4, "kept once l2 is in");
+        assert_eq!(
+            model.column.k1_nm_per_rad,
+            PresetId::Roller.model().column.k1_nm_per_rad
+        );
+        assert_eq!(read.settings.speed, 2.0);
+        let ignored = read.ignored.join("; ");
+        for fragment in [
+            "k1 (k1 = -1: must be",
+            "colour (not a setting)",
+            "R ('lots' is not a number)",
+            "line 8 'this line has no equals sign' (not name = value)",
+            "speed (given twice; the first is kept)",
+            "eta (",
+            "engine ('bullet' is none of rapier, reference)",
+        ] {
+            assert!(ignored.contains(fragment), "{fragment}: {ignored}");
+        }
+        assert_eq!(read.ignored.len(), 7, "{ignored}");
+    }
+
+    /// The vocabulary of `--set`: the load and the groups read as they do
+    /// on the command line, whatever order they come in.
+    #[test]
+    fn the_groups_of_the_command_line_read_as_there() {
+        let read = read("load = 2.5\nl1 = 2\npreset = ziegler-1952\n").unwrap();
+        assert!(read.ignored.is_empty(), "{:?}", read.ignored);
+        let mut expected = PresetId::Ziegler1952.model();
+        apply_assignments(
+            &mut expected,
+            &[
+                Assignment {
+                    key: Key::L1,
+                    value: 2.0,
+                },
+                Assignment {
+                    key: Key::Load,
+                    value: 2.5,
+                },
+            ],
+        )
+        .unwrap();
+        assert_eq!(read.settings.model, expected);
+        assert_eq!(read.settings.model.load_p(), 2.5);
+    }
+
+    /// Text with nothing of settings in it is an error, not the defaults
+    /// quietly; parameters with no preset are named, not guessed.
+    #[test]
+    fn text_without_settings_is_refused_and_parameters_need_a_preset() {
+        for text in ["", "   \n# only a comment\n", "{{ not a setup }}"] {
+            let error = read(text).unwrap_err().to_string();
+            assert!(error.starts_with("not settings text"), "{error}");
+        }
+        let read = read("k1 = 2\nspeed = 2").unwrap();
+        assert_eq!(read.settings.model, PresetId::Roller.model());
+        assert_eq!(read.settings.speed, 2.0);
+        assert!(
+            read.ignored[0].contains("k1: no preset says"),
+            "{:?}",
+            read.ignored
+        );
+    }
+
+    /// Settings stored in the earlier RON format read to the same settings,
+    /// and are then written as `name = value` text that reads back to them.
+    #[test]
+    fn the_earlier_format_is_read_once_and_written_anew() {
+        let settings = changed(
+            PresetId::Beck,
+            &[(Key::Rods, 5.0), (Key::C2, 0.01), (Key::Load, 0.2)],
+        );
+        let old = ron::to_string(&settings).unwrap();
+        let migrated = read(&old).unwrap();
+        assert!(migrated.ignored.is_empty(), "{:?}", migrated.ignored);
+        assert_eq!(migrated.settings, settings);
+        let text = migrated.settings.to_text();
+        assert!(text.starts_with("preset = beck\n"), "{text}");
+        assert_eq!(read(&text).unwrap().settings, settings);
+    }
+}
