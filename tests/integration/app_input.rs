@@ -12,7 +12,7 @@ use zieglerlab::model::Key;
 
 /// Clicks into the field labelled `key`, selects its text and types `text`
 /// one character at a time, a frame after each (as a person at a keyboard).
-fn type_into(harness: &mut Harness<'_>, key: &str, text: &str) {
+pub(crate) fn type_into(harness: &mut Harness<'_>, key: &str, text: &str) {
     harness.get_by_role_and_label(Role::TextInput, key).click();
     harness.run();
     harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
@@ -38,7 +38,7 @@ fn press(harness: &mut Harness<'_>, key: egui::Key) {
     harness.run();
 }
 
-fn harness(app: &mut ZieglerApp) -> Harness<'_> {
+pub(crate) fn harness(app: &mut ZieglerApp) -> Harness<'_> {
     let mut harness = Harness::builder()
         .with_size([1280.0, 800.0])
         .build_ui(|ui| app.contents_ui(ui));
@@ -342,47 +342,6 @@ fn a_lesson_walked_through_predict_run_reveal() {
     );
 }
 
-/// A presenter's remote sends Page Down and Page Up: they move through the
-/// lesson's steps, carrying each out, and do nothing without a lesson.
-#[test]
-fn page_down_and_page_up_step_through_a_lesson() {
-    let app = ZieglerApp::new(Settings::default()).unwrap();
-    let mut harness = Harness::builder()
-        .with_size([1280.0, 900.0])
-        .build_ui_state(
-            |ui, app: &mut ZieglerApp| {
-                app.take_keys(ui.ctx());
-                app.contents_ui(ui);
-            },
-            app,
-        );
-    harness.run();
-    harness.key_press(egui::Key::PageDown);
-    harness.run();
-    assert!(harness.state().state().lesson().is_none());
-    let (_, text) = zieglerlab::lesson::BUILT_IN[0];
-    let lesson = zieglerlab::lesson::Lesson::read(text, &zieglerlab::app::Tab::ids()).unwrap();
-    harness
-        .state_mut()
-        .apply(zieglerlab::app::Action::LessonOpen(Box::new(lesson)));
-    harness.run();
-    let step = |h: &Harness<'_, ZieglerApp>| h.state().state().lesson().unwrap().step;
-    assert_eq!(step(&harness), 0);
-    harness.key_press(egui::Key::PageDown);
-    harness.run();
-    assert_eq!(step(&harness), 1);
-    harness.key_press(egui::Key::PageDown);
-    harness.run();
-    assert_eq!(step(&harness), 2);
-    assert!(
-        harness.state().state().ramp().is_some(),
-        "step 3 starts its ramp"
-    );
-    harness.key_press(egui::Key::PageUp);
-    harness.run();
-    assert_eq!(step(&harness), 1);
-}
-
 /// A picture shows no hints for the hand and no messages: the plots' view
 /// hint and fit button, the first launch's hint and a notice are in the
 /// window, not in what the command line draws (nor in a recording's frames).
@@ -468,47 +427,6 @@ fn the_words_fit_the_column() {
         neutral_seen > 0,
         "some undamped column is neutral at its load"
     );
-}
-
-/// A lesson path typed into the window is read off the UI thread: a device
-/// that never ends is refused by name (the window froze at 2.2 GB on it),
-/// and a lesson file then opens at its first step.
-#[test]
-fn a_lesson_file_is_read_off_the_ui_thread_and_checked() {
-    let folder = tempfile::tempdir().unwrap();
-    let good = folder.path().join("mine.ron");
-    std::fs::write(
-        &good,
-        "\u{feff}Lesson(title: \"Mine\", steps: [Step(text: \"look\", preset: \"tabletop\")])",
-    )
-    .unwrap();
-    let mut app = ZieglerApp::new(Settings::default()).unwrap();
-    let mut harness = harness(&mut app);
-    harness.get_by_label("lessons").click();
-    harness.run();
-    let open = |harness: &mut Harness<'_>, path: &str| {
-        type_into(harness, "lesson file", path);
-        harness.get_by_label("open").click();
-        // Frames until the reading thread has answered.
-        for _ in 0..200 {
-            harness.run();
-            if harness.query_by_label_contains("reading ").is_none() {
-                break;
-            }
-            std::thread::sleep(std::time::Duration::from_millis(10));
-        }
-        harness.run();
-    };
-    open(&mut harness, "/dev/zero");
-    assert!(
-        harness
-            .query_by_label_contains("cannot read /dev/zero: it is a device, a pipe or a socket")
-            .is_some()
-    );
-    open(&mut harness, good.to_str().unwrap());
-    assert!(harness.query_by_label_contains("step 1 of 1").is_some());
-    drop(harness);
-    assert_eq!(app.settings().preset, zieglerlab::model::PresetId::Tabletop);
 }
 
 /// Every panel of a frame shows the same state: V = 0 typed into the

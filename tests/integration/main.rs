@@ -2,12 +2,14 @@
 //! the app, wgpu and rapier instead of one per topic).
 
 mod app_input;
+mod app_lessons;
 mod app_logic;
 mod as_printed;
 mod bad_input;
 mod chain_engines;
 mod chains;
 mod cli;
+mod cli_files;
 mod closed_form_loads;
 mod common;
 mod damped_ziegler;
@@ -27,4 +29,5 @@ mod sim_identification;
 mod sim_large_amplitude;
 mod snapshots;
 mod stability_map;
+mod stored_settings;
 mod zero_root;

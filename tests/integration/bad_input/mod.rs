@@ -16,9 +16,12 @@ use zieglerlab::sim::{EngineKind, SimError, Simulation, Status, initial_state};
 
 mod cli_cases;
 mod cli_extremes;
+mod cli_maps;
+mod lesson_files;
 
 use cli_cases::CLI;
 use cli_extremes::CLI_EXTREMES;
+use cli_maps::CLI_MAPS;
 
 /// Longest a command line case may run: a hang fails the test instead of
 /// freezing CI.
@@ -51,7 +54,7 @@ fn wait_within(child: &mut Child, limit: Duration, why: &str) -> ExitStatus {
 }
 
 /// Runs the binary with `args`, killed after [`CASE_LIMIT`].
-fn run_limited(args: &[&str]) -> Output {
+pub(super) fn run_limited(args: &[&str]) -> Output {
     let mut child = spawn(args);
     // Readers on their own threads, so a full pipe cannot stall the child.
     let mut stdout = child.stdout.take().unwrap();
@@ -74,7 +77,7 @@ fn run_limited(args: &[&str]) -> Output {
 
 #[test]
 fn every_command_line_case_gets_its_answer() {
-    for case in CLI.iter().chain(CLI_EXTREMES) {
+    for case in CLI.iter().chain(CLI_MAPS).chain(CLI_EXTREMES) {
         let out = run_limited(case.args);
         let stderr = String::from_utf8_lossy(&out.stderr);
         let stdout = String::from_utf8_lossy(&out.stdout);
@@ -386,104 +389,6 @@ fn a_reader_gone_before_the_first_line_ends_the_work() {
         assert_eq!(out.status.code(), Some(0), "{args:?}: {stderr}");
         // (A debug build of bench notes that its numbers are not representative.)
         assert!(!stderr.contains("error"), "{args:?}: {stderr}");
-    }
-}
-
-/// A lesson file `lesson --check` refuses, as the window does: status 2
-/// and one line naming the file, the line of the problem and what was
-/// expected. Syntax and unknown fields, presets, keys and tabs; values the
-/// column refuses at the step that sets them, from any preset the lesson
-/// may be opened on; ramps the column cannot take; a key written twice; a
-/// title that would reach a terminal as an escape sequence; `Step(` in a
-/// string or comment.
-#[test]
-fn a_broken_lesson_file_is_refused_at_its_line() {
-    let dir = tempfile::tempdir().unwrap();
-    let cases: [(&str, usize, &str); 13] = [
-        (
-            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", presett: \"tabletop\"),\n ],\n)",
-            4,
-            "presett",
-        ),
-        (
-            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", preset: \"nope\"),\n ],\n)",
-            4,
-            "unknown preset 'nope'",
-        ),
-        (
-            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\"),\n  Step(text: \"b\",\n   set: {\"load\": -1.0}),\n ],\n)",
-            5,
-            "step 2: load = -1",
-        ),
-        (
-            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", set: {\"zeta\": 1.0}),\n ],\n)",
-            4,
-            "unknown key 'zeta'",
-        ),
-        (
-            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", predict: Choice(prompt: \"?\", answers: [\"x\", \"y\"])),\n  Step(text: \"b\", reveal: Answer(2)),\n ],\n)",
-            5,
-            "expected 0 to 1",
-        ),
-        (
-            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", run: Ramp(from: 0.0, to: 4.0, rate: 0.0)),\n ],\n)",
-            4,
-            "ramp rate = 0",
-        ),
-        (
-            "Lesson(\n title: \"t\",\n steps: [],\n)",
-            1,
-            "at least one step",
-        ),
-        // A key written twice is refused, not overwritten.
-        (
-            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", set: {\"load\": 1.0, \"load\": 2.0}),\n ],\n)",
-            4,
-            "the key 'load' is written twice in `set`",
-        ),
-        // A title that would reach a terminal as an escape sequence.
-        (
-            "Lesson(\n title: \"t\\u{1b}[2J\",\n steps: [\n  Step(text: \"a\"),\n ],\n)",
-            2,
-            "control character U+001B",
-        ),
-        // `Step(` inside a string or a comment is not a step.
-        (
-            "Lesson(\n title: \"Step(\",\n // Step( here\n steps: [\n  Step(text: \"Step(, Step(\"),\n  Step(text: \"b\", speed: 50.0),\n ],\n)",
-            6,
-            "step 2: speed = 50",
-        ),
-        // A first step's parameter that one preset lacks: refused,
-        // naming the preset the window would fail on.
-        (
-            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", set: {\"nu\": 0.2}),\n ],\n)",
-            4,
-            "(the lesson opened on the ziegler-1952 preset)",
-        ),
-        // A ramp to a load the column cannot take, as the window refuses it.
-        (
-            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", preset: \"tabletop\",\n   run: Ramp(from: 1e300, to: 1.0, rate: 1.0)),\n ],\n)",
-            4,
-            "ramp from = 1e300",
-        ),
-        // A tab the app has not, with the names it has.
-        (
-            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\"),\n  Step(text: \"b\", tab: \"plots\"),\n ],\n)",
-            5,
-            "step 2: unknown tab 'plots': expected one of locus, histories, map, paradox",
-        ),
-    ];
-    for (i, (text, line, says)) in cases.into_iter().enumerate() {
-        let path = dir.path().join(format!("case{i}.ron"));
-        std::fs::write(&path, text).unwrap();
-        let out = run_limited(&["lesson", "--check", path.to_str().unwrap()]);
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(2), "{text}: {stderr}");
-        assert_eq!(stderr.lines().count(), 1, "{text}: {stderr}");
-        assert!(
-            stderr.contains(&format!("line {line}: ")) && stderr.contains(says),
-            "{text}: {stderr}"
-        );
     }
 }
 
