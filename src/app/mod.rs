@@ -74,15 +74,19 @@ pub enum Panel {
 }
 
 impl std::str::FromStr for Panel {
-    type Err = String;
+    type Err = tabs::UnknownName;
 
-    fn from_str(name: &str) -> Result<Self, String> {
+    fn from_str(name: &str) -> Result<Self, tabs::UnknownName> {
         match name {
             "window" => Ok(Self::Window),
             "scene" => Ok(Self::Scene),
             _ => Tab::named(name)
                 .map(Self::Tab)
-                .map_err(|_| format!("expected one of {}", Self::names().join(", "))),
+                .map_err(|_| tabs::UnknownName {
+                    what: "panel",
+                    name: name.to_owned(),
+                    known: Self::names().join(", "),
+                }),
         }
     }
 }

@@ -96,13 +96,13 @@ pub fn time_window_frames(
     renderer: Renderer,
     inner_size: [f32; 2],
     frames: usize,
-) -> Result<WindowFrames, String> {
+) -> Result<WindowFrames, WindowTimingError> {
     let timed = Arc::new(Mutex::new(WindowFrames::default()));
     let shared = Arc::clone(&timed);
     let mut options = options(renderer, inner_size);
     options.persist_window = false;
     options.viewport = options.viewport.with_min_inner_size([64.0, 64.0]);
-    let app = ZieglerApp::new(Settings::default()).map_err(|e| e.to_string())?;
+    let app = ZieglerApp::new(Settings::default())?;
     eframe::run_native(
         "zieglerlab-bench",
         options,
@@ -119,18 +119,32 @@ pub fn time_window_frames(
             }))
         }),
     )
-    .map_err(|e| e.to_string())?;
+    .map_err(|e| WindowTimingError::Window(e.to_string()))?;
     let frames_timed = timed
         .lock()
-        .map_err(|_| "the timed window panicked".to_owned())?
+        .map_err(|_| WindowTimingError::Panicked)?
         .clone();
     if frames_timed.intervals_ms.len() < frames {
-        return Err(format!(
-            "the window closed after {} of {frames} timed frames",
-            frames_timed.intervals_ms.len()
-        ));
+        return Err(WindowTimingError::ClosedEarly {
+            timed: frames_timed.intervals_ms.len(),
+            asked: frames,
+        });
     }
     Ok(frames_timed)
+}
+
+/// Why the window's frames could not be timed.
+#[derive(Debug, thiserror::Error)]
+pub enum WindowTimingError {
+    #[error(transparent)]
+    App(#[from] crate::sim::SimError),
+    /// eframe's own error (no display, no graphics context), as it words it.
+    #[error("{0}")]
+    Window(String),
+    #[error("the timed window panicked")]
+    Panicked,
+    #[error("the window closed after {timed} of {asked} timed frames")]
+    ClosedEarly { timed: usize, asked: usize },
 }
 
 /// The app in a window that times its frames and closes itself.

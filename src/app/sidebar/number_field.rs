@@ -29,12 +29,17 @@ fn field_id(key: Key) -> egui::Id {
 }
 
 /// What the text of a field asks for when it is committed.
-fn parse(text: &str) -> Result<f64, String> {
+fn parse(text: &str) -> Result<f64, NotANumber> {
     let trimmed = text.trim();
     trimmed
         .parse::<f64>()
-        .map_err(|_| format!("'{trimmed}' is not a number"))
+        .map_err(|_| NotANumber(trimmed.to_owned()))
 }
+
+/// Text committed in a field that reads as no number.
+#[derive(Debug, PartialEq, thiserror::Error)]
+#[error("'{0}' is not a number")]
+struct NotANumber(String);
 
 impl NumberFields {
     /// Forgets the drafts of fields that neither have focus nor hold a
@@ -81,7 +86,10 @@ impl NumberFields {
             // on (see `prune`). A pass egui reruns asks only once.
             actions.push_once(match parse(&text) {
                 Ok(value) => Action::Enter { key, value },
-                Err(why) => Action::Refuse { key, why },
+                Err(why) => Action::Refuse {
+                    key,
+                    why: why.to_string(),
+                },
             });
             self.drafts.insert(key, text);
         } else if response.has_focus() {
@@ -106,7 +114,10 @@ mod tests {
     fn typed_text_is_a_number_or_says_why_not() {
         assert_eq!(parse(" 0.2 "), Ok(0.2));
         assert_eq!(parse("1e-3"), Ok(1e-3));
-        assert_eq!(parse("0.2.1"), Err("'0.2.1' is not a number".to_owned()));
-        assert_eq!(parse(""), Err("'' is not a number".to_owned()));
+        assert_eq!(
+            parse("0.2.1").unwrap_err().to_string(),
+            "'0.2.1' is not a number"
+        );
+        assert_eq!(parse("").unwrap_err().to_string(), "'' is not a number");
     }
 }

@@ -40,6 +40,15 @@ pub const TABS: [TabSpec; 4] = [locus::TAB, histories::TAB, map::TAB, paradox::T
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Tab(usize);
 
+/// A name that is none of those known (a tab, a panel).
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("unknown {what} '{name}': expected one of {known}")]
+pub struct UnknownName {
+    pub what: &'static str,
+    pub name: String,
+    pub known: String,
+}
+
 impl Tab {
     /// The root locus (the first tab, shown at launch).
     pub const LOCUS: Self = Self(0);
@@ -56,13 +65,14 @@ impl Tab {
     ///
     /// # Errors
     /// No tab has that name: the message lists those that do.
-    pub fn named(id: &str) -> Result<Self, String> {
-        Self::all().find(|tab| tab.id() == id).ok_or_else(|| {
-            format!(
-                "unknown tab '{id}': expected one of {}",
-                Self::ids().join(", ")
-            )
-        })
+    pub fn named(id: &str) -> Result<Self, UnknownName> {
+        Self::all()
+            .find(|tab| tab.id() == id)
+            .ok_or_else(|| UnknownName {
+                what: "tab",
+                name: id.to_owned(),
+                known: Self::ids().join(", "),
+            })
     }
 
     /// Every tab's name, in order.
@@ -178,7 +188,12 @@ mod tests {
         ids.sort_unstable();
         ids.dedup();
         assert_eq!(ids.len(), TABS.len());
-        assert!(Tab::named("plots").unwrap_err().contains("locus"));
+        assert!(
+            Tab::named("plots")
+                .unwrap_err()
+                .to_string()
+                .contains("locus")
+        );
     }
 
     /// A tab is written and read by its name.
