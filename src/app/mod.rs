@@ -451,6 +451,10 @@ impl ZieglerApp {
                 }
             });
         }
+        // What follows goes below the whole top row: a scope that used less
+        // than its rect (the hidden locus's one-line note) must not pull the
+        // load bar up over the scene.
+        ui.advance_cursor_after_rect(top);
         load_bar::load_bar_ui(ui, &self.state, &mut self.actions, theme);
         tab_bar_ui(ui, self.tab, &mut self.actions);
         if ui.available_height() < min_plot_height {

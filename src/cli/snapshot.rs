@@ -1,10 +1,11 @@
 //! `zieglerlab snapshot`: the app (or one panel) rendered headlessly to a PNG
-//! after a given simulated time.
+//! after a given simulated time, optionally at a step of a lesson.
 
 use anyhow::Result;
 use zieglerlab::format::Shown;
 
-use zieglerlab::app::{Settings, ZieglerApp};
+use zieglerlab::app::{Action, Command, Settings, Tab, ZieglerApp};
+use zieglerlab::lesson::{BUILT_IN, Lesson};
 
 use super::headless::{Look, Size, render_frames};
 use super::output::{check_output, write_png};
@@ -24,8 +25,49 @@ pub struct Args {
     size: Size,
     #[command(flatten)]
     look: Look,
+    /// A lesson to show (for a handout): a built-in one by name (see
+    /// `zieglerlab lesson`, with or without `.ron`) or a lesson file. It is
+    /// opened on `--preset` as the window opens it, and `--time` runs from
+    /// its step `--step`.
+    #[arg(long, value_name = "NAME|FILE")]
+    lesson: Option<String>,
+    /// The lesson's step to show, from 1.
+    #[arg(long, requires = "lesson", allow_hyphen_values = true)]
+    step: Option<i64>,
     #[arg(long)]
     out: std::path::PathBuf,
+}
+
+/// The lesson named `name` (a built-in one, with or without `.ron`) or in
+/// the file `name`.
+fn lesson_named(name: &str) -> Result<Lesson> {
+    let tabs = Tab::ids();
+    let built_in = BUILT_IN
+        .iter()
+        .find(|(file, _)| *file == name || file.strip_suffix(".ron") == Some(name));
+    match built_in {
+        Some((_, text)) => Ok(Lesson::read(text, &tabs)?),
+        None => Ok(Lesson::read_file(std::path::Path::new(name), &tabs)?),
+    }
+}
+
+/// `app` with `lesson` open at step `step` (from 1), as Page Down takes the
+/// window there.
+fn open_at_step(app: &mut ZieglerApp, lesson: Lesson, step: Option<i64>) -> Result<()> {
+    let steps = lesson.steps.len();
+    let step = step.unwrap_or(1);
+    let Some(index) = usize::try_from(step)
+        .ok()
+        .filter(|&s| (1..=steps).contains(&s))
+        .map(|s| s - 1)
+    else {
+        anyhow::bail!("step = {step}: the lesson has steps 1 to {steps}");
+    };
+    app.apply(Action::LessonOpen(Box::new(lesson)));
+    for _ in 0..index {
+        app.apply(Action::Command(Command::LessonNext));
+    }
+    Ok(())
 }
 
 pub fn run(args: &Args) -> Result<()> {
@@ -46,7 +88,11 @@ pub fn run(args: &Args) -> Result<()> {
         speed: 1.0,
         projector: args.look.projector,
     };
+    let lesson = args.lesson.as_deref().map(lesson_named).transpose()?;
     let mut app = ZieglerApp::new(settings)?;
+    if let Some(lesson) = lesson {
+        open_at_step(&mut app, lesson, args.step)?;
+    }
     // Whole 1/60 s frames, as the app advances: the same picture every time.
     #[expect(
         clippy::cast_possible_truncation,

@@ -90,3 +90,57 @@ fn a_lesson_file_is_read_off_the_ui_thread_and_checked() {
     drop(harness);
     assert_eq!(app.settings().preset, zieglerlab::model::PresetId::Tabletop);
 }
+
+/// Every step of every built-in lesson on a 1024x768 projector: the scene,
+/// the load bar and the tab bar stay in their rows (a step that hides the
+/// root locus once pulled the load bar and the tabs up over the column),
+/// and the step's preset and load are those the lesson sets there.
+#[test]
+fn every_lesson_step_keeps_the_projector_layout() {
+    use egui_kittest::kittest::Queryable as _;
+    for &(name, text) in &zieglerlab::lesson::BUILT_IN {
+        let lesson = zieglerlab::lesson::Lesson::read(text, &zieglerlab::app::Tab::ids()).unwrap();
+        let steps = lesson.steps.len();
+        let start = zieglerlab::lesson::Column {
+            preset: zieglerlab::model::PresetId::Roller,
+            model: zieglerlab::model::PresetId::Roller.model(),
+        };
+        let app = ZieglerApp::new(Settings {
+            projector: true,
+            ..Settings::default()
+        })
+        .unwrap();
+        let mut harness = Harness::builder()
+            .with_size([1024.0, 768.0])
+            .build_ui_state(|ui, app: &mut ZieglerApp| app.contents_ui(ui), app);
+        harness
+            .state_mut()
+            .apply(zieglerlab::app::Action::LessonOpen(Box::new(
+                lesson.clone(),
+            )));
+        for step in 0..steps {
+            if step > 0 {
+                harness.state_mut().apply(zieglerlab::app::Action::Command(
+                    zieglerlab::app::Command::LessonNext,
+                ));
+            }
+            harness.run_steps(3);
+            let tab_top = harness.get_by_label("time histories").rect().top();
+            assert!(
+                tab_top > 0.55 * 768.0,
+                "{name} step {}: the tab bar is at y = {tab_top}, over the scene",
+                step + 1
+            );
+            if lesson.steps[step].sets_column() {
+                let column = lesson.column_at(start, step).unwrap();
+                let settings = harness.state().settings();
+                assert_eq!(settings.preset, column.preset, "{name} step {}", step + 1);
+                assert!(
+                    (settings.model.load_p() - column.model.load_p()).abs() < 1e-12,
+                    "{name} step {}",
+                    step + 1
+                );
+            }
+        }
+    }
+}

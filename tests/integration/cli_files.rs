@@ -165,3 +165,51 @@ fn written_files_are_readable_by_all() {
         .mode();
     assert_eq!(mode & 0o777, 0o644);
 }
+
+/// `snapshot --lesson NAME --step N`: a built-in lesson at a step, drawn as
+/// the window shows it there (a handout); a step the lesson does not have,
+/// a lesson that does not exist and `--step` without a lesson are refused
+/// before anything is drawn.
+#[test]
+fn snapshot_draws_a_lesson_at_a_step() {
+    let folder = tempfile::tempdir().expect("a temporary folder");
+    let out = folder.path().join("step2.png");
+    let out_text = out.to_str().unwrap();
+    stdout(&[
+        "snapshot",
+        "--preset",
+        "roller",
+        "--lesson",
+        "where-flutter-starts",
+        "--step",
+        "2",
+        "--size",
+        "1024x768",
+        "--projector",
+        "--out",
+        out_text,
+    ]);
+    assert_eq!(png_size(&out), (1024, 768));
+    for (args, says) in [
+        (
+            &["--lesson", "where-flutter-starts", "--step", "99"][..],
+            "step = 99: the lesson has steps 1 to ",
+        ),
+        (
+            &["--lesson", "where-flutter-starts", "--step", "0"][..],
+            "step = 0: the lesson has steps 1 to ",
+        ),
+        (&["--lesson", "no-such-lesson"][..], "no-such-lesson"),
+        (&["--step", "2"][..], "--lesson"),
+    ] {
+        let refused = folder.path().join("refused.png");
+        let mut line = vec!["snapshot", "--preset", "roller", "--out"];
+        line.push(refused.to_str().unwrap());
+        line.extend_from_slice(args);
+        let result = run(&line);
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        assert_eq!(result.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(stderr.contains(says), "{args:?}: {stderr}");
+        assert!(!refused.exists(), "{args:?}");
+    }
+}
