@@ -334,14 +334,18 @@ fn encode_stream(
     let end = end_secs.get().copied().unwrap_or(held_secs).max(held_secs);
     add(&mut recording, &frame, clock.until(end))?;
     let bytes = recording.finish()?;
-    let stamp = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs());
     // A free name: two windows finishing in the same second keep both files.
-    crate::files::write_new(folder, &format!("zieglerlab-{stamp}"), "gif", |w| {
+    crate::files::write_new(folder, &file_stem(&jiff::Zoned::now()), "gif", |w| {
         std::io::Write::write_all(w, &bytes)
     })
     .map_err(RecordError::from)
+}
+
+/// A recording's file name without its extension: the local date and time
+/// it was written, `zieglerlab-2026-12-02_14-05-09` (no colon, which some
+/// file systems refuse).
+fn file_stem(at: &jiff::Zoned) -> String {
+    format!("zieglerlab-{}", at.strftime("%Y-%m-%d_%H-%M-%S"))
 }
 
 /// Why a recording from the window made no GIF.
@@ -562,5 +566,13 @@ mod tests {
         }
         assert_eq!(count, 60);
         assert_eq!(total_cs, 600, "six seconds recorded, six played");
+    }
+
+    /// The name carries the local date and time as a person reads a clock,
+    /// in the zone it was made in.
+    #[test]
+    fn a_recording_is_named_by_its_local_date_and_time() {
+        let at: jiff::Zoned = "2026-12-02T14:05:09+01:00[+01:00]".parse().unwrap();
+        assert_eq!(file_stem(&at), "zieglerlab-2026-12-02_14-05-09");
     }
 }
