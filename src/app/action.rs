@@ -78,6 +78,8 @@ pub enum Action {
     Say(Notice),
     DismissNotice,
     DismissHint,
+    /// Closes the first launch's welcome for good.
+    CloseWelcome,
 }
 
 impl From<Command> for Action {

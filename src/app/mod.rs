@@ -26,6 +26,7 @@ mod stored;
 mod stored_model;
 mod tabs;
 mod theme;
+mod welcome;
 mod window;
 
 use eframe::egui::{self, RichText, vec2};
@@ -401,6 +402,7 @@ impl ZieglerApp {
         egui::CentralPanel::default()
             .frame(self.panel_frame(egui::Frame::central_panel(&style)))
             .show(ui, |ui| self.central_ui(ui, &theme));
+        welcome::welcome_ui(ui.ctx(), &self.state, &mut self.actions, &theme);
         self.ask_for_a_frame_if_asked(ui.ctx());
     }
 

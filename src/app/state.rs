@@ -66,6 +66,15 @@ fn start(settings: &mut Settings) -> Result<(Simulation, Option<Notice>), SimErr
     }
 }
 
+/// What a first launch shows, each until it is dismissed.
+#[derive(Clone, Copy, Debug, Default)]
+struct FirstLaunch {
+    /// The one-line hint in the status line, until the first kick.
+    hint: bool,
+    /// The welcome, until it is closed or its lesson started.
+    welcome: bool,
+}
+
 /// Everything the window shows, and the only ways to change it.
 pub struct AppState {
     settings: Settings,
@@ -99,8 +108,8 @@ pub struct AppState {
     overlay_jobs: Option<overlay::OverlayJobs>,
     /// The quasi-static load ramp, under way or finished.
     ramp: Option<RampRun>,
-    /// The one-line hint of a first launch, until the first kick.
-    hint: bool,
+    /// What a first launch shows until it is dismissed.
+    first_launch: FirstLaunch,
     /// Whom the frames are drawn for: a picture (the command line's, the
     /// frames of a recording) has no hints for the hand.
     drawn_for: DrawnFor,
@@ -167,7 +176,7 @@ impl AppState {
             overlay_wanted: None,
             overlay_jobs: None,
             ramp: None,
-            hint: false,
+            first_launch: FirstLaunch::default(),
             drawn_for: DrawnFor::Window,
             view_generation: 0,
             held: false,

@@ -144,3 +144,52 @@ fn every_lesson_step_keeps_the_projector_layout() {
         }
     }
 }
+
+/// A first launch greets a student in plain words and offers the first
+/// lesson: one click starts it, or closes the welcome for good; a launch
+/// with stored settings and a picture show no welcome.
+#[test]
+fn a_first_launch_welcomes_and_offers_the_first_lesson() {
+    use egui_kittest::kittest::Queryable as _;
+    let shown = |app: ZieglerApp| {
+        let mut harness = Harness::builder()
+            .with_size([1024.0, 768.0])
+            .build_ui_state(|ui, app: &mut ZieglerApp| app.contents_ui(ui), app);
+        harness.run_steps(2);
+        harness
+            .query_by_label_contains("Welcome to zieglerlab")
+            .is_some()
+    };
+    assert!(shown(ZieglerApp::from_stored_text(None)));
+    let stored = Settings::default().to_text();
+    assert!(!shown(ZieglerApp::from_stored_text(Some(&stored))));
+    let mut picture = ZieglerApp::from_stored_text(None);
+    picture.draw_for_pictures();
+    assert!(!shown(picture));
+
+    for (button, lesson_open) in [
+        ("start the first lesson", true),
+        ("explore on my own", false),
+    ] {
+        let mut harness = Harness::builder()
+            .with_size([1024.0, 768.0])
+            .build_ui_state(
+                |ui, app: &mut ZieglerApp| app.contents_ui(ui),
+                ZieglerApp::from_stored_text(None),
+            );
+        harness.run_steps(2);
+        harness.get_by_label(button).click();
+        harness.run_steps(3);
+        assert!(
+            harness
+                .query_by_label_contains("Welcome to zieglerlab")
+                .is_none(),
+            "{button}"
+        );
+        assert_eq!(
+            harness.state().state().lesson().is_some(),
+            lesson_open,
+            "{button}"
+        );
+    }
+}

@@ -14,6 +14,30 @@ use crate::format::{duration_text, percent_text, rate_text, secs_text};
 /// at the fastest speed (10x) it takes over five minutes to grow by e.
 const TOO_SLOW_TO_SEE_SECS: f64 = 3000.0;
 
+/// What each word of the card means, in plain words (its tooltip).
+fn meaning(state: State, weak: bool) -> &'static str {
+    match (state, weak) {
+        (State::Stable, _) => {
+            "stable: a small nudge stays small (it dies away, or with no damping at all keeps its size)"
+        }
+        (State::Flutter, true) => {
+            "weak flutter: the swing grows, but by less than 1% of its frequency: slowly, over many swings"
+        }
+        (State::Flutter, false) => {
+            "flutter: the column swings back and forth, wider and wider (a pair of eigenvalues right of the axis)"
+        }
+        (State::Divergence, _) => {
+            "divergence: the column bends away to one side without swinging (a real eigenvalue right of the axis)"
+        }
+    }
+}
+
+const GROWTH_RATE: &str = "growth rate: how fast the motion grows (positive) or dies away (negative), per second: the real part of the eigenvalue furthest right";
+const E_FOLDING: &str =
+    "e-folding time: the time in which the swing grows by a factor e = 2.72 (1 / growth rate)";
+const DECAY: &str = "decay time: the time in which the swing shrinks by a factor e = 2.72";
+const FREQUENCY: &str = "frequency: how fast the column swings, in radians per second (the eigenvalue's height); the period is one full swing";
+
 pub struct StatusSection;
 
 impl View for StatusSection {
@@ -41,15 +65,18 @@ impl View for StatusSection {
             RichText::new(title)
                 .heading()
                 .color(theme.state_color(s.state)),
-        );
+        )
+        .on_hover_text(meaning(s.state, weak));
         if growth.abs() <= s.tolerance_per_s {
             // Rounding's share of the real part: say zero, and to what accuracy.
             ui.label(format!(
                 "growth rate  0 (to within {:.0e} 1/s)",
                 s.tolerance_per_s
-            ));
+            ))
+            .on_hover_text(GROWTH_RATE);
         } else {
-            ui.label(format!("growth rate  {} 1/s", rate_text(growth)));
+            ui.label(format!("growth rate  {} 1/s", rate_text(growth)))
+                .on_hover_text(GROWTH_RATE);
         }
         if analysis.warning.is_some() {
             ui.colored_label(
@@ -58,12 +85,14 @@ impl View for StatusSection {
             );
         }
         match s.e_folding_secs() {
-            Some(secs) => ui.label(format!("e-folding time  {}", duration_text(secs))),
+            Some(secs) => ui
+                .label(format!("e-folding time  {}", duration_text(secs)))
+                .on_hover_text(E_FOLDING),
             // Within the resolution the rate is zero: no decay time of
             // millions of years beside "growth rate 0".
-            None if growth < -s.tolerance_per_s => {
-                ui.label(format!("decay time  {}", duration_text(-1.0 / growth)))
-            }
+            None if growth < -s.tolerance_per_s => ui
+                .label(format!("decay time  {}", duration_text(-1.0 / growth)))
+                .on_hover_text(DECAY),
             None => ui.label("neutral: no growth, no decay"),
         };
         if frequency > s.tolerance_per_s {
@@ -71,7 +100,8 @@ impl View for StatusSection {
             ui.label(format!(
                 "frequency  {frequency:.4} rad/s  (period {} s)",
                 secs_text(period)
-            ));
+            ))
+            .on_hover_text(FREQUENCY);
         } else {
             ui.label("non-oscillatory: the dominant eigenvalue is real");
         }

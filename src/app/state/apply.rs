@@ -38,7 +38,8 @@ impl AppState {
             Action::LessonClose => self.lesson = None,
             Action::Say(notice) => self.say(notice),
             Action::DismissNotice => self.notice = None,
-            Action::DismissHint => self.hint = false,
+            Action::DismissHint => self.first_launch.hint = false,
+            Action::CloseWelcome => self.first_launch.welcome = false,
             window @ (Action::Tab(_) | Action::Record { .. }) => return vec![window],
         }
         Vec::new()

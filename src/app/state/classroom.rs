@@ -11,18 +11,25 @@ pub const FIRST_LAUNCH_HINT: &str =
     "Drag the load bar to about 3 and press K to kick the column (space pauses).";
 
 impl AppState {
-    /// The default state with the first launch's hint.
+    /// The default state with the first launch's hint and welcome.
     #[must_use]
     pub fn first_launch() -> Self {
         let mut state = Self::defaults();
-        state.hint = true;
+        state.first_launch.hint = true;
+        state.first_launch.welcome = true;
         state
+    }
+
+    /// Whether the first launch's welcome is shown (never in a picture).
+    #[must_use]
+    pub fn welcome(&self) -> bool {
+        self.first_launch.welcome && !self.for_picture()
     }
 
     /// The hint to show, if any (none in a picture).
     #[must_use]
     pub fn hint(&self) -> Option<&'static str> {
-        (self.hint && !self.for_picture()).then_some(FIRST_LAUNCH_HINT)
+        (self.first_launch.hint && !self.for_picture()).then_some(FIRST_LAUNCH_HINT)
     }
 
     /// Whether the window is drawn for a picture: the command line's
@@ -73,7 +80,7 @@ impl AppState {
         match self.sim.restart_from(self.sim.engine(), x) {
             Ok(()) => {
                 self.held = true;
-                self.hint = false;
+                self.first_launch.hint = false;
                 // The tip was moved by hand: its path before is not motion.
                 self.trail.clear();
             }

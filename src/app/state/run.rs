@@ -75,7 +75,7 @@ impl AppState {
     /// Turns every rod by [`KICK_RAD`] (both of two, all of a chain: the
     /// column turns as a whole, with no kink at a joint) and runs on.
     pub(super) fn kick(&mut self) {
-        self.hint = false;
+        self.first_launch.hint = false;
         let mut x = self.sim.state();
         for angle in x.rows_mut(0, self.sim.model().column.rods).iter_mut() {
             *angle += KICK_RAD;

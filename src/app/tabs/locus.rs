@@ -19,7 +19,7 @@ use crate::model::{Model, PresetId};
 pub const TAB: TabSpec = TabSpec {
     id: "locus",
     title: "root locus",
-    tooltip: "the eigenvalues in the complex plane and against the load",
+    tooltip: "the root locus: the column's eigenvalues in the complex plane and against the load. Left of the vertical axis a motion dies away, right of it it grows; the height is the frequency. Flutter starts where a pair crosses the axis",
     make: || Box::new(LocusTab::default()),
 };
 

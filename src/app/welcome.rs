@@ -1,0 +1,61 @@
+//! The first launch's welcome: what the column, the follower force, flutter,
+//! divergence and the root locus are, in plain words, and an offer to start
+//! the first lesson. Closed for good with one click.
+
+use eframe::egui;
+
+use super::action::{Action, Actions};
+use super::state::AppState;
+use super::tabs::Tab;
+use super::theme::Theme;
+use crate::lesson::{BUILT_IN, Lesson};
+
+/// What a student reads first, paragraph by paragraph.
+const WELCOME: [&str; 4] = [
+    "Two rods on springs stand clamped at one end. At the other end a force pushes along the last rod and turns with it: a follower force. Here it is made as in the laboratory, by a roller that a moving band drags along.",
+    "At small loads a nudge swings and stays small: the column is stable. Past a critical load it flutters: it swings back and forth, wider and wider. At larger loads still it can diverge: it bends away to one side without swinging.",
+    "The root locus draws how the column moves as numbers (its eigenvalues) while the load grows. Left of the vertical axis a swing dies away; right of it, it grows. How far right is the growth rate, how high up the frequency.",
+    "Drag the load bar and watch both: the column starts to flutter at the load where the eigenvalues cross the axis.",
+];
+
+/// The welcome as a window over the app, while the state shows it.
+pub fn welcome_ui(ctx: &egui::Context, state: &AppState, actions: &mut Actions, theme: &Theme) {
+    if !state.welcome() {
+        return;
+    }
+    let modal = egui::Modal::new(egui::Id::unique("welcome")).show(ctx, |ui| {
+        ui.set_max_width(34.0 * theme.text_size);
+        ui.heading("Welcome to zieglerlab");
+        for paragraph in WELCOME {
+            ui.add_space(0.4 * theme.text_size);
+            ui.label(paragraph);
+        }
+        ui.add_space(0.8 * theme.text_size);
+        ui.horizontal(|ui| {
+            let (name, text) = BUILT_IN[0];
+            if ui
+                .button("start the first lesson")
+                .on_hover_text("a few steps: predict where flutter starts, then watch")
+                .clicked()
+            {
+                match Lesson::read(text, &Tab::ids()) {
+                    Ok(lesson) => actions.push(Action::LessonOpen(Box::new(lesson))),
+                    Err(error) => actions.push(Action::Say(super::notice::Notice::error(format!(
+                        "lesson {name}: {error}"
+                    )))),
+                }
+                actions.push(Action::CloseWelcome);
+            }
+            if ui
+                .button("explore on my own")
+                .on_hover_text("close this; the lessons stay at the top of the sidebar")
+                .clicked()
+            {
+                actions.push(Action::CloseWelcome);
+            }
+        });
+    });
+    if modal.should_close() {
+        actions.push(Action::CloseWelcome);
+    }
+}
