@@ -523,3 +523,37 @@ fn dragging_a_joint_of_a_chain_bends_the_rods_before_it() {
     harness.run();
     assert!(!harness.state().state().held(), "let go");
 }
+
+/// The fields under the load keep their place while the notes above them
+/// change (two critical loads, none when the band stops, a load beyond the
+/// bar, a finished ramp's onsets): a click aimed at a field lands on it.
+#[test]
+fn the_fields_under_the_load_stay_put_as_the_notes_change() {
+    let mut harness = Harness::builder()
+        .with_size([1280.0, 800.0])
+        .build_ui_state(
+            |ui, app: &mut ZieglerApp| app.contents_ui(ui),
+            ZieglerApp::new(Settings::default()).unwrap(),
+        );
+    harness.run_steps(2);
+    let place = |harness: &Harness<'_, ZieglerApp>| {
+        harness
+            .get_by_role_and_label(Role::TextInput, "a")
+            .rect()
+            .top()
+    };
+    let first = place(&harness);
+    let changes: [(&str, Key, f64); 4] = [
+        ("the band stopped: no critical loads", Key::V, 0.0),
+        ("the band moving again", Key::V, 0.1),
+        ("a load beyond the bar", Key::Load, 9.0),
+        ("a single divergence load", Key::Mu, 5.0),
+    ];
+    for (what, key, value) in changes {
+        harness
+            .state_mut()
+            .apply(zieglerlab::app::Action::Enter { key, value });
+        harness.run_steps(3);
+        assert_eq!(place(&harness), first, "{what}");
+    }
+}

@@ -39,78 +39,143 @@ impl View for LoadSection {
                 roller.mu
             ));
         }
-        if p > state.load_max() {
-            ui.colored_label(
-                theme.warning,
-                format!(
-                    "p = {p} is beyond the plotted range (0 to {}); the status below is at p",
-                    number_text(state.load_max())
-                ),
-            );
-        }
-        if state.answer_hidden() {
-            ui.weak("The critical loads are hidden until the lesson reveals them.");
-            if let Some(run) = state.ramp() {
-                ramp_onset_ui(ui, run.seen_at_p, None, theme);
+        // The notes below the field (the critical loads, a ramp's onsets,
+        // warnings) take a fixed number of lines whatever their count, so
+        // the fields under them stay where the hand is.
+        let notes = notes(state, p, theme, ui.visuals().weak_text_color());
+        let row_height = ui.text_style_height(&egui::TextStyle::Body);
+        let spacing = ui.spacing().item_spacing.y;
+        let shown = notes.len().min(NOTE_LINES);
+        let top = ui.cursor().top();
+        for (i, note) in notes.iter().take(shown).enumerate() {
+            let last_of_more = i + 1 == NOTE_LINES && notes.len() > NOTE_LINES;
+            if last_of_more {
+                let rest: Vec<&str> = notes[i..].iter().map(|n| n.text.as_str()).collect();
+                ui.add(egui::Label::new(format!("... and {} more (hover)", rest.len())).truncate())
+                    .on_hover_text(rest.join("\n"));
+            } else {
+                let label = ui
+                    .add(egui::Label::new(RichText::new(&note.text).color(note.color)).truncate());
+                match &note.more {
+                    Some(more) => label.on_hover_text(more),
+                    None => label.on_hover_text(&note.text),
+                };
             }
-            return;
         }
-        let Some(analysis) = state.analysis() else {
-            return;
-        };
-        let onset = analysis.first_instability();
-        let ramp = state.ramp();
-        for t in &analysis.transitions {
-            ui.label(RichText::new(t.to_string()).color(theme.state_color(t.to)));
-        }
-        if let Some(run) = ramp {
-            ramp_onset_ui(ui, run.seen_at_p, onset, theme);
-        }
-        if let Some(warning) = &analysis.warning {
-            ui.colored_label(
-                theme.warning,
-                "the stability is not resolved here (hover for why)",
-            )
-            .on_hover_text(warning);
+        // Up to the same bottom every frame, whatever was drawn above it.
+        #[expect(clippy::cast_precision_loss, reason = "a few lines")]
+        let bottom = top + NOTE_LINES as f32 * (row_height + spacing);
+        let left = bottom - ui.cursor().top();
+        if left > 0.0 {
+            ui.add_space(left);
         }
     }
 }
 
+/// Lines kept for the notes under the load field.
+const NOTE_LINES: usize = 4;
+
+/// One line under the load field: its words, colour, and what its hover
+/// adds.
+struct Note {
+    text: String,
+    color: egui::Color32,
+    more: Option<String>,
+}
+
+impl Note {
+    fn new(text: impl Into<String>, color: egui::Color32) -> Self {
+        Self {
+            text: text.into(),
+            color,
+            more: None,
+        }
+    }
+}
+
+/// The notes under the load field, in order: the load beyond the plotted
+/// range, the critical loads (or that a lesson hides them), a ramp's
+/// onsets, the resolution warning.
+fn notes(state: &AppState, p: f64, theme: &Theme, weak: egui::Color32) -> Vec<Note> {
+    let mut notes = Vec::new();
+    if p > state.load_max() {
+        notes.push(Note::new(
+            format!(
+                "p = {p} is beyond the plotted range (0 to {}); the status below is at p",
+                number_text(state.load_max())
+            ),
+            theme.warning,
+        ));
+    }
+    if state.answer_hidden() {
+        notes.push(Note::new(
+            "The critical loads are hidden until the lesson reveals them.",
+            weak,
+        ));
+        if let Some(run) = state.ramp() {
+            ramp_onset_notes(&mut notes, run.seen_at_p, None, theme);
+        }
+        return notes;
+    }
+    let Some(analysis) = state.analysis() else {
+        return notes;
+    };
+    for t in &analysis.transitions {
+        notes.push(Note::new(t.to_string(), theme.state_color(t.to)));
+    }
+    if let Some(run) = state.ramp() {
+        ramp_onset_notes(
+            &mut notes,
+            run.seen_at_p,
+            analysis.first_instability(),
+            theme,
+        );
+    }
+    if let Some(warning) = &analysis.warning {
+        notes.push(Note {
+            text: "the stability is not resolved here (hover for why)".to_owned(),
+            color: theme.warning,
+            more: Some(warning.clone()),
+        });
+    }
+    notes
+}
+
 /// The ramp's onsets in words: where the motion was seen against where the
-/// theory puts it, and why the first lags.
-fn ramp_onset_ui(ui: &mut egui::Ui, seen: Option<f64>, theory: Option<f64>, theme: &Theme) {
+/// theory puts it, and why the first lags (on hover).
+fn ramp_onset_notes(notes: &mut Vec<Note>, seen: Option<f64>, theory: Option<f64>, theme: &Theme) {
     let visible = format!(
         "the tip off by {:.0}% of the length",
         100.0 * VISIBLE_FRACTION
     );
     if let Some(theory) = theory {
-        ui.label(
-            RichText::new(format!(
+        notes.push(Note::new(
+            format!(
                 "theory (white mark): unstable from p = {}",
                 load_text(theory)
-            ))
-            .color(theme.text),
-        );
+            ),
+            theme.text,
+        ));
     }
     match seen {
-        Some(seen) => {
-            ui.label(
-                RichText::new(format!(
-                    "seen (mark): motion visible at p = {} ({visible})",
-                    load_text(seen)
-                ))
-                .color(theme.measured),
-            );
-            if theory.is_some_and(|theory| seen > theory) {
-                ui.label(
-                    "It shows late: past the onset the motion needs time to grow to a visible size, and the ramp moves on meanwhile. A slower ramp shows it closer to the theory.",
-                );
-            }
-        }
-        None => {
-            ui.label(format!(
-                "watching for the motion to become visible ({visible})"
-            ));
-        }
+        Some(seen) => notes.push(Note {
+            text: format!(
+                "seen (mark): motion visible at p = {}{} ({visible})",
+                load_text(seen),
+                if theory.is_some_and(|theory| seen > theory) {
+                    ", late: hover for why"
+                } else {
+                    ""
+                }
+            ),
+            color: theme.measured,
+            more: theory.filter(|&theory| seen > theory).map(|_| {
+                "It shows late: past the onset the motion needs time to grow to a visible size, and the ramp moves on meanwhile. A slower ramp shows it closer to the theory.".to_owned()
+            }),
+        }),
+        None => notes.push(Note::new(
+            format!("watching for the motion to become visible ({visible})"),
+            theme.text,
+        )),
     }
 }
