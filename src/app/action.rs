@@ -128,11 +128,12 @@ pub enum Command {
     Projector,
     LessonNext,
     LessonBack,
+    FullScreen,
 }
 
 impl Command {
     /// Every command, in the order the keys help lists them.
-    pub const ALL: [Self; 10] = [
+    pub const ALL: [Self; 11] = [
         Self::PlayPause,
         Self::LoadUp,
         Self::LoadDown,
@@ -142,6 +143,7 @@ impl Command {
         Self::Projector,
         Self::LessonNext,
         Self::LessonBack,
+        Self::FullScreen,
         Self::Step,
     ];
 
@@ -160,6 +162,7 @@ impl Command {
             Self::Projector => "projector mode",
             Self::LessonNext => "next",
             Self::LessonBack => "back",
+            Self::FullScreen => "full screen",
         }
     }
 
@@ -179,6 +182,7 @@ impl Command {
             Self::Projector => "projector mode: high contrast, large text",
             Self::LessonNext => "the lesson's next step (a presenter's remote sends Page Down)",
             Self::LessonBack => "the lesson's previous step (Page Up)",
+            Self::FullScreen => "full screen: the window fills the screen (again to leave)",
         }
     }
 
@@ -196,6 +200,7 @@ impl Command {
             Self::Projector => &[Key::P],
             Self::LessonNext => &[Key::PageDown],
             Self::LessonBack => &[Key::PageUp],
+            Self::FullScreen => &[Key::F11],
         }
     }
 

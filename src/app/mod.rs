@@ -138,6 +138,9 @@ pub struct ZieglerApp {
     actions: Actions,
     /// The input's clock at the last frame (a recording starts by it).
     input_secs: f64,
+    /// Full screen was asked for (F11): the window is told at the next
+    /// `apply_pending`, which has its context.
+    full_screen_asked: bool,
     /// Whether what draws the frames clears them to the panels' colour
     /// first (the window; a headless picture starts transparent).
     cleared_to_panel_fill: bool,
@@ -168,6 +171,7 @@ impl ZieglerApp {
             last_frame: None,
             actions: Actions::default(),
             input_secs: 0.0,
+            full_screen_asked: false,
             cleared_to_panel_fill: false,
             for_pictures: false,
         }
@@ -262,6 +266,7 @@ impl ZieglerApp {
         while let Some(action) = queue.pop_front() {
             match action {
                 Action::Tab(tab) => self.tab = tab,
+                Action::Command(Command::FullScreen) => self.full_screen_asked = true,
                 Action::Record { folder, secs } => {
                     self.recorder.start(folder, secs, self.input_secs);
                 }
@@ -281,6 +286,10 @@ impl ZieglerApp {
         self.input_secs = ctx.input(|i| i.time);
         for action in self.actions.take() {
             self.apply(action);
+        }
+        if std::mem::take(&mut self.full_screen_asked) {
+            let now = ctx.input(|i| i.viewport().fullscreen.unwrap_or(false));
+            ctx.send_viewport_cmd(egui::ViewportCommand::Fullscreen(!now));
         }
     }
 

@@ -193,3 +193,49 @@ fn a_first_launch_welcomes_and_offers_the_first_lesson() {
         );
     }
 }
+
+/// F11 (the full-screen key a presenter reaches for) asks the window to
+/// fill the screen, once per press; the keys help lists it. (Leaving reads
+/// the window's own report of full screen, which a headless harness does
+/// not give. The harness runs a frame per key event, so the command is
+/// applied as the key's action and its frame's output read.)
+#[test]
+fn f11_asks_for_full_screen() {
+    use zieglerlab::app::{Action, Command};
+    let full_screen = Command::ALL
+        .into_iter()
+        .find(|c| c.keys() == [egui::Key::F11])
+        .expect("a command on F11");
+    assert_eq!(full_screen, Command::FullScreen);
+    let mut harness = Harness::builder()
+        .with_size([1024.0, 768.0])
+        .build_ui_state(
+            |ui, app: &mut ZieglerApp| app.contents_ui(ui),
+            ZieglerApp::new(Settings::default()).unwrap(),
+        );
+    harness.run();
+    harness
+        .state_mut()
+        .apply(Action::Command(Command::FullScreen));
+    harness.step();
+    let asked: Vec<bool> = harness
+        .output()
+        .viewport_output
+        .values()
+        .flat_map(|output| &output.commands)
+        .filter_map(|command| match command {
+            egui::ViewportCommand::Fullscreen(on) => Some(*on),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(asked, vec![true]);
+    harness.step();
+    assert!(
+        harness
+            .output()
+            .viewport_output
+            .values()
+            .all(|output| output.commands.is_empty()),
+        "asked once per press"
+    );
+}

@@ -58,6 +58,8 @@ impl AppState {
             Command::Projector => self.settings.projector = !self.settings.projector,
             Command::LessonNext => return self.lesson_step(true),
             Command::LessonBack => return self.lesson_step(false),
+            // The window's, not the state's: `ZieglerApp::apply` takes it.
+            Command::FullScreen => {}
         }
         Vec::new()
     }
