@@ -74,24 +74,8 @@ pub fn read(text: &str) -> Result<Read, SettingsError> {
     if text.trim_start().starts_with('(') {
         return read_ron(text);
     }
-    let mut lines = Vec::new();
     let mut ignored = Vec::new();
-    for (number, line) in text.lines().enumerate() {
-        let line = line.trim();
-        if line.is_empty() || line.starts_with('#') {
-            continue;
-        }
-        match line.split_once('=') {
-            Some((name, value)) if !name.trim().is_empty() => {
-                lines.push((name.trim(), value.trim()));
-            }
-            _ => ignored.push(format!(
-                "line {} '{}' (not name = value)",
-                number + 1,
-                clipped(line, MOST_LINE_CHARS)
-            )),
-        }
-    }
+    let lines = name_value_lines(text, &mut ignored);
     if lines.is_empty() {
         return Err(SettingsError::NotSettings(
             "no line of name = value (e.g. preset = roller)".to_owned(),
@@ -102,6 +86,8 @@ pub fn read(text: &str) -> Result<Read, SettingsError> {
     let mut entries = Vec::new();
     let mut preset = None;
     for (name, value) in lines {
+        let value = clipped(value, MOST_LINE_CHARS);
+        let value = value.as_str();
         if seen.contains(&name) {
             ignored.push(format!("{name} (given twice; the first is kept)"));
             continue;
@@ -115,8 +101,7 @@ pub fn read(text: &str) -> Result<Read, SettingsError> {
             "engine" => match EngineKind::named(value) {
                 Some(engine) => settings.engine = engine,
                 None => ignored.push(format!(
-                    "engine ('{}' is none of {})",
-                    clipped(value, MOST_LINE_CHARS),
+                    "engine ('{value}' is none of {})",
                     EngineKind::VARIANTS
                         .iter()
                         .map(|engine| engine.name())
@@ -163,6 +148,29 @@ pub fn read(text: &str) -> Result<Read, SettingsError> {
     settings.preset = preset;
     settings.model = read_parameters(preset.model(), entries, &mut ignored);
     Ok(Read { settings, ignored })
+}
+
+/// The `name = value` lines of `text` (blank lines and `#` comments
+/// skipped), naming in `ignored` each other line by its number.
+fn name_value_lines<'a>(text: &'a str, ignored: &mut Vec<String>) -> Vec<(&'a str, &'a str)> {
+    let mut lines = Vec::new();
+    for (number, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        match line.split_once('=') {
+            Some((name, value)) if !name.trim().is_empty() => {
+                lines.push((name.trim(), value.trim()));
+            }
+            _ => ignored.push(format!(
+                "line {} '{}' (not name = value)",
+                number + 1,
+                clipped(line, MOST_LINE_CHARS)
+            )),
+        }
+    }
+    lines
 }
 
 /// The parameters onto `base` (the preset's model) in the order that sets
