@@ -469,7 +469,9 @@ impl ZieglerApp {
         load_bar::load_bar_ui(ui, &self.state, &mut self.actions, theme);
         tab_bar_ui(ui, self.tab, &mut self.actions);
         if ui.available_height() < min_plot_height {
-            ui.weak(if locus_beside {
+            ui.weak(if locus_beside && self.state.answer_hidden() {
+                "The plots are hidden until the lesson reveals the answer; they need a taller window, or projector mode off (P)."
+            } else if locus_beside {
                 "The root locus is beside the column; the other plots need a taller window, or projector mode off (P)."
             } else {
                 "The plots need more room here: a taller window, or projector mode off (P)."
