@@ -135,11 +135,8 @@ fn step_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &T
         Some(Predict::Load(prompt)) => {
             ui.label(RichText::new(prompt).color(theme.info));
             let mut load = run.predicted_load.unwrap_or(0.0);
-            // The words above the slider: beside it they ran past the
-            // sidebar's edge in projector mode.
-            ui.label("your prediction p:");
             let response = ui
-                .add(egui::Slider::new(&mut load, 0.0..=state.load_max()))
+                .add(egui::Slider::new(&mut load, 0.0..=state.load_max()).text("your prediction p"))
                 .accessible_name("predicted load")
                 .on_hover_text("where you expect it; the load bar marks it");
             if response.changed() {
