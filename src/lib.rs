@@ -15,5 +15,6 @@ pub mod files;
 pub mod format;
 pub mod lesson;
 pub mod model;
+pub mod names;
 pub mod recording;
 pub mod sim;

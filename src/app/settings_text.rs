@@ -5,8 +5,6 @@
 
 use std::fmt::Write as _;
 
-use strum::VariantArray;
-
 use super::settings::Settings;
 use super::stored::read_ron;
 use super::stored_model::{Entry, Write, apply};
@@ -102,11 +100,7 @@ pub fn read(text: &str) -> Result<Read, SettingsError> {
                 Some(engine) => settings.engine = engine,
                 None => ignored.push(format!(
                     "engine ('{value}' is none of {})",
-                    EngineKind::VARIANTS
-                        .iter()
-                        .map(|engine| engine.name())
-                        .collect::<Vec<_>>()
-                        .join(", ")
+                    crate::names::variant_names::<EngineKind>()
                 )),
             },
             "speed" => match value.parse::<f64>() {

@@ -110,18 +110,10 @@ impl std::str::FromStr for Key {
     /// The key named `name` (case-sensitive: `r` is the roller's radius, `R`
     /// the band's normal force).
     fn from_str(name: &str) -> Result<Self, ModelError> {
-        Self::VARIANTS
-            .iter()
-            .copied()
-            .find(|key| key.name() == name)
-            .ok_or_else(|| ModelError::UnknownKey {
-                key: crate::format::clipped(name, MOST_KEY_CHARS),
-                known: Self::VARIANTS
-                    .iter()
-                    .map(|key| key.name())
-                    .collect::<Vec<_>>()
-                    .join(", "),
-            })
+        crate::names::variant_named(name).ok_or_else(|| ModelError::UnknownKey {
+            key: crate::format::clipped(name, MOST_KEY_CHARS),
+            known: crate::names::variant_names::<Self>(),
+        })
     }
 }
 

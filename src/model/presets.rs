@@ -80,18 +80,10 @@ impl std::str::FromStr for PresetId {
     type Err = ModelError;
 
     fn from_str(name: &str) -> Result<Self, ModelError> {
-        Self::VARIANTS
-            .iter()
-            .copied()
-            .find(|id| id.name() == name)
-            .ok_or_else(|| ModelError::UnknownPreset {
-                name: name.to_owned(),
-                known: Self::VARIANTS
-                    .iter()
-                    .map(|id| id.name())
-                    .collect::<Vec<_>>()
-                    .join(", "),
-            })
+        crate::names::variant_named(name).ok_or_else(|| ModelError::UnknownPreset {
+            name: name.to_owned(),
+            known: crate::names::variant_names::<Self>(),
+        })
     }
 }
 

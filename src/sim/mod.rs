@@ -64,10 +64,7 @@ impl EngineKind {
     /// The engine named `name`, if one is.
     #[must_use]
     pub fn named(name: &str) -> Option<Self> {
-        <Self as strum::VariantArray>::VARIANTS
-            .iter()
-            .copied()
-            .find(|engine| engine.name() == name)
+        crate::names::variant_named(name)
     }
 }
 
