@@ -50,6 +50,10 @@ pub enum Action {
         angles_rad: Vec<f64>,
     },
     Release,
+    /// Every rod turned by `angle_rad` (a lesson's kick of its own size).
+    KickBy {
+        angle_rad: f64,
+    },
     RampStart(Ramp),
     RampPauseResume,
     RampStop,

@@ -3,9 +3,10 @@
 //! ranges marked (the paper's Figs 3 and 8).
 
 use eframe::egui::{self, vec2};
-use egui_plot::{Line, Plot, PlotPoints, Points, Span, VLine};
+use egui_plot::{Line, MarkerShape, Plot, PlotPoint, PlotPoints, Points, Span, Text, VLine};
 
 use super::history::History;
+use super::locus_view::{EdgeMark, Side, ViewRect, deciding_extent, default_view, edge_marks};
 use super::plot_frame::{Swatch, axes, legend_row, refit_if, thinned};
 use super::state::Overlay;
 use super::theme::{Theme, load_color};
@@ -52,26 +53,19 @@ pub fn root_locus_ui(
         locus.loads.first().copied().unwrap_or(0.0),
         locus.loads.last().copied().unwrap_or(1.0),
     );
-    // Frame the column's modes: the roller's spin relaxation runs far out on
-    // the negative real axis and would squeeze everything else to a point.
-    let extent = locus
-        .branches
-        .iter()
-        .flatten()
-        .map(|z| z.im.abs())
-        .fold(0.0, f64::max)
-        .max(1e-3);
-    // Equal scales on both axes: egui_plot keeps the x range and fits the y
-    // range to the plot's shape, so on a wide plot the x range is widened
-    // until the branches' whole imaginary extent (the pairs the status card
-    // is about) fits; the axes and their labels take about 60 x 40 points.
+    // The eigenvalues that decide stability, the overlay's too, in equal
+    // scales: egui_plot keeps the x range and sets the y range from the
+    // plot's shape, so the shape is estimated here (the axes and their
+    // labels take about 60 x 40 points).
     let size = ui.available_size();
     let shape = (f64::from(size.x) - 60.0).max(1.0) / (f64::from(size.y) - 40.0).max(1.0);
-    let half_width = (1.3 * extent).max(1.2 * extent * shape);
+    let mut extents = vec![deciding_extent(locus)];
+    extents.extend(overlay.map(|other| deciding_extent(&other.locus)));
+    let (half_width, half_height) = default_view(&extents, shape);
     let plot = Plot::new("root locus")
         .data_aspect(1.0)
         .default_x_bounds(-half_width, half_width)
-        .default_y_bounds(-1.2 * extent, 1.2 * extent);
+        .default_y_bounds(-half_height, half_height);
     refit_if(axes(plot, "Re λ (1/s)", "Im λ (rad/s)"), refit).show(ui, |plot_ui| {
         plot_ui.vline(
             VLine::new("", 0.0)
@@ -128,7 +122,60 @@ pub fn root_locus_ui(
                     .filled(false),
             );
         }
+        let bounds = plot_ui.plot_bounds();
+        let view = ViewRect {
+            re: (bounds.min()[0], bounds.max()[0]),
+            im: (bounds.min()[1], bounds.max()[1]),
+        };
+        let marks = edge_marks(current, view, EDGE_INSET);
+        edge_marks_ui(plot_ui, &marks, theme);
+        plot_ui.ctx().data_mut(|data| {
+            data.insert_temp(egui::Id::unique(LOCUS_SHOWN_ID), LocusShown { view, marks })
+        });
     });
+}
+
+/// How far inside the view an edge mark is drawn, as a fraction of its size.
+const EDGE_INSET: f64 = 0.03;
+
+/// The egui memory key of what the root locus showed last ([`LocusShown`]).
+pub const LOCUS_SHOWN_ID: &str = "root locus shown";
+
+/// What the root locus drew in its last frame: the view and the marks of the
+/// eigenvalues outside it (kept in egui's memory for tests to read).
+#[derive(Clone, Debug, PartialEq)]
+pub struct LocusShown {
+    pub view: ViewRect,
+    pub marks: Vec<EdgeMark>,
+}
+
+/// Each eigenvalue outside the view as an arrow on the edge towards it,
+/// with its value beside it.
+fn edge_marks_ui(plot_ui: &mut egui_plot::PlotUi<'_>, marks: &[EdgeMark], theme: &Theme) {
+    for mark in marks {
+        let (shape, anchor) = match mark.side {
+            Side::Left => (MarkerShape::Left, egui::Align2::LEFT_BOTTOM),
+            Side::Right => (MarkerShape::Right, egui::Align2::RIGHT_BOTTOM),
+            Side::Up => (MarkerShape::Up, egui::Align2::LEFT_TOP),
+            Side::Down => (MarkerShape::Down, egui::Align2::LEFT_BOTTOM),
+        };
+        plot_ui.points(
+            Points::new("", vec![[mark.at.re, mark.at.im]])
+                .shape(shape)
+                .radius(7.0 * theme.stroke_scale)
+                .color(theme.now)
+                .filled(true),
+        );
+        plot_ui.text(
+            Text::new(
+                "",
+                PlotPoint::new(mark.at.re, mark.at.im),
+                egui::RichText::new(format!("    {}    ", mark.label)).strong(),
+            )
+            .color(theme.now)
+            .anchor(anchor),
+        );
+    }
 }
 
 /// Re(lambda) or Im(lambda) of every branch against the load, with the

@@ -153,11 +153,18 @@ pub fn scene_ui(
     camera_corner_ui(ui, &mut scene.camera, rect, theme);
 }
 
+/// The size of the camera's switch, in units of the text size.
+const CAMERA_SWITCH_WIDTH_EM: f32 = 7.5;
+const CAMERA_SWITCH_HEIGHT_EM: f32 = 1.6;
+
 /// The camera's "whole reach" switch in the scene's corner.
 fn camera_corner_ui(ui: &mut egui::Ui, camera: &mut Camera, rect: Rect, theme: &Theme) {
     let corner = Rect::from_min_size(
         rect.left_top() + vec2(8.0, 8.0),
-        vec2(7.5 * theme.text_size, 1.6 * theme.text_size),
+        vec2(
+            CAMERA_SWITCH_WIDTH_EM * theme.text_size,
+            CAMERA_SWITCH_HEIGHT_EM * theme.text_size,
+        ),
     );
     if ui
         .put(
@@ -486,16 +493,33 @@ fn band(
         x += spacing;
     }
     // Where the band goes, in the scene's top right corner (the band's
-    // own corner may be far out of the camera's frame).
+    // own corner may be far out of the camera's frame), or under the
+    // camera's switch when the two do not fit side by side (a projector's
+    // narrow scene).
+    let text = format!(
+        "band moving left at V = {} m/s",
+        crate::format::number_text(speed_m_per_s)
+    );
+    let width = painter
+        .layout_no_wrap(
+            text.clone(),
+            FontId::proportional(theme.text_size),
+            theme.text,
+        )
+        .size()
+        .x;
+    let beside = rect.width() >= width + CAMERA_SWITCH_WIDTH_EM * theme.text_size + 40.0;
+    let top = if beside {
+        10.0
+    } else {
+        12.0 + CAMERA_SWITCH_HEIGHT_EM * theme.text_size
+    };
     plate(
         painter,
         theme,
-        rect.right_top() + vec2(-10.0, 10.0),
+        rect.right_top() + vec2(-10.0, top),
         Align2::RIGHT_TOP,
-        format!(
-            "band moving left at V = {} m/s",
-            crate::format::number_text(speed_m_per_s)
-        ),
+        text,
         theme.text,
     );
 }

@@ -29,9 +29,6 @@ use super::notice::Notice;
 use super::pace::Pace;
 pub use super::settings::Settings;
 
-/// The size of a kick, in rad on every rod's angle.
-const KICK_RAD: f64 = 0.01;
-
 /// How long the tip's trail lasts, in simulated seconds.
 pub const TRAIL_SECS: f64 = 6.0;
 

@@ -143,13 +143,47 @@ fn keys_once<'de, D: serde::Deserializer<'de>>(
     deserializer.deserialize_map(Once)
 }
 
+/// The standard kick, in rad on every rod's angle: what the K key gives.
+pub const KICK_RAD: f64 = 0.01;
+
+/// The largest kick a lesson may give, in rad on every rod: beyond it the
+/// column is thrown, not nudged, and nothing linear describes its motion.
+pub const KICK_MOST_RAD: f64 = 0.2;
+
 /// What a step starts.
 #[derive(Clone, Copy, Debug, PartialEq, Deserialize)]
 pub enum Run {
-    /// Both angles disturbed by a small kick.
+    /// Every rod turned by the standard kick, [`KICK_RAD`].
     Kick,
+    /// Every rod turned by this angle in rad (up to [`KICK_MOST_RAD`]): a
+    /// swing a projector shows, e.g. `KickBy(0.05)`.
+    KickBy(f64),
     /// The load moving from `from` to `to` at `rate` per simulated second.
     Ramp { from: f64, to: f64, rate: f64 },
+}
+
+impl Run {
+    /// Whether `model` can take this run: a ramp's loads, a kick's size.
+    ///
+    /// # Errors
+    /// What is wrong, in words.
+    pub fn check_for(self, model: &Model) -> Result<(), String> {
+        match self {
+            Self::Kick => Ok(()),
+            Self::KickBy(angle_rad) => {
+                if angle_rad.is_finite() && angle_rad != 0.0 && angle_rad.abs() <= KICK_MOST_RAD {
+                    Ok(())
+                } else {
+                    Err(format!(
+                        "kick of {angle_rad} rad: expected a turn of each rod other than 0, at most {KICK_MOST_RAD} rad either way"
+                    ))
+                }
+            }
+            Self::Ramp { from, to, rate } => Ramp::new(from, to, rate)
+                .and_then(|ramp| ramp.check_for(model))
+                .map_err(|e| e.to_string()),
+        }
+    }
 }
 
 /// A prediction the student makes.
@@ -280,10 +314,9 @@ impl Lesson {
                 column = step
                     .column_after(column)
                     .map_err(|e| at_step(index, opened_on(e.to_string())))?;
-                if let Some(Run::Ramp { from, to, rate }) = step.run {
-                    Ramp::new(from, to, rate)
-                        .and_then(|ramp| ramp.check_for(&column.model))
-                        .map_err(|e| at_step(index, opened_on(e.to_string())))?;
+                if let Some(run) = step.run {
+                    run.check_for(&column.model)
+                        .map_err(|message| at_step(index, opened_on(message)))?;
                 }
             }
         }

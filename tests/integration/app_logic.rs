@@ -244,6 +244,53 @@ fn a_finished_ramp_leaves_the_next_lesson_its_load() {
     assert!(state.ramp().is_none(), "the tabletop's ramp marks are gone");
 }
 
+/// A lesson's own kick: the first lesson's first step turns each rod of
+/// the tabletop by 0.05 rad (five times the K key's 0.01 rad, a swing a
+/// class sees), and the column, neutral there, keeps that swing: after
+/// several periods the largest angle of rod 1 is still about the kick.
+#[test]
+fn a_lesson_kicks_by_its_own_size() {
+    use zieglerlab::lesson::{BUILT_IN, Lesson, Run};
+    let (_, text) = BUILT_IN[0];
+    let lesson = Lesson::read(text, &zieglerlab::app::Tab::ids()).unwrap();
+    let Some(Run::KickBy(kick_rad)) = lesson.steps[0].run else {
+        panic!("the first step kicks by a size of its own");
+    };
+    assert_eq!(kick_rad, 0.05);
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    let before: Vec<f64> = app
+        .state()
+        .simulation()
+        .state()
+        .iter()
+        .take(2)
+        .copied()
+        .collect();
+    app.apply(Action::LessonOpen(Box::new(lesson)));
+    let after = app.state().simulation().state();
+    assert_eq!(app.state().settings().preset, PresetId::Tabletop);
+    // A new preset starts a fresh run from the standard small disturbance
+    // (1e-3 rad at most), then the kick turns each rod by 0.05 rad.
+    for i in 0..2 {
+        assert!(
+            (after[i] - kick_rad).abs() < 2e-3,
+            "rod {}: {} (was {})",
+            i + 1,
+            after[i],
+            before[i]
+        );
+    }
+    let mut largest_rad: f64 = 0.0;
+    for _ in 0..600 {
+        app.advance(1.0 / 60.0);
+        largest_rad = largest_rad.max(app.state().simulation().state()[0].abs());
+    }
+    assert!(
+        (0.8 * kick_rad..1.5 * kick_rad).contains(&largest_rad),
+        "rod 1 swings up to {largest_rad} rad after 10 s"
+    );
+}
+
 /// The answer is hidden from the step that asks for a prediction up to the
 /// step that reveals it, in each built-in lesson that asks for one.
 #[test]

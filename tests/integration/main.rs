@@ -19,6 +19,7 @@ mod external_damping;
 mod jacobian;
 mod lecture_pace;
 mod locus_tracking;
+mod locus_view;
 mod massless_roller;
 mod partial_follower;
 mod properties;

@@ -4,6 +4,7 @@
 
 use super::AppState;
 use crate::app::action::{Action, Command};
+use crate::lesson::KICK_RAD;
 
 /// The step of the load keys, as a fraction of the slider's range.
 const LOAD_KEY_STEP: f64 = 0.01;
@@ -26,6 +27,7 @@ impl AppState {
             Action::Projector(on) => self.settings.projector = on,
             Action::Hold { angles_rad } => self.hold(&angles_rad),
             Action::Release => self.release(),
+            Action::KickBy { angle_rad } => self.kick(angle_rad),
             Action::RampStart(ramp) => self.start_ramp(ramp),
             Action::RampPauseResume => self.toggle_ramp_pause(),
             Action::RampStop => self.ramp = None,
@@ -50,7 +52,7 @@ impl AppState {
         match command {
             Command::PlayPause => self.running = !self.running,
             Command::Step => self.step(),
-            Command::Kick => self.kick(),
+            Command::Kick => self.kick(KICK_RAD),
             Command::Reset => self.reset(),
             Command::ResetAll => self.reset_all(),
             Command::LoadUp => self.nudge_load(LOAD_KEY_STEP * self.load_max()),

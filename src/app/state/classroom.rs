@@ -114,6 +114,7 @@ impl AppState {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::lesson::KICK_RAD;
     use crate::model::Key;
     use crate::sim::Ramp;
 
@@ -126,7 +127,7 @@ mod tests {
         state.set_speed(4.0);
         state.start_ramp(Ramp::new(1.0, 3.0, 0.5).unwrap());
         state.advance(1.0 / 60.0);
-        state.kick();
+        state.kick(KICK_RAD);
         assert!(state.hint().is_none(), "a kick ends the hint");
         let generation = state.view_generation();
         state.reset_all();

@@ -191,6 +191,7 @@ impl AppState {
         }
         match step.run {
             Some(Run::Kick) => actions.push(Command::Kick.into()),
+            Some(Run::KickBy(angle_rad)) => actions.push(Action::KickBy { angle_rad }),
             // A ramp starts from a quiet column: a fresh run from the
             // standard small disturbance, whatever the class did before.
             Some(Run::Ramp { from, to, rate }) => match Ramp::new(from, to, rate) {

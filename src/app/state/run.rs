@@ -2,7 +2,7 @@
 //! speed, one step at a time, a kick, a fresh start, and the eigenvalues
 //! measured from it.
 
-use super::{AppState, KICK_RAD, push_trail, start};
+use super::{AppState, push_trail, start};
 use crate::app::notice::Notice;
 use crate::sim::Status;
 
@@ -72,13 +72,13 @@ impl AppState {
         }
     }
 
-    /// Turns every rod by [`KICK_RAD`] (both of two, all of a chain: the
+    /// Turns every rod by `angle_rad` (both of two, all of a chain: the
     /// column turns as a whole, with no kink at a joint) and runs on.
-    pub(super) fn kick(&mut self) {
+    pub(super) fn kick(&mut self, angle_rad: f64) {
         self.first_launch.hint = false;
         let mut x = self.sim.state();
         for angle in x.rows_mut(0, self.sim.model().column.rods).iter_mut() {
-            *angle += KICK_RAD;
+            *angle += angle_rad;
         }
         if let Err(error) = self.sim.restart_from(self.sim.engine(), x) {
             self.say(Notice::error(error.to_string()));
@@ -109,6 +109,7 @@ impl AppState {
 mod tests {
     use super::*;
     use crate::app::state::Settings;
+    use crate::lesson::KICK_RAD;
     use crate::model::Key;
 
     #[test]
@@ -180,7 +181,7 @@ mod tests {
         let mut state = AppState::new(Settings::default()).unwrap();
         state.set_parameter(Key::Rods, 5.0).unwrap();
         let before: Vec<f64> = state.simulation().state().iter().take(5).copied().collect();
-        state.kick();
+        state.kick(KICK_RAD);
         let after = state.simulation().state();
         for (i, angle) in before.iter().enumerate() {
             // (rapier keeps angles in f32)

@@ -13,7 +13,7 @@ use super::run_limited;
 #[test]
 fn a_broken_lesson_file_is_refused_at_its_line() {
     let dir = tempfile::tempdir().unwrap();
-    let cases: [(&str, usize, &str); 13] = [
+    let cases: [(&str, usize, &str); 15] = [
         (
             "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", presett: \"tabletop\"),\n ],\n)",
             4,
@@ -79,6 +79,17 @@ fn a_broken_lesson_file_is_refused_at_its_line() {
             "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", preset: \"tabletop\",\n   run: Ramp(from: 1e300, to: 1.0, rate: 1.0)),\n ],\n)",
             4,
             "ramp from = 1e300",
+        ),
+        // A kick that throws the column, and one of nothing.
+        (
+            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\", run: KickBy(0.5)),\n ],\n)",
+            4,
+            "step 1: kick of 0.5 rad: expected a turn of each rod other than 0, at most 0.2 rad either way",
+        ),
+        (
+            "Lesson(\n title: \"t\",\n steps: [\n  Step(text: \"a\"),\n  Step(text: \"b\", run: KickBy(0.0)),\n ],\n)",
+            5,
+            "step 2: kick of 0 rad",
         ),
         // A tab the app has not, with the names it has.
         (
