@@ -389,6 +389,7 @@ impl ZieglerApp {
             self.tab = Tab::default();
             self.scene = scene::SceneView::default();
         }
+        self.sidebar.take_clipboard(ui.ctx(), &mut self.actions);
         let style = ui.style().clone();
         egui::Panel::bottom("status line")
             .frame(self.panel_frame(egui::Frame::side_top_panel(&style)))
@@ -401,14 +402,14 @@ impl ZieglerApp {
             .resizable(false)
             .exact_size(320.0)
             .show(ui, |ui| {
+                let (choice, recorder) = (&mut self.record_choice, &self.recorder);
+                self.sidebar
+                    .header_ui(ui, &self.state, &mut self.actions, |ui, actions| {
+                        recorder::record_ui(ui, choice, recorder, actions);
+                    });
+                ui.separator();
                 egui::ScrollArea::vertical().show(ui, |ui| {
                     self.sidebar.ui(ui, &self.state, &mut self.actions, &theme);
-                    recorder::record_ui(
-                        ui,
-                        &mut self.record_choice,
-                        &self.recorder,
-                        &mut self.actions,
-                    );
                 });
             });
         egui::CentralPanel::default()

@@ -380,51 +380,52 @@ impl Default for RecordChoice {
     }
 }
 
-/// The record controls: seconds, folder, the button, and the progress.
+/// The record controls (the contents of the record menu): seconds, folder,
+/// the button, and the progress. The menu closes as the recording starts,
+/// so that it is not in the pictures.
 pub fn record_ui(
     ui: &mut egui::Ui,
     choice: &mut RecordChoice,
     recorder: &Recorder,
     actions: &mut Actions,
 ) {
-    egui::CollapsingHeader::new("record a GIF").show(ui, |ui| {
-        ui.horizontal(|ui| {
-            ui.label("the next");
-            ui.add(
-                egui::DragValue::new(&mut choice.secs)
-                    .range(1.0..=60.0)
-                    .speed(0.5),
-            )
-            .accessible_name("record seconds")
-            .on_hover_text("seconds of the window to record (1 to 60)");
-            ui.label("s into");
-        });
-        ui.add(egui::TextEdit::singleline(&mut choice.folder).desired_width(220.0))
-            .accessible_name("record folder")
-            .on_hover_text("the folder the GIF goes in");
-        if recorder.is_capturing() {
-            // Nothing here that the pictures would show: the window's
-            // title counts down.
-            return;
-        }
-        if let Some(progress) = recorder.progress_text() {
-            ui.label(progress);
-            return;
-        }
-        let folder = PathBuf::from(choice.folder.trim());
-        let ready = folder.is_dir();
-        if ui
-            .add_enabled(ready, egui::Button::new("record"))
-            .on_hover_text("record what the window shows, 10 frames a second, to a GIF")
-            .on_disabled_hover_text("the folder does not exist")
-            .clicked()
-        {
-            actions.push(Action::Record {
-                folder,
-                secs: choice.secs,
-            });
-        }
+    ui.horizontal(|ui| {
+        ui.label("the next");
+        ui.add(
+            egui::DragValue::new(&mut choice.secs)
+                .range(1.0..=60.0)
+                .speed(0.5),
+        )
+        .accessible_name("record seconds")
+        .on_hover_text("seconds of the window to record (1 to 60)");
+        ui.label("s into");
     });
+    ui.add(egui::TextEdit::singleline(&mut choice.folder).desired_width(220.0))
+        .accessible_name("record folder")
+        .on_hover_text("the folder the GIF goes in");
+    if recorder.is_capturing() {
+        // Nothing here that the pictures would show: the window's
+        // title counts down.
+        return;
+    }
+    if let Some(progress) = recorder.progress_text() {
+        ui.label(progress);
+        return;
+    }
+    let folder = PathBuf::from(choice.folder.trim());
+    let ready = folder.is_dir();
+    if ui
+        .add_enabled(ready, egui::Button::new("record"))
+        .on_hover_text("record what the window shows, 10 frames a second, to a GIF")
+        .on_disabled_hover_text("the folder does not exist")
+        .clicked()
+    {
+        actions.push(Action::Record {
+            folder,
+            secs: choice.secs,
+        });
+        ui.close();
+    }
 }
 
 #[cfg(test)]

@@ -4,6 +4,7 @@
 mod app_input;
 mod app_lessons;
 mod app_logic;
+mod app_tools;
 mod as_printed;
 mod bad_input;
 mod chain_engines;

@@ -30,10 +30,54 @@ pub struct Sidebar {
     share: share::ShareSection,
 }
 
+impl Sidebar {
+    /// Takes the clipboard's text when a paste from it is on its way: before
+    /// any widget of the frame reads the input.
+    pub fn take_clipboard(&mut self, ctx: &egui::Context, actions: &mut Actions) {
+        self.share.take_clipboard(ctx, actions);
+    }
+
+    /// The heading, with the tools that a small window would otherwise
+    /// leave below the fold as menus on its right: share settings, record
+    /// (drawn by `record`) and the keys.
+    pub fn header_ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        state: &AppState,
+        actions: &mut Actions,
+        record: impl FnOnce(&mut egui::Ui, &mut Actions),
+    ) {
+        let keep_open = egui::containers::menu::MenuConfig::new()
+            .close_behavior(egui::PopupCloseBehavior::CloseOnClickOutside);
+        // The menus beside the heading, on a row of their own when the
+        // text is large (a projector).
+        ui.horizontal_wrapped(|ui| {
+            ui.heading("zieglerlab");
+            if state.settings().projector {
+                ui.end_row();
+            } else {
+                ui.add_space(8.0);
+            }
+            egui::containers::menu::MenuButton::new("share")
+                .config(keep_open.clone())
+                .ui(ui, |ui| self.share.ui(ui, state, actions))
+                .0
+                .on_hover_text("the settings as text: copy them, or paste some");
+            egui::containers::menu::MenuButton::new("record")
+                .config(keep_open)
+                .ui(ui, |ui| record(ui, actions))
+                .0
+                .on_hover_text("record the window to a GIF");
+            egui::containers::menu::MenuButton::new("keys")
+                .ui(ui, Command::keys_help_ui)
+                .0
+                .on_hover_text("the keyboard's commands");
+        });
+    }
+}
+
 impl View for Sidebar {
     fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
-        ui.heading("zieglerlab");
-        ui.separator();
         self.lesson.ui(ui, state, actions, theme);
         ui.separator();
         model::ModelSection.ui(ui, state, actions, theme);
@@ -61,17 +105,17 @@ impl View for Sidebar {
             status::StatusSection.ui(ui, state, actions, theme);
         }
         ui.separator();
-        overlay_ui(ui, state, actions);
-        let mut projector = state.settings().projector;
-        if ui
-            .checkbox(&mut projector, "projector mode (P)")
-            .on_hover_text(Command::Projector.tooltip())
-            .changed()
-        {
-            actions.push(Action::Projector(projector));
-        }
-        self.share.ui(ui, state, actions, theme);
-        egui::CollapsingHeader::new("keys").show(ui, Command::keys_help_ui);
+        ui.horizontal(|ui| {
+            overlay_ui(ui, state, actions);
+            let mut projector = state.settings().projector;
+            if ui
+                .checkbox(&mut projector, "projector (P)")
+                .on_hover_text(Command::Projector.tooltip())
+                .changed()
+            {
+                actions.push(Action::Projector(projector));
+            }
+        });
     }
 }
 

@@ -1,46 +1,95 @@
-//! Settings as text: copy them to share a setup, paste text to load one.
+//! Settings as text: copy them to share a setup, paste text (from the
+//! system clipboard or typed into the box) to load one.
 
 use eframe::egui;
 
-use crate::app::View;
 use crate::app::action::{Action, Actions};
+use crate::app::notice::Notice;
 use crate::app::state::AppState;
-use crate::app::theme::Theme;
 
-/// The text box's contents.
+/// Frames to wait for the clipboard's text after asking the window for it:
+/// the window answers in the next frame, or not at all when the clipboard
+/// holds no text.
+const CLIPBOARD_FRAMES: u32 = 3;
+
+/// The text box's contents, and whether a paste from the clipboard is on
+/// its way.
 #[derive(Default)]
 pub struct ShareSection {
     text: String,
+    /// Frames left to wait for the clipboard's text.
+    awaiting_clipboard: Option<u32>,
 }
 
-impl View for ShareSection {
-    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, _theme: &Theme) {
-        egui::CollapsingHeader::new("share settings").show(ui, |ui| {
-            ui.horizontal(|ui| {
-                if ui
-                    .button("copy settings")
-                    .on_hover_text(
-                        "the model, load, engine and speed as text, to the clipboard and below",
-                    )
-                    .clicked()
-                {
-                    let text = state.settings().to_text();
-                    ui.ctx().copy_text(text.clone());
-                    self.text = text;
-                }
-                if ui
-                    .button("paste settings")
-                    .on_hover_text("paste the text below first")
-                    .clicked()
-                {
-                    actions.push(Action::Paste(self.text.clone()));
-                }
-            });
-            ui.add(
-                egui::TextEdit::multiline(&mut self.text)
-                    .desired_rows(3)
-                    .hint_text("paste settings text here"),
-            );
+impl ShareSection {
+    /// The clipboard's text, when it has come: taken out of the frame's
+    /// input (no text field receives it) and pasted as settings. Called
+    /// every frame, before any widget reads the input.
+    pub fn take_clipboard(&mut self, ctx: &egui::Context, actions: &mut Actions) {
+        let Some(frames_left) = self.awaiting_clipboard else {
+            return;
+        };
+        let pasted = ctx.input_mut(|input| {
+            let at = input
+                .events
+                .iter()
+                .position(|e| matches!(e, egui::Event::Paste(_)))?;
+            match input.events.remove(at) {
+                egui::Event::Paste(text) => Some(text),
+                _ => None,
+            }
         });
+        if let Some(text) = pasted {
+            self.awaiting_clipboard = None;
+            self.text.clone_from(&text);
+            actions.push(Action::Paste(text));
+        } else if frames_left == 0 {
+            self.awaiting_clipboard = None;
+            actions.push(Action::Say(Notice::error(
+                "paste settings: the clipboard holds no text (copy the settings text first)",
+            )));
+        } else {
+            self.awaiting_clipboard = Some(frames_left - 1);
+            ctx.request_repaint();
+        }
+    }
+
+    /// The menu's contents: copy, paste from the clipboard, and the box.
+    pub fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions) {
+        ui.horizontal(|ui| {
+            if ui
+                .button("copy settings")
+                .on_hover_text(
+                    "the model, load, engine and speed as text, to the clipboard and the box below",
+                )
+                .clicked()
+            {
+                let text = state.settings().to_text();
+                ui.ctx().copy_text(text.clone());
+                self.text = text;
+            }
+            if ui
+                .button("paste from clipboard")
+                .on_hover_text("take settings text copied elsewhere (the box below shows it)")
+                .clicked()
+            {
+                ui.ctx()
+                    .send_viewport_cmd(egui::ViewportCommand::RequestPaste);
+                self.awaiting_clipboard = Some(CLIPBOARD_FRAMES);
+            }
+        });
+        ui.add(
+            egui::TextEdit::multiline(&mut self.text)
+                .desired_rows(4)
+                .desired_width(300.0)
+                .hint_text("or type or paste settings text here"),
+        );
+        if ui
+            .button("take the text above")
+            .on_hover_text("load the settings written in the box")
+            .clicked()
+        {
+            actions.push(Action::Paste(self.text.clone()));
+        }
     }
 }

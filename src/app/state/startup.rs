@@ -79,7 +79,7 @@ impl AppState {
     pub(super) fn paste_settings(&mut self, text: &str) {
         if text.trim().is_empty() {
             self.say(Notice::error(
-                "nothing to paste: put settings text (from \"copy settings\") in the box first",
+                "nothing to paste: copy settings text first (\"copy settings\" in the share menu), or type it in the box",
             ));
             return;
         }

@@ -1,0 +1,104 @@
+//! The tools in the sidebar's heading, used as a person uses them
+//! (`egui_kittest`): within reach in a 1024x768 window, the keys help whole,
+//! and settings pasted from the system clipboard.
+
+use eframe::egui;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable as _;
+use zieglerlab::app::{Action, Command, Settings, Tab, ZieglerApp};
+use zieglerlab::model::PresetId;
+
+fn harness_at(app: &mut ZieglerApp, size: [f32; 2]) -> Harness<'_> {
+    let mut harness = Harness::builder()
+        .with_size(size)
+        .build_ui(|ui| app.contents_ui(ui));
+    harness.run();
+    harness
+}
+
+/// At 1024x768 in normal mode every tool is on the screen without
+/// scrolling (share, record and keys used to sit below the fold), and the
+/// keys help shows each line whole inside the window (it was cut at the
+/// sidebar's edge: "R reset: a fresh run from the stan").
+#[test]
+fn the_tools_are_in_reach_and_the_keys_help_whole_at_1024x768() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    let screen = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(1024.0, 768.0));
+    let mut harness = harness_at(&mut app, [1024.0, 768.0]);
+    for label in ["share", "record", "keys", "projector (P)", "overlay"] {
+        let rect = harness.get_by_label(label).rect();
+        assert!(screen.contains_rect(rect), "{label} at {rect:?}");
+    }
+    harness.get_by_label("keys").click();
+    harness.run();
+    for command in Command::ALL {
+        if command.key_names().is_empty() {
+            continue;
+        }
+        let line = harness.get_by_label(command.tooltip());
+        assert!(
+            screen.contains_rect(line.rect()),
+            "{}: {:?}",
+            command.tooltip(),
+            line.rect()
+        );
+    }
+}
+
+/// "paste from clipboard" asks the window for the clipboard's text and
+/// takes it as settings, keeping the open tab; text that is not settings
+/// is refused by name, and a clipboard with no text is said to have none.
+#[test]
+fn settings_are_pasted_from_the_clipboard() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.apply(Action::Tab(Tab::HISTORIES));
+    {
+        let mut harness = harness_at(&mut app, [1280.0, 800.0]);
+        harness.get_by_label("share").click();
+        harness.run();
+        harness.get_by_label("paste from clipboard").click();
+        harness.step();
+        // What the window answers, in the next frame, with the clipboard's text.
+        harness.event(egui::Event::Paste(
+            "preset = ziegler-1952\nload = 1.5\n".to_owned(),
+        ));
+        harness.step();
+        harness.run();
+    }
+    assert_eq!(app.state().settings().preset, PresetId::Ziegler1952);
+    assert!((app.state().model().load_p() - 1.5).abs() < 1e-12);
+    assert_eq!(app.layout().tab, Tab::HISTORIES, "a paste keeps the tab");
+    {
+        let mut harness = harness_at(&mut app, [1280.0, 800.0]);
+        harness.get_by_label("share").click();
+        harness.run();
+        harness.get_by_label("paste from clipboard").click();
+        harness.step();
+        harness.event(egui::Event::Paste("hello, world".to_owned()));
+        harness.step();
+        harness.run();
+    }
+    let said = app
+        .state()
+        .notice()
+        .map(|n| n.text.clone())
+        .unwrap_or_default();
+    assert!(said.contains("pasted settings"), "{said}");
+    assert_eq!(app.state().settings().preset, PresetId::Ziegler1952);
+    {
+        let mut harness = harness_at(&mut app, [1280.0, 800.0]);
+        harness.get_by_label("share").click();
+        harness.run();
+        harness.get_by_label("paste from clipboard").click();
+        // No answer: the clipboard holds no text.
+        for _ in 0..6 {
+            harness.step();
+        }
+    }
+    let said = app
+        .state()
+        .notice()
+        .map(|n| n.text.clone())
+        .unwrap_or_default();
+    assert!(said.contains("the clipboard holds no text"), "{said}");
+}
