@@ -6,6 +6,7 @@
 mod action;
 mod analysis_cache;
 mod camera;
+mod folder_dialog;
 mod grab;
 mod history;
 mod jobs;
@@ -390,6 +391,9 @@ impl ZieglerApp {
             self.scene = scene::SceneView::default();
         }
         self.sidebar.take_clipboard(ui.ctx(), &mut self.actions);
+        if let Some(notice) = self.record_choice.take_dialog_answer() {
+            self.state.say(notice);
+        }
         let style = ui.style().clone();
         egui::Panel::bottom("status line")
             .frame(self.panel_frame(egui::Frame::side_top_panel(&style)))

@@ -5,14 +5,16 @@
 //! written whole into the chosen folder, with progress on the way and a
 //! notice saying where the file went.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, OnceLock, mpsc};
 
 use eframe::egui::{self, ColorImage};
 
 use crate::app::action::{Action, Actions};
+use crate::app::folder_dialog::{Closed, FolderDialog};
 use crate::app::jobs::Jobs;
+use crate::app::notice::Notice;
 use crate::recording::GifRecording;
 
 /// The window's title, also after a recording has shown its progress there.
@@ -365,10 +367,12 @@ pub enum RecordError {
     Write(#[from] crate::files::WriteError),
 }
 
-/// What the next recording will be: its length and its folder.
+/// What the next recording will be: its length and its folder (typed, or
+/// chosen in the desktop's dialog).
 pub struct RecordChoice {
     pub secs: f64,
     pub folder: String,
+    pub dialog: FolderDialog,
 }
 
 impl Default for RecordChoice {
@@ -376,6 +380,23 @@ impl Default for RecordChoice {
         Self {
             secs: 10.0,
             folder: ".".to_owned(),
+            dialog: FolderDialog::default(),
+        }
+    }
+}
+
+impl RecordChoice {
+    /// Takes the folder dialog's answer once it has closed: the folder
+    /// chosen, or what to tell the user when none was.
+    pub fn take_dialog_answer(&mut self) -> Option<Notice> {
+        match self.dialog.answer()? {
+            Closed::Chosen(folder) => {
+                self.folder = folder.display().to_string();
+                None
+            }
+            Closed::NoneChosen => Some(Notice::info(
+                "no folder chosen (where no dialog opened, this desktop offers none: type the folder's path)",
+            )),
         }
     }
 }
@@ -400,9 +421,22 @@ pub fn record_ui(
         .on_hover_text("seconds of the window to record (1 to 60)");
         ui.label("s into");
     });
-    ui.add(egui::TextEdit::singleline(&mut choice.folder).desired_width(220.0))
-        .accessible_name("record folder")
-        .on_hover_text("the folder the GIF goes in");
+    ui.horizontal(|ui| {
+        ui.add(egui::TextEdit::singleline(&mut choice.folder).desired_width(200.0))
+            .accessible_name("record folder")
+            .on_hover_text("the folder the GIF goes in");
+        if choice.dialog.is_open() {
+            ui.label("choosing...");
+        } else if ui
+            .button("choose...")
+            .on_hover_text("choose the folder in the desktop's dialog")
+            .clicked()
+        {
+            choice
+                .dialog
+                .open(Path::new(choice.folder.trim()), ui.ctx());
+        }
+    });
     if recorder.is_capturing() {
         // Nothing here that the pictures would show: the window's
         // title counts down.
@@ -451,6 +485,23 @@ mod tests {
             .chain([&end_secs])
             .map(|&end| clock.until(end))
             .collect()
+    }
+
+    /// A folder chosen in the dialog becomes the recording's folder; a
+    /// dialog closed with none chosen leaves the typed one and says so.
+    #[test]
+    fn the_folder_dialogs_answer_is_the_recordings_folder() {
+        let mut choice = RecordChoice {
+            dialog: FolderDialog::answered(Some(PathBuf::from("/tmp/lecture"))),
+            ..RecordChoice::default()
+        };
+        assert_eq!(choice.take_dialog_answer(), None);
+        assert_eq!(choice.folder, "/tmp/lecture");
+        choice.dialog = FolderDialog::answered(None);
+        let told = choice.take_dialog_answer().expect("a notice");
+        assert!(told.text.contains("no folder chosen"), "{}", told.text);
+        assert_eq!(choice.folder, "/tmp/lecture");
+        assert_eq!(choice.take_dialog_answer(), None, "answered once");
     }
 
     #[test]

@@ -1,0 +1,100 @@
+//! The desktop's folder dialog, opened off the UI thread (the window keeps
+//! drawing while it is open), its answer handed to the frame that asks.
+
+use std::path::{Path, PathBuf};
+use std::sync::mpsc;
+
+use eframe::egui;
+
+/// How a folder dialog closed.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Closed {
+    Chosen(PathBuf),
+    /// Cancelled, or no dialog could open on this desktop.
+    NoneChosen,
+}
+
+/// A folder dialog that may be open.
+#[derive(Default)]
+pub struct FolderDialog {
+    answer: Option<mpsc::Receiver<Option<PathBuf>>>,
+}
+
+impl FolderDialog {
+    /// Opens the desktop's folder dialog at `start` (unless one is open);
+    /// the window is woken when it closes.
+    pub fn open(&mut self, start: &Path, ctx: &egui::Context) {
+        if self.is_open() {
+            return;
+        }
+        let (send, answer) = mpsc::channel();
+        let (start, ctx) = (start.to_path_buf(), ctx.clone());
+        let spawned = std::thread::Builder::new()
+            .name("folder dialog".to_owned())
+            .spawn(move || {
+                let chosen = rfd::FileDialog::new()
+                    .set_title("zieglerlab: the folder for recordings")
+                    .set_directory(start)
+                    .pick_folder();
+                // A window closed meanwhile has dropped the receiver.
+                let _ = send.send(chosen);
+                ctx.request_repaint();
+            });
+        if spawned.is_ok() {
+            self.answer = Some(answer);
+        }
+    }
+
+    /// Whether a dialog is open.
+    #[must_use]
+    pub fn is_open(&self) -> bool {
+        self.answer.is_some()
+    }
+
+    /// How the dialog closed, once it has (`None` while it is open or when
+    /// none was opened).
+    pub fn answer(&mut self) -> Option<Closed> {
+        let receiver = self.answer.as_ref()?;
+        let closed = match receiver.try_recv() {
+            Ok(Some(folder)) => Closed::Chosen(folder),
+            Ok(None) | Err(mpsc::TryRecvError::Disconnected) => Closed::NoneChosen,
+            Err(mpsc::TryRecvError::Empty) => return None,
+        };
+        self.answer = None;
+        Some(closed)
+    }
+
+    /// A dialog that answers `chosen` at once (for tests of what the window
+    /// does with an answer).
+    #[cfg(test)]
+    #[must_use]
+    pub(crate) fn answered(chosen: Option<PathBuf>) -> Self {
+        let (send, answer) = mpsc::channel();
+        let _ = send.send(chosen);
+        Self {
+            answer: Some(answer),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The answer is handed over once, and a dialog whose thread ended
+    /// without one (no desktop dialog at all) answers "none chosen".
+    #[test]
+    fn the_answer_is_handed_over_once() {
+        let mut dialog = FolderDialog::answered(Some(PathBuf::from("/tmp")));
+        assert!(dialog.is_open());
+        assert_eq!(dialog.answer(), Some(Closed::Chosen(PathBuf::from("/tmp"))));
+        assert!(!dialog.is_open());
+        assert_eq!(dialog.answer(), None);
+        let (send, answer) = mpsc::channel::<Option<PathBuf>>();
+        drop(send);
+        let mut gone = FolderDialog {
+            answer: Some(answer),
+        };
+        assert_eq!(gone.answer(), Some(Closed::NoneChosen));
+    }
+}
