@@ -135,8 +135,19 @@ fn step_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &T
         Some(Predict::Load(prompt)) => {
             ui.label(RichText::new(prompt).color(theme.info));
             let mut load = run.predicted_load.unwrap_or(0.0);
+            // The words and the value above the slider, the slider the
+            // sidebar's width: beside it they ran past the sidebar's edge
+            // on a projector ("your predictio").
+            ui.label(match run.predicted_load {
+                Some(p) => format!("your prediction: p = {}", load_text(p)),
+                None => "your prediction: p = ?".to_owned(),
+            });
             let response = ui
-                .add(egui::Slider::new(&mut load, 0.0..=state.load_max()).text("your prediction p"))
+                .scope(|ui| {
+                    ui.spacing_mut().slider_width = ui.available_width();
+                    ui.add(egui::Slider::new(&mut load, 0.0..=state.load_max()).show_value(false))
+                })
+                .inner
                 .accessible_name("predicted load")
                 .on_hover_text("where you expect it; the load bar marks it");
             if response.changed() {
