@@ -9,7 +9,7 @@ use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::app::{Notice, View};
 use crate::format::load_text;
-use crate::lesson::{BUILT_IN, Lesson, LessonError, LessonFileError, Predict};
+use crate::lesson::{BUILT_IN, Lesson, LessonError, LessonFileError, Predict, Reveal};
 
 /// The built-in lessons (read and checked once), the path typed to open a
 /// lesson file, and the file being read.
@@ -171,8 +171,11 @@ fn step_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &T
     if let Some(result) = run.reveal_text(first, state.load_max(), seen) {
         ui.label(RichText::new(result).color(theme.measured));
     }
+    // The prediction beside the steps after it, but for the reveal of the
+    // first instability, which says it itself.
     if let Some(p) = run.predicted_load
         && step.predict.is_none()
+        && step.reveal != Some(Reveal::FirstInstability)
     {
         ui.weak(format!("your prediction: p = {}", load_text(p)));
     }
