@@ -451,7 +451,12 @@ impl ZieglerApp {
             vec2(ui.available_width(), scene_share * height),
             egui::Sense::hover(),
         );
-        let (scene_rect, locus_rect) = if locus_beside {
+        // On such a projector the top row holds the scene and the root
+        // locus beside it, or, when another tab is open (a lesson step's
+        // paradox curves, say), that tab's plots across the whole row: the
+        // class sees what the step talks about.
+        let tab_on_top = locus_beside && self.tab != Tab::LOCUS;
+        let (scene_rect, locus_rect) = if locus_beside && !tab_on_top {
             let split = top.left() + 0.55 * top.width();
             let (left, right) = top.split_left_right_at_x(split);
             (left, Some(right.shrink2(vec2(6.0, 0.0))))
@@ -459,7 +464,16 @@ impl ZieglerApp {
             (top, None)
         };
         ui.scope_builder(egui::UiBuilder::new().max_rect(scene_rect), |ui| {
-            scene::scene_ui(ui, &self.state, &mut self.actions, &mut self.scene, theme);
+            if !tab_on_top {
+                scene::scene_ui(ui, &self.state, &mut self.actions, &mut self.scene, theme);
+            } else if self.state.answer_hidden() && self.tab != Tab::HISTORIES {
+                ui.colored_label(theme.info, ANSWER_HIDDEN_NOTE);
+            } else {
+                ui.set_clip_rect(scene_rect);
+                self.tabs
+                    .view(self.tab)
+                    .ui(ui, &self.state, &mut self.actions, theme);
+            }
         });
         if let Some(rect) = locus_rect {
             ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
@@ -478,11 +492,16 @@ impl ZieglerApp {
         tab_bar_ui(ui, self.tab, &mut self.actions);
         if ui.available_height() < min_plot_height {
             ui.weak(if locus_beside && self.state.answer_hidden() {
-                "The plots are hidden until the lesson reveals the answer; they need a taller window, or projector mode off (P)."
+                "The plots are hidden until the lesson reveals the answer; they need a taller window, or projector mode off (P).".to_owned()
+            } else if tab_on_top {
+                format!(
+                    "The {} tab shows in the column's place; the root locus tab brings the column back.",
+                    self.tab.title()
+                )
             } else if locus_beside {
-                "The root locus is beside the column; the other plots need a taller window, or projector mode off (P)."
+                "The root locus is beside the column; a tab chosen here shows in the column's place.".to_owned()
             } else {
-                "The plots need more room here: a taller window, or projector mode off (P)."
+                "The plots need more room here: a taller window, or projector mode off (P).".to_owned()
             });
         } else if self.state.answer_hidden() && self.tab != Tab::HISTORIES {
             ui.label(

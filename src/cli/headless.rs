@@ -131,10 +131,14 @@ pub fn render_frames(
 ) -> Result<()> {
     let (width, height) = (f32::from(size.width), f32::from(size.height));
     app.draw_for_pictures();
-    let background = match panel {
-        Panel::Tab(tab @ (Tab::MAP | Tab::PARADOX)) => Some(tab),
-        _ => None,
+    // The tab drawn: the panel's, or the one open in the window (a lesson
+    // step may have opened the paradox curves).
+    let drawn = match panel {
+        Panel::Tab(tab) => Some(tab),
+        Panel::Window => Some(app.layout().tab),
+        Panel::Scene => None,
     };
+    let background = drawn.filter(|&tab| tab == Tab::MAP || tab == Tab::PARADOX);
     if let Some(tab) = background {
         app.complete_background_work(tab);
     }

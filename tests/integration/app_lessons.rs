@@ -131,6 +131,19 @@ fn every_lesson_step_keeps_the_projector_layout() {
                 "{name} step {}: the tab bar is at y = {tab_top}, over the scene",
                 step + 1
             );
+            // A step that opens the paradox tab shows its curves on the
+            // screen (on the projector they were "need a taller window").
+            if lesson.steps[step].tab.as_deref() == Some("paradox") {
+                let screen = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(1024.0, 768.0));
+                let controls = harness
+                    .get_by_label_contains("damping that vanishes")
+                    .rect();
+                assert!(
+                    screen.contains_rect(controls),
+                    "{name} step {}: the paradox tab at {controls:?}",
+                    step + 1
+                );
+            }
             if lesson.steps[step].sets_column() {
                 let column = lesson.column_at(start, step).unwrap();
                 let settings = harness.state().settings();

@@ -291,6 +291,30 @@ fn a_lesson_kicks_by_its_own_size() {
     );
 }
 
+/// A lesson opens from its own state whatever ran before: after the
+/// roller lesson (its overlay of the ideal column) at 10x speed, the
+/// damping lesson opens with no overlay and at the normal speed (the grey
+/// locus of the lesson before stayed behind Ziegler's column).
+#[test]
+fn a_lesson_opens_without_the_last_ones_overlay_or_speed() {
+    use zieglerlab::lesson::{BUILT_IN, Lesson};
+    let lesson = |name: &str| {
+        let (_, text) = BUILT_IN.iter().find(|(n, _)| *n == name).unwrap();
+        Lesson::read(text, &zieglerlab::app::Tab::ids()).unwrap()
+    };
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.apply(Action::LessonOpen(Box::new(lesson(
+        "is-the-roller-a-follower.ron",
+    ))));
+    app.apply(Action::Speed(10.0));
+    app.state_mut().settle_analysis();
+    assert_eq!(app.state().overlay_choice(), Some(PresetId::UniformRods));
+    app.apply(Action::LessonOpen(Box::new(lesson("damping-paradox.ron"))));
+    assert_eq!(app.state().overlay_choice(), None);
+    assert_eq!(app.state().settings().speed, 1.0);
+    assert_eq!(app.state().settings().preset, PresetId::Ziegler1952);
+}
+
 /// The answer is hidden from the step that asks for a prediction up to the
 /// step that reveals it, in each built-in lesson that asks for one.
 #[test]

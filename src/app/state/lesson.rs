@@ -2,7 +2,7 @@
 //! and each step as the list of actions it asks for (preset, parameters,
 //! speed, overlay, tab, a kick or a ramp).
 
-use super::AppState;
+use super::{AppState, Settings};
 use crate::app::action::{Action, Command};
 use crate::app::notice::Notice;
 use crate::app::tabs::Tab;
@@ -95,7 +95,9 @@ impl LessonRun {
 }
 
 impl AppState {
-    /// Opens `lesson` at its first step; that step's actions follow.
+    /// Opens `lesson` at its first step, from the lesson's own state
+    /// whatever ran before: no ramp, no overlay and the normal speed unless
+    /// the step sets them; that step's actions follow.
     pub(super) fn open_lesson(&mut self, lesson: Lesson) -> Vec<Action> {
         self.lesson = Some(LessonRun {
             lesson,
@@ -108,7 +110,13 @@ impl AppState {
                 model: self.settings.model,
             },
         });
-        self.step_actions()
+        let mut actions = vec![
+            Action::RampStop,
+            Action::Overlay(None),
+            Action::Speed(Settings::default().speed),
+        ];
+        actions.extend(self.step_actions());
+        actions
     }
 
     /// The lesson under way.
