@@ -118,6 +118,9 @@ fn every_lesson_step_keeps_the_projector_layout() {
             .apply(zieglerlab::app::Action::LessonOpen(Box::new(
                 lesson.clone(),
             )));
+        let asked = lesson.steps.iter().position(|s| s.predict.is_some());
+        let revealed = lesson.steps.iter().position(|s| s.reveal.is_some());
+        let mut tab = zieglerlab::app::Tab::LOCUS;
         for step in 0..steps {
             if step > 0 {
                 harness.state_mut().apply(zieglerlab::app::Action::Command(
@@ -125,6 +128,26 @@ fn every_lesson_step_keeps_the_projector_layout() {
                 ));
             }
             harness.run_steps(3);
+            let at = format!("{name} step {}", step + 1);
+            // The tab the lesson last opened is the one shown.
+            if let Some(id) = &lesson.steps[step].tab {
+                tab = zieglerlab::app::Tab::named(id).unwrap();
+            }
+            assert_eq!(harness.state().layout().tab, tab, "{at}");
+            // Hidden from the prediction to the reveal: no critical load
+            // on the screen then, and the verdict's words instead.
+            let hidden = asked.is_some_and(|a| step >= a && revealed.is_none_or(|r| step < r));
+            assert_eq!(harness.state().state().answer_hidden(), hidden, "{at}");
+            let critical_shown = harness.query_by_label_contains("-> flutter").is_some();
+            assert_eq!(
+                critical_shown, !hidden,
+                "{at}: a critical load on the screen"
+            );
+            assert_eq!(
+                harness.query_by_label("stable or not?").is_some(),
+                hidden,
+                "{at}: the card's verdict hidden"
+            );
             let tab_top = harness.get_by_label("time histories").rect().top();
             assert!(
                 tab_top > 0.55 * 768.0,

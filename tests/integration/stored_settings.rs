@@ -214,8 +214,8 @@ fn pasted_garbage_changes_nothing_and_says_so() {
         "{:?}",
         app.message()
     );
-    // Another preset pasted keeps the overlay chosen and the lesson open.
-    app.apply(Action::Overlay(Some(PresetId::UniformRods)));
+    // Another preset pasted keeps the lesson open and the overlay chosen
+    // in it (opening a lesson clears the one chosen before).
     app.apply(Action::LessonOpen(Box::new(
         zieglerlab::lesson::Lesson::read(
             zieglerlab::lesson::BUILT_IN[0].1,
@@ -223,6 +223,7 @@ fn pasted_garbage_changes_nothing_and_says_so() {
         )
         .unwrap(),
     )));
+    app.apply(Action::Overlay(Some(PresetId::UniformRods)));
     let tabletop = Settings {
         preset: PresetId::Tabletop,
         model: PresetId::Tabletop.model(),
