@@ -31,5 +31,6 @@ mod sim_identification;
 mod sim_large_amplitude;
 mod snapshots;
 mod stability_map;
+mod status_card;
 mod stored_settings;
 mod zero_root;

@@ -3,7 +3,7 @@
 
 use eframe::egui::{self, RichText};
 
-use crate::analysis::{State, classify};
+use crate::analysis::{C64, Stability, State, classify};
 use crate::app::View;
 use crate::app::action::Actions;
 use crate::app::state::AppState;
@@ -36,7 +36,113 @@ const GROWTH_RATE: &str = "growth rate: how fast the motion grows (positive) or 
 const E_FOLDING: &str =
     "e-folding time: the time in which the swing grows by a factor e = 2.72 (1 / growth rate)";
 const DECAY: &str = "decay time: the time in which the swing shrinks by a factor e = 2.72";
-const FREQUENCY: &str = "frequency: how fast the column swings, in radians per second (the eigenvalue's height); the period is one full swing";
+const FREQUENCY_AND_MODES: &str = "frequency: how fast the column swings, in radians per second (the eigenvalue's height); the period is one full swing. A column of n rods has n modes of swinging, counted here from the slowest; the card describes the one that grows fastest (or dies away slowest), and the run's measurement is shown for that same mode";
+
+/// The frequency of the mode the card describes, named among the column's
+/// modes (slowest first), and the eigenvalue measured from the run for
+/// that same mode (or the one measured, said to be another).
+fn frequency_and_measured_ui(
+    ui: &mut egui::Ui,
+    state: &AppState,
+    s: &Stability,
+    eigenvalues: &[C64],
+) {
+    let frequency = s.frequency_rad_per_s();
+    // The modes by frequency, slowest first: the card names the one it
+    // describes, and shows the measured eigenvalue of that same mode.
+    let modes = oscillating_modes(eigenvalues, s.tolerance_per_s);
+    let card_mode = (frequency > s.tolerance_per_s)
+        .then(|| nearest_mode(s.dominant, &modes))
+        .flatten();
+    // Modes are named by their rank in frequency only while the
+    // frequencies differ: past a flutter onset two modes have merged into
+    // one pair, one growing and one dying away at the same frequency.
+    let named = modes.len() > 1
+        && modes
+            .windows(2)
+            .all(|pair| pair[1].im - pair[0].im > 1e-6 * pair[1].im);
+    let mode_name = |k: usize| {
+        if named {
+            format!("mode {} of {}", k + 1, modes.len())
+        } else {
+            "the mode".to_owned()
+        }
+    };
+    if frequency > s.tolerance_per_s {
+        let period = std::f64::consts::TAU / frequency;
+        let which = card_mode
+            .filter(|_| named)
+            .map(|k| format!(", {}", mode_name(k)))
+            .unwrap_or_default();
+        ui.label(format!(
+            "frequency  {frequency:.4} rad/s  (period {} s{which})",
+            secs_text(period)
+        ))
+        .on_hover_text(FREQUENCY_AND_MODES);
+    } else {
+        ui.label("non-oscillatory: the dominant eigenvalue is real");
+    }
+    let measured: Vec<(C64, Option<usize>)> = state
+        .measured()
+        .unwrap_or_default()
+        .iter()
+        .filter(|z| z.im > 0.0)
+        .map(|&z| (z, nearest_mode(z, &modes)))
+        .collect();
+    // The measurement of the card's mode; any one when the card's mode
+    // does not swing (a divergence).
+    let like_for_like = match card_mode {
+        Some(_) => measured.iter().find(|(_, k)| *k == card_mode),
+        None => measured.first(),
+    };
+    match (like_for_like, measured.first()) {
+        (Some(&(z, k)), _) => ui.label(format!(
+            "measured from the run{}  {:+.5} ± {:.4}i 1/s",
+            k.filter(|_| named)
+                .map(|k| format!(" ({})", mode_name(k)))
+                .unwrap_or_default(),
+            z.re,
+            z.im
+        )),
+        (None, Some(&(z, k))) => {
+            let (measured_one, cards) = match (named, k, card_mode) {
+                (true, Some(k), Some(card)) => (mode_name(k), format!("the card's {}", mode_name(card))),
+                _ => ("another eigenvalue".to_owned(), "the card's".to_owned()),
+            };
+            ui.label(format!(
+                "measured from the run: {measured_one} only, {:+.5} ± {:.4}i 1/s ({cards} too weak in this run to fit)",
+                z.re, z.im
+            ))
+        }
+        (None, None) => ui.label(
+            RichText::new(if state.model().column.rods == 2 {
+                "measured: after 20 s of small-amplitude motion (|φ| < 0.05 rad)"
+            } else {
+                "measured: for two rods only (a chain's many slow modes need a longer run than a fit can use)"
+            })
+            .small(),
+        ),
+    };
+}
+
+/// The oscillating modes of a spectrum, slowest first: of each pair, the
+/// eigenvalue above the real axis.
+fn oscillating_modes(eigenvalues: &[C64], tolerance_per_s: f64) -> Vec<C64> {
+    let mut modes: Vec<C64> = eigenvalues
+        .iter()
+        .copied()
+        .filter(|z| z.im > tolerance_per_s)
+        .collect();
+    modes.sort_by(|a, b| a.im.total_cmp(&b.im));
+    modes
+}
+
+/// The mode (from 0, slowest first) whose eigenvalue is nearest to `z` or
+/// its conjugate.
+fn nearest_mode(z: C64, modes: &[C64]) -> Option<usize> {
+    let z = C64::new(z.re, z.im.abs());
+    (0..modes.len()).min_by(|&a, &b| (modes[a] - z).norm().total_cmp(&(modes[b] - z).norm()))
+}
 
 pub struct StatusSection;
 
@@ -95,31 +201,7 @@ impl View for StatusSection {
                 .on_hover_text(DECAY),
             None => ui.label("neutral: no growth, no decay"),
         };
-        if frequency > s.tolerance_per_s {
-            let period = std::f64::consts::TAU / frequency;
-            ui.label(format!(
-                "frequency  {frequency:.4} rad/s  (period {} s)",
-                secs_text(period)
-            ))
-            .on_hover_text(FREQUENCY);
-        } else {
-            ui.label("non-oscillatory: the dominant eigenvalue is real");
-        }
-        match state.measured().and_then(|m| m.first()) {
-            Some(z) => ui.label(format!(
-                "measured from the run  {:+.5} ± {:.4}i 1/s",
-                z.re,
-                z.im.abs()
-            )),
-            None => ui.label(
-                RichText::new(if state.model().column.rods == 2 {
-                    "measured: after 20 s of small-amplitude motion (|φ| < 0.05 rad)"
-                } else {
-                    "measured: for two rods only (a chain's many slow modes need a longer run than a fit can use)"
-                })
-                .small(),
-            ),
-        };
+        frequency_and_measured_ui(ui, state, &s, &spectrum.eigenvalues);
         if weak {
             let per_period = 100.0 * (growth * std::f64::consts::TAU / frequency).exp_m1();
             let pace = if s

@@ -1,0 +1,67 @@
+//! The status card as the window shows it (`egui_kittest`; a label's text
+//! is its accesskit value): the mode it describes, and the run's
+//! measurement of that same mode.
+
+use egui_kittest::Harness;
+use egui_kittest::kittest::{NodeT as _, Queryable as _};
+use zieglerlab::analysis::classify;
+use zieglerlab::app::{Action, Settings, ZieglerApp};
+use zieglerlab::model::PresetId;
+
+/// The tabletop column at p = 1, undamped, swings in two modes (2.1964 and
+/// 10.3257 rad/s). The card names the mode it describes, and the
+/// eigenvalue measured from the run beside it is of that mode, not the
+/// other (it showed "frequency 2.1964 rad/s" beside "measured from the run
+/// +0.00000 ± 10.3257i").
+#[test]
+fn the_card_measures_the_mode_it_describes() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.apply(Action::Preset(PresetId::Tabletop));
+    app.state_mut().settle_analysis();
+    app.apply(Action::Speed(10.0));
+    for _ in 0..30 {
+        app.advance(0.1);
+    }
+    let spectrum = app.state().current_spectrum().unwrap().clone();
+    let card = classify(&spectrum.eigenvalues, spectrum.scale_per_s).dominant;
+    let measured = app
+        .state()
+        .measured()
+        .expect("measured after 30 s")
+        .to_vec();
+    assert!(measured.len() >= 2, "{measured:?}");
+    let mut harness = Harness::builder()
+        .with_size([1280.0, 800.0])
+        .build_ui(|ui| app.contents_ui(ui));
+    harness.run();
+    let slower = card.im.abs() < 5.0;
+    let mode = if slower { "mode 1 of 2" } else { "mode 2 of 2" };
+    let frequency_line = harness
+        .get_by_label_contains("frequency ")
+        .accesskit_node()
+        .value()
+        .unwrap_or_default();
+    assert!(frequency_line.contains(mode), "{frequency_line}");
+    // The card's line (the locus's legend says "measured from the run" too).
+    let measured_line = harness
+        .query_all_by_label_contains("measured from the run")
+        .filter_map(|node| node.accesskit_node().value())
+        .find(|text| text.contains('±'))
+        .expect("the card's measured line");
+    assert!(
+        measured_line.contains(&format!("({mode})")),
+        "{measured_line}"
+    );
+    // The value shown is the card's mode's, to the fit's accuracy.
+    let shown: f64 = measured_line
+        .rsplit('±')
+        .next()
+        .and_then(|s| s.trim().split('i').next())
+        .and_then(|s| s.trim().parse().ok())
+        .expect("a frequency");
+    assert!(
+        (shown - card.im.abs()).abs() < 1e-3 * card.im.abs(),
+        "{shown} against {}",
+        card.im.abs()
+    );
+}
