@@ -21,6 +21,7 @@ mod jacobian;
 mod lecture_pace;
 mod locus_tracking;
 mod locus_view;
+mod map_panel;
 mod massless_roller;
 mod partial_follower;
 mod properties;

@@ -7,6 +7,7 @@ use std::sync::atomic::AtomicUsize;
 use eframe::egui::{self, Color32, ColorImage, TextureHandle, TextureOptions};
 use egui_plot::{Line, Plot, PlotImage, PlotPoint, PlotPoints, Points};
 
+use super::map_key::{Readout, cell_at, key_ui, readout_ui};
 use super::{TabSpec, TabView};
 use crate::analysis::{AnalysisError, MapSpec, Row, RowResult, State, Transition, compute_map};
 use crate::app::View;
@@ -106,6 +107,8 @@ pub struct MapPanel {
     click: SingleClick<Pick>,
     /// The state's "reset all" count this frame.
     generation: u64,
+    /// The cell under the pointer in the last frame (shown above the map).
+    hovered: Option<Readout>,
 }
 
 impl Default for MapPanel {
@@ -118,6 +121,7 @@ impl Default for MapPanel {
             fit: Fit::default(),
             click: SingleClick::default(),
             generation: 0,
+            hovered: None,
         }
     }
 }
@@ -299,6 +303,10 @@ impl MapPanel {
         }
         let texture = job.texture.as_ref()?;
         self.fit.bar_ui(ui, for_picture);
+        key_ui(ui, theme);
+        if !for_picture {
+            readout_ui(ui, self.hovered.as_ref(), job.spec.axis.name(), theme);
+        }
         let spec = &job.spec;
         let refit = self.fit.refit((
             self.generation,
@@ -306,7 +314,13 @@ impl MapPanel {
             spec.axis_range,
             spec.load_range,
         ));
-        let (click, double) = map_plot_ui(ui, job, texture, model, refit, theme);
+        let (click, double, pointer) = map_plot_ui(ui, job, texture, model, refit, theme);
+        let hovered = pointer.and_then(|point| cell_at(spec, &job.rows, point.x, point.y));
+        if hovered != self.hovered {
+            // Shown above the map from the next frame: ask for it now.
+            self.hovered = hovered;
+            ui.ctx().request_repaint();
+        }
         let now_secs = ui.input(|i| i.time);
         let window_secs = ui.ctx().options(|o| o.input_options.max_double_click_delay);
         let pick = self.click.update(click, double, now_secs, window_secs);
@@ -473,7 +487,8 @@ fn boundaries(rows: &[Option<RowResult>]) -> Vec<Vec<[f64; 2]>> {
 }
 
 /// The map with its boundaries and the current point. Returns a click's
-/// pick this frame, and whether the frame completed a double-click.
+/// pick this frame, whether the frame completed a double-click, and where
+/// the pointer is on the map.
 fn map_plot_ui(
     ui: &mut egui::Ui,
     job: &Shown,
@@ -481,7 +496,7 @@ fn map_plot_ui(
     model: &Model,
     refit: bool,
     theme: &Theme,
-) -> (Option<Pick>, bool) {
+) -> (Option<Pick>, bool, Option<PlotPoint>) {
     let spec = &job.spec;
     let (p0, p1) = spec.load_range;
     let (y0, y1) = spec.axis_range;
@@ -525,6 +540,7 @@ fn map_plot_ui(
         response.response.clicked(),
         response.response.double_clicked(),
     );
+    let pointer = response.inner.filter(|_| response.response.hovered());
     let pick = response
         .inner
         .filter(|point| clicked && (y0..=y1).contains(&point.y) && (p0..=p1).contains(&point.x));
@@ -538,7 +554,7 @@ fn map_plot_ui(
             point.y
         },
     });
-    (pick, double)
+    (pick, double, pointer)
 }
 
 /// The map as a picture for a file (`zieglerlab map --format png`): the

@@ -6,6 +6,7 @@
 mod histories;
 mod locus;
 pub mod map;
+mod map_key;
 mod paradox;
 
 use std::any::Any;

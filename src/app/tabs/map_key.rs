@@ -1,0 +1,102 @@
+//! What the stability map's colours mean (its key), and the values of the
+//! cell under the pointer (its readout).
+
+use eframe::egui;
+
+use crate::analysis::{MapSpec, RowResult, State};
+use crate::app::plot_frame::{Swatch, legend_row};
+use crate::app::theme::Theme;
+use crate::format::{number_text, rate_text};
+
+/// The cell under the pointer: where it is and what the analysis says there.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Readout {
+    pub load: f64,
+    pub value: f64,
+    pub state: State,
+    pub growth_per_s: f64,
+}
+
+/// The computed cell nearest to `(load, value)` on the map of `spec`, or
+/// `None` outside the map or on a row not computed (or without analysis).
+#[must_use]
+pub fn cell_at(
+    spec: &MapSpec,
+    rows: &[Option<RowResult>],
+    load: f64,
+    value: f64,
+) -> Option<Readout> {
+    let ((p0, p1), (y0, y1)) = (spec.load_range, spec.axis_range);
+    let index = |x: f64, lo: f64, hi: f64, n: usize| -> Option<usize> {
+        if n < 2 || hi <= lo {
+            return (n == 1).then_some(0);
+        }
+        #[expect(clippy::cast_precision_loss, reason = "cell counts")]
+        let (step, last) = ((hi - lo) / (n - 1) as f64, (n - 1) as f64);
+        let k = ((x - lo) / step).round();
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "checked to lie in 0..n"
+        )]
+        (0.0..=last).contains(&k).then_some(k as usize)
+    };
+    let i = index(load, p0, p1, spec.loads)?;
+    let j = index(value, y0, y1, spec.values)?;
+    let row = rows.get(j)?.as_ref()?.as_ref().ok()?;
+    let cell = row.cells.get(i)?;
+    let loads = spec.load_grid().ok()?;
+    Some(Readout {
+        load: *loads.get(i)?,
+        value: row.value,
+        state: cell.state,
+        growth_per_s: cell.growth_per_s,
+    })
+}
+
+/// The key: a swatch per state, what the brightness says, the boundaries
+/// and the current point.
+pub fn key_ui(ui: &mut egui::Ui, theme: &Theme) {
+    let mut entries: Vec<(Swatch, String)> = [State::Stable, State::Flutter, State::Divergence]
+        .into_iter()
+        .map(|state| {
+            (
+                Swatch::Dot(theme.state_color(state)),
+                state.name().to_owned(),
+            )
+        })
+        .collect();
+    entries.extend([
+        (Swatch::Dot(theme.no_data), "no analysis".to_owned()),
+        (
+            Swatch::Scale(vec![
+                theme.state_color(State::Flutter).gamma_multiply(0.3),
+                theme.state_color(State::Flutter),
+            ]),
+            "brighter: faster growth or decay".to_owned(),
+        ),
+        (Swatch::Line(theme.text), "critical loads".to_owned()),
+        (Swatch::Dot(theme.now), "now".to_owned()),
+    ]);
+    legend_row(ui, &entries);
+}
+
+/// One line in a fixed place: the cell under the pointer, or how to read one.
+pub fn readout_ui(ui: &mut egui::Ui, readout: Option<&Readout>, axis_name: &str, theme: &Theme) {
+    match readout {
+        Some(cell) => {
+            ui.horizontal(|ui| {
+                ui.label(format!(
+                    "p = {}, {axis_name} = {}:",
+                    number_text(cell.load),
+                    number_text(cell.value)
+                ));
+                ui.colored_label(theme.state_color(cell.state), cell.state.name());
+                ui.label(format!("growth rate {} 1/s", rate_text(cell.growth_per_s)));
+            });
+        }
+        None => {
+            ui.weak("point at the map to read a cell; click to take its load and parameter");
+        }
+    }
+}
