@@ -78,12 +78,35 @@ pub enum Action {
         folder: PathBuf,
         secs: f64,
     },
+    /// Saves a table as the command line writes it, to a file chosen in
+    /// the desktop's dialog.
+    SaveCsv(Table),
     /// Something to tell the user (a view's own failure: a copy, a file).
     Say(Notice),
     DismissNotice,
     DismissHint,
     /// Closes the first launch's welcome for good.
     CloseWelcome,
+}
+
+/// A table the window can save.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Table {
+    /// The run's recent past, as `zieglerlab simulate` writes it.
+    History,
+    /// The root locus shown, as `zieglerlab locus` writes it.
+    Locus,
+}
+
+impl Table {
+    /// The file name the dialog proposes.
+    #[must_use]
+    pub fn file_name(self) -> &'static str {
+        match self {
+            Self::History => "zieglerlab-history.csv",
+            Self::Locus => "zieglerlab-locus.csv",
+        }
+    }
 }
 
 impl From<Command> for Action {

@@ -50,6 +50,11 @@ impl History {
         }
     }
 
+    /// Every sample, oldest first.
+    pub fn samples(&self) -> impl Iterator<Item = &Observables> {
+        self.samples.iter()
+    }
+
     /// At most `count` evenly picked samples, oldest first, for drawing.
     pub fn thinned(&self, count: usize) -> impl Iterator<Item = &Observables> {
         let every = self.samples.len().div_ceil(count.max(1)).max(1);

@@ -6,7 +6,8 @@
 mod action;
 mod analysis_cache;
 mod camera;
-mod folder_dialog;
+mod exports;
+mod file_dialog;
 mod grab;
 mod history;
 mod jobs;
@@ -131,6 +132,8 @@ pub struct ZieglerApp {
     /// The record button's choice and its work.
     record_choice: recorder::RecordChoice,
     recorder: recorder::Recorder,
+    /// Tables saved to files.
+    exports: exports::Exports,
     /// How the scene frames the column, and what the mouse holds.
     scene: scene::SceneView,
     /// The state's "reset all" count this view last followed.
@@ -172,6 +175,7 @@ impl ZieglerApp {
             scene: scene::SceneView::default(),
             record_choice: recorder::RecordChoice::default(),
             recorder: recorder::Recorder::default(),
+            exports: exports::Exports::default(),
             last_frame: None,
             actions: Actions::default(),
             input_secs: 0.0,
@@ -274,6 +278,7 @@ impl ZieglerApp {
                 Action::Record { folder, secs } => {
                     self.recorder.start(folder, secs, self.input_secs);
                 }
+                Action::SaveCsv(table) => self.exports.ask(table),
                 action => {
                     for (i, next) in self.state.apply(action).into_iter().enumerate() {
                         queue.insert(i, next);
@@ -392,6 +397,9 @@ impl ZieglerApp {
         }
         self.sidebar.take_clipboard(ui.ctx(), &mut self.actions);
         if let Some(notice) = self.record_choice.take_dialog_answer() {
+            self.state.say(notice);
+        }
+        if let Some(notice) = self.exports.frame(ui.ctx(), &self.state) {
             self.state.say(notice);
         }
         let style = ui.style().clone();

@@ -257,10 +257,21 @@ impl<T: PartialEq> Fit<T> {
     /// The row above the plots: the "fit" button and the hint (neither in
     /// a picture).
     pub fn bar_ui(&mut self, ui: &mut egui::Ui, for_picture: bool) {
+        self.bar_with_ui(ui, for_picture, |_| {});
+    }
+
+    /// [`Fit::bar_ui`] with the tab's own buttons (`extra`) first.
+    pub fn bar_with_ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        for_picture: bool,
+        extra: impl FnOnce(&mut egui::Ui),
+    ) {
         if for_picture {
             return;
         }
         ui.horizontal(|ui| {
+            extra(ui);
             self.asked |= ui
                 .small_button("fit")
                 .on_hover_text(VIEW_HINT_MORE)

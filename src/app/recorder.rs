@@ -12,7 +12,7 @@ use std::sync::{Arc, OnceLock, mpsc};
 use eframe::egui::{self, ColorImage};
 
 use crate::app::action::{Action, Actions};
-use crate::app::folder_dialog::{Closed, FolderDialog};
+use crate::app::file_dialog::{Closed, FileDialog};
 use crate::app::jobs::Jobs;
 use crate::app::notice::Notice;
 use crate::recording::GifRecording;
@@ -372,7 +372,7 @@ pub enum RecordError {
 pub struct RecordChoice {
     pub secs: f64,
     pub folder: String,
-    pub dialog: FolderDialog,
+    pub dialog: FileDialog,
 }
 
 impl Default for RecordChoice {
@@ -380,7 +380,7 @@ impl Default for RecordChoice {
         Self {
             secs: 10.0,
             folder: ".".to_owned(),
-            dialog: FolderDialog::default(),
+            dialog: FileDialog::default(),
         }
     }
 }
@@ -432,9 +432,11 @@ pub fn record_ui(
             .on_hover_text("choose the folder in the desktop's dialog")
             .clicked()
         {
-            choice
-                .dialog
-                .open(Path::new(choice.folder.trim()), ui.ctx());
+            choice.dialog.pick_folder(
+                "zieglerlab: the folder for recordings",
+                Path::new(choice.folder.trim()),
+                ui.ctx(),
+            );
         }
     });
     if recorder.is_capturing() {
@@ -492,12 +494,12 @@ mod tests {
     #[test]
     fn the_folder_dialogs_answer_is_the_recordings_folder() {
         let mut choice = RecordChoice {
-            dialog: FolderDialog::answered(Some(PathBuf::from("/tmp/lecture"))),
+            dialog: FileDialog::answered(Some(PathBuf::from("/tmp/lecture"))),
             ..RecordChoice::default()
         };
         assert_eq!(choice.take_dialog_answer(), None);
         assert_eq!(choice.folder, "/tmp/lecture");
-        choice.dialog = FolderDialog::answered(None);
+        choice.dialog = FileDialog::answered(None);
         let told = choice.take_dialog_answer().expect("a notice");
         assert!(told.text.contains("no folder chosen"), "{}", told.text);
         assert_eq!(choice.folder, "/tmp/lecture");

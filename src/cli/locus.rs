@@ -8,7 +8,7 @@ use clap::ValueEnum;
 use serde_json::json;
 
 use zieglerlab::analysis::{AffinePencil, locus_streamed, resolution_warning};
-use zieglerlab::format::Exact;
+use zieglerlab::export::{LOCUS_HEADER, locus_rows};
 
 use super::{LOAD_AXIS, ModelArgs, printable, progress_bar};
 
@@ -40,7 +40,7 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     // header with the first load, so that a refused range writes nothing.
     let header = |out: &mut dyn Write| -> Result<()> {
         match args.format {
-            Format::Csv => writeln!(out, "load,branch,re,im")?,
+            Format::Csv => writeln!(out, "{LOCUS_HEADER}")?,
             Format::Json => write!(
                 out,
                 "{{\"load_axis\":{},\"preset\":{},\"rows\":[",
@@ -91,21 +91,14 @@ fn write_rows(
     load: f64,
     row: &[zieglerlab::analysis::C64],
 ) -> Result<()> {
+    if matches!(format, Format::Csv) {
+        write!(out, "{}", locus_rows(load, row))?;
+        return Ok(());
+    }
     for (branch, z) in row.iter().enumerate() {
-        match format {
-            Format::Csv => writeln!(
-                out,
-                "{},{branch},{},{}",
-                Exact(load),
-                Exact(z.re),
-                Exact(z.im)
-            )?,
-            Format::Json => {
-                let row = json!({"load": load, "branch": branch, "re": z.re, "im": z.im});
-                let separator = if index == 0 && branch == 0 { "" } else { "," };
-                write!(out, "{separator}{}", serde_json::to_string(&row)?)?;
-            }
-        }
+        let row = json!({"load": load, "branch": branch, "re": z.re, "im": z.im});
+        let separator = if index == 0 && branch == 0 { "" } else { "," };
+        write!(out, "{separator}{}", serde_json::to_string(&row)?)?;
     }
     Ok(())
 }

@@ -8,7 +8,7 @@ use anyhow::Result;
 use clap::ValueEnum;
 use zieglerlab::format::Shown;
 
-use zieglerlab::format::Exact;
+use zieglerlab::export::{history_header, history_row};
 use zieglerlab::sim::{DEFAULT_STEP_SECS, Observables, Ramp, Simulation, Status, initial_state};
 
 use super::{EngineArg, ModelArgs};
@@ -74,41 +74,12 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
         dt,
     )?;
     let mut out = std::io::BufWriter::new(out);
-    let load_column = if args.ramp.is_some() { ",load" } else { "" };
-    // Every rod's angle and rate: phi1, phi2 for two rods, phi1..phiN for a chain.
-    let rods = model.column.rods;
-    let angles: Vec<String> = (1..=rods).map(|i| format!("phi{i}")).collect();
-    let rates: Vec<String> = (1..=rods).map(|i| format!("phi{i}_dot")).collect();
     writeln!(
         out,
-        "t,{},psi,{},psi_dot,delta,energy{load_column}",
-        angles.join(","),
-        rates.join(",")
+        "{}",
+        history_header(model.column.rods, args.ramp.is_some())
     )?;
-    let mut row = |o: &Observables, load: Option<f64>| {
-        let join = |values: &[f64]| {
-            values
-                .iter()
-                .map(|&x| Exact(x).to_string())
-                .collect::<Vec<_>>()
-                .join(",")
-        };
-        write!(
-            out,
-            "{},{},{},{},{},{},{}",
-            Exact(o.t_secs),
-            join(&o.angles_rad),
-            Exact(o.psi_rad),
-            join(&o.rates_rad_per_s),
-            Exact(o.psi_dot_rad_per_s),
-            Exact(o.delta_rad),
-            Exact(o.energy_j())
-        )?;
-        match load {
-            Some(p) => writeln!(out, ",{}", Exact(p)),
-            None => writeln!(out),
-        }
-    };
+    let mut row = |o: &Observables, load: Option<f64>| writeln!(out, "{}", history_row(o, load));
     let first_load = args.ramp.map(|ramp| ramp.from_p);
     row(&simulation.observe(), first_load)?;
     // A row that cannot be written (the reader went away: `| head`) ends

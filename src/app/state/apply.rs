@@ -42,7 +42,9 @@ impl AppState {
             Action::DismissNotice => self.notice = None,
             Action::DismissHint => self.first_launch.hint = false,
             Action::CloseWelcome => self.first_launch.welcome = false,
-            window @ (Action::Tab(_) | Action::Record { .. }) => return vec![window],
+            window @ (Action::Tab(_) | Action::Record { .. } | Action::SaveCsv(_)) => {
+                return vec![window];
+            }
         }
         Vec::new()
     }

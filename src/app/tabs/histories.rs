@@ -3,9 +3,9 @@
 
 use eframe::egui;
 
-use super::{TabSpec, TabView};
+use super::{TabSpec, TabView, save_csv_button};
 use crate::app::View;
-use crate::app::action::Actions;
+use crate::app::action::{Actions, Table};
 use crate::app::plot_frame::Fit;
 use crate::app::plots::histories_ui;
 use crate::app::state::AppState;
@@ -28,8 +28,10 @@ pub struct HistoriesTab {
 impl TabView for HistoriesTab {}
 
 impl View for HistoriesTab {
-    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, _actions: &mut Actions, theme: &Theme) {
-        self.fit.bar_ui(ui, state.for_picture());
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
+        self.fit.bar_with_ui(ui, state.for_picture(), |ui| {
+            save_csv_button(ui, Table::History, actions);
+        });
         let refit = self.fit.refit(state.view_generation());
         let band = state.model().roller().is_some();
         histories_ui(ui, state.history(), band, refit, theme);

@@ -4,10 +4,10 @@
 
 use eframe::egui::{self, vec2};
 
-use super::{TabSpec, TabView};
+use super::{TabSpec, TabView, save_csv_button};
 use crate::analysis::Locus;
 use crate::app::View;
-use crate::app::action::Actions;
+use crate::app::action::{Actions, Table};
 use crate::app::plot_frame::{Fit, Swatch, legend_row};
 use crate::app::plots::{root_locus_ui, versus_load_ui};
 use crate::app::state::AppState;
@@ -33,7 +33,7 @@ pub struct LocusTab {
 impl TabView for LocusTab {}
 
 impl View for LocusTab {
-    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, _actions: &mut Actions, theme: &Theme) {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
         let Some(analysis) = state.analysis() else {
             if state.analysis_pending() {
                 // A long chain's first analysis takes seconds, off this thread.
@@ -52,7 +52,9 @@ impl View for LocusTab {
             );
             return;
         };
-        self.fit.bar_ui(ui, state.for_picture());
+        self.fit.bar_with_ui(ui, state.for_picture(), |ui| {
+            save_csv_button(ui, Table::Locus, actions);
+        });
         let overlay = state.overlay();
         legend_ui(ui, state, &analysis.locus, theme);
         // The analysis drawn (it may come in a frame after the parameters).

@@ -12,6 +12,7 @@ mod paradox;
 use std::any::Any;
 
 use super::View;
+use super::action::{Action, Actions, Table};
 use super::state::AppState;
 
 /// A tab's view: it draws itself from the state (a [`View`]) and can finish
@@ -168,6 +169,18 @@ impl Tabs {
 
 pub use locus::LocusTab;
 pub use map::MapPanel;
+
+/// A tab's button that saves its table, as the command line writes it, to
+/// a file chosen in the desktop's dialog.
+fn save_csv_button(ui: &mut eframe::egui::Ui, table: Table, actions: &mut Actions) {
+    if ui
+        .small_button("save CSV...")
+        .on_hover_text("the numbers behind these plots, in the command line's columns, to a file")
+        .clicked()
+    {
+        actions.push(Action::SaveCsv(table));
+    }
+}
 
 #[cfg(test)]
 mod tests {

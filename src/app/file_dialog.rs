@@ -1,43 +1,57 @@
-//! The desktop's folder dialog, opened off the UI thread (the window keeps
-//! drawing while it is open), its answer handed to the frame that asks.
+//! The desktop's file and folder dialogs, opened off the UI thread (the
+//! window keeps drawing while one is open), the answer handed to the frame
+//! that asks.
 
 use std::path::{Path, PathBuf};
 use std::sync::mpsc;
 
 use eframe::egui;
 
-/// How a folder dialog closed.
+/// How a dialog closed.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Closed {
+    /// The folder or file chosen.
     Chosen(PathBuf),
     /// Cancelled, or no dialog could open on this desktop.
     NoneChosen,
 }
 
-/// A folder dialog that may be open.
+/// A dialog that may be open.
 #[derive(Default)]
-pub struct FolderDialog {
+pub struct FileDialog {
     answer: Option<mpsc::Receiver<Option<PathBuf>>>,
 }
 
-impl FolderDialog {
-    /// Opens the desktop's folder dialog at `start` (unless one is open);
-    /// the window is woken when it closes.
-    pub fn open(&mut self, start: &Path, ctx: &egui::Context) {
+impl FileDialog {
+    /// Opens the desktop's folder dialog at `start` (unless a dialog is
+    /// open); the window is woken when it closes.
+    pub fn pick_folder(&mut self, title: &str, start: &Path, ctx: &egui::Context) {
+        let dialog = rfd::FileDialog::new().set_title(title).set_directory(start);
+        self.open(ctx, move || dialog.pick_folder());
+    }
+
+    /// Opens the desktop's dialog to save a file, proposing `name` (unless a
+    /// dialog is open); the window is woken when it closes.
+    pub fn save_file(&mut self, title: &str, name: &str, ctx: &egui::Context) {
+        let dialog = rfd::FileDialog::new().set_title(title).set_file_name(name);
+        self.open(ctx, move || dialog.save_file());
+    }
+
+    fn open(
+        &mut self,
+        ctx: &egui::Context,
+        ask: impl FnOnce() -> Option<PathBuf> + Send + 'static,
+    ) {
         if self.is_open() {
             return;
         }
         let (send, answer) = mpsc::channel();
-        let (start, ctx) = (start.to_path_buf(), ctx.clone());
+        let ctx = ctx.clone();
         let spawned = std::thread::Builder::new()
-            .name("folder dialog".to_owned())
+            .name("file dialog".to_owned())
             .spawn(move || {
-                let chosen = rfd::FileDialog::new()
-                    .set_title("zieglerlab: the folder for recordings")
-                    .set_directory(start)
-                    .pick_folder();
                 // A window closed meanwhile has dropped the receiver.
-                let _ = send.send(chosen);
+                let _ = send.send(ask());
                 ctx.request_repaint();
             });
         if spawned.is_ok() {
@@ -85,14 +99,14 @@ mod tests {
     /// without one (no desktop dialog at all) answers "none chosen".
     #[test]
     fn the_answer_is_handed_over_once() {
-        let mut dialog = FolderDialog::answered(Some(PathBuf::from("/tmp")));
+        let mut dialog = FileDialog::answered(Some(PathBuf::from("/tmp")));
         assert!(dialog.is_open());
         assert_eq!(dialog.answer(), Some(Closed::Chosen(PathBuf::from("/tmp"))));
         assert!(!dialog.is_open());
         assert_eq!(dialog.answer(), None);
         let (send, answer) = mpsc::channel::<Option<PathBuf>>();
         drop(send);
-        let mut gone = FolderDialog {
+        let mut gone = FileDialog {
             answer: Some(answer),
         };
         assert_eq!(gone.answer(), Some(Closed::NoneChosen));

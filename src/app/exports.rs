@@ -1,0 +1,134 @@
+//! Tables saved from the window: the run's recent past and the root locus,
+//! in the command line's columns, to a file chosen in the desktop's dialog
+//! and written whole or not at all.
+
+use std::io::Write as _;
+use std::path::Path;
+
+use eframe::egui;
+
+use super::action::Table;
+use super::file_dialog::{Closed, FileDialog};
+use super::notice::Notice;
+use super::state::AppState;
+use crate::export::{history_csv, locus_csv};
+
+/// A table asked for, and the dialog that chooses its file.
+#[derive(Default)]
+pub struct Exports {
+    dialog: FileDialog,
+    /// Asked for, the dialog not opened yet (it needs the frame's context).
+    asked: Option<Table>,
+    /// The table the open dialog is for.
+    open_for: Option<Table>,
+}
+
+impl Exports {
+    /// Saves `table` once a file is chosen (one dialog at a time).
+    pub fn ask(&mut self, table: Table) {
+        if !self.dialog.is_open() {
+            self.asked = Some(table);
+        }
+    }
+
+    /// Opens the dialog asked for, and writes the table once its file is
+    /// chosen: what to tell the user then.
+    pub fn frame(&mut self, ctx: &egui::Context, state: &AppState) -> Option<Notice> {
+        if let Some(table) = self.asked.take() {
+            self.dialog
+                .save_file("zieglerlab: save the table", table.file_name(), ctx);
+            self.open_for = Some(table);
+        }
+        let closed = self.dialog.answer()?;
+        let table = self.open_for.take()?;
+        Some(match closed {
+            Closed::Chosen(path) => save(table, state, &path),
+            Closed::NoneChosen => Notice::info(
+                "not saved: no file chosen (where no dialog opened, this desktop offers none)",
+            ),
+        })
+    }
+}
+
+/// The table's text as the window shows it now.
+///
+/// # Errors
+/// No root locus for these parameters.
+pub fn table_csv(table: Table, state: &AppState) -> Result<String, &'static str> {
+    match table {
+        Table::History => Ok(history_csv(
+            state.model().column.rods,
+            state.history().samples(),
+        )),
+        Table::Locus => state
+            .analysis()
+            .map(|analysis| locus_csv(&analysis.locus))
+            .ok_or("there is no root locus for these parameters"),
+    }
+}
+
+/// Writes `table` to `path`, and says how it went.
+fn save(table: Table, state: &AppState, path: &Path) -> Notice {
+    let text = match table_csv(table, state) {
+        Ok(text) => text,
+        Err(why) => return Notice::error(format!("not saved: {why}")),
+    };
+    match crate::files::write_atomically(path, |w| w.write_all(text.as_bytes())) {
+        Ok(()) => Notice::info(format!(
+            "saved {} lines to {}",
+            text.lines().count(),
+            path.display()
+        )),
+        Err(error) => Notice::error(error.to_string()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::app::state::Settings;
+
+    /// A file chosen for the locus gets the command line's table: its
+    /// header and a row per branch at every sample of the locus shown.
+    #[test]
+    fn the_locus_table_goes_to_the_file_chosen() {
+        let mut state = AppState::new(Settings::default()).unwrap();
+        state.settle_analysis();
+        let folder = tempfile::tempdir().unwrap();
+        let path = folder.path().join("locus.csv");
+        let mut exports = Exports {
+            dialog: FileDialog::answered(Some(path.clone())),
+            asked: None,
+            open_for: Some(Table::Locus),
+        };
+        let told = exports.frame(&egui::Context::default(), &state).unwrap();
+        assert!(told.text.starts_with("saved "), "{}", told.text);
+        let text = std::fs::read_to_string(&path).unwrap();
+        let locus = &state.analysis().unwrap().locus;
+        assert!(text.starts_with("load,branch,re,im\n"));
+        assert_eq!(
+            text.lines().count(),
+            1 + locus.loads.len() * locus.branches.len()
+        );
+        // None chosen: nothing written, and said.
+        exports.dialog = FileDialog::answered(None);
+        exports.open_for = Some(Table::History);
+        let told = exports.frame(&egui::Context::default(), &state).unwrap();
+        assert!(told.text.starts_with("not saved"), "{}", told.text);
+    }
+
+    /// The history table has the command line's header for the model's rods
+    /// and a row per sample.
+    #[test]
+    fn the_history_table_has_the_command_lines_columns() {
+        let mut state = AppState::new(Settings::default()).unwrap();
+        state.advance(0.5);
+        let text = table_csv(Table::History, &state).unwrap();
+        let mut lines = text.lines();
+        assert_eq!(
+            lines.next(),
+            Some("t,phi1,phi2,psi,phi1_dot,phi2_dot,psi_dot,delta,energy")
+        );
+        assert_eq!(lines.count(), state.history().samples().count());
+    }
+}
