@@ -166,6 +166,23 @@ pub fn write_atomically(
     Ok(())
 }
 
+/// `image` as a PNG file at `out`, written as [`write_atomically`] does.
+///
+/// # Errors
+/// The encoding or the writing failing.
+pub fn write_png(out: &Path, image: &image::RgbaImage) -> Result<(), WriteError> {
+    write_atomically(out, |w| {
+        let mut encoded = Vec::new();
+        image
+            .write_to(
+                &mut std::io::Cursor::new(&mut encoded),
+                image::ImageFormat::Png,
+            )
+            .map_err(std::io::Error::other)?;
+        std::io::Write::write_all(w, &encoded)
+    })
+}
+
 /// The file a symbolic link at `path` names, in the end (through links to
 /// links), or `None` when `path` is no link. A link to nothing names the
 /// file it would create.

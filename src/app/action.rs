@@ -81,6 +81,9 @@ pub enum Action {
     /// Saves a table as the command line writes it, to a file chosen in
     /// the desktop's dialog.
     SaveCsv(Table),
+    /// Saves the open tab's plots as a PNG, to a file chosen in the
+    /// desktop's dialog.
+    SavePicture,
     /// Something to tell the user (a view's own failure: a copy, a file).
     Say(Notice),
     DismissNotice,

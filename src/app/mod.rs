@@ -16,6 +16,7 @@ mod load_bar;
 mod locus_view;
 mod notice;
 mod pace;
+mod panel_picture;
 mod plot_frame;
 mod plots;
 mod recorder;
@@ -134,6 +135,10 @@ pub struct ZieglerApp {
     recorder: recorder::Recorder,
     /// Tables saved to files.
     exports: exports::Exports,
+    /// The open tab's plots saved as a picture, and where the tab was drawn
+    /// in the last frame.
+    picture: panel_picture::PanelPicture,
+    tab_rect: egui::Rect,
     /// How the scene frames the column, and what the mouse holds.
     scene: scene::SceneView,
     /// The state's "reset all" count this view last followed.
@@ -176,6 +181,8 @@ impl ZieglerApp {
             record_choice: recorder::RecordChoice::default(),
             recorder: recorder::Recorder::default(),
             exports: exports::Exports::default(),
+            picture: panel_picture::PanelPicture::default(),
+            tab_rect: egui::Rect::NOTHING,
             last_frame: None,
             actions: Actions::default(),
             input_secs: 0.0,
@@ -279,6 +286,7 @@ impl ZieglerApp {
                     self.recorder.start(folder, secs, self.input_secs);
                 }
                 Action::SaveCsv(table) => self.exports.ask(table),
+                Action::SavePicture => self.picture.ask(self.tab.id()),
                 action => {
                     for (i, next) in self.state.apply(action).into_iter().enumerate() {
                         queue.insert(i, next);
@@ -377,9 +385,13 @@ impl ZieglerApp {
     pub fn contents_ui(&mut self, ui: &mut egui::Ui) {
         self.apply_pending(ui.ctx());
         let theme = self.applied_theme(ui.ctx());
-        // A recording's frames are pictures too.
-        self.state
-            .set_for_picture(self.for_pictures || self.recorder.is_capturing());
+        if let Some(notice) = self.picture.frame_start(ui.ctx()) {
+            self.state.say(notice);
+        }
+        // A recording's frames are pictures too, and a saved tab's.
+        self.state.set_for_picture(
+            self.for_pictures || self.recorder.is_capturing() || self.picture.capturing(),
+        );
         match self.recorder.frame(ui.ctx()) {
             Some(Ok(path)) => self.state.say(Notice::info(format!(
                 "recording saved to {}",
@@ -428,6 +440,7 @@ impl ZieglerApp {
             .frame(self.panel_frame(egui::Frame::central_panel(&style)))
             .show(ui, |ui| self.central_ui(ui, &theme));
         welcome::welcome_ui(ui.ctx(), &self.state, &mut self.actions, &theme);
+        self.picture.frame_end(ui.ctx(), self.tab_rect);
         self.ask_for_a_frame_if_asked(ui.ctx());
     }
 
@@ -478,6 +491,7 @@ impl ZieglerApp {
                 ui.colored_label(theme.info, ANSWER_HIDDEN_NOTE);
             } else {
                 ui.set_clip_rect(scene_rect);
+                self.tab_rect = scene_rect;
                 self.tabs
                     .view(self.tab)
                     .ui(ui, &self.state, &mut self.actions, theme);
@@ -520,6 +534,7 @@ impl ZieglerApp {
                 .color(theme.info),
             );
         } else {
+            self.tab_rect = ui.available_rect_before_wrap();
             self.tabs
                 .view(self.tab)
                 .ui(ui, &self.state, &mut self.actions, theme);

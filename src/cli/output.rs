@@ -1,7 +1,6 @@
 //! Files the command line writes: the path checked before any work, then
 //! written whole or not at all.
 
-use std::io::Write as _;
 use std::path::Path;
 
 use anyhow::Result;
@@ -62,16 +61,7 @@ pub fn write_atomically(
 
 /// `image` as a PNG file at `out`, atomically.
 pub fn write_png(out: &Path, image: &image::RgbaImage) -> Result<()> {
-    write_atomically(out, |w| {
-        let mut encoded = Vec::new();
-        image
-            .write_to(
-                &mut std::io::Cursor::new(&mut encoded),
-                image::ImageFormat::Png,
-            )
-            .map_err(std::io::Error::other)?;
-        w.write_all(&encoded)
-    })
+    Ok(zieglerlab::files::write_png(out, image)?)
 }
 
 /// Ends the process quietly (status 0, as a Unix tool ends when its reader

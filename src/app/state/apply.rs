@@ -42,7 +42,10 @@ impl AppState {
             Action::DismissNotice => self.notice = None,
             Action::DismissHint => self.first_launch.hint = false,
             Action::CloseWelcome => self.first_launch.welcome = false,
-            window @ (Action::Tab(_) | Action::Record { .. } | Action::SaveCsv(_)) => {
+            window @ (Action::Tab(_)
+            | Action::Record { .. }
+            | Action::SaveCsv(_)
+            | Action::SavePicture) => {
                 return vec![window];
             }
         }

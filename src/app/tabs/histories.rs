@@ -3,7 +3,7 @@
 
 use eframe::egui;
 
-use super::{TabSpec, TabView, save_csv_button};
+use super::{TabSpec, TabView, save_buttons};
 use crate::app::View;
 use crate::app::action::{Actions, Table};
 use crate::app::plot_frame::Fit;
@@ -30,7 +30,7 @@ impl TabView for HistoriesTab {}
 impl View for HistoriesTab {
     fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
         self.fit.bar_with_ui(ui, state.for_picture(), |ui| {
-            save_csv_button(ui, Table::History, actions);
+            save_buttons(ui, Some(Table::History), actions);
         });
         let refit = self.fit.refit(state.view_generation());
         let band = state.model().roller().is_some();

@@ -4,7 +4,7 @@
 
 use eframe::egui::{self, vec2};
 
-use super::{TabSpec, TabView, save_csv_button};
+use super::{TabSpec, TabView, save_buttons};
 use crate::analysis::Locus;
 use crate::app::View;
 use crate::app::action::{Actions, Table};
@@ -53,7 +53,7 @@ impl View for LocusTab {
             return;
         };
         self.fit.bar_with_ui(ui, state.for_picture(), |ui| {
-            save_csv_button(ui, Table::Locus, actions);
+            save_buttons(ui, Some(Table::Locus), actions);
         });
         let overlay = state.overlay();
         legend_ui(ui, state, &analysis.locus, theme);

@@ -170,13 +170,24 @@ impl Tabs {
 pub use locus::LocusTab;
 pub use map::MapPanel;
 
-/// A tab's button that saves its table, as the command line writes it, to
-/// a file chosen in the desktop's dialog.
-fn save_csv_button(ui: &mut eframe::egui::Ui, table: Table, actions: &mut Actions) {
+/// A tab's buttons that save its plots as a PNG and, when it has one, its
+/// table as the command line writes it, each to a file chosen in the
+/// desktop's dialog.
+fn save_buttons(ui: &mut eframe::egui::Ui, table: Option<Table>, actions: &mut Actions) {
     if ui
-        .small_button("save CSV...")
-        .on_hover_text("the numbers behind these plots, in the command line's columns, to a file")
+        .small_button("save PNG...")
+        .on_hover_text("these plots as a picture, without the buttons and hints")
         .clicked()
+    {
+        actions.push(Action::SavePicture);
+    }
+    if let Some(table) = table
+        && ui
+            .small_button("save CSV...")
+            .on_hover_text(
+                "the numbers behind these plots, in the command line's columns, to a file",
+            )
+            .clicked()
     {
         actions.push(Action::SaveCsv(table));
     }
