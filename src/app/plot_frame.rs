@@ -254,14 +254,9 @@ impl<T> Default for Fit<T> {
 }
 
 impl<T: PartialEq> Fit<T> {
-    /// The row above the plots: the "fit" button and the hint (neither in
-    /// a picture).
-    pub fn bar_ui(&mut self, ui: &mut egui::Ui, for_picture: bool) {
-        self.bar_with_ui(ui, for_picture, |_| {});
-    }
-
-    /// [`Fit::bar_ui`] with the tab's own buttons (`extra`) first.
-    pub fn bar_with_ui(
+    /// The row above the plots: the tab's own buttons (`extra`), the "fit"
+    /// button and the hint (none of them in a picture).
+    pub fn bar_ui(
         &mut self,
         ui: &mut egui::Ui,
         for_picture: bool,

@@ -29,7 +29,7 @@ impl TabView for HistoriesTab {}
 
 impl View for HistoriesTab {
     fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
-        self.fit.bar_with_ui(ui, state.for_picture(), |ui| {
+        self.fit.bar_ui(ui, state.for_picture(), |ui| {
             save_buttons(ui, Some(Table::History), actions);
         });
         let refit = self.fit.refit(state.view_generation());

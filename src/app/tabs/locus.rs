@@ -52,7 +52,7 @@ impl View for LocusTab {
             );
             return;
         };
-        self.fit.bar_with_ui(ui, state.for_picture(), |ui| {
+        self.fit.bar_ui(ui, state.for_picture(), |ui| {
             save_buttons(ui, Some(Table::Locus), actions);
         });
         let overlay = state.overlay();

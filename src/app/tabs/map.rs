@@ -8,7 +8,7 @@ use eframe::egui::{self, Color32, ColorImage, TextureHandle, TextureOptions};
 use egui_plot::{Line, Plot, PlotImage, PlotPoint, PlotPoints, Points};
 
 use super::map_key::{Readout, cell_at, key_ui, readout_ui};
-use super::{TabSpec, TabView};
+use super::{TabSpec, TabView, save_buttons};
 use crate::analysis::{AnalysisError, MapSpec, Row, RowResult, State, Transition, compute_map};
 use crate::app::View;
 use crate::app::action::{Action, Actions};
@@ -262,6 +262,7 @@ impl MapPanel {
         ui: &mut egui::Ui,
         model: &Model,
         for_picture: bool,
+        actions: &mut Actions,
         theme: &Theme,
     ) -> Option<Pick> {
         self.controls_ui(ui, model);
@@ -302,7 +303,8 @@ impl MapPanel {
             job.stale = false;
         }
         let texture = job.texture.as_ref()?;
-        self.fit.bar_ui(ui, for_picture);
+        self.fit
+            .bar_ui(ui, for_picture, |ui| save_buttons(ui, None, actions));
         key_ui(ui, theme);
         if !for_picture {
             readout_ui(ui, self.hovered.as_ref(), job.spec.axis.name(), theme);
@@ -392,7 +394,7 @@ impl View for MapPanel {
         let model = *state.model();
         self.follow(&model, model.load_bar_max_p());
         self.generation = state.view_generation();
-        if let Some(pick) = self.draw(ui, &model, state.for_picture(), theme) {
+        if let Some(pick) = self.draw(ui, &model, state.for_picture(), actions, theme) {
             actions.push(Action::MapPick {
                 axis: pick.axis,
                 load: pick.load,

@@ -7,7 +7,7 @@
 use eframe::egui;
 use egui_plot::{Corner, HLine, Legend, Line, Plot, PlotPoints, Points, log_grid_spacer};
 
-use super::{TabSpec, TabView};
+use super::{TabSpec, TabView, save_buttons};
 use crate::analysis::{Curves, DampingKind, first_instability, paradox_curves};
 use crate::app::View;
 use crate::app::action::Actions;
@@ -140,6 +140,7 @@ impl ParadoxPanel {
         model: &Model,
         known: Option<f64>,
         for_picture: bool,
+        actions: &mut Actions,
         theme: &Theme,
     ) {
         self.follow(model);
@@ -163,7 +164,8 @@ impl ParadoxPanel {
             (Load::Follower { .. }, DampingKind::Joints) => "The flutter load with joint dampers c1 = (c1/c2) c2 as the damping level g2 = c2 / sqrt(k m l^2) goes to zero: the limit depends on the ratio and lies below the undamped load (Ziegler's paradox).",
             (Load::Follower { .. }, DampingKind::External) => "The flutter load with equal joint dampers c1 = c2 = c (internal damping) and drag c_ext = (c_ext l^3 / c) c / l^3 along the rods (external damping) as the level g2 = c / sqrt(k m l^2) goes to zero: external damping destabilizes too, and the limit depends on the ratio.",
         });
-        self.fit.bar_ui(ui, for_picture);
+        self.fit
+            .bar_ui(ui, for_picture, |ui| save_buttons(ui, None, actions));
         let refit = self.fit.refit((self.generation, *curves_key));
         let palette = [theme.series[0], theme.series[3], theme.series[4]];
         let highest = curves
@@ -218,7 +220,7 @@ impl TabView for ParadoxPanel {
 }
 
 impl View for ParadoxPanel {
-    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, _actions: &mut Actions, theme: &Theme) {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
         let model = *state.model();
         // The analysis shown during a drag may be of the parameters before:
         // its load is not this model's point.
@@ -230,7 +232,7 @@ impl View for ParadoxPanel {
         if matches!(model.load, Load::Follower { eta, .. } if eta > 0.0) {
             self.kind_ui(ui);
         }
-        self.draw(ui, &model, known, state.for_picture(), theme);
+        self.draw(ui, &model, known, state.for_picture(), actions, theme);
     }
 }
 
