@@ -40,7 +40,17 @@ pub fn thinned(
         .iter()
         .map(|&[x, y]| transform.position_from_point(&PlotPoint::new(x, y)))
         .collect();
-    let keep = simplified(&screen, CURVE_TOLERANCE_PX);
+    // The plot's transform is the last frame's: just after a change of
+    // view it may belong to other bounds, and a tolerance in its pixels may
+    // be far too coarse (it drew chords beside the curves near branch
+    // points). The curve also keeps what a fine canvas of its own extent
+    // needs, so it is never coarser than that.
+    let canvas = on_canvas(&points);
+    let keep: Vec<bool> = simplified(&screen, CURVE_TOLERANCE_PX)
+        .into_iter()
+        .zip(simplified(&canvas, CURVE_TOLERANCE_PX))
+        .map(|(a, b)| a || b)
+        .collect();
     PlotPoints::from(
         points
             .into_iter()
@@ -48,6 +58,34 @@ pub fn thinned(
             .filter_map(|(point, keep)| keep.then_some(point))
             .collect::<Vec<_>>(),
     )
+}
+
+/// The side of the canvas [`thinned`] also simplifies on, in pixels: finer
+/// than any plot's.
+const CANVAS_PX: f64 = 4000.0;
+
+/// `points` on a square canvas of [`CANVAS_PX`] that their own extent fills.
+fn on_canvas(points: &[[f64; 2]]) -> Vec<egui::Pos2> {
+    let finite = points
+        .iter()
+        .filter(|p| p[0].is_finite() && p[1].is_finite());
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in finite {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    let scale = |k: usize| {
+        let range = hi[k] - lo[k];
+        if range > 0.0 { CANVAS_PX / range } else { 0.0 }
+    };
+    let (sx, sy) = (scale(0), scale(1));
+    #[expect(clippy::cast_possible_truncation, reason = "canvas pixels")]
+    points
+        .iter()
+        .map(|p| egui::pos2(((p[0] - lo[0]) * sx) as f32, ((p[1] - lo[1]) * sy) as f32))
+        .collect()
 }
 
 /// Which points of the polyline `points` to keep so that every other one
