@@ -8,7 +8,7 @@ use std::path::Path;
 use eframe::egui;
 
 use super::action::Table;
-use super::file_dialog::{Closed, FileDialog};
+use super::file_dialog::{Closed, FileDialog, NOT_SAVED};
 use super::notice::Notice;
 use super::state::AppState;
 use crate::export::{history_csv, locus_csv};
@@ -43,9 +43,7 @@ impl Exports {
         let table = self.open_for.take()?;
         Some(match closed {
             Closed::Chosen(path) => save(table, state, &path),
-            Closed::NoneChosen => Notice::info(
-                "not saved: no file chosen (where no dialog opened, this desktop offers none)",
-            ),
+            Closed::NoneChosen => Notice::info(NOT_SAVED),
         })
     }
 }

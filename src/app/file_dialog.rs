@@ -16,6 +16,10 @@ pub enum Closed {
     NoneChosen,
 }
 
+/// What a save dialog closed with no file chosen says.
+pub const NOT_SAVED: &str =
+    "not saved: no file chosen (where no dialog opened, this desktop offers none)";
+
 /// A dialog that may be open.
 #[derive(Default)]
 pub struct FileDialog {

@@ -468,6 +468,8 @@ impl ZieglerApp {
         // load bar and the eigenvalues together.
         let locus_beside = self.state.settings().projector
             && (1.0 - scene_share) * height - below_scene_height(theme) < min_plot_height;
+        // While a lesson hides the answer, only the time histories show.
+        let tab_hidden = self.state.answer_hidden() && self.tab != Tab::HISTORIES;
         let (top, _) = ui.allocate_exact_size(
             vec2(ui.available_width(), scene_share * height),
             egui::Sense::hover(),
@@ -487,7 +489,7 @@ impl ZieglerApp {
         ui.scope_builder(egui::UiBuilder::new().max_rect(scene_rect), |ui| {
             if !tab_on_top {
                 scene::scene_ui(ui, &self.state, &mut self.actions, &mut self.scene, theme);
-            } else if self.state.answer_hidden() && self.tab != Tab::HISTORIES {
+            } else if tab_hidden {
                 ui.colored_label(theme.info, ANSWER_HIDDEN_NOTE);
             } else {
                 ui.set_clip_rect(scene_rect);
@@ -525,7 +527,7 @@ impl ZieglerApp {
             } else {
                 "The plots need more room here: a taller window, or projector mode off (P).".to_owned()
             });
-        } else if self.state.answer_hidden() && self.tab != Tab::HISTORIES {
+        } else if tab_hidden {
             ui.label(
                 RichText::new(format!(
                     "{ANSWER_HIDDEN_NOTE} The time histories show what the column does."

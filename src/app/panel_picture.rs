@@ -7,7 +7,7 @@ use std::sync::{Arc, mpsc};
 
 use eframe::egui::{self, ColorImage};
 
-use super::file_dialog::{Closed, FileDialog};
+use super::file_dialog::{Closed, FileDialog, NOT_SAVED};
 use super::notice::Notice;
 
 /// A picture of the tab asked for, on its way.
@@ -52,9 +52,7 @@ impl PanelPicture {
                 ctx.request_repaint();
             }
             Some(Closed::NoneChosen) => {
-                return Some(Notice::info(
-                    "not saved: no file chosen (where no dialog opened, this desktop offers none)",
-                ));
+                return Some(Notice::info(NOT_SAVED));
             }
             None => {}
         }
