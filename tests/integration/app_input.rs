@@ -39,8 +39,13 @@ fn press(harness: &mut Harness<'_>, key: egui::Key) {
 }
 
 pub(crate) fn harness(app: &mut ZieglerApp) -> Harness<'_> {
+    harness_at(app, [1280.0, 800.0])
+}
+
+/// The whole window of `app` at `size`, its first frames run.
+pub(crate) fn harness_at(app: &mut ZieglerApp, size: [f32; 2]) -> Harness<'_> {
     let mut harness = Harness::builder()
-        .with_size([1280.0, 800.0])
+        .with_size(size)
         .build_ui(|ui| app.contents_ui(ui));
     harness.run();
     harness

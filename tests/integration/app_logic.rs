@@ -199,6 +199,15 @@ fn a_late_analysis_of_parameters_left_behind_is_dropped() {
     );
 }
 
+/// The built-in lesson in the file `name`, read as the window reads it.
+fn lesson(name: &str) -> zieglerlab::lesson::Lesson {
+    let (_, text) = zieglerlab::lesson::BUILT_IN
+        .iter()
+        .find(|(n, _)| *n == name)
+        .unwrap();
+    zieglerlab::lesson::Lesson::read(text, &zieglerlab::app::Tab::ids()).unwrap()
+}
+
 /// A lesson after a finished ramp: the ramp of "where flutter starts" runs
 /// to its end (the tabletop held at p = 4), then "is the roller a
 /// follower?" opens. Its first step's load of 1 holds (the finished ramp
@@ -206,11 +215,6 @@ fn a_late_analysis_of_parameters_left_behind_is_dropped() {
 /// marks are gone from the roller's bar.
 #[test]
 fn a_finished_ramp_leaves_the_next_lesson_its_load() {
-    use zieglerlab::lesson::{BUILT_IN, Lesson};
-    let lesson = |name: &str| {
-        let (_, text) = BUILT_IN.iter().find(|(n, _)| *n == name).unwrap();
-        Lesson::read(text, &zieglerlab::app::Tab::ids()).unwrap()
-    };
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     app.apply(Action::LessonOpen(Box::new(lesson(
         "where-flutter-starts.ron",
@@ -297,11 +301,6 @@ fn a_lesson_kicks_by_its_own_size() {
 /// locus of the lesson before stayed behind Ziegler's column).
 #[test]
 fn a_lesson_opens_without_the_last_ones_overlay_or_speed() {
-    use zieglerlab::lesson::{BUILT_IN, Lesson};
-    let lesson = |name: &str| {
-        let (_, text) = BUILT_IN.iter().find(|(n, _)| *n == name).unwrap();
-        Lesson::read(text, &zieglerlab::app::Tab::ids()).unwrap()
-    };
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     app.apply(Action::LessonOpen(Box::new(lesson(
         "is-the-roller-a-follower.ron",

@@ -3,17 +3,33 @@
 //! and settings pasted from the system clipboard.
 
 use eframe::egui;
-use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
 use zieglerlab::app::{Action, Command, Settings, Tab, ZieglerApp};
 use zieglerlab::model::PresetId;
 
-fn harness_at(app: &mut ZieglerApp, size: [f32; 2]) -> Harness<'_> {
-    let mut harness = Harness::builder()
-        .with_size(size)
-        .build_ui(|ui| app.contents_ui(ui));
+use crate::app_input::harness_at;
+
+/// Opens the share menu and asks for a paste from the clipboard; the
+/// window answers, in the next frame, with `answer` (nothing: an empty
+/// clipboard). The frames after are run.
+fn paste_from_clipboard(app: &mut ZieglerApp, answer: Option<&str>) {
+    let mut harness = harness_at(app, [1280.0, 800.0]);
+    harness.get_by_label("share").click();
     harness.run();
-    harness
+    harness.get_by_label("paste from clipboard").click();
+    harness.step();
+    match answer {
+        Some(text) => {
+            harness.event(egui::Event::Paste(text.to_owned()));
+            harness.step();
+            harness.run();
+        }
+        None => {
+            for _ in 0..6 {
+                harness.step();
+            }
+        }
+    }
 }
 
 /// At 1024x768 in normal mode every tool is on the screen without
@@ -52,32 +68,11 @@ fn the_tools_are_in_reach_and_the_keys_help_whole_at_1024x768() {
 fn settings_are_pasted_from_the_clipboard() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     app.apply(Action::Tab(Tab::HISTORIES));
-    {
-        let mut harness = harness_at(&mut app, [1280.0, 800.0]);
-        harness.get_by_label("share").click();
-        harness.run();
-        harness.get_by_label("paste from clipboard").click();
-        harness.step();
-        // What the window answers, in the next frame, with the clipboard's text.
-        harness.event(egui::Event::Paste(
-            "preset = ziegler-1952\nload = 1.5\n".to_owned(),
-        ));
-        harness.step();
-        harness.run();
-    }
+    paste_from_clipboard(&mut app, Some("preset = ziegler-1952\nload = 1.5\n"));
     assert_eq!(app.state().settings().preset, PresetId::Ziegler1952);
     assert!((app.state().model().load_p() - 1.5).abs() < 1e-12);
     assert_eq!(app.layout().tab, Tab::HISTORIES, "a paste keeps the tab");
-    {
-        let mut harness = harness_at(&mut app, [1280.0, 800.0]);
-        harness.get_by_label("share").click();
-        harness.run();
-        harness.get_by_label("paste from clipboard").click();
-        harness.step();
-        harness.event(egui::Event::Paste("hello, world".to_owned()));
-        harness.step();
-        harness.run();
-    }
+    paste_from_clipboard(&mut app, Some("hello, world"));
     let said = app
         .state()
         .notice()
@@ -85,16 +80,8 @@ fn settings_are_pasted_from_the_clipboard() {
         .unwrap_or_default();
     assert!(said.contains("pasted settings"), "{said}");
     assert_eq!(app.state().settings().preset, PresetId::Ziegler1952);
-    {
-        let mut harness = harness_at(&mut app, [1280.0, 800.0]);
-        harness.get_by_label("share").click();
-        harness.run();
-        harness.get_by_label("paste from clipboard").click();
-        // No answer: the clipboard holds no text.
-        for _ in 0..6 {
-            harness.step();
-        }
-    }
+    // No answer: the clipboard holds no text.
+    paste_from_clipboard(&mut app, None);
     let said = app
         .state()
         .notice()

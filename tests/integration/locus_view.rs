@@ -5,18 +5,13 @@
 //! the rest.
 
 use eframe::egui;
-use egui_kittest::Harness;
 use zieglerlab::analysis::C64;
 use zieglerlab::app::{Action, LOCUS_SHOWN_ID, LocusShown, Settings, Side, ZieglerApp};
 use zieglerlab::model::PresetId;
 
 /// The view the locus tab drew in a window of `size` with `app`.
 fn shown(app: &mut ZieglerApp, size: [f32; 2]) -> LocusShown {
-    let mut harness = Harness::builder()
-        .with_size(size)
-        .build_ui(|ui| app.contents_ui(ui));
-    harness.run();
-    harness
+    crate::app_input::harness_at(app, size)
         .ctx
         .data(|data| data.get_temp::<LocusShown>(egui::Id::unique(LOCUS_SHOWN_ID)))
         .expect("the locus tab drew its view")

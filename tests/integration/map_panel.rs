@@ -3,7 +3,6 @@
 //! here.
 
 use eframe::egui;
-use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT as _, Queryable as _};
 use zieglerlab::app::{Action, Settings, Tab, ZieglerApp};
 
@@ -28,10 +27,7 @@ fn the_cell_under_the_pointer_is_read_out() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     app.apply(Action::Tab(Tab::MAP));
     app.complete_background_work(Tab::MAP);
-    let mut harness = Harness::builder()
-        .with_size([1280.0, 800.0])
-        .build_ui(|ui| app.contents_ui(ui));
-    harness.run();
+    let mut harness = crate::app_input::harness(&mut app);
     let hint = harness.get_by_label_contains("point at the map").rect();
     harness.hover_at(egui::pos2(hint.left() + 400.0, hint.bottom() + 120.0));
     harness.run();

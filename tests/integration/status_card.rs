@@ -2,7 +2,6 @@
 //! is its accesskit value): the mode it describes, and the run's
 //! measurement of that same mode.
 
-use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT as _, Queryable as _};
 use zieglerlab::analysis::classify;
 use zieglerlab::app::{Action, Settings, ZieglerApp};
@@ -30,10 +29,7 @@ fn the_card_measures_the_mode_it_describes() {
         .expect("measured after 30 s")
         .to_vec();
     assert!(measured.len() >= 2, "{measured:?}");
-    let mut harness = Harness::builder()
-        .with_size([1280.0, 800.0])
-        .build_ui(|ui| app.contents_ui(ui));
-    harness.run();
+    let harness = crate::app_input::harness(&mut app);
     let slower = card.im.abs() < 5.0;
     let mode = if slower { "mode 1 of 2" } else { "mode 2 of 2" };
     let frequency_line = harness
