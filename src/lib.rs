@@ -12,6 +12,7 @@ pub mod analysis;
 pub mod app;
 pub mod bench;
 pub mod export;
+pub mod figure;
 pub mod files;
 pub mod format;
 pub mod lesson;

@@ -42,6 +42,28 @@ fn stability_at(pencil: &AffinePencil, p: f64) -> Result<Stability, AnalysisErro
     Ok(classify(&spectrum.eigenvalues, spectrum.scale_per_s))
 }
 
+/// The stability ranges `(from, to, state)` covering `[min, max]`, from the
+/// transitions over it and the state at `min`.
+#[must_use]
+pub fn stability_ranges(
+    transitions: &[Transition],
+    first: State,
+    min: f64,
+    max: f64,
+) -> Vec<(f64, f64, State)> {
+    let mut out = Vec::new();
+    let (mut start, mut state) = (min, first);
+    for t in transitions.iter().filter(|t| t.load > min) {
+        if t.load > max {
+            break;
+        }
+        out.push((start, t.load, state));
+        (start, state) = (t.load, t.to);
+    }
+    out.push((start, max, state));
+    out
+}
+
 pub(super) fn state_at(pencil: &AffinePencil, p: f64) -> Result<State, AnalysisError> {
     stability_at(pencil, p).map(|s| s.state)
 }
@@ -295,6 +317,28 @@ mod tests {
     use super::*;
     use crate::analysis::bracketing_locus;
     use crate::model::{Axis, Key, Model, PRESETS, PresetId};
+
+    #[test]
+    fn stability_ranges_cover_the_range_from_its_start_to_its_end() {
+        let t = |load, from, to| Transition { load, from, to };
+        let transitions = [
+            t(2.0, State::Stable, State::Flutter),
+            t(4.0, State::Flutter, State::Divergence),
+            t(9.0, State::Divergence, State::Flutter),
+        ];
+        assert_eq!(
+            stability_ranges(&transitions, State::Stable, 0.0, 8.0),
+            vec![
+                (0.0, 2.0, State::Stable),
+                (2.0, 4.0, State::Flutter),
+                (4.0, 8.0, State::Divergence)
+            ]
+        );
+        assert_eq!(
+            stability_ranges(&transitions, State::Flutter, 3.0, 5.0),
+            vec![(3.0, 4.0, State::Flutter), (4.0, 5.0, State::Divergence)]
+        );
+    }
 
     /// Bisects every change of stability that the bracketing locus of
     /// `model` shows both ways and returns how many there were.

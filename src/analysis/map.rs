@@ -237,3 +237,46 @@ pub fn compute(
         };
     }
 }
+#[must_use]
+/// The map's default second axis and its range for a model: the roller's mass
+/// ratio; for the columns the damping level (the paradox in a picture).
+pub fn default_map_axis(model: &Model) -> (Axis, (f64, f64)) {
+    if model.roller().is_some() {
+        (Axis::Key(crate::model::Key::Nu), (0.005, 1.0))
+    } else {
+        (Axis::DampingLevel, (0.0, 0.5))
+    }
+}
+
+/// The boundaries between states: each row's critical loads joined to the next row's of
+/// the same kind and order.
+#[must_use]
+pub fn boundaries(rows: &[Option<RowResult>]) -> Vec<Vec<[f64; 2]>> {
+    // A boundary's kind: the change of state and its order among the row's
+    // changes of that kind.
+    type Kind = (State, State, usize);
+    let mut curves: Vec<(Kind, Vec<[f64; 2]>)> = Vec::new();
+    let mut open: Vec<Kind> = Vec::new();
+    for row in rows {
+        let Some(Ok(Row {
+            value, transitions, ..
+        })) = row
+        else {
+            // A missing row breaks every curve.
+            open.clear();
+            continue;
+        };
+        let mut seen: Vec<Kind> = Vec::new();
+        for Transition { load, from, to } in transitions {
+            let k = seen.iter().filter(|s| (s.0, s.1) == (*from, *to)).count();
+            let kind = (*from, *to, k);
+            seen.push(kind);
+            match curves.iter_mut().rev().find(|(c, _)| *c == kind) {
+                Some((_, points)) if open.contains(&kind) => points.push([*load, *value]),
+                _ => curves.push((kind, vec![[*load, *value]])),
+            }
+        }
+        open = seen;
+    }
+    curves.into_iter().map(|(_, points)| points).collect()
+}

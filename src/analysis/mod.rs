@@ -15,12 +15,15 @@ pub use critical::{
     BRACKET_SAMPLES, LARGEST_LOAD, bracketing_locus, bracketing_locus_reporting, critical_loads,
     critical_loads_along,
 };
-pub use crossing::Transition;
+pub use crossing::{Transition, stability_ranges};
 pub use locus::{Locus, MAX_HELD_EIGENVALUES, load_grid, locus, locus_streamed, max_samples};
-pub use map::{Cell, MapSpec, Row, RowResult, compute as compute_map};
+pub use map::{
+    Cell, MapSpec, Row, RowResult, boundaries as map_boundaries, compute as compute_map,
+    default_map_axis,
+};
 pub use paradox::{
     Curves, DampingKind, curves as paradox_curves, first_instability, first_loss_of_stability,
-    flutter_load_damped, flutter_load_external,
+    flutter_load_damped, flutter_load_external, swept_ratio,
 };
 pub use pencil::{AffinePencil, Spectrum, spectrum};
 pub use resolution::resolution_warning;

@@ -127,6 +127,17 @@ impl DampingKind {
     }
 }
 
+/// The ratio the explorer's x axis sweeps, for `model` itself: the
+/// roller's mass ratio nu, or the damping ratio of `kind` (NaN when the
+/// model has no such damping).
+#[must_use]
+pub fn swept_ratio(model: &Model, kind: DampingKind) -> f64 {
+    match model.load {
+        Load::Roller(_) => Axis::Key(Key::Nu).get(model),
+        Load::Follower { .. } => kind.ratio(model),
+    }
+}
+
 /// What the explorer draws: curves of the first critical load against
 /// log10 of the swept ratio, and the undamped (or massless) reference.
 #[derive(Clone, Debug, Default)]

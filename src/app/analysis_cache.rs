@@ -4,7 +4,7 @@
 
 use crate::analysis::{
     AffinePencil, AnalysisError, BRACKET_SAMPLES, Locus, State, Transition, classify,
-    critical_loads_along, first_loss_of_stability, locus, resolution_warning,
+    critical_loads_along, first_loss_of_stability, locus, resolution_warning, stability_ranges,
 };
 use crate::model::ValidModel;
 
@@ -35,7 +35,7 @@ impl Analysis {
         let warning = resolution_warning(&pencil, &locus)?;
         let at_zero = pencil.spectrum(0.0)?;
         let first = classify(&at_zero.eigenvalues, at_zero.scale_per_s).state;
-        let ranges = ranges(&transitions, first, load_max);
+        let ranges = stability_ranges(&transitions, first, 0.0, load_max);
         Ok(Self {
             key,
             pencil,
@@ -51,49 +51,5 @@ impl Analysis {
     #[must_use]
     pub fn first_instability(&self) -> Option<f64> {
         first_loss_of_stability(&self.transitions)
-    }
-}
-
-/// The stability ranges `(from, to, state)` covering `[0, max]`, from the
-/// transitions and the state at p = 0.
-#[must_use]
-pub fn ranges(transitions: &[Transition], first: State, max: f64) -> Vec<(f64, f64, State)> {
-    let mut out = Vec::new();
-    let (mut start, mut state) = (0.0, first);
-    for t in transitions {
-        if t.load > max {
-            break;
-        }
-        out.push((start, t.load, state));
-        (start, state) = (t.load, t.to);
-    }
-    out.push((start, max, state));
-    out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn t(load: f64, from: State, to: State) -> Transition {
-        Transition { load, from, to }
-    }
-
-    #[test]
-    fn ranges_cover_the_slider_from_zero_to_its_end() {
-        let transitions = [
-            t(2.0, State::Stable, State::Flutter),
-            t(4.0, State::Flutter, State::Divergence),
-            t(9.0, State::Divergence, State::Flutter),
-        ];
-        let ranges = ranges(&transitions, State::Stable, 8.0);
-        assert_eq!(
-            ranges,
-            vec![
-                (0.0, 2.0, State::Stable),
-                (2.0, 4.0, State::Flutter),
-                (4.0, 8.0, State::Divergence)
-            ]
-        );
     }
 }

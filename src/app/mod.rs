@@ -38,18 +38,17 @@ use eframe::egui::{self, RichText, vec2};
 use crate::model::PresetId;
 use crate::sim::{SimError, Simulation};
 use action::Actions;
-use theme::Theme;
 
 pub use action::{Action, Command};
 pub use layout::Layout;
-pub use locus_view::{EdgeMark, Side, ViewRect};
+pub use locus_view::{EdgeMark, Side, ViewRect, deciding_extent, default_view};
 pub use notice::{Level, Notice};
 pub use pace::{MAX_FRAME_SECS, MAX_STEPS_PER_FRAME};
 pub use plot_frame::VIEW_HINT;
 pub use plots::{LOCUS_SHOWN_ID, LocusShown};
 pub use state::{AppState, Settings};
 pub use tabs::Tab;
-pub use tabs::map::map_picture;
+pub use theme::Theme;
 pub use window::{Renderer, WindowFrames, run, time_window_frames};
 
 /// The key the settings are stored under.

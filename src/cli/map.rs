@@ -13,9 +13,10 @@ use zieglerlab::analysis::{
 };
 use zieglerlab::model::{Axis, Key, Shown};
 
+use zieglerlab::figure::{self, Content, MapData, Page, render};
 use zieglerlab::format::Exact;
 
-use super::output::{check_output, write_atomically, write_png};
+use super::output::{check_output, write_atomically};
 use super::{ModelArgs, printable, progress_bar};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -31,11 +32,11 @@ const MAX_CELLS: usize = 2048;
 /// to MAX, ends included (the name may hold ':'-free '/', as c1/c2).
 #[derive(Clone, Debug)]
 pub struct AxisArg {
-    text: String,
-    name: String,
-    min: f64,
-    max: f64,
-    count: usize,
+    pub text: String,
+    pub name: String,
+    pub min: f64,
+    pub max: f64,
+    pub count: usize,
 }
 
 impl FromStr for AxisArg {
@@ -126,7 +127,7 @@ pub fn run(args: &Args) -> Result<()> {
         axis_range: (y.min, y.max),
         values: y.count,
     };
-    let rows = compute(&spec)?;
+    let rows = compute_rows(&spec)?;
     let mut complete = Vec::with_capacity(y.count);
     for row in &rows {
         match row {
@@ -157,26 +158,17 @@ pub fn run(args: &Args) -> Result<()> {
             })?;
         }
         Format::Png => {
-            let scale = (512 / x.count.max(y.count)).max(1);
-            let picture = zieglerlab::app::map_picture(&rows, x.count, scale);
-            let [width, height] = picture.size;
-            let bytes: Vec<u8> = picture
-                .pixels
-                .iter()
-                .flat_map(eframe::egui::Color32::to_array)
-                .collect();
-            let width = u32::try_from(width)?;
-            let height = u32::try_from(height)?;
-            let image = image::RgbaImage::from_raw(width, height, bytes)
-                .ok_or_else(|| anyhow::anyhow!("the map picture has the wrong size"))?;
-            write_png(out, &image)?;
+            // The same figure as `figure --kind map`, at its default page.
+            let data = MapData { spec, rows };
+            let rendered = render(&Content::Map(&data), &Page::default(), figure::Format::Png)?;
+            write_atomically(out, |file| file.write_all(&rendered.bytes))?;
         }
     }
     Ok(())
 }
 
 /// Every row of `spec` on every core, with a progress bar.
-fn compute(spec: &MapSpec) -> Result<Vec<Option<RowResult>>> {
+pub fn compute_rows(spec: &MapSpec) -> Result<Vec<Option<RowResult>>> {
     let rows: std::sync::Mutex<Vec<Option<RowResult>>> =
         std::sync::Mutex::new(vec![None; spec.values]);
     let threads = std::thread::available_parallelism().map_or(2, std::num::NonZero::get);
@@ -196,7 +188,7 @@ fn compute(spec: &MapSpec) -> Result<Vec<Option<RowResult>>> {
 /// Checks the resolution of the map's rows at both ends of the second axis
 /// and in its middle: where a singular limit (a tiny roller mass, a slow
 /// band) leaves the states to rounding, the map says so as `critical` does.
-fn warn_if_unresolved(spec: &MapSpec, rows: &[&Row], y_name: &str) -> Result<()> {
+pub fn warn_if_unresolved(spec: &MapSpec, rows: &[&Row], y_name: &str) -> Result<()> {
     let (load_min, load_max) = spec.load_range;
     for row in [rows.first(), rows.get(rows.len() / 2), rows.last()]
         .into_iter()

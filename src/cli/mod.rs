@@ -4,6 +4,7 @@
 
 mod bench;
 mod critical;
+mod figure;
 mod headless;
 mod lesson;
 mod locus;
@@ -177,6 +178,10 @@ enum Command {
     /// Stability map: the state and growth rate of every cell of a grid over
     /// the load and a second parameter (a key, c1/c2 or damping).
     Map(map::Args),
+    /// A figure for a paper, SVG or PNG at a journal's size: the root locus,
+    /// Re and Im against the load (other presets overlaid), the stability
+    /// map or the paradox curves.
+    Figure(figure::Args),
     /// Speed: the root locus, the eigenvalues, the critical loads, both
     /// engines and the app's frame time, measured in this process.
     Bench(bench::Args),
@@ -300,6 +305,7 @@ fn execute(command: &Command) -> Result<()> {
         Command::Locus(args) => locus::run(args, &mut out),
         Command::Simulate(args) => simulate::run(args, &mut out),
         Command::Map(args) => map::run(args),
+        Command::Figure(args) => figure::run(args),
         Command::Bench(args) => bench::run(args, &mut out),
         Command::Snapshot(args) => snapshot::run(args),
         Command::Record(args) => record::run(args),

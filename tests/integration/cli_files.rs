@@ -61,8 +61,9 @@ fn map_png_is_written() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    // Cells of 8 x 8 pixels (the longer side reaches 512).
-    assert_eq!(png_size(&path), (512, 256));
+    // The map figure (as `figure --kind map`) on its default page: 85 x 68
+    // mm at 300 dpi.
+    assert_eq!(png_size(&path), (1004, 803));
     std::fs::remove_file(&path).unwrap();
 }
 

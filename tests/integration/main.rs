@@ -17,6 +17,7 @@ mod damped_ziegler;
 mod eigen_solver;
 mod energy_balance;
 mod external_damping;
+mod figures;
 mod jacobian;
 mod lecture_pace;
 mod locus_tracking;

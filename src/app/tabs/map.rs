@@ -9,7 +9,10 @@ use egui_plot::{Line, Plot, PlotImage, PlotPoint, PlotPoints, Points};
 
 use super::map_key::{Readout, cell_at, key_ui, readout_ui};
 use super::{TabSpec, TabView, save_buttons};
-use crate::analysis::{AnalysisError, MapSpec, Row, RowResult, State, Transition, compute_map};
+use crate::analysis::{
+    AnalysisError, MapSpec, RowResult, State, compute_map, default_map_axis,
+    map_boundaries as boundaries,
+};
 use crate::app::View;
 use crate::app::action::{Action, Actions};
 use crate::app::jobs::{Cancel, Jobs};
@@ -17,7 +20,7 @@ use crate::app::plot_frame::{Fit, SingleClick, axes, refit_if};
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::number_text;
-use crate::model::{Axis, Key, Model};
+use crate::model::{Axis, Model};
 
 /// Cells along the load and along the second parameter.
 pub const MAP_LOADS: usize = 256;
@@ -126,16 +129,6 @@ impl Default for MapPanel {
     }
 }
 
-/// The default second axis and its range for a model: the roller's mass
-/// ratio; for the columns the damping level (the paradox in a picture).
-fn default_axis(model: &Model) -> (Axis, (f64, f64)) {
-    if model.roller().is_some() {
-        (Axis::Key(Key::Nu), (0.005, 1.0))
-    } else {
-        (Axis::DampingLevel, (0.0, 0.5))
-    }
-}
-
 /// What a click on the map asks for: the load and the second parameter.
 pub struct Pick {
     pub load: f64,
@@ -168,7 +161,7 @@ impl MapPanel {
             .as_ref()
             .is_some_and(|axis| Axis::parse(axis.name(), model).is_ok());
         if !fits {
-            let (axis, range) = default_axis(model);
+            let (axis, range) = default_map_axis(model);
             self.axis = Some(axis);
             self.range = range;
         }
@@ -456,38 +449,6 @@ pub fn map_image(rows: &[Option<RowResult>], loads: usize, theme: &Theme) -> Col
     image
 }
 
-/// The boundaries: each row's critical loads joined to the next row's of
-/// the same kind and order.
-fn boundaries(rows: &[Option<RowResult>]) -> Vec<Vec<[f64; 2]>> {
-    // A boundary's kind: the change of state and its order among the row's
-    // changes of that kind.
-    type Kind = (State, State, usize);
-    let mut curves: Vec<(Kind, Vec<[f64; 2]>)> = Vec::new();
-    let mut open: Vec<Kind> = Vec::new();
-    for row in rows {
-        let Some(Ok(Row {
-            value, transitions, ..
-        })) = row
-        else {
-            // A missing row breaks every curve.
-            open.clear();
-            continue;
-        };
-        let mut seen: Vec<Kind> = Vec::new();
-        for Transition { load, from, to } in transitions {
-            let k = seen.iter().filter(|s| (s.0, s.1) == (*from, *to)).count();
-            let kind = (*from, *to, k);
-            seen.push(kind);
-            match curves.iter_mut().rev().find(|(c, _)| *c == kind) {
-                Some((_, points)) if open.contains(&kind) => points.push([*load, *value]),
-                _ => curves.push((kind, vec![[*load, *value]])),
-            }
-        }
-        open = seen;
-    }
-    curves.into_iter().map(|(_, points)| points).collect()
-}
-
 /// The map with its boundaries and the current point. Returns a click's
 /// pick this frame, whether the frame completed a double-click, and where
 /// the pointer is on the map.
@@ -557,21 +518,4 @@ fn map_plot_ui(
         },
     });
     (pick, double, pointer)
-}
-
-/// The map as a picture for a file (`zieglerlab map --format png`): the
-/// app's colours, each cell a `scale` x `scale` block, the first row at the
-/// bottom.
-#[must_use]
-pub fn map_picture(rows: &[Option<RowResult>], loads: usize, scale: usize) -> ColorImage {
-    let cells = map_image(rows, loads, &Theme::NORMAL);
-    let scale = scale.max(1);
-    let [width, height] = cells.size;
-    let mut picture = ColorImage::filled([width * scale, height * scale], Color32::BLACK);
-    for y in 0..height * scale {
-        for x in 0..width * scale {
-            picture.pixels[y * width * scale + x] = cells.pixels[(y / scale) * width + x / scale];
-        }
-    }
-    picture
 }

@@ -8,7 +8,7 @@ use eframe::egui;
 use egui_plot::{Corner, HLine, Legend, Line, Plot, PlotPoints, Points, log_grid_spacer};
 
 use super::{TabSpec, TabView, save_buttons};
-use crate::analysis::{Curves, DampingKind, first_instability, paradox_curves};
+use crate::analysis::{Curves, DampingKind, first_instability, paradox_curves, swept_ratio};
 use crate::app::View;
 use crate::app::action::Actions;
 use crate::app::jobs::Jobs;
@@ -122,10 +122,7 @@ impl ParadoxPanel {
         {
             return *point;
         }
-        let x = match model.load {
-            Load::Roller(_) => Axis::Key(Key::Nu).get(model),
-            Load::Follower { .. } => self.kind.ratio(model),
-        };
+        let x = swept_ratio(model, self.kind);
         let point = (x > 0.0 && x.is_finite())
             .then(|| known.or_else(|| first_instability(&key, key.analysis_max_p()).ok().flatten()))
             .flatten()

@@ -1,0 +1,268 @@
+//! `zieglerlab figure`: a figure for a paper (the root locus, Re and Im
+//! against the load, the stability map or the paradox curves) as SVG or PNG
+//! at a journal's size.
+
+use anyhow::Result;
+use clap::ValueEnum;
+
+use zieglerlab::analysis::{
+    BRACKET_SAMPLES, DampingKind, MapSpec, RowResult, default_map_axis, load_grid,
+};
+use zieglerlab::figure::{Analysed, Content, Format, MapData, Page, ParadoxData, analyse, render};
+use zieglerlab::model::{Axis, Key, PresetId};
+
+use super::map::{AxisArg, compute_rows, warn_if_unresolved};
+use super::output::{check_output, write_atomically};
+use super::{ModelArgs, printable, progress_bar};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum Kind {
+    /// The root locus in the complex plane.
+    Locus,
+    /// Re and Im of the eigenvalues against the load (the paper's Figs 3 and 8).
+    ReIm,
+    /// The stability map over the load and a second parameter.
+    Map,
+    /// The first critical load as the damping (or the roller's mass) vanishes.
+    Paradox,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum DampingArg {
+    /// Joint dampers, swept in the ratio c1/c2.
+    Joints,
+    /// External drag against equal joint dampers.
+    External,
+}
+
+/// The default height over the width, by kind: Re and Im are two plots.
+fn default_aspect(kind: Kind) -> f64 {
+    match kind {
+        Kind::ReIm => 1.1,
+        Kind::Locus | Kind::Map => 0.8,
+        Kind::Paradox => 0.75,
+    }
+}
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    model: ModelArgs,
+    #[arg(long, value_enum)]
+    kind: Kind,
+    /// Another preset drawn beside the model (locus and re-im; repeatable),
+    /// with its own parameters over the same loads.
+    #[arg(long, value_name = "PRESET")]
+    overlay: Vec<PresetId>,
+    /// The figure, `*.svg` (vector) or `*.png`.
+    #[arg(long)]
+    out: std::path::PathBuf,
+    /// Width in mm (a journal's column: 85 or so; a page: 170 to 180).
+    #[arg(long, default_value_t = 85.0, allow_hyphen_values = true)]
+    width_mm: f64,
+    /// Height in mm [default: 0.8 of the width; 1.1 for re-im, which has
+    /// two plots; 0.75 for paradox].
+    #[arg(long, allow_hyphen_values = true)]
+    height_mm: Option<f64>,
+    /// Font size of the text in points.
+    #[arg(long, default_value_t = 8.0, allow_hyphen_values = true)]
+    font_pt: f64,
+    /// Dots per inch of a PNG.
+    #[arg(long, default_value_t = 300.0, allow_hyphen_values = true)]
+    dpi: f64,
+    /// Lower end of the loads (locus and re-im).
+    #[arg(long, allow_hyphen_values = true)]
+    load_min: Option<f64>,
+    /// Upper end of the loads (locus and re-im) [default: the end of the
+    /// window's load bar: 8 for two rods, 8 (2/N)^2 for a chain of N].
+    #[arg(long, allow_hyphen_values = true)]
+    load_max: Option<f64>,
+    /// The map's load axis, load:MIN:MAX:N [default: the load bar's range, 128 loads].
+    #[arg(long, allow_hyphen_values = true)]
+    x: Option<AxisArg>,
+    /// The map's second axis, KEY:MIN:MAX:N [default: as the window's map, 128 values].
+    #[arg(long, allow_hyphen_values = true)]
+    y: Option<AxisArg>,
+    /// The damping the paradox curves sweep, for a column with a tip force.
+    #[arg(long, value_enum)]
+    damping: Option<DampingArg>,
+}
+
+/// Cells along each axis of a map figure by default.
+const MAP_CELLS: usize = 128;
+
+impl Args {
+    /// Refuses options the kind does not use: they would be ignored silently.
+    fn check_options(&self) -> Result<()> {
+        let mut unused: Vec<&str> = Vec::new();
+        let loads = self.load_min.is_some() || self.load_max.is_some();
+        match self.kind {
+            Kind::Locus | Kind::ReIm => {
+                if self.x.is_some() || self.y.is_some() {
+                    unused.push("--x/--y (the map's axes)");
+                }
+                if self.damping.is_some() {
+                    unused.push("--damping (the paradox curves')");
+                }
+            }
+            Kind::Map | Kind::Paradox => {
+                if !self.overlay.is_empty() {
+                    unused.push("--overlay (locus and re-im only)");
+                }
+                if loads {
+                    unused.push(if self.kind == Kind::Map {
+                        "--load-min/--load-max (the map's loads are --x)"
+                    } else {
+                        "--load-min/--load-max (the paradox curves search their own range)"
+                    });
+                }
+                if self.kind == Kind::Map && self.damping.is_some() {
+                    unused.push("--damping (the paradox curves')");
+                }
+                if self.kind == Kind::Paradox && (self.x.is_some() || self.y.is_some()) {
+                    unused.push("--x/--y (the map's axes)");
+                }
+            }
+        }
+        if unused.is_empty() {
+            Ok(())
+        } else {
+            anyhow::bail!(
+                "--kind {}: does not use {}",
+                self.kind_name(),
+                unused.join(", ")
+            )
+        }
+    }
+
+    fn kind_name(&self) -> String {
+        self.kind
+            .to_possible_value()
+            .map_or_else(String::new, |v| v.get_name().to_owned())
+    }
+
+    fn page(&self) -> Page {
+        Page {
+            width_mm: self.width_mm,
+            height_mm: self
+                .height_mm
+                .unwrap_or(self.width_mm * default_aspect(self.kind)),
+            font_pt: self.font_pt,
+            dpi: self.dpi,
+        }
+    }
+}
+
+pub fn run(args: &Args) -> Result<()> {
+    let format = Format::of(&args.out).ok_or_else(|| {
+        anyhow::anyhow!(
+            "out = {}: figures are written as SVG or PNG; name the file *.svg or *.png",
+            args.out.display()
+        )
+    })?;
+    check_output(&args.out, false)?;
+    args.check_options()?;
+    // The page is checked before the work (a map takes seconds).
+    let page = args.page();
+    page.check(format)?;
+    let (preset, model) = args.model.build()?;
+    let rendered = match args.kind {
+        Kind::Locus | Kind::ReIm => {
+            let load_min = args.load_min.unwrap_or(0.0);
+            let load_max = args.load_max.unwrap_or_else(|| model.load_bar_max_p());
+            // The range is checked once, with the main model's words.
+            load_grid(load_min, load_max, BRACKET_SAMPLES)?;
+            let progress = progress_bar(1 + args.overlay.len() as u64, "loci");
+            let each = |name: &str, model: &zieglerlab::model::Model| -> Result<Analysed> {
+                let analysed = analyse(name, model, load_min, load_max, BRACKET_SAMPLES)?;
+                progress.inc(1);
+                Ok(analysed)
+            };
+            let main = each(&preset.to_string(), &model)?;
+            let overlays = args
+                .overlay
+                .iter()
+                .map(|other| each(&other.to_string(), &other.model()))
+                .collect::<Result<Vec<_>>>()?;
+            progress.finish_and_clear();
+            let content = if args.kind == Kind::Locus {
+                Content::Locus {
+                    main: &main,
+                    overlays: &overlays,
+                }
+            } else {
+                Content::ReIm {
+                    main: &main,
+                    overlays: &overlays,
+                }
+            };
+            render(&content, &page, format)?
+        }
+        Kind::Map => {
+            let data = map_data(args, &model)?;
+            render(&Content::Map(&data), &page, format)?
+        }
+        Kind::Paradox => {
+            let kind = match args.damping {
+                Some(DampingArg::External) => DampingKind::External,
+                Some(DampingArg::Joints) | None => DampingKind::Joints,
+            };
+            if args.damping.is_some() && model.roller().is_some() {
+                anyhow::bail!(
+                    "--damping: the roller's curves sweep its mass ratio nu at three band speeds; leave --damping out"
+                );
+            }
+            let data = ParadoxData::new(&model, kind);
+            render(&Content::Paradox(&data), &page, format)?
+        }
+    };
+    for note in &rendered.notes {
+        eprintln!("note: {}", printable(note));
+    }
+    write_atomically(&args.out, |file| {
+        std::io::Write::write_all(file, &rendered.bytes)
+    })
+}
+
+/// The map the options ask for, computed on every core.
+fn map_data(args: &Args, model: &zieglerlab::model::Model) -> Result<MapData> {
+    let (x_text, load_range, loads) = match &args.x {
+        Some(x) => (x.text.clone(), (x.min, x.max), x.count),
+        None => (String::new(), (0.0, model.load_bar_max_p()), MAP_CELLS),
+    };
+    let (axis, axis_range, values) = if let Some(y) = &args.y {
+        (Axis::parse(&y.name, model)?, (y.min, y.max), y.count)
+    } else {
+        let (axis, range) = default_map_axis(model);
+        (axis, range, MAP_CELLS)
+    };
+    if let Some(x) = &args.x
+        && x.name != "load"
+    {
+        anyhow::bail!("--x {x_text}: the map's first axis is the load: load:MIN:MAX:N");
+    }
+    if axis == Axis::Key(Key::Load) {
+        anyhow::bail!("--y: the second axis cannot be the load again");
+    }
+    let spec = MapSpec {
+        model: *model,
+        axis,
+        load_range,
+        loads,
+        axis_range,
+        values,
+    };
+    let rows: Vec<Option<RowResult>> = compute_rows(&spec)?;
+    let mut complete = Vec::with_capacity(rows.len());
+    for row in &rows {
+        match row {
+            Some(Ok(row)) => complete.push(row),
+            Some(Err(reason)) => {
+                anyhow::bail!("--y {}: no analysis there: {reason}", spec.axis.name())
+            }
+            None => anyhow::bail!("a map row was not computed"),
+        }
+    }
+    warn_if_unresolved(&spec, &complete, spec.axis.name())?;
+    Ok(MapData { spec, rows })
+}

@@ -1,0 +1,323 @@
+//! The figures for a paper draw the physics where it is: the critical loads
+//! where `critical` finds them (and Ziegler's closed form), the flutter
+//! onset's eigenvalues on the imaginary axis at the closed-form frequency,
+//! every map cell in its state's colour and the boundaries on the rows'
+//! critical loads; the SVG has the page's size in millimetres and the words.
+
+use crate::cli::{run, stdout};
+use crate::common::{model, transitions};
+use zieglerlab::analysis::{DampingKind, MapSpec, State, compute_map};
+use zieglerlab::figure::{
+    Analysed, Content, Format, MapData, Page, ParadoxData, Rendered, analyse, render,
+};
+use zieglerlab::model::Axis;
+
+/// The pixels of a PNG figure.
+fn pixels(rendered: &Rendered) -> image::RgbImage {
+    image::load_from_memory(&rendered.bytes)
+        .expect("a PNG")
+        .to_rgb8()
+}
+
+/// The pixel nearest to `(x, y)` on the page.
+fn pixel_at(image: &image::RgbImage, (x, y): (f64, f64)) -> [u8; 3] {
+    #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+    let (x, y) = (x.round() as u32, y.round() as u32);
+    image.get_pixel(x, y).0
+}
+
+/// Whether `color` has the hue of `state` in the app's colours (green,
+/// orange, red), pale or deep.
+fn has_hue_of(color: [u8; 3], state: State) -> bool {
+    let [r, g, b] = color.map(i32::from);
+    match state {
+        State::Stable => g > r + 10 && g > b + 10,
+        State::Flutter => r > g + 10 && g > b + 10,
+        State::Divergence => r > g + 20 && (g - b).abs() < 25,
+    }
+}
+
+/// The analysis of a preset over the load bar's range.
+fn analysed(name: &str, sets: &[&str]) -> Analysed {
+    let m = model(name, sets);
+    analyse(name, &m, 0.0, m.load_bar_max_p(), 1000).expect("an analysis")
+}
+
+#[test]
+fn re_im_figure_marks_the_critical_loads_where_critical_finds_them() {
+    let main = analysed("ziegler-1952", &[]);
+    // Ziegler's closed form: flutter from p = 7/2 - sqrt 2.
+    let onset = 3.5 - 2f64.sqrt();
+    let searched = transitions(&model("ziegler-1952", &[]), 8.0);
+    assert_eq!(main.transitions.len(), searched.len());
+    for (drawn, found) in main.transitions.iter().zip(&searched) {
+        assert!((drawn.load - found.load).abs() <= 1e-10 * found.load);
+        assert_eq!((drawn.from, drawn.to), (found.from, found.to));
+    }
+    assert!((main.transitions[0].load - onset).abs() < 1e-10);
+    let overlays = [analysed("uniform-rods", &[])];
+    let content = Content::ReIm {
+        main: &main,
+        overlays: &overlays,
+    };
+    let page = Page::default();
+    let png = render(&content, &page, Format::Png).unwrap();
+    let image = pixels(&png);
+    assert_eq!(png.panels.len(), 2, "Re and Im");
+    for panel in &png.panels {
+        let (y0, y1) = panel.y_range;
+        // Each critical load is a dashed line of its new state's colour:
+        // some pixels of its column are that colour's, none of the next
+        // column but one are.
+        for t in &main.transitions {
+            let column: Vec<[u8; 3]> = (1..40)
+                .map(|k| {
+                    let y = y0 + (y1 - y0) * f64::from(k) / 40.0;
+                    pixel_at(&image, panel.page_point(t.load, y))
+                })
+                .collect();
+            let dashes = column.iter().filter(|c| has_hue_of(**c, t.to)).count();
+            assert!(dashes > 5, "{t:?}: {dashes} of 39 in its colour");
+        }
+        // The ranges are tinted: stable before the onset, flutter after.
+        let high = y0 + 0.95 * (y1 - y0);
+        let before = pixel_at(&image, panel.page_point(0.5 * onset, high));
+        let after = pixel_at(&image, panel.page_point(onset + 0.5, high));
+        assert!(has_hue_of(before, State::Stable), "{before:?}");
+        assert!(has_hue_of(after, State::Flutter), "{after:?}");
+    }
+    let svg = render(&content, &page, Format::Svg).unwrap();
+    let text = String::from_utf8(svg.bytes).unwrap();
+    assert!(text.starts_with("<svg width=\"85mm\" height=\"68mm\" viewBox="));
+    assert!(text.trim_end().ends_with("</svg>"));
+    for words in [
+        "ziegler-1952",
+        "uniform-rods",
+        "p = 2.0858: stable to flutter",
+        "Re λ (1/s)",
+        "Im λ (rad/s)",
+        "p = P l/k",
+    ] {
+        assert!(text.contains(words), "{words} not in the SVG");
+    }
+}
+
+#[test]
+fn locus_figure_puts_the_flutter_onset_on_the_imaginary_axis_at_its_frequency() {
+    let main = analysed("ziegler-1952", &[]);
+    let m = model("ziegler-1952", &[]);
+    // det(M s + K) = 2 s^2 + (7 - 2p) s + 1 in units k / (m l^2): at the
+    // onset the double root is s = -sqrt(2)/2.
+    let c = &m.column;
+    let unit = c.k1_nm_per_rad / (c.tip_mass_kg * c.rod1.length_m.powi(2));
+    let omega = (0.5 * 2f64.sqrt() * unit).sqrt();
+    let at_onset = &main.at_transitions[0];
+    assert!(
+        at_onset
+            .iter()
+            .all(|z| z.re.abs() < 1e-6 && (z.im.abs() - omega).abs() < 1e-6 * omega),
+        "{at_onset:?} vs ±{omega}i"
+    );
+    let rendered = render(
+        &Content::Locus {
+            main: &main,
+            overlays: &[],
+        },
+        &Page::default(),
+        Format::Png,
+    )
+    .unwrap();
+    let image = pixels(&rendered);
+    let panel = &rendered.panels[0];
+    for im in [omega, -omega] {
+        let marker = pixel_at(&image, panel.page_point(0.0, im));
+        assert!(has_hue_of(marker, State::Flutter), "{marker:?} at {im}i");
+    }
+    // Equal scales: a unit of Re and of Im are as long on the page.
+    let (x_per, y_per) = (
+        f64::from(panel.x_px.1 - panel.x_px.0) / (panel.x_range.1 - panel.x_range.0),
+        f64::from(panel.y_px.1 - panel.y_px.0) / (panel.y_range.1 - panel.y_range.0),
+    );
+    assert!(
+        (x_per / y_per - 1.0).abs() < 0.02,
+        "{x_per} vs {y_per}: {panel:?}"
+    );
+}
+
+#[test]
+fn map_figure_draws_each_cell_in_its_state_and_the_boundaries_on_the_critical_loads() {
+    let m = model("ziegler-1952", &[]);
+    let spec = MapSpec {
+        model: m,
+        axis: Axis::DampingLevel,
+        load_range: (0.0, 8.0),
+        loads: 24,
+        axis_range: (0.05, 0.3),
+        values: 6,
+    };
+    let rows = std::sync::Mutex::new(vec![None; spec.values]);
+    let (cancel, done) = (
+        std::sync::atomic::AtomicBool::new(false),
+        std::sync::atomic::AtomicUsize::new(0),
+    );
+    compute_map(&spec, 2, &cancel, &done, &|j, row| {
+        rows.lock().unwrap()[j] = Some(row);
+    })
+    .unwrap();
+    let data = MapData {
+        spec: spec.clone(),
+        rows: rows.into_inner().unwrap(),
+    };
+    let rendered = render(&Content::Map(&data), &Page::default(), Format::Png).unwrap();
+    let image = pixels(&rendered);
+    let panel = &rendered.panels[0];
+    let loads = spec.load_grid().unwrap();
+    let mut seen = Vec::new();
+    for row in data.rows.iter().flatten().flatten() {
+        for (cell, &p) in row.cells.iter().zip(&loads) {
+            // Away from a boundary (it is drawn over the cells).
+            if row.transitions.iter().any(|t| (t.load - p).abs() < 0.2) {
+                continue;
+            }
+            let color = pixel_at(&image, panel.page_point(p, row.value));
+            assert!(
+                has_hue_of(color, cell.state),
+                "{:?} at p = {p}, g2 = {}: {color:?}",
+                cell.state,
+                row.value
+            );
+            seen.push(cell.state);
+        }
+        // The boundary passes through each critical load of the row.
+        for t in &row.transitions {
+            let (x, y) = panel.page_point(t.load, row.value);
+            let darkest = (-3..=3)
+                .flat_map(|dx| (-3..=3).map(move |dy| (x + f64::from(dx), y + f64::from(dy))))
+                .map(|at| pixel_at(&image, at))
+                .map(|[r, g, b]| u32::from(r) + u32::from(g) + u32::from(b))
+                .min()
+                .unwrap();
+            assert!(darkest < 150, "no boundary at {t:?}, g2 = {}", row.value);
+        }
+    }
+    for state in [State::Stable, State::Flutter, State::Divergence] {
+        assert!(seen.contains(&state), "{state:?} never checked");
+    }
+}
+
+#[test]
+fn paradox_figure_names_the_undamped_load_and_draws_it_at_its_height() {
+    let m = model("ziegler-1952", &["c1=0.001", "c2=0.001"]);
+    let data = ParadoxData::new(&m, DampingKind::Joints);
+    let (_, undamped) = data.curves.reference.clone().expect("the undamped load");
+    assert!((undamped - (3.5 - 2f64.sqrt())).abs() < 1e-9);
+    let here = data.here.expect("the model's own point");
+    assert!(here.0.abs() < 1e-12, "c1/c2 = 1 is log10 0");
+    let rendered = render(&Content::Paradox(&data), &Page::default(), Format::Png).unwrap();
+    let image = pixels(&rendered);
+    let panel = &rendered.panels[0];
+    // The reference is a black dashed line across the plot.
+    let (x0, x1) = panel.x_range;
+    let black = (1..40)
+        .map(|k| x0 + (x1 - x0) * f64::from(k) / 40.0)
+        .filter(|&x| {
+            pixel_at(&image, panel.page_point(x, undamped))
+                .iter()
+                .all(|&v| v < 80)
+        })
+        .count();
+    assert!(black > 10, "{black} of 39 points on the undamped line");
+    let svg = render(&Content::Paradox(&data), &Page::default(), Format::Svg).unwrap();
+    let text = String::from_utf8(svg.bytes).unwrap();
+    assert!(text.contains("undamped: p = 2.0858"));
+    assert!(text.contains(&format!("this model: p = {:.4}", here.1)));
+}
+
+#[test]
+fn a_figure_from_the_command_line_is_an_svg_of_the_page_or_a_png_at_its_dpi() {
+    let dir = std::env::temp_dir().join(format!("zl-figures-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("re-im.svg");
+    stdout(&[
+        "figure",
+        "--preset",
+        "roller",
+        "--kind",
+        "re-im",
+        "--overlay",
+        "uniform-rods",
+        "--width-mm",
+        "170",
+        "--font-pt",
+        "9",
+        "--out",
+        svg.to_str().unwrap(),
+    ]);
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.starts_with("<svg width=\"170mm\" height=\"187mm\""));
+    assert!(text.contains("uniform-rods") && text.contains("roller"));
+    // 9 pt at four units a point.
+    assert!(text.contains("font-size=\"36\""));
+    let png = dir.join("locus.png");
+    let out = run(&[
+        "figure",
+        "--preset",
+        "roller",
+        "--kind",
+        "locus",
+        "--dpi",
+        "150",
+        "--out",
+        png.to_str().unwrap(),
+    ]);
+    assert!(out.status.success());
+    // The roller's spin settling far left is named, not squeezed in.
+    let said = String::from_utf8_lossy(&out.stderr);
+    assert!(said.contains("lie left of the view"), "{said}");
+    let size = image::image_dimensions(&png).unwrap();
+    // 85 x 68 mm at 150 dpi.
+    assert_eq!(size, (502, 402));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The README's figure and the note beside its locus example are what the
+/// commands make now, byte for byte and line for line.
+#[test]
+fn the_readme_figure_and_note_are_what_the_commands_make() {
+    let readme = std::fs::read_to_string("README.md").expect("the README");
+    let made = "*Made with `zieglerlab figure ";
+    let start = readme.find(made).expect("the figure's command") + made.len() - "figure ".len();
+    let command: Vec<&str> = readme[start..]
+        .split('`')
+        .next()
+        .unwrap()
+        .split_whitespace()
+        .collect();
+    assert_eq!(command.last(), Some(&"assets/re-im.png"));
+    let dir = std::env::temp_dir().join(format!("zl-readme-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("re-im.png");
+    let mut args = command.clone();
+    *args.last_mut().unwrap() = out.to_str().unwrap();
+    stdout(&args);
+    assert!(
+        std::fs::read(&out).unwrap() == std::fs::read("assets/re-im.png").unwrap(),
+        "assets/re-im.png is stale: make it again with `zieglerlab {}`",
+        command.join(" ")
+    );
+    let example = "    $ zieglerlab figure --preset roller --kind locus --out locus.svg\n";
+    let at = readme.find(example).expect("the locus example") + example.len();
+    let shown = readme[at..].lines().next().unwrap().trim_start();
+    let svg = dir.join("locus.svg");
+    let said = run(&[
+        "figure",
+        "--preset",
+        "roller",
+        "--kind",
+        "locus",
+        "--out",
+        svg.to_str().unwrap(),
+    ]);
+    assert_eq!(String::from_utf8_lossy(&said.stderr).trim_end(), shown);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
