@@ -3,6 +3,7 @@
 
 mod critical;
 mod crossing;
+mod hopf;
 mod locus;
 mod map;
 mod paradox;
@@ -16,6 +17,7 @@ pub use critical::{
     critical_loads_along,
 };
 pub use crossing::{Transition, stability_ranges};
+pub use hopf::{Hopf, HopfKind, NoHopf, Steps as HopfSteps, hopf_at, is_hopf};
 pub use locus::{Locus, MAX_HELD_EIGENVALUES, load_grid, locus, locus_streamed, max_samples};
 pub use map::{
     Cell, MapSpec, Row, RowResult, boundaries as map_boundaries, compute as compute_map,

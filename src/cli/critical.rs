@@ -6,9 +6,11 @@ use anyhow::Result;
 use serde_json::json;
 
 use zieglerlab::analysis::{
-    AffinePencil, bracketing_locus_reporting, critical_loads_along, resolution_warning,
+    AffinePencil, HopfSteps, NoHopf, Transition, bracketing_locus_reporting, critical_loads_along,
+    hopf_at, is_hopf, resolution_warning,
 };
 use zieglerlab::format::Shown;
+use zieglerlab::model::Model;
 
 use super::{LOAD_AXIS, ModelArgs, printable, progress_bar};
 
@@ -66,12 +68,16 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     };
     let transitions = &transitions[..transitions.len() - unlisted];
     if args.json {
+        let listed = transitions
+            .iter()
+            .map(|t| with_hopf(&model, t))
+            .collect::<Result<Vec<_>>>()?;
         let value = json!({
             "preset": name,
             "load_axis": LOAD_AXIS,
             "load_min": load_min,
             "load_max": load_max,
-            "transitions": transitions,
+            "transitions": listed,
             "rods": model.column.rods,
             "beck_loads": transitions.iter().map(|t| model.beck_load(t.load)).collect::<Vec<_>>(),
             "resolved": warning.is_none(),
@@ -112,6 +118,30 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
         )?;
     }
     Ok(())
+}
+
+/// A transition as JSON; a flutter onset or end (a Hopf point) with its
+/// criticality under `"hopf"`: the first Lyapunov coefficient, soft
+/// (supercritical) or hard (subcritical) flutter and the normal form's
+/// amplitudes, or why there is none.
+fn with_hopf(model: &Model, t: &Transition) -> Result<serde_json::Value> {
+    let mut value = serde_json::to_value(t)?;
+    if is_hopf(t.from, t.to) {
+        let hopf = match hopf_at(model, t.load, HopfSteps::DEFAULT) {
+            Ok(Ok(hopf)) => serde_json::to_value(hopf)?,
+            Ok(Err(NoHopf::Reversible)) => json!({
+                "kind": "reversible",
+                "why": "no damping: the column is reversible, two pairs meet on the imaginary axis and there is no attractor for a limit cycle to be",
+            }),
+            Ok(Err(NoHopf::Roller)) => json!({
+                "kind": "not computed",
+                "why": "the roller's rest state slides on the band and its dry friction is not smooth where the slip stops: its Hopf analysis is not built yet",
+            }),
+            Err(error) => json!({"kind": "not computed", "why": error.to_string()}),
+        };
+        value["hopf"] = hopf;
+    }
+    Ok(value)
 }
 
 /// `value` with `decimals` decimals, or in exponent form beyond 1e7 (no

@@ -18,6 +18,7 @@ mod eigen_solver;
 mod energy_balance;
 mod external_damping;
 mod figures;
+mod hopf;
 mod jacobian;
 mod lecture_pace;
 mod locus_tracking;
