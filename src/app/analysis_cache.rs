@@ -3,8 +3,9 @@
 //! and the resolution warning, computed once per change of parameters.
 
 use crate::analysis::{
-    AffinePencil, AnalysisError, BRACKET_SAMPLES, Locus, State, Transition, classify,
-    critical_loads_along, first_loss_of_stability, locus, resolution_warning, stability_ranges,
+    AffinePencil, AnalysisError, BRACKET_SAMPLES, Hopf, HopfSteps, Locus, NoHopf, State,
+    Transition, classify, critical_loads_along, first_loss_of_stability, hopf_at, is_hopf, locus,
+    resolution_warning, stability_ranges,
 };
 use crate::model::ValidModel;
 
@@ -23,6 +24,9 @@ pub struct Analysis {
     pub ranges: Vec<(f64, f64, State)>,
     /// Why the transitions cannot be trusted, when they cannot.
     pub warning: Option<String>,
+    /// Each flutter onset (stable to flutter) with its Hopf criticality, or
+    /// why there is none (see [`hopf_at`]); `None` where it failed.
+    pub onsets: Vec<(f64, Option<Result<Hopf, NoHopf>>)>,
 }
 
 impl Analysis {
@@ -36,6 +40,11 @@ impl Analysis {
         let at_zero = pencil.spectrum(0.0)?;
         let first = classify(&at_zero.eigenvalues, at_zero.scale_per_s).state;
         let ranges = stability_ranges(&transitions, first, 0.0, load_max);
+        let onsets = transitions
+            .iter()
+            .filter(|t| is_hopf(t.from, t.to) && t.to == State::Flutter)
+            .map(|t| (t.load, hopf_at(&key, t.load, HopfSteps::DEFAULT).ok()))
+            .collect();
         Ok(Self {
             key,
             pencil,
@@ -43,6 +52,7 @@ impl Analysis {
             transitions,
             ranges,
             warning,
+            onsets,
         })
     }
 
@@ -51,5 +61,12 @@ impl Analysis {
     #[must_use]
     pub fn first_instability(&self) -> Option<f64> {
         first_loss_of_stability(&self.transitions)
+    }
+
+    /// The flutter onset at or below `load` nearest it, with its Hopf
+    /// criticality (the onset a column fluttering at `load` came through).
+    #[must_use]
+    pub fn onset_below(&self, load: f64) -> Option<&(f64, Option<Result<Hopf, NoHopf>>)> {
+        self.onsets.iter().rev().find(|(onset, _)| *onset <= load)
     }
 }

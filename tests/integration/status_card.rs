@@ -61,3 +61,44 @@ fn the_card_measures_the_mode_it_describes() {
         card.im.abs()
     );
 }
+
+/// Past a damped column's flutter onset the card says the onset was soft
+/// (the first Lyapunov coefficient is negative: a limit cycle grows from
+/// zero, as the simulation shows); an undamped column's card says it has no
+/// limit cycle to settle on.
+#[test]
+fn the_card_says_whether_flutter_set_in_softly() {
+    use zieglerlab::analysis::{HopfKind, HopfSteps, hopf_at};
+    use zieglerlab::model::Key;
+    let line_of = |sets: &[(Key, f64)]| {
+        let mut app = ZieglerApp::new(Settings::default()).unwrap();
+        app.apply(Action::Preset(PresetId::Ziegler1952));
+        for &(key, value) in sets {
+            app.apply(Action::Enter { key, value });
+        }
+        app.state_mut().settle_analysis();
+        let harness = crate::app_input::harness(&mut app);
+        harness
+            .query_all_by_label_contains("onset")
+            .chain(harness.query_all_by_label_contains("no damping"))
+            .find_map(|node| node.accesskit_node().value())
+            .unwrap_or_default()
+    };
+    let damped = [(Key::C1, 0.3), (Key::C2, 0.3), (Key::Load, 2.5)];
+    let line = line_of(&damped);
+    let mut model = PresetId::Ziegler1952.model();
+    model.column.c1_nms_per_rad = 0.3;
+    model.column.c2_nms_per_rad = 0.3;
+    let onset = crate::common::transitions(&model, 10.0)[0].load;
+    let hopf = hopf_at(&model, onset, HopfSteps::DEFAULT).unwrap().unwrap();
+    assert_eq!(hopf.kind, HopfKind::Supercritical);
+    assert!(
+        line.starts_with(&format!("soft onset at p = {onset:.4}")),
+        "{line}"
+    );
+    let undamped = line_of(&[(Key::Load, 3.0)]);
+    assert!(
+        undamped.starts_with("no damping: no limit cycle"),
+        "{undamped}"
+    );
+}

@@ -3,12 +3,12 @@
 
 use eframe::egui::{self, RichText};
 
-use crate::analysis::{C64, Stability, State, classify};
+use crate::analysis::{C64, Hopf, HopfKind, NoHopf, Stability, State, classify};
 use crate::app::View;
 use crate::app::action::Actions;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
-use crate::format::{duration_text, percent_text, rate_text, secs_text};
+use crate::format::{duration_text, load_text, number_text, percent_text, rate_text, secs_text};
 
 /// An e-folding time beyond this is a growth nobody sees in a lesson: even
 /// at the fastest speed (10x) it takes over five minutes to grow by e.
@@ -144,6 +144,46 @@ fn nearest_mode(z: C64, modes: &[C64]) -> Option<usize> {
     (0..modes.len()).min_by(|&a, &b| (modes[a] - z).norm().total_cmp(&(modes[b] - z).norm()))
 }
 
+/// How the flutter set in at `onset`: soft or hard (the first Lyapunov
+/// coefficient), or that an undamped column has no cycle to settle on.
+fn onset_ui(ui: &mut egui::Ui, onset: f64, hopf: &Result<Hopf, NoHopf>) {
+    let at = load_text(onset);
+    let (words, more) = match hopf {
+        Ok(hopf) => {
+            let amplitude = hopf
+                .amplitude_per_sqrt_load_rad
+                .first()
+                .map(|a| format!(" Near it the cycle's |phi1| is about {} sqrt(p - {at}) rad.", number_text(*a)))
+                .unwrap_or_default();
+            let tip = format!(
+                "First Lyapunov coefficient {} at the onset p = {at} (Hopf point, frequency {} rad/s).{amplitude}",
+                number_text(hopf.first_lyapunov),
+                number_text(hopf.frequency_rad_per_s)
+            );
+            match hopf.kind {
+                HopfKind::Supercritical => (
+                    format!("soft onset at p = {at}: the swing settles on a limit cycle that grows from zero"),
+                    tip,
+                ),
+                HopfKind::Subcritical => (
+                    format!("hard onset at p = {at}: the swing jumps to a large cycle, which persists below the onset"),
+                    tip,
+                ),
+                HopfKind::Degenerate => (
+                    format!("onset at p = {at} neither soft nor hard to first order"),
+                    tip,
+                ),
+            }
+        }
+        Err(NoHopf::Reversible) => (
+            "no damping: no limit cycle to settle on (a reversible column)".to_owned(),
+            "Without damping the column is reversible: flutter starts where two pairs of eigenvalues meet on the imaginary axis, and there is no attractor, so no limit cycle the swing could settle on.".to_owned(),
+        ),
+        Err(NoHopf::Roller) => return,
+    };
+    ui.label(RichText::new(words).small()).on_hover_text(more);
+}
+
 pub struct StatusSection;
 
 impl View for StatusSection {
@@ -202,6 +242,11 @@ impl View for StatusSection {
             None => ui.label("neutral: no growth, no decay"),
         };
         frequency_and_measured_ui(ui, state, &s, &spectrum.eigenvalues);
+        if s.state == State::Flutter
+            && let Some((onset, Some(hopf))) = analysis.onset_below(state.settings().model.load_p())
+        {
+            onset_ui(ui, *onset, hopf);
+        }
         if weak {
             let per_period = 100.0 * (growth * std::f64::consts::TAU / frequency).exp_m1();
             let pace = if s
