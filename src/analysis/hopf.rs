@@ -14,8 +14,8 @@
 //! where `B` and `C` are the second and third derivatives of `f` at rest.
 //! They are taken by central differences of the equations of motion
 //! (`model::state_derivative`), with complex arguments by multilinearity;
-//! [`Hopf::steps`] are the difference steps, so the result can be checked
-//! against another set. Pure: no UI, no clock.
+//! [`Steps`] are the difference steps, so a result can be checked against
+//! another set. Pure: no UI, no clock.
 
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;

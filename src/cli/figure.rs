@@ -11,7 +11,7 @@ use zieglerlab::analysis::{
 use zieglerlab::figure::{Analysed, Content, Format, MapData, Page, ParadoxData, analyse, render};
 use zieglerlab::model::{Axis, Key, PresetId};
 
-use super::map::{AxisArg, compute_rows, warn_if_unresolved};
+use super::map::{AxisArg, complete_rows, compute_rows, warn_if_unresolved};
 use super::output::{check_output, write_atomically};
 use super::{ModelArgs, printable, progress_bar};
 
@@ -253,16 +253,7 @@ fn map_data(args: &Args, model: &zieglerlab::model::Model) -> Result<MapData> {
         values,
     };
     let rows: Vec<Option<RowResult>> = compute_rows(&spec)?;
-    let mut complete = Vec::with_capacity(rows.len());
-    for row in &rows {
-        match row {
-            Some(Ok(row)) => complete.push(row),
-            Some(Err(reason)) => {
-                anyhow::bail!("--y {}: no analysis there: {reason}", spec.axis.name())
-            }
-            None => anyhow::bail!("a map row was not computed"),
-        }
-    }
+    let complete = complete_rows(&rows, spec.axis.name())?;
     warn_if_unresolved(&spec, &complete, spec.axis.name())?;
     Ok(MapData { spec, rows })
 }

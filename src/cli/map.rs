@@ -128,14 +128,7 @@ pub fn run(args: &Args) -> Result<()> {
         values: y.count,
     };
     let rows = compute_rows(&spec)?;
-    let mut complete = Vec::with_capacity(y.count);
-    for row in &rows {
-        match row {
-            Some(Ok(row)) => complete.push(row),
-            Some(Err(reason)) => anyhow::bail!("--y {}: no analysis there: {reason}", y.text),
-            None => anyhow::bail!("a map row was not computed"),
-        }
-    }
+    let complete = complete_rows(&rows, &y.text)?;
     warn_if_unresolved(&spec, &complete, &y.name)?;
     match args.format {
         Format::Csv => {
@@ -165,6 +158,21 @@ pub fn run(args: &Args) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// Every row of a computed map, or why one has no analysis (`y_text`: the
+/// second axis as given, for the message).
+///
+/// # Errors
+/// A row without analysis, or one not computed.
+pub fn complete_rows<'a>(rows: &'a [Option<RowResult>], y_text: &str) -> Result<Vec<&'a Row>> {
+    rows.iter()
+        .map(|row| match row {
+            Some(Ok(row)) => Ok(row),
+            Some(Err(reason)) => Err(anyhow::anyhow!("--y {y_text}: no analysis there: {reason}")),
+            None => Err(anyhow::anyhow!("a map row was not computed")),
+        })
+        .collect()
 }
 
 /// Every row of `spec` on every core, with a progress bar.
