@@ -196,20 +196,21 @@ pub fn versus_load_ui(
     } else {
         "Re λ (1/s)"
     };
-    let extent = locus
-        .branches
-        .iter()
-        .flatten()
-        .filter(|z| z.im.abs() > 0.0 || !imaginary)
-        .map(|z| {
-            if imaginary {
-                z.im.abs()
-            } else {
-                z.im.abs().max(z.re.abs().min(2.0 * z.im.abs().max(0.5)))
-            }
-        })
-        .fold(0.0, f64::max)
-        .max(1e-3);
+    let layers = || overlay.map(|o| &o.locus).into_iter().chain([locus]);
+    let extent = if imaginary {
+        layers()
+            .flat_map(|shown| shown.branches.iter().flatten())
+            .map(|z| z.im.abs())
+            .fold(0.0, f64::max)
+    } else {
+        // The eigenvalue furthest right at every load decides stability:
+        // its real part sets the range (a chain's slow flutter shows), and
+        // faster decaying modes run off the plot.
+        layers()
+            .map(|shown| deciding_extent(shown).0)
+            .fold(0.0, f64::max)
+    }
+    .max(1e-3);
     let (min, max) = (
         locus.loads.first().copied().unwrap_or(0.0),
         locus.loads.last().copied().unwrap_or(1.0),
@@ -229,17 +230,21 @@ pub fn versus_load_ui(
             .into_iter()
             .chain([(locus, theme.text)]);
         for (shown, color) in layers {
+            // Not simplified: at most a few hundred samples per branch. A
+            // simplified branch has long segments, and where the tracking
+            // turns sharply at a branch point (a chain's flutter onset) the
+            // line's join drew a wedge along the whole segment before it.
             let samples = drawn_samples(shown);
             for branch in &shown.branches {
-                let points = thinned(
-                    plot_ui,
-                    samples.iter().map(|&i| {
+                let points: Vec<[f64; 2]> = samples
+                    .iter()
+                    .map(|&i| {
                         let z = branch[i];
                         [shown.loads[i], if imaginary { z.im } else { z.re }]
-                    }),
-                );
+                    })
+                    .collect();
                 plot_ui.line(
-                    Line::new("", points)
+                    Line::new("", PlotPoints::from(points))
                         .color(color)
                         .width(1.5 * theme.stroke_scale),
                 );
