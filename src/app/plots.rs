@@ -19,12 +19,19 @@ const COLOR_BANDS: usize = 24;
 /// pixels wide); the refinement's samples are all drawn.
 const DRAWN_GRID_SAMPLES: usize = 300;
 
+/// Evenly spaced samples of all branches together a plot draws at most: a
+/// long chain's many branches get fewer samples each (64 rods: 78), so a
+/// frame stays within its time.
+const DRAWN_GRID_POINTS: usize = 10_000;
+
 /// The indices of the locus samples a plot draws: every k-th evenly spaced
-/// one, so that at most [`DRAWN_GRID_SAMPLES`] are, every sample the
-/// refinement added (branch points, axis crossings) and the last.
+/// one, so that at most [`DRAWN_GRID_SAMPLES`] are (and at most
+/// [`DRAWN_GRID_POINTS`] over all branches), every sample the refinement
+/// added (branch points, axis crossings) and the last.
 fn drawn_samples(locus: &Locus) -> Vec<usize> {
     let grid = locus.on_grid.iter().filter(|&&g| g).count();
-    let stride = grid.div_ceil(DRAWN_GRID_SAMPLES).max(1);
+    let most = DRAWN_GRID_SAMPLES.min(DRAWN_GRID_POINTS / locus.branches.len().max(1));
+    let stride = grid.div_ceil(most.max(2)).max(1);
     let last = locus.loads.len().saturating_sub(1);
     let mut grid_index = 0;
     (0..locus.loads.len())
