@@ -13,7 +13,7 @@ use zieglerlab::model::{Axis, Key, PresetId};
 
 use super::map::{AxisArg, complete_rows, compute_rows, warn_if_unresolved};
 use super::output::{check_output, write_atomically};
-use super::{ModelArgs, printable, progress_bar};
+use super::{ModelArgs, printable, progress_bar, spinner};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 enum Kind {
@@ -212,7 +212,10 @@ pub fn run(args: &Args) -> Result<()> {
                     "--damping: the roller's curves sweep its mass ratio nu at three band speeds; leave --damping out"
                 );
             }
+            // A long chain's curves take seconds (16 rods: 8 s).
+            let working = spinner("computing the first critical load at each ratio");
             let data = ParadoxData::new(&model, kind);
+            working.finish_and_clear();
             render(&Content::Paradox(&data), &page, format)?
         }
     };

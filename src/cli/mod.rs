@@ -326,6 +326,18 @@ fn progress_bar(len: u64, what: &str) -> indicatif::ProgressBar {
     bar
 }
 
+/// A spinner with `what` and the time taken, for work whose length is not
+/// known ahead (drawn only when stderr is a terminal, as the bars).
+fn spinner(what: &str) -> indicatif::ProgressBar {
+    let spinner = indicatif::ProgressBar::new_spinner();
+    if let Ok(style) = indicatif::ProgressStyle::with_template("{spinner} {msg} ({elapsed})") {
+        spinner.set_style(style);
+    }
+    spinner.set_message(what.to_owned());
+    spinner.enable_steady_tick(std::time::Duration::from_millis(120));
+    spinner
+}
+
 /// `text` with every word longer than 60 characters clipped (clap repeats
 /// a value as typed, and a 4096-character one buried the message).
 fn clipped_words(text: &str) -> String {
