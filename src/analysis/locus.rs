@@ -96,11 +96,16 @@ impl Locus {
         self.refinement_cut_at = self.refinement_cut_at.or(next.refinement_cut_at);
     }
 
+    /// The branches that move with the load (the structural zeros left out).
+    #[must_use]
+    pub fn moving_branches(&self) -> &[Vec<C64>] {
+        &self.branches[..self.branches.len() - self.structural_zeros]
+    }
+
     /// The moving eigenvalues at sample i.
     #[must_use]
     pub fn moving_at(&self, i: usize) -> Vec<C64> {
-        let moving = self.branches.len() - self.structural_zeros;
-        self.branches[..moving]
+        self.moving_branches()
             .iter()
             .map(|branch| branch[i])
             .collect()

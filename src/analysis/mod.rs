@@ -25,7 +25,7 @@ pub use map::{
 };
 pub use paradox::{
     Curves, DampingKind, curves as paradox_curves, first_instability, first_loss_of_stability,
-    flutter_load_damped, flutter_load_external, swept_ratio,
+    flutter_load_damped, flutter_load_external, own_point, swept_ratio,
 };
 pub use pencil::{AffinePencil, Spectrum, spectrum};
 pub use resolution::resolution_warning;

@@ -138,6 +138,24 @@ pub fn swept_ratio(model: &Model, kind: DampingKind) -> f64 {
     }
 }
 
+/// The model's own point on the explorer's plot: log10 of its swept ratio
+/// and its first critical load (`known`, when the caller has found it
+/// already), or `None` when it has no such ratio or never loses stability.
+#[must_use]
+pub fn own_point(model: &Model, kind: DampingKind, known: Option<f64>) -> Option<[f64; 2]> {
+    let x = swept_ratio(model, kind);
+    (x > 0.0 && x.is_finite())
+        .then(|| {
+            known.or_else(|| {
+                first_instability(model, model.analysis_max_p())
+                    .ok()
+                    .flatten()
+            })
+        })
+        .flatten()
+        .map(|p| [x.log10(), p])
+}
+
 /// What the explorer draws: curves of the first critical load against
 /// log10 of the swept ratio, and the undamped (or massless) reference.
 #[derive(Clone, Debug, Default)]

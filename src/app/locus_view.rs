@@ -18,8 +18,7 @@ const MARGIN: f64 = 0.2;
 /// point. `(re, im)`, in 1/s and rad/s.
 #[must_use]
 pub fn deciding_extent(locus: &Locus) -> (f64, f64) {
-    let moving = locus.branches.len() - locus.structural_zeros;
-    let branches = &locus.branches[..moving];
+    let branches = locus.moving_branches();
     let im = branches
         .iter()
         .flatten()
@@ -35,6 +34,25 @@ pub fn deciding_extent(locus: &Locus) -> (f64, f64) {
         .map(f64::abs)
         .fold(0.0, f64::max);
     (re, im)
+}
+
+/// The half-height of a plot of Re (or, `imaginary`, Im) of the eigenvalues
+/// of `loci` against the load: for Im the largest frequency; for Re the
+/// real part of the eigenvalue furthest right at every load, which decides
+/// stability (a chain's slow flutter shows; faster decaying modes run off
+/// the plot). At least 1e-3.
+#[must_use]
+pub fn versus_load_extent<'a>(loci: impl IntoIterator<Item = &'a Locus>, imaginary: bool) -> f64 {
+    loci.into_iter()
+        .map(|locus| {
+            if imaginary {
+                deciding_extent(locus).1
+            } else {
+                deciding_extent(locus).0
+            }
+        })
+        .fold(0.0, f64::max)
+        .max(1e-3)
 }
 
 /// The default view of the root locus, centred on the origin with equal

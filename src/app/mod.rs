@@ -41,13 +41,14 @@ use action::Actions;
 
 pub use action::{Action, Command};
 pub use layout::Layout;
-pub use locus_view::{EdgeMark, Side, ViewRect, deciding_extent, default_view};
+pub use locus_view::{EdgeMark, Side, ViewRect, deciding_extent, default_view, versus_load_extent};
 pub use notice::{Level, Notice};
 pub use pace::{MAX_FRAME_SECS, MAX_STEPS_PER_FRAME};
 pub use plot_frame::VIEW_HINT;
 pub use plots::{LOCUS_SHOWN_ID, LocusShown};
 pub use state::{AppState, Settings};
 pub use tabs::Tab;
+pub use tabs::{largest_rate, rate_strength};
 pub use theme::Theme;
 pub use window::{Renderer, WindowFrames, run, time_window_frames};
 

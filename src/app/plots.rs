@@ -6,7 +6,9 @@ use eframe::egui::{self, vec2};
 use egui_plot::{Line, MarkerShape, Plot, PlotPoint, PlotPoints, Points, Span, Text, VLine};
 
 use super::history::History;
-use super::locus_view::{EdgeMark, Side, ViewRect, deciding_extent, default_view, edge_marks};
+use super::locus_view::{
+    EdgeMark, Side, ViewRect, deciding_extent, default_view, edge_marks, versus_load_extent,
+};
 use super::plot_frame::{Swatch, axes, legend_row, refit_if, thinned};
 use super::state::Overlay;
 use super::theme::{Theme, load_color};
@@ -203,21 +205,10 @@ pub fn versus_load_ui(
     } else {
         "Re λ (1/s)"
     };
-    let layers = || overlay.map(|o| &o.locus).into_iter().chain([locus]);
-    let extent = if imaginary {
-        layers()
-            .flat_map(|shown| shown.branches.iter().flatten())
-            .map(|z| z.im.abs())
-            .fold(0.0, f64::max)
-    } else {
-        // The eigenvalue furthest right at every load decides stability:
-        // its real part sets the range (a chain's slow flutter shows), and
-        // faster decaying modes run off the plot.
-        layers()
-            .map(|shown| deciding_extent(shown).0)
-            .fold(0.0, f64::max)
-    }
-    .max(1e-3);
+    let extent = versus_load_extent(
+        overlay.map(|o| &o.locus).into_iter().chain([locus]),
+        imaginary,
+    );
     let (min, max) = (
         locus.loads.first().copied().unwrap_or(0.0),
         locus.loads.last().copied().unwrap_or(1.0),

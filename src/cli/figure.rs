@@ -5,13 +5,11 @@
 use anyhow::Result;
 use clap::ValueEnum;
 
-use zieglerlab::analysis::{
-    BRACKET_SAMPLES, DampingKind, MapSpec, RowResult, default_map_axis, load_grid,
-};
+use zieglerlab::analysis::{BRACKET_SAMPLES, DampingKind, RowResult, default_map_axis, load_grid};
 use zieglerlab::figure::{Analysed, Content, Format, MapData, Page, ParadoxData, analyse, render};
-use zieglerlab::model::{Axis, Key, PresetId};
+use zieglerlab::model::PresetId;
 
-use super::map::{AxisArg, complete_rows, compute_rows, warn_if_unresolved};
+use super::map::{AxisArg, complete_rows, compute_rows, map_spec, warn_if_unresolved};
 use super::output::{check_output, write_atomically};
 use super::{ModelArgs, printable, progress_bar, spinner};
 
@@ -229,32 +227,22 @@ pub fn run(args: &Args) -> Result<()> {
 
 /// The map the options ask for, computed on every core.
 fn map_data(args: &Args, model: &zieglerlab::model::Model) -> Result<MapData> {
-    let (x_text, load_range, loads) = match &args.x {
-        Some(x) => (x.text.clone(), (x.min, x.max), x.count),
-        None => (String::new(), (0.0, model.load_bar_max_p()), MAP_CELLS),
+    // The defaults as the axes would be typed (an f64 reads back exactly).
+    let x = match &args.x {
+        Some(x) => x.clone(),
+        None => format!("load:0:{}:{MAP_CELLS}", model.load_bar_max_p())
+            .parse()
+            .map_err(anyhow::Error::msg)?,
     };
-    let (axis, axis_range, values) = if let Some(y) = &args.y {
-        (Axis::parse(&y.name, model)?, (y.min, y.max), y.count)
+    let y = if let Some(y) = &args.y {
+        y.clone()
     } else {
-        let (axis, range) = default_map_axis(model);
-        (axis, range, MAP_CELLS)
+        let (axis, (min, max)) = default_map_axis(model);
+        format!("{}:{min}:{max}:{MAP_CELLS}", axis.name())
+            .parse()
+            .map_err(anyhow::Error::msg)?
     };
-    if let Some(x) = &args.x
-        && x.name != "load"
-    {
-        anyhow::bail!("--x {x_text}: the map's first axis is the load: load:MIN:MAX:N");
-    }
-    if axis == Axis::Key(Key::Load) {
-        anyhow::bail!("--y: the second axis cannot be the load again");
-    }
-    let spec = MapSpec {
-        model: *model,
-        axis,
-        load_range,
-        loads,
-        axis_range,
-        values,
-    };
+    let spec = map_spec(*model, &x, &y)?;
     let rows: Vec<Option<RowResult>> = compute_rows(&spec)?;
     let complete = complete_rows(&rows, spec.axis.name())?;
     warn_if_unresolved(&spec, &complete, spec.axis.name())?;

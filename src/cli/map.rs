@@ -11,7 +11,7 @@ use clap::ValueEnum;
 use zieglerlab::analysis::{
     AffinePencil, MapSpec, Row, RowResult, bracketing_locus, compute_map, resolution_warning,
 };
-use zieglerlab::model::{Axis, Key, Shown};
+use zieglerlab::model::{Axis, Key, Model, Shown};
 
 use zieglerlab::figure::{self, Content, MapData, Page, render};
 use zieglerlab::format::Exact;
@@ -106,27 +106,7 @@ pub fn run(args: &Args) -> Result<()> {
     let Args { x, y, out, .. } = args;
     check_output(out, args.format == Format::Png)?;
     let (_, model) = args.model.build()?;
-    if x.name != "load" {
-        anyhow::bail!(
-            "--x {}: the map's first axis is the load: load:MIN:MAX:N",
-            x.text
-        );
-    }
-    if x.min < 0.0 {
-        anyhow::bail!("--x {}: loads must be >= 0", x.text);
-    }
-    let axis = Axis::parse(&y.name, &model)?;
-    if axis == Axis::Key(Key::Load) {
-        anyhow::bail!("--y {}: the second axis cannot be the load again", y.text);
-    }
-    let spec = MapSpec {
-        model,
-        axis,
-        load_range: (x.min, x.max),
-        loads: x.count,
-        axis_range: (y.min, y.max),
-        values: y.count,
-    };
+    let spec = map_spec(model, x, y)?;
     let rows = compute_rows(&spec)?;
     let complete = complete_rows(&rows, &y.text)?;
     warn_if_unresolved(&spec, &complete, &y.name)?;
@@ -158,6 +138,35 @@ pub fn run(args: &Args) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// The map of `model` over the axes `x` (the load) and `y`.
+///
+/// # Errors
+/// An axis that is not the load first, negative loads, an unknown second
+/// axis or the load again.
+pub fn map_spec(model: Model, x: &AxisArg, y: &AxisArg) -> Result<MapSpec> {
+    if x.name != "load" {
+        anyhow::bail!(
+            "--x {}: the map's first axis is the load: load:MIN:MAX:N",
+            x.text
+        );
+    }
+    if x.min < 0.0 {
+        anyhow::bail!("--x {}: loads must be >= 0", x.text);
+    }
+    let axis = Axis::parse(&y.name, &model)?;
+    if axis == Axis::Key(Key::Load) {
+        anyhow::bail!("--y {}: the second axis cannot be the load again", y.text);
+    }
+    Ok(MapSpec {
+        model,
+        axis,
+        load_range: (x.min, x.max),
+        loads: x.count,
+        axis_range: (y.min, y.max),
+        values: y.count,
+    })
 }
 
 /// Every row of a computed map, or why one has no analysis (`y_text`: the

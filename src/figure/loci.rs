@@ -14,7 +14,7 @@ use crate::analysis::{
     AffinePencil, AnalysisError, C64, Locus, State, Transition, classify, critical_loads_along,
     locus, stability_ranges,
 };
-use crate::app::{deciding_extent, default_view};
+use crate::app::{deciding_extent, default_view, versus_load_extent};
 use crate::format::{load_text, number_text};
 use crate::model::Model;
 
@@ -104,11 +104,6 @@ fn layers<'a>(
         .chain(std::iter::once((main, INK)))
 }
 
-/// The moving branches of `locus`.
-fn moving(locus: &Locus) -> &[Vec<C64>] {
-    &locus.branches[..locus.branches.len() - locus.structural_zeros]
-}
-
 /// The root locus in the complex plane, at equal scales, holding the
 /// eigenvalues that decide stability (a fast mode far left is cut, and the
 /// notes say so); open rings at the range's first load, the main model's
@@ -156,7 +151,7 @@ where
         ink,
     )?;
     for (analysed, color) in layers(main, overlays) {
-        for branch in moving(&analysed.locus) {
+        for branch in analysed.locus.moving_branches() {
             let points: Vec<(f64, f64)> = branch.iter().map(|z| (z.re, z.im)).collect();
             line(&mut plane, &points, ink.stroke(color, 0.8))?;
         }
@@ -185,7 +180,9 @@ where
     }
     let mut notes = Vec::new();
     for (analysed, _) in layers(main, overlays) {
-        let furthest = moving(&analysed.locus)
+        let furthest = analysed
+            .locus
+            .moving_branches()
             .iter()
             .flatten()
             .map(|z| z.re)
@@ -231,20 +228,7 @@ where
     );
     let mut panels = Vec::new();
     for (half, imaginary) in [(&top, false), (&bottom, true)] {
-        let extent = if imaginary {
-            layers(main, overlays)
-                .flat_map(|(a, _)| moving(&a.locus).iter().flatten())
-                .map(|z| z.im.abs())
-                .fold(0.0, f64::max)
-        } else {
-            // The eigenvalue furthest right at every load decides stability:
-            // its real part sets the range (a chain's slow flutter shows),
-            // faster decaying modes are cut.
-            layers(main, overlays)
-                .map(|(a, _)| deciding_extent(&a.locus).0)
-                .fold(0.0, f64::max)
-        }
-        .max(1e-3);
+        let extent = versus_load_extent(layers(main, overlays).map(|(a, _)| &a.locus), imaginary);
         let (y_range, y_desc) = if imaginary {
             (0.0..1.1 * extent, "Im λ (rad/s)")
         } else {
@@ -273,7 +257,7 @@ where
         }
         for (analysed, color) in layers(main, overlays) {
             let locus = &analysed.locus;
-            for branch in moving(locus) {
+            for branch in locus.moving_branches() {
                 let points: Vec<(f64, f64)> = locus
                     .loads
                     .iter()

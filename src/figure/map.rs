@@ -9,6 +9,7 @@ use super::layout::{Swatch, XTicks, chart, legend_above, line, panel};
 use super::style::{INK, Ink, state_color, tint};
 use super::{Drawn, FigureError, drawing};
 use crate::analysis::{MapSpec, RowResult, State, map_boundaries};
+use crate::app::{largest_rate, rate_strength};
 use crate::format::number_text;
 use crate::model::Axis;
 
@@ -26,12 +27,7 @@ const LEVELS: f64 = 8.0;
 /// A cell's colour: its state's, deeper the faster it grows or decays (the
 /// square root of the rate over the map's largest, as in the window).
 fn cell_color(state: State, growth_per_s: f64, scale_per_s: f64) -> RGBColor {
-    let strength = if scale_per_s > 0.0 {
-        (growth_per_s.abs() / scale_per_s).sqrt().clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    let level = (strength * LEVELS).round() / LEVELS;
+    let level = (rate_strength(growth_per_s, scale_per_s) * LEVELS).round() / LEVELS;
     tint(state_color(state), 0.3 + 0.7 * level)
 }
 
@@ -71,11 +67,7 @@ where
             "no row of the map has an analysis".to_owned(),
         ));
     }
-    let scale = rows
-        .iter()
-        .flat_map(|row| row.cells.iter().map(|c| c.growth_per_s.abs()))
-        .filter(|g| g.is_finite())
-        .fold(0.0, f64::max);
+    let scale = largest_rate(rows.iter().copied());
     let mut entries: Vec<(Swatch, String)> = [State::Stable, State::Flutter, State::Divergence]
         .into_iter()
         .filter(|&state| {

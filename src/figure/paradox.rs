@@ -11,7 +11,7 @@ use plotters::prelude::*;
 use super::layout::{Swatch, XTicks, chart, dashed, legend_above, line, marker_style, panel};
 use super::style::{INK, Ink, series_color};
 use super::{Drawn, FigureError, drawing};
-use crate::analysis::{Curves, DampingKind, first_instability, paradox_curves, swept_ratio};
+use crate::analysis::{Curves, DampingKind, own_point, paradox_curves};
 use crate::format::load_text;
 use crate::model::Model;
 
@@ -28,15 +28,7 @@ impl ParadoxData {
     #[must_use]
     pub fn new(model: &Model, kind: DampingKind) -> Self {
         let curves = paradox_curves(model, kind, &AtomicBool::new(false));
-        let x = swept_ratio(model, kind);
-        let here = (x > 0.0 && x.is_finite())
-            .then(|| {
-                first_instability(model, model.analysis_max_p())
-                    .ok()
-                    .flatten()
-            })
-            .flatten()
-            .map(|p| (x.log10(), p));
+        let here = own_point(model, kind, None).map(|[x, p]| (x, p));
         Self { curves, here }
     }
 }

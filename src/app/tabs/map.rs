@@ -7,7 +7,7 @@ use std::sync::atomic::AtomicUsize;
 use eframe::egui::{self, Color32, ColorImage, TextureHandle, TextureOptions};
 use egui_plot::{Line, Plot, PlotImage, PlotPoint, PlotPoints, Points};
 
-use super::map_key::{Readout, cell_at, key_ui, readout_ui};
+use super::map_key::{Readout, cell_at, key_ui, largest_rate, rate_strength, readout_ui};
 use super::{TabSpec, TabView, save_buttons};
 use crate::analysis::{
     AnalysisError, MapSpec, RowResult, State, compute_map, default_map_axis,
@@ -408,11 +408,7 @@ fn range_field(value: &mut f64, speed: f64) -> egui::DragValue<'_> {
 /// (square root of the rate over the map's largest).
 fn cell_color(state: State, growth_per_s: f64, scale_per_s: f64, theme: &Theme) -> Color32 {
     let base = theme.state_color(state);
-    let strength = if scale_per_s > 0.0 {
-        (growth_per_s.abs() / scale_per_s).sqrt().clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
+    let strength = rate_strength(growth_per_s, scale_per_s);
     #[expect(clippy::cast_possible_truncation, reason = "a fraction in [0, 1]")]
     base.gamma_multiply(0.3 + 0.7 * strength as f32)
 }
@@ -422,13 +418,7 @@ fn cell_color(state: State, growth_per_s: f64, scale_per_s: f64, theme: &Theme) 
 /// without analysis are grey.
 #[must_use]
 pub fn map_image(rows: &[Option<RowResult>], loads: usize, theme: &Theme) -> ColorImage {
-    let scale = rows
-        .iter()
-        .flatten()
-        .flatten()
-        .flat_map(|row| row.cells.iter().map(|c| c.growth_per_s.abs()))
-        .filter(|g| g.is_finite())
-        .fold(0.0, f64::max);
+    let scale = largest_rate(rows.iter().flatten().flatten());
     let height = rows.len();
     let mut image = ColorImage::filled([loads, height], theme.no_data);
     let nearest = |j: usize| {

@@ -7,6 +7,7 @@ mod histories;
 mod locus;
 pub mod map;
 mod map_key;
+pub use map_key::{largest_rate, rate_strength};
 mod paradox;
 
 use std::any::Any;

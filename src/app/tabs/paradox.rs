@@ -8,7 +8,7 @@ use eframe::egui;
 use egui_plot::{Corner, HLine, Legend, Line, Plot, PlotPoints, Points, log_grid_spacer};
 
 use super::{TabSpec, TabView, save_buttons};
-use crate::analysis::{Curves, DampingKind, first_instability, paradox_curves, swept_ratio};
+use crate::analysis::{Curves, DampingKind, own_point, paradox_curves};
 use crate::app::View;
 use crate::app::action::Actions;
 use crate::app::jobs::Jobs;
@@ -122,11 +122,7 @@ impl ParadoxPanel {
         {
             return *point;
         }
-        let x = swept_ratio(model, self.kind);
-        let point = (x > 0.0 && x.is_finite())
-            .then(|| known.or_else(|| first_instability(&key, key.analysis_max_p()).ok().flatten()))
-            .flatten()
-            .map(|p| [x.log10(), p]);
+        let point = own_point(&key, self.kind, known);
         self.current = Some(((key, self.kind), point));
         point
     }
