@@ -21,7 +21,7 @@ use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
 use super::{AffinePencil, AnalysisError, C64};
-use crate::model::{Model, StateVec, state_derivative, state_len};
+use crate::model::Model;
 
 /// Difference steps: for the Jacobian, the second and the third derivatives.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -84,9 +84,6 @@ pub enum NoHopf {
     /// collision of two pairs on the imaginary axis, and there is no
     /// attractor for a cycle to be.
     Reversible,
-    /// The roller's rest state slides on the band, and its dry friction is
-    /// not smooth where the slip stops: not computed here.
-    Roller,
 }
 
 /// The Hopf point of `model` at the flutter onset `load`, or why there is none.
@@ -98,21 +95,46 @@ pub fn hopf_at(
     load: f64,
     steps: Steps,
 ) -> Result<Result<Hopf, NoHopf>, AnalysisError> {
-    if model.roller().is_some() {
-        return Ok(Err(NoHopf::Roller));
-    }
+    Ok(hopf_point(model, load, steps)?.map(|point| point.hopf))
+}
+
+/// A Hopf point with the critical eigenvector: where the limit cycles start.
+#[derive(Clone, Debug)]
+pub(crate) struct HopfPoint {
+    pub hopf: Hopf,
+    /// `q`, `A q = i omega q` on the reduced state (see `field`), `|q| = 1`.
+    pub eigenvector: DVector<C64>,
+    /// The normal form's radius per sqrt of the load's distance from the
+    /// onset: the cycle is `2 r Re(q e^{i omega t})` to leading order.
+    pub radius_per_sqrt_load: f64,
+}
+
+/// Whether anything in `model` dissipates energy: a damper, drag along the
+/// rods or a roller with mass (whose spin slips on the band). Without, the
+/// column is reversible (a massless roller is exactly the ideal follower).
+fn dissipative(model: &Model) -> bool {
     let c = &model.column;
-    if c.c1_nms_per_rad == 0.0 && c.c2_nms_per_rad == 0.0 && c.drag_ns_per_m2 == 0.0 {
+    c.c1_nms_per_rad != 0.0
+        || c.c2_nms_per_rad != 0.0
+        || c.drag_ns_per_m2 != 0.0
+        || model.roller().is_some_and(|r| r.mass_kg > 0.0)
+}
+
+/// [`hopf_at`] with the critical eigenvector and the normal form's radius.
+pub(crate) fn hopf_point(
+    model: &Model,
+    load: f64,
+    steps: Steps,
+) -> Result<Result<HopfPoint, NoHopf>, AnalysisError> {
+    if !dissipative(model) {
         return Ok(Err(NoHopf::Reversible));
     }
     let at = model.at_load(load);
     let pencil = AffinePencil::new(&at)?;
     let critical = critical_pair(&pencil, load)?;
-    let field = Field {
-        model: at,
-        rods: c.rods,
-    };
-    let a = field.jacobian(steps.jacobian);
+    let field = Field(super::field::Field::new(&at));
+    let n = field.0.dimension();
+    let a = field.0.jacobian(&DVector::zeros(n), steps.jacobian);
     let not_found = AnalysisError::NotConverged { load };
     let (lambda, q) = eigenvector(&a, critical).ok_or(not_found.clone())?;
     let omega = lambda.im;
@@ -127,7 +149,6 @@ pub fn hopf_at(
     let complex_a = a.map(|v| C64::new(v, 0.0));
     let solve = |m: DMatrix<C64>, rhs: &DVector<C64>| m.lu().solve(rhs).ok_or(not_found.clone());
     let zero_mode = solve(complex_a.clone(), &qq_bar)?;
-    let n = a.nrows();
     let shifted = DMatrix::<C64>::identity(n, n) * C64::new(0.0, 2.0 * omega) - &complex_a;
     let double_mode = solve(shifted, &qq)?;
     let terms = [
@@ -148,16 +169,20 @@ pub fn hopf_at(
     let growth_per_load = growth_per_load(&pencil, load, critical)?;
     // r^2 = -mu' eps / (omega l1) for z' = lambda z + c1 z |z|^2, x = 2 Re(z q).
     let radius_per_sqrt_load = (growth_per_load.abs() / (omega * first_lyapunov.abs())).sqrt();
-    let amplitude_per_sqrt_load_rad = (0..c.rods)
+    let amplitude_per_sqrt_load_rad = (0..field.0.rods())
         .map(|i| 2.0 * q[i].norm() * radius_per_sqrt_load)
         .collect();
-    Ok(Ok(Hopf {
-        load,
-        frequency_rad_per_s: omega,
-        first_lyapunov,
-        kind,
-        growth_per_load,
-        amplitude_per_sqrt_load_rad,
+    Ok(Ok(HopfPoint {
+        hopf: Hopf {
+            load,
+            frequency_rad_per_s: omega,
+            first_lyapunov,
+            kind,
+            growth_per_load,
+            amplitude_per_sqrt_load_rad,
+        },
+        eigenvector: q,
+        radius_per_sqrt_load,
     }))
 }
 
@@ -223,41 +248,12 @@ fn eigenvector(a: &DMatrix<f64>, guess: C64) -> Option<(C64, DVector<C64>)> {
     (residual <= 1e-6 * a.norm().max(1.0)).then_some((lambda, x))
 }
 
-/// The equations of motion of a follower column on its rods' angles and
-/// rates (the spin, which no force of a follower column reaches, held at rest).
-struct Field {
-    model: Model,
-    rods: usize,
-}
+/// The second and third derivatives of the reduced field at rest.
+struct Field(super::field::Field);
 
 impl Field {
-    /// `f` at the reduced state `x = (phi_1 .. phi_N, phi_1' .. phi_N')`.
     fn at(&self, x: &DVector<f64>) -> DVector<f64> {
-        let n = self.rods;
-        let mut full = StateVec::zeros(state_len(n));
-        for i in 0..n {
-            full[i] = x[i];
-            full[n + 1 + i] = x[n + i];
-        }
-        let d = state_derivative(&self.model, &full);
-        DVector::from_fn(2 * n, |i, _| if i < n { d[i] } else { d[n + 1 + (i - n)] })
-    }
-
-    fn dimension(&self) -> usize {
-        2 * self.rods
-    }
-
-    /// The Jacobian at rest by central differences.
-    fn jacobian(&self, h: f64) -> DMatrix<f64> {
-        let n = self.dimension();
-        let mut a = DMatrix::zeros(n, n);
-        for j in 0..n {
-            let mut e = DVector::zeros(n);
-            e[j] = h;
-            let column = (self.at(&e) - self.at(&-&e)) / (2.0 * h);
-            a.set_column(j, &column);
-        }
-        a
+        self.0.at(x)
     }
 
     /// The second derivative `B(x, y)` at rest for real `x`, `y`.

@@ -3,6 +3,8 @@
 
 mod critical;
 mod crossing;
+mod cycles;
+mod field;
 mod hopf;
 mod locus;
 mod map;
@@ -17,6 +19,9 @@ pub use critical::{
     critical_loads_along,
 };
 pub use crossing::{Transition, stability_ranges};
+pub use cycles::{
+    Branch, BranchEnd, Cycle, MAX_AMPLITUDE_RAD, NoBranch, Onset, Peaks, cycle_branches, cycles_at,
+};
 pub use hopf::{Hopf, HopfKind, NoHopf, Steps as HopfSteps, hopf_at, is_hopf};
 pub use locus::{Locus, MAX_HELD_EIGENVALUES, load_grid, locus, locus_streamed, max_samples};
 pub use map::{

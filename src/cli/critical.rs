@@ -133,10 +133,6 @@ fn with_hopf(model: &Model, t: &Transition) -> Result<serde_json::Value> {
                 "kind": "reversible",
                 "why": "no damping: the column is reversible, two pairs meet on the imaginary axis and there is no attractor for a limit cycle to be",
             }),
-            Ok(Err(NoHopf::Roller)) => json!({
-                "kind": "not computed",
-                "why": "the roller's rest state slides on the band and its dry friction is not smooth where the slip stops: its Hopf analysis is not built yet",
-            }),
             Err(error) => json!({"kind": "not computed", "why": error.to_string()}),
         };
         value["hopf"] = hopf;

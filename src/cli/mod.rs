@@ -3,6 +3,7 @@
 //! on stderr with exit status 2.
 
 mod bench;
+mod bifurcation;
 mod critical;
 mod figure;
 mod headless;
@@ -178,6 +179,11 @@ enum Command {
     /// Stability map: the state and growth rate of every cell of a grid over
     /// the load and a second parameter (a key, c1/c2 or damping).
     Map(map::Args),
+    /// Limit cycles past the flutter onsets: the straight column's stability
+    /// and every cycle (period, amplitude of each angle, stability by its
+    /// Floquet multipliers) at evenly spaced loads; optionally a sweep of
+    /// the load up and down as an experiment does.
+    Bifurcation(bifurcation::Args),
     /// A figure for a paper, SVG or PNG at a journal's size: the root locus,
     /// Re and Im against the load (other presets overlaid), the stability
     /// map or the paradox curves.
@@ -292,6 +298,7 @@ fn execute(command: &Command) -> Result<()> {
     let to_stdout = match command {
         Command::Critical(_) | Command::Locus(_) | Command::Simulate(_) | Command::Bench(_) => true,
         Command::Map(args) => args.streams(),
+        Command::Bifurcation(args) => args.streams(),
         _ => false,
     };
     if to_stdout {
@@ -306,6 +313,7 @@ fn execute(command: &Command) -> Result<()> {
         Command::Simulate(args) => simulate::run(args, &mut out),
         Command::Map(args) => map::run(args),
         Command::Figure(args) => figure::run(args),
+        Command::Bifurcation(args) => bifurcation::run(args),
         Command::Bench(args) => bench::run(args, &mut out),
         Command::Snapshot(args) => snapshot::run(args),
         Command::Record(args) => record::run(args),

@@ -6,11 +6,13 @@ mod observe;
 mod ramp;
 mod rapier;
 mod reference;
+mod sweep;
 
 pub use identify::identify;
 pub use observe::{Observables, observe};
 pub use ramp::{Ramp, RampError};
 pub use reference::{Advance, MAX_STEPS_PER_ADVANCE, Reference};
+pub use sweep::{FLOOR_KICK_RAD, START_KICK_RAD, SweepStep, SweepTimes, sweep};
 
 use crate::model::{
     AsValid, Model, ModelError, StateVec, StateView, StateViewMut, ValidModel, chain_mass_matrix,

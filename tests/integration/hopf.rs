@@ -77,15 +77,19 @@ fn the_first_lyapunov_coefficient_does_not_depend_on_the_difference_steps() {
 }
 
 #[test]
-fn an_undamped_column_is_reversible_and_the_roller_is_not_computed_here() {
+fn an_undamped_column_is_reversible_and_the_roller_dissipates() {
     assert_eq!(
         onset(&model("ziegler-1952", &[]), HopfSteps::DEFAULT),
         Err(NoHopf::Reversible)
     );
+    // A massless roller is exactly the ideal follower force: reversible.
     assert_eq!(
-        onset(&model("roller", &[]), HopfSteps::DEFAULT),
-        Err(NoHopf::Roller)
+        onset(&model("roller", &["m3=0"]), HopfSteps::DEFAULT),
+        Err(NoHopf::Reversible)
     );
+    // With mass its spin slips on the band: soft flutter.
+    let roller = onset(&model("roller", &[]), HopfSteps::DEFAULT).unwrap();
+    assert_eq!(roller.kind, HopfKind::Supercritical);
 }
 
 #[test]

@@ -13,6 +13,7 @@ mod cli;
 mod cli_files;
 mod closed_form_loads;
 mod common;
+mod cycles;
 mod damped_ziegler;
 mod eigen_solver;
 mod energy_balance;

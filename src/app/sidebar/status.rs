@@ -179,7 +179,6 @@ fn onset_ui(ui: &mut egui::Ui, onset: f64, hopf: &Result<Hopf, NoHopf>) {
             "no damping: no limit cycle to settle on (a reversible column)".to_owned(),
             "Without damping the column is reversible: flutter starts where two pairs of eigenvalues meet on the imaginary axis, and there is no attractor, so no limit cycle the swing could settle on.".to_owned(),
         ),
-        Err(NoHopf::Roller) => return,
     };
     ui.label(RichText::new(words).small()).on_hover_text(more);
 }

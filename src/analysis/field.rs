@@ -1,0 +1,158 @@
+//! The nonlinear equations of motion as a vector field on the reduced state
+//! (the coordinates the motion depends on), with its Jacobian by central
+//! differences: what the Hopf and limit-cycle analyses differentiate and
+//! integrate.
+//!
+//! The reduced state is `(phi_1 .. phi_N, phi_1' .. phi_N')`, plus the
+//! roller's spin rate `psi'` last when the roller has mass. The spin angle
+//! `psi` is left out: no force depends on it (a cyclic coordinate), so a
+//! column at rest on a sliding band is an equilibrium of the reduced field.
+//! A follower column has no spin, and a massless roller's spin rate is
+//! slaved to the rods' motion, so neither carries `psi'`.
+
+use nalgebra::{DMatrix, DVector};
+
+use crate::model::{Model, StateVec, friction, state_derivative, state_len};
+
+/// The reduced field of one model at one load.
+#[derive(Clone, Debug)]
+pub struct Field {
+    model: Model,
+    rods: usize,
+    /// Whether `psi'` is a coordinate (a roller with mass).
+    spin: bool,
+}
+
+impl Field {
+    /// The field of `model` (at its own load).
+    #[must_use]
+    pub fn new(model: &Model) -> Self {
+        Self {
+            model: *model,
+            rods: model.column.rods,
+            spin: model.roller().is_some_and(|r| r.mass_kg > 0.0),
+        }
+    }
+
+    /// The field of the same column at load `p`.
+    #[must_use]
+    pub fn at_load(&self, p: f64) -> Self {
+        Self {
+            model: self.model.at_load(p),
+            ..self.clone()
+        }
+    }
+
+    /// How many rods: the reduced state's first `rods` entries are the angles.
+    #[must_use]
+    pub fn rods(&self) -> usize {
+        self.rods
+    }
+
+    /// The reduced state's length.
+    #[must_use]
+    pub fn dimension(&self) -> usize {
+        2 * self.rods + usize::from(self.spin)
+    }
+
+    /// The full state of the model for reduced state `x` (spin angle zero;
+    /// the spin rate zero where it is not a coordinate).
+    #[must_use]
+    pub fn full_state(&self, x: &DVector<f64>) -> StateVec {
+        let n = self.rods;
+        let mut full = StateVec::zeros(state_len(n));
+        for i in 0..n {
+            full[i] = x[i];
+            full[n + 1 + i] = x[n + i];
+        }
+        if self.spin {
+            full[2 * n + 1] = x[2 * n];
+        }
+        full
+    }
+
+    /// `f(x)`: the reduced state's time derivative.
+    #[must_use]
+    pub fn at(&self, x: &DVector<f64>) -> DVector<f64> {
+        let n = self.rods;
+        let d = state_derivative(&self.model, &self.full_state(x));
+        DVector::from_fn(self.dimension(), |i, _| match i {
+            i if i < n => d[i],
+            i if i < 2 * n => d[n + 1 + (i - n)],
+            _ => d[2 * n + 1],
+        })
+    }
+
+    /// The roller's slip speed on the band in state `x`, m/s (none without
+    /// a roller).
+    #[must_use]
+    pub fn slip_m_per_s(&self, x: &DVector<f64>) -> Option<f64> {
+        let roller = self.model.roller()?;
+        Some(
+            friction(&self.model.column, roller, &self.full_state(x))
+                .slip_m_per_s
+                .norm(),
+        )
+    }
+
+    /// The roller's band speed, m/s (none without a roller).
+    #[must_use]
+    pub fn band_speed_m_per_s(&self) -> Option<f64> {
+        self.model.roller().map(|r| r.band_speed_m_per_s)
+    }
+
+    /// The Jacobian of `f` at `x` by central differences, steps `h` scaled
+    /// by each coordinate's size (at least 1).
+    #[must_use]
+    pub fn jacobian(&self, x: &DVector<f64>, h: f64) -> DMatrix<f64> {
+        let n = self.dimension();
+        let mut a = DMatrix::zeros(n, n);
+        let mut shifted = x.clone();
+        for j in 0..n {
+            let step = h * x[j].abs().max(1.0);
+            shifted[j] = x[j] + step;
+            let plus = self.at(&shifted);
+            shifted[j] = x[j] - step;
+            let minus = self.at(&shifted);
+            shifted[j] = x[j];
+            a.set_column(j, &((plus - minus) / (2.0 * step)));
+        }
+        a
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{PresetId, linearize};
+
+    /// At rest the Jacobian is the first-order form of the analytic
+    /// linearization `M x'' + D x' + K x = 0`: `[[0, I], [-M⁻¹K, -M⁻¹D]]`.
+    #[test]
+    fn the_jacobian_at_rest_is_the_linearization() {
+        let mut model = PresetId::Ziegler1952.model().at_load(1.5);
+        model.column.c1_nms_per_rad = 0.2;
+        model.column.c2_nms_per_rad = 0.1;
+        let field = Field::new(&model);
+        let a = field.jacobian(&DVector::zeros(4), 1e-6);
+        let lin = linearize(&model).expect("a valid model");
+        let inverse = lin.mass.clone().try_inverse().expect("invertible");
+        let (k, d) = (-&inverse * &lin.stiffness, -&inverse * &lin.damping);
+        for i in 0..2 {
+            for j in 0..2 {
+                assert!((a[(i, 2 + j)] - f64::from(u8::from(i == j))).abs() < 1e-9);
+                assert!((a[(2 + i, j)] - k[(i, j)]).abs() < 1e-7, "{a} {k}");
+                assert!((a[(2 + i, 2 + j)] - d[(i, j)]).abs() < 1e-7, "{a} {d}");
+            }
+        }
+    }
+
+    /// The roller's spin rate is a coordinate only when the roller has mass.
+    #[test]
+    fn the_spin_rate_is_a_coordinate_of_a_roller_with_mass() {
+        let roller = PresetId::Roller.model();
+        let has_mass = roller.roller().is_some_and(|r| r.mass_kg > 0.0);
+        assert_eq!(Field::new(&roller).dimension(), 4 + usize::from(has_mass));
+        assert_eq!(Field::new(&PresetId::Ziegler1952.model()).dimension(), 4);
+    }
+}

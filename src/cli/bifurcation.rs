@@ -1,0 +1,343 @@
+//! `zieglerlab bifurcation`: the straight column's stability and the limit
+//! cycles born at its flutter onsets, at evenly spaced loads, as CSV or
+//! JSON; with `--sweep`, also what a run shows with the load stepped up and
+//! back down.
+
+use std::io::Write;
+
+use anyhow::Result;
+use clap::ValueEnum;
+use serde_json::json;
+
+use zieglerlab::analysis::{
+    AffinePencil, Branch, Cycle, NoBranch, Onset, State, classify, cycle_branches, cycles_at,
+    load_grid,
+};
+use zieglerlab::format::{Exact, Shown};
+use zieglerlab::model::Model;
+use zieglerlab::sim::{Status, SweepStep, SweepTimes, sweep};
+
+use super::map::AxisArg;
+use super::output::{check_output, write_atomically};
+use super::{LOAD_AXIS, ModelArgs, printable, progress_bar, spinner};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum Format {
+    Csv,
+    Json,
+}
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    model: ModelArgs,
+    /// The loads, load:MIN:MAX:N (N evenly spaced, ends included). Cycles
+    /// are followed from every flutter onset in this range.
+    #[arg(long, allow_hyphen_values = true)]
+    x: AxisArg,
+    #[arg(long, value_enum, default_value_t = Format::Csv)]
+    format: Format,
+    /// Where to write [default: standard output].
+    #[arg(long)]
+    out: Option<std::path::PathBuf>,
+    /// Also sweep as an experiment does: the reference engine with the load
+    /// stepped up the loads then back down, each step going on from where
+    /// the last ended, its largest angles measured after settling (rows
+    /// `sweep-up` and `sweep-down`, `stable` left empty: a run, not an
+    /// analysis).
+    #[arg(long)]
+    sweep: bool,
+    /// Each sweep step runs this many periods of the column's slowest
+    /// oscillation at the first load before it is measured.
+    #[arg(long, default_value_t = 50.0, requires = "sweep")]
+    settle_periods: f64,
+    /// ... and is measured over this many.
+    #[arg(long, default_value_t = 4.0, requires = "sweep")]
+    measure_periods: f64,
+}
+
+impl Args {
+    /// Whether the diagram goes to standard output, a pipe or a device.
+    pub fn streams(&self) -> bool {
+        self.out
+            .as_ref()
+            .is_none_or(|out| std::fs::metadata(out).is_ok_and(|m| !m.is_file() && !m.is_dir()))
+    }
+}
+
+/// Most sweep periods per step (settling and measuring).
+const MAX_SWEEP_PERIODS: f64 = 10_000.0;
+
+/// One row of the diagram.
+struct Row {
+    load: f64,
+    branch: String,
+    /// Empty for a sweep step.
+    stable: Option<bool>,
+    period_secs: Option<f64>,
+    amplitude_rad: Vec<f64>,
+    multipliers: Vec<[f64; 2]>,
+}
+
+pub fn run(args: &Args) -> Result<()> {
+    if let Some(out) = &args.out {
+        check_output(out, false)?;
+    }
+    let (name, model) = args.model.build()?;
+    let loads = loads(&args.x)?;
+    for (what, value) in [
+        ("--settle-periods", args.settle_periods),
+        ("--measure-periods", args.measure_periods),
+    ] {
+        if !(value.is_finite() && value > 0.0 && value <= MAX_SWEEP_PERIODS) {
+            anyhow::bail!(
+                "{what} {}: must be a number of periods in (0, {MAX_SWEEP_PERIODS}]",
+                Shown(value)
+            );
+        }
+    }
+    let (lo, hi) = (args.x.min, args.x.max);
+    let pencil = AffinePencil::new(&model)?;
+    let mut rows = equilibrium_rows(&pencil, &loads, model.column.rods)?;
+    let working = spinner("limit cycles: shooting and continuation");
+    let branches = cycle_branches(&model, lo, hi)?;
+    working.finish_and_clear();
+    for onset in &branches {
+        report(onset.load, &onset.branch);
+        if let Ok(branch) = &onset.branch {
+            rows.extend(cycle_rows(&model, branch, &loads));
+        }
+    }
+    if args.sweep {
+        rows.extend(sweep_rows(&model, &pencil, &loads, args)?);
+    }
+    let write = |out: &mut dyn Write| -> std::io::Result<()> {
+        match args.format {
+            Format::Csv => write_csv(out, &rows, model.column.rods),
+            Format::Json => write_json(out, &name.to_string(), &branches, &rows),
+        }
+    };
+    match &args.out {
+        Some(path) => write_atomically(path, |file| write(file))?,
+        None => write(&mut std::io::stdout().lock())?,
+    }
+    Ok(())
+}
+
+/// The grid of `--x`, checked: the load, from 0 up.
+fn loads(x: &AxisArg) -> Result<Vec<f64>> {
+    if x.name != "load" {
+        anyhow::bail!(
+            "--x {}: the diagram's axis is the load: load:MIN:MAX:N",
+            x.text
+        );
+    }
+    if x.min < 0.0 {
+        anyhow::bail!("--x {}: loads must be >= 0", x.text);
+    }
+    if x.count < 2 || x.max <= x.min {
+        anyhow::bail!(
+            "--x {}: a diagram needs a range of loads (MAX above MIN, N at least 2)",
+            x.text
+        );
+    }
+    // The grid of the other commands (`locus`, `map`): the same loads.
+    Ok(load_grid(x.min, x.max, x.count)?)
+}
+
+/// The straight column at each load: stable or not, at rest.
+fn equilibrium_rows(pencil: &AffinePencil, loads: &[f64], rods: usize) -> Result<Vec<Row>> {
+    loads
+        .iter()
+        .map(|&p| {
+            let spectrum = pencil.spectrum(p)?;
+            let state = classify(&spectrum.eigenvalues, spectrum.scale_per_s).state;
+            Ok(Row {
+                load: p,
+                branch: "equilibrium".to_owned(),
+                stable: Some(state == State::Stable),
+                period_secs: None,
+                amplitude_rad: vec![0.0; rods],
+                multipliers: Vec::new(),
+            })
+        })
+        .collect()
+}
+
+/// What was found at one flutter onset, on stderr.
+fn report(onset: f64, found: &Result<Branch, NoBranch>) {
+    let at = Shown(onset);
+    let line = match found {
+        Ok(branch) => {
+            let hopf = branch.hopf();
+            format!(
+                "{}: {} onset at p = {at} (first Lyapunov coefficient {:.4e}), {} cycles followed; the branch ended: {}",
+                branch.name(),
+                if hopf.first_lyapunov < 0.0 {
+                    "soft"
+                } else {
+                    "hard"
+                },
+                hopf.first_lyapunov,
+                branch.cycles.len(),
+                branch.end
+            )
+        }
+        Err(NoBranch::Reversible) => format!(
+            "flutter onset at p = {at}: no damping, a reversible column: no limit cycle to follow"
+        ),
+        Err(NoBranch::Degenerate) => format!(
+            "flutter onset at p = {at}: the first Lyapunov coefficient is zero within its accuracy; cycles not followed"
+        ),
+        Err(NoBranch::NotConverged) => format!(
+            "flutter onset at p = {at}: the shooting did not converge next to the onset; no cycles"
+        ),
+    };
+    eprintln!("{}", printable(&line));
+}
+
+fn cycle_row(cycle: &Cycle, branch: &str) -> Row {
+    Row {
+        load: cycle.load,
+        branch: branch.to_owned(),
+        stable: Some(cycle.stable),
+        period_secs: Some(cycle.period_secs),
+        amplitude_rad: cycle.amplitude_rad.clone(),
+        multipliers: cycle.multipliers.iter().map(|m| [m.re, m.im]).collect(),
+    }
+}
+
+/// The branch's cycles at each grid load (two where it folds back).
+fn cycle_rows(model: &Model, branch: &Branch, loads: &[f64]) -> Vec<Row> {
+    let name = branch.name().to_owned();
+    let progress = progress_bar(loads.len() as u64, &format!("{name} at the loads"));
+    let rows = loads
+        .iter()
+        .flat_map(|&p| {
+            progress.inc(1);
+            cycles_at(model, branch, p)
+        })
+        .map(|cycle| cycle_row(&cycle, &name))
+        .collect();
+    progress.finish_and_clear();
+    rows
+}
+
+/// The sweep's steps as rows.
+fn sweep_rows(
+    model: &Model,
+    pencil: &AffinePencil,
+    loads: &[f64],
+    args: &Args,
+) -> Result<Vec<Row>> {
+    let slowest = pencil
+        .spectrum(loads[0])?
+        .eigenvalues
+        .iter()
+        .map(|z| z.im.abs())
+        .filter(|w| *w > 0.0)
+        .fold(f64::INFINITY, f64::min);
+    if !slowest.is_finite() {
+        anyhow::bail!(
+            "--sweep: the column does not oscillate at p = {}: no period to settle over",
+            Shown(loads[0])
+        );
+    }
+    let period = std::f64::consts::TAU / slowest;
+    let times = SweepTimes {
+        settle_secs: args.settle_periods * period,
+        measure_secs: args.measure_periods * period,
+        step_secs: (period / 256.0).min(1.0),
+    };
+    let progress = progress_bar(2 * loads.len() as u64 - 1, "sweep steps");
+    let (steps, status) = sweep(model, loads, times, |_| progress.inc(1))?;
+    progress.finish_and_clear();
+    if status != Status::Running {
+        let at = steps.last().map_or(loads[0], |s: &SweepStep| s.load);
+        eprintln!(
+            "warning: the sweep stopped after p = {}: the run stopped ({status:?}); {} of {} steps",
+            Shown(at),
+            steps.len(),
+            2 * loads.len() - 1
+        );
+    }
+    Ok(steps
+        .into_iter()
+        .map(|step| Row {
+            load: step.load,
+            branch: if step.upward {
+                "sweep-up"
+            } else {
+                "sweep-down"
+            }
+            .to_owned(),
+            stable: None,
+            period_secs: step.period_secs,
+            amplitude_rad: step.amplitude_rad,
+            multipliers: Vec::new(),
+        })
+        .collect())
+}
+
+fn write_csv(out: &mut dyn Write, rows: &[Row], rods: usize) -> std::io::Result<()> {
+    let amplitudes: Vec<String> = (1..=rods).map(|i| format!("amp_phi{i}_rad")).collect();
+    writeln!(out, "load,branch,stable,period_s,{}", amplitudes.join(","))?;
+    for row in rows {
+        let stable = row.stable.map_or(String::new(), |s| s.to_string());
+        let period = row
+            .period_secs
+            .map_or(String::new(), |t| Exact(t).to_string());
+        let amplitudes: Vec<String> = row
+            .amplitude_rad
+            .iter()
+            .map(|a| Exact(*a).to_string())
+            .collect();
+        writeln!(
+            out,
+            "{},{},{stable},{period},{}",
+            Exact(row.load),
+            row.branch,
+            amplitudes.join(",")
+        )?;
+    }
+    Ok(())
+}
+
+fn write_json(
+    out: &mut dyn Write,
+    preset: &str,
+    branches: &[Onset],
+    rows: &[Row],
+) -> std::io::Result<()> {
+    let onsets: Vec<_> = branches
+        .iter()
+        .map(|Onset { load, branch }| match branch {
+            Ok(branch) => json!({
+                "load": load,
+                "hopf": branch.hopf(),
+                "branch": branch.name(),
+                "cycles_followed": branch.cycles.len(),
+                "end": branch.end.to_string(),
+            }),
+            Err(why) => {
+                json!({"load": load, "branch": null, "why": format!("{why:?}").to_lowercase()})
+            }
+        })
+        .collect();
+    let rows: Vec<_> = rows
+        .iter()
+        .map(|row| {
+            json!({
+                "load": row.load,
+                "branch": row.branch,
+                "stable": row.stable,
+                "period_s": row.period_secs,
+                "amplitude_rad": row.amplitude_rad,
+                "floquet_multipliers": row.multipliers,
+            })
+        })
+        .collect();
+    let value = json!({"axis": LOAD_AXIS, "preset": preset, "onsets": onsets, "rows": rows});
+    serde_json::to_writer_pretty(&mut *out, &value)?;
+    writeln!(out)
+}

@@ -1,0 +1,340 @@
+//! Limit cycles by shooting: near the onset they are the normal form's
+//! (their amplitudes imply the first Lyapunov coefficient Kuznetsov's
+//! formula gives); each is a periodic orbit of the independent reference
+//! integrator and the attractor a long run settles on, on both engines; the
+//! trivial Floquet multiplier is 1; over one cycle the load feeds in what
+//! the dampers take out; the roller's branch stops before stick-slip.
+
+use crate::common::model;
+use zieglerlab::analysis::{Branch, BranchEnd, HopfKind, cycle_branches, cycles_at};
+use zieglerlab::model::Model;
+use zieglerlab::sim::{EngineKind, Simulation, initial_state};
+
+/// The first branch of cycles of `m` over loads `[lo, hi]`.
+fn first_branch(m: &Model, lo: f64, hi: f64) -> Branch {
+    let branches = cycle_branches(m, lo, hi).expect("an analysis");
+    let onset = branches.into_iter().next().expect("a flutter onset");
+    onset.branch.expect("a branch of cycles")
+}
+
+fn damped_ziegler() -> Model {
+    model("ziegler-1952", &["c1=0.3", "c2=0.3"])
+}
+
+#[test]
+fn near_the_onset_the_cycles_are_the_normal_form_s() {
+    let m = damped_ziegler();
+    let branch = first_branch(&m, 1.8, 2.2);
+    let hopf = branch.hopf().clone();
+    assert_eq!(hopf.kind, HopfKind::Supercritical);
+    let mut errors = Vec::new();
+    for above in [1e-2, 1e-3, 1e-4] {
+        let p = hopf.load + above;
+        let cycles = cycles_at(&m, &branch, p);
+        assert_eq!(cycles.len(), 1, "one cycle at p = {p}");
+        let cycle = &cycles[0];
+        assert!(cycle.stable);
+        // The amplitudes imply l1: r^2 = mu' eps / (omega |l1|) and
+        // amplitude = 2 |q_i| r, so l1 scales as (predicted / computed)^2.
+        let ratio = cycle.amplitude_rad[0] / (hopf.amplitude_per_sqrt_load_rad[0] * above.sqrt());
+        let implied_l1 = hopf.first_lyapunov * ratio.powi(-2);
+        errors.push((implied_l1 / hopf.first_lyapunov - 1.0).abs());
+        // The period tends to the onset's 2 pi / omega.
+        let period = std::f64::consts::TAU / hopf.frequency_rad_per_s;
+        assert!(
+            (cycle.period_secs / period - 1.0).abs() < 50.0 * above,
+            "{cycle:?}"
+        );
+    }
+    assert!(errors.windows(2).all(|w| w[1] < w[0]), "{errors:?}");
+    assert!(errors[2] < 1e-3, "{errors:?}");
+}
+
+#[test]
+fn a_cycle_is_a_periodic_orbit_of_the_reference_integrator() {
+    let m = damped_ziegler();
+    let branch = first_branch(&m, 1.8, 2.4);
+    let cycle = cycles_at(&m, &branch, 2.2).remove(0);
+    let at = m.at_load(2.2);
+    let x0 = cycle.start_state(&at);
+    let steps = 2000.0;
+    let mut sim = Simulation::new(
+        at,
+        EngineKind::Reference,
+        x0.clone(),
+        cycle.period_secs / steps,
+    )
+    .expect("a run");
+    let mut largest = [0.0_f64; 2];
+    sim.run(cycle.period_secs, |o| {
+        for (most, angle) in largest.iter_mut().zip(&o.angles_rad) {
+            *most = most.max(angle.abs());
+        }
+    });
+    let back = sim.state();
+    let gap = (0..x0.len())
+        .map(|i| (back[i] - x0[i]).abs())
+        .fold(0.0, f64::max);
+    assert!(
+        gap < 1e-7,
+        "after one period the run is {gap} from its start"
+    );
+    for (seen, computed) in largest.iter().zip(&cycle.amplitude_rad) {
+        // The run's samples are 2000 per period: a peak is missed by at
+        // most (pi/2000)^2/2 of the amplitude.
+        assert!((seen / computed - 1.0).abs() < 2e-6, "{seen} vs {computed}");
+    }
+}
+
+/// The largest `|phi_i|` over two periods after 60 periods of a run from
+/// `x0` on `engine`.
+fn settled(m: &Model, engine: EngineKind, x0: nalgebra::DVector<f64>, period: f64) -> Vec<f64> {
+    let mut sim = Simulation::new(*m, engine, x0, 1.0 / 240.0).expect("a run");
+    sim.run(60.0 * period, |_| ());
+    let mut largest = vec![0.0_f64; 2];
+    sim.run(2.0 * period, |o| {
+        for (most, angle) in largest.iter_mut().zip(&o.angles_rad) {
+            *most = most.max(angle.abs());
+        }
+    });
+    largest
+}
+
+#[test]
+fn a_long_run_on_either_engine_settles_on_the_stable_cycle() {
+    let m = damped_ziegler();
+    let branch = first_branch(&m, 1.8, 2.4);
+    let cycle = cycles_at(&m, &branch, 2.2).remove(0);
+    let at = m.at_load(2.2);
+    // The reference integrator from the standard kick, 60 periods on (the
+    // cycle's next multiplier is about 0.7: the start is forgotten).
+    let seen = settled(
+        &at,
+        EngineKind::Reference,
+        initial_state(&at, 1e-3),
+        cycle.period_secs,
+    );
+    for (seen, computed) in seen.iter().zip(&cycle.amplitude_rad) {
+        assert!((seen / computed - 1.0).abs() < 1e-5, "{seen} vs {computed}");
+    }
+    // rapier from the cycle's start: its orbit stays on the cycle to the
+    // accuracy of its fixed step (1/240 s of a 35 s period).
+    let seen = settled(
+        &at,
+        EngineKind::Rapier,
+        cycle.start_state(&at),
+        cycle.period_secs,
+    );
+    for (seen, computed) in seen.iter().zip(&cycle.amplitude_rad) {
+        assert!((seen / computed - 1.0).abs() < 1e-3, "{seen} vs {computed}");
+    }
+}
+
+#[test]
+fn the_trivial_multiplier_is_one_along_every_branch() {
+    for (name, sets, hi) in [
+        ("ziegler-1952", &["c1=0.3", "c2=0.3"][..], 3.0),
+        ("uniform-rods", &["c1=0.05", "c2=0.05"][..], 3.0),
+        ("roller", &[][..], 0.1),
+    ] {
+        let branch = first_branch(&model(name, sets), 0.0, hi);
+        assert!(branch.cycles.len() > 10, "{name}: {:?}", branch.end);
+        for cycle in &branch.cycles {
+            let off = (cycle.trivial_multiplier() - 1.0).norm();
+            assert!(off < 1e-8, "{name} at p = {}: {off}", cycle.load);
+        }
+    }
+}
+
+#[test]
+fn over_one_cycle_the_load_feeds_in_what_the_dampers_take_out() {
+    let m = damped_ziegler();
+    let branch = first_branch(&m, 1.8, 2.4);
+    let cycle = cycles_at(&m, &branch, 2.2).remove(0);
+    let at = m.at_load(2.2);
+    let (c1, c2) = (at.column.c1_nms_per_rad, at.column.c2_nms_per_rad);
+    let steps = 4000.0;
+    let dt = cycle.period_secs / steps;
+    let mut sim =
+        Simulation::new(at, EngineKind::Reference, cycle.start_state(&at), dt).expect("a run");
+    let start = sim.observe();
+    let dissipated = |o: &zieglerlab::sim::Observables| {
+        let r = &o.rates_rad_per_s;
+        c1 * r[0] * r[0] + c2 * (r[1] - r[0]).powi(2)
+    };
+    // Trapezoids of the load's power and of the dampers'.
+    let (mut fed, mut taken) = (0.0, 0.0);
+    let mut last = start.clone();
+    sim.run(cycle.period_secs, |o| {
+        fed += 0.5 * dt * (last.band_power_w + o.band_power_w);
+        taken += 0.5 * dt * (dissipated(&last) + dissipated(o));
+        last = o.clone();
+    });
+    assert!(taken > 0.01, "the dampers work: {taken} J");
+    assert!(
+        (fed / taken - 1.0).abs() < 1e-6,
+        "fed {fed} J, taken {taken} J"
+    );
+    assert!((last.energy_j() - start.energy_j()).abs() < 1e-8 * start.energy_j());
+}
+
+#[test]
+fn the_roller_s_branch_stops_before_its_contact_sticks() {
+    let m = model("roller", &[]);
+    let branch = first_branch(&m, 0.0, 1.0);
+    assert_eq!(branch.hopf().kind, HopfKind::Supercritical);
+    assert!(
+        matches!(branch.end, BranchEnd::StickSlip { .. }),
+        "{:?}",
+        branch.end
+    );
+    let band = m.roller().expect("a roller").band_speed_m_per_s;
+    for cycle in &branch.cycles {
+        let slip = cycle.closest_slip_m_per_s.expect("a roller's slip");
+        assert!(slip >= 0.1 * band, "p = {}: slip {slip}", cycle.load);
+    }
+    // The last smooth cycle is a periodic orbit of the reference integrator.
+    let last = branch.cycles.last().expect("cycles");
+    let at = m.at_load(last.load);
+    let x0 = last.start_state(&at);
+    let mut sim = Simulation::new(
+        at,
+        EngineKind::Reference,
+        x0.clone(),
+        last.period_secs / 1000.0,
+    )
+    .expect("a run");
+    sim.run(last.period_secs, |_| ());
+    let back = sim.state();
+    let n = m.column.rods;
+    // The angles and rates return (the spin angle advances with the band).
+    for i in (0..n).chain((n + 1)..=(2 * n)) {
+        assert!(
+            (back[i] - x0[i]).abs() < 1e-6,
+            "entry {i}: {} vs {}",
+            back[i],
+            x0[i]
+        );
+    }
+}
+
+#[test]
+fn bifurcation_csv_lists_the_equilibrium_and_the_cycles() {
+    let text = crate::cli::stdout(&[
+        "bifurcation",
+        "--preset",
+        "ziegler-1952",
+        "--set",
+        "c1=0.3",
+        "--set",
+        "c2=0.3",
+        "--x",
+        "load:1.8:2.2:5",
+    ]);
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next(),
+        Some("load,branch,stable,period_s,amp_phi1_rad,amp_phi2_rad")
+    );
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let onset = 1.914_285_714_285_7;
+    let equilibrium: Vec<_> = rows.iter().filter(|r| r[1] == "equilibrium").collect();
+    assert_eq!(equilibrium.len(), 5);
+    for row in &equilibrium {
+        let p: f64 = row[0].parse().expect("a load");
+        assert_eq!(row[2] == "true", p < onset, "{row:?}");
+    }
+    let cycles: Vec<_> = rows.iter().filter(|r| r[1] == "cycle-1").collect();
+    let loads: Vec<&str> = cycles.iter().map(|r| r[0]).collect();
+    assert_eq!(loads, ["2", "2.1", "2.2"]);
+    let m = damped_ziegler();
+    let branch = first_branch(&m, 1.8, 2.2);
+    let computed = cycles_at(&m, &branch, 2.2).remove(0);
+    let last = cycles.last().expect("a row");
+    assert_eq!(last[2], "true");
+    assert_eq!(last[3].parse::<f64>().ok(), Some(computed.period_secs));
+    assert_eq!(last[5].parse::<f64>().ok(), Some(computed.amplitude_rad[1]));
+}
+
+#[test]
+fn bifurcation_json_names_each_onset_and_an_undamped_column_has_no_cycles() {
+    let text = crate::cli::stdout(&[
+        "bifurcation",
+        "--preset",
+        "ziegler-1952",
+        "--set",
+        "c1=0.3",
+        "--set",
+        "c2=0.3",
+        "--x",
+        "load:1.8:2.0:3",
+        "--format",
+        "json",
+    ]);
+    let value: serde_json::Value = serde_json::from_str(&text).expect("json");
+    let onset = &value["onsets"][0];
+    assert_eq!(onset["branch"], "cycle-1");
+    assert_eq!(onset["hopf"]["kind"], "supercritical");
+    let rows = value["rows"].as_array().expect("rows");
+    let cycle = rows
+        .iter()
+        .find(|r| r["branch"] == "cycle-1")
+        .expect("a cycle");
+    let multipliers = cycle["floquet_multipliers"]
+        .as_array()
+        .expect("multipliers");
+    assert_eq!(multipliers.len(), 4);
+    let out = crate::cli::run(&[
+        "bifurcation",
+        "--preset",
+        "ziegler-1952",
+        "--x",
+        "load:1:3:3",
+    ]);
+    assert!(out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("reversible"), "{stderr}");
+    assert!(!String::from_utf8_lossy(&out.stdout).contains("cycle-"));
+}
+
+#[test]
+fn a_sweep_down_follows_the_stable_cycle_and_comes_to_rest_below_the_onset() {
+    let text = crate::cli::stdout(&[
+        "bifurcation",
+        "--preset",
+        "ziegler-1952",
+        "--set",
+        "c1=0.3",
+        "--set",
+        "c2=0.3",
+        "--x",
+        "load:1.8:2.4:4",
+        "--sweep",
+    ]);
+    let rows: Vec<Vec<&str>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
+    let amplitude = |branch: &str, load: &str| -> f64 {
+        let row = rows
+            .iter()
+            .find(|r| r[1] == branch && r[0] == load)
+            .unwrap_or_else(|| panic!("{branch} at {load}: {text}"));
+        row[5].parse().expect("a number")
+    };
+    let up: Vec<_> = rows.iter().filter(|r| r[1] == "sweep-up").collect();
+    let down: Vec<_> = rows.iter().filter(|r| r[1] == "sweep-down").collect();
+    assert_eq!((up.len(), down.len()), (4, 3));
+    assert!(up.iter().chain(&down).all(|r| r[2].is_empty()));
+    // Soft flutter: no hysteresis; going down, each step settles on the
+    // cycle the shooting finds.
+    for load in ["2.2", "2"] {
+        let (seen, cycle) = (amplitude("sweep-down", load), amplitude("cycle-1", load));
+        assert!(
+            (seen / cycle - 1.0).abs() < 1e-4,
+            "p = {load}: {seen} vs {cycle}"
+        );
+    }
+    assert!(amplitude("sweep-down", "1.8") < 1e-2);
+}
