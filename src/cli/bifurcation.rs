@@ -49,10 +49,20 @@ pub struct Args {
     sweep: bool,
     /// Each sweep step runs this many periods of the column's slowest
     /// oscillation at the first load before it is measured.
-    #[arg(long, default_value_t = 50.0, requires = "sweep")]
+    #[arg(
+        long,
+        default_value_t = 50.0,
+        requires = "sweep",
+        allow_hyphen_values = true
+    )]
     settle_periods: f64,
     /// ... and is measured over this many.
-    #[arg(long, default_value_t = 4.0, requires = "sweep")]
+    #[arg(
+        long,
+        default_value_t = 4.0,
+        requires = "sweep",
+        allow_hyphen_values = true
+    )]
     measure_periods: f64,
 }
 

@@ -470,4 +470,30 @@ pub const CLI_MAPS: &[Cli] = &[
         ],
         "nothing to draw: A dead load (eta = 0) is conservative",
     ),
+    // Limit cycles: the axis, the range, the sweep's times.
+    refused(
+        &["bifurcation", "--preset", "roller", "--x", "nu:0:1:3"],
+        "the diagram's axis is the load",
+    ),
+    refused(
+        &["bifurcation", "--preset", "roller", "--x", "load:-1:1:3"],
+        "loads must be >= 0",
+    ),
+    refused(
+        &["bifurcation", "--preset", "roller", "--x", "load:0:1:1"],
+        "a diagram needs a range of loads",
+    ),
+    refused(
+        &[
+            "bifurcation",
+            "--preset",
+            "roller",
+            "--x",
+            "load:0:0.05:3",
+            "--sweep",
+            "--settle-periods",
+            "-1",
+        ],
+        "--settle-periods -1: must be a number of periods in (0, 10000]",
+    ),
 ];
