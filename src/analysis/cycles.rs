@@ -25,6 +25,8 @@
 //! (the shift along the orbit); the cycle is stable when every other one
 //! lies inside the unit circle. Pure: no UI, no clock.
 
+use std::sync::atomic::{AtomicBool, Ordering};
+
 use nalgebra::{DMatrix, DVector};
 
 use super::field::Field;
@@ -107,6 +109,8 @@ pub enum BranchEnd {
     Unresolved { load: f64 },
     /// [`MAX_POINTS`] cycles were computed.
     PointLimit,
+    /// The caller asked to stop.
+    Cancelled,
 }
 
 impl std::fmt::Display for BranchEnd {
@@ -137,6 +141,7 @@ impl std::fmt::Display for BranchEnd {
                 crate::model::Shown(*load)
             ),
             Self::PointLimit => write!(f, "{MAX_POINTS} cycles computed"),
+            Self::Cancelled => write!(f, "stopped on request"),
         }
     }
 }
@@ -491,8 +496,8 @@ fn branch(
     model: &Model,
     point: &HopfPoint,
     name: String,
-    load_min: f64,
-    load_max: f64,
+    (load_min, load_max): (f64, f64),
+    cancel: &AtomicBool,
 ) -> Option<Branch> {
     let field = Field::new(&model.at_load(point.hopf.load));
     let shooting = Shooting {
@@ -526,6 +531,9 @@ fn branch(
         }
         if cycles.len() >= MAX_POINTS {
             break BranchEnd::PointLimit;
+        }
+        if cancel.load(Ordering::Relaxed) {
+            break BranchEnd::Cancelled;
         }
         let (u, previous) = (last.unknowns(), before.unknowns());
         let secant = &u - &previous;
@@ -584,6 +592,8 @@ pub struct Onset {
 
 /// The cycles born at every flutter onset or end of `model` with a load in
 /// `[load_min, load_max]`, each followed while its loads stay in that range.
+/// Setting `cancel` ends the work early (the branches so far end
+/// [`BranchEnd::Cancelled`]).
 ///
 /// # Errors
 /// A model that cannot be analysed.
@@ -591,11 +601,12 @@ pub fn cycle_branches(
     model: &Model,
     load_min: f64,
     load_max: f64,
+    cancel: &AtomicBool,
 ) -> Result<Vec<Onset>, AnalysisError> {
     let pencil = AffinePencil::new(model)?;
     let mut branches = Vec::new();
     for t in critical_loads(&pencil, load_min, load_max)? {
-        if !is_hopf(t.from, t.to) {
+        if !is_hopf(t.from, t.to) || cancel.load(Ordering::Relaxed) {
             continue;
         }
         let found = match hopf_point(model, t.load, HopfSteps::DEFAULT)? {
@@ -603,7 +614,8 @@ pub fn cycle_branches(
             Ok(point) if point.hopf.kind == HopfKind::Degenerate => Err(NoBranch::Degenerate),
             Ok(point) => {
                 let name = format!("cycle-{}", branches.len() + 1);
-                branch(model, &point, name, load_min, load_max).ok_or(NoBranch::NotConverged)
+                branch(model, &point, name, (load_min, load_max), cancel)
+                    .ok_or(NoBranch::NotConverged)
             }
         };
         branches.push(Onset {

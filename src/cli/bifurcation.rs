@@ -4,6 +4,7 @@
 //! back down.
 
 use std::io::Write;
+use std::sync::atomic::AtomicBool;
 
 use anyhow::Result;
 use clap::ValueEnum;
@@ -110,7 +111,7 @@ pub fn run(args: &Args) -> Result<()> {
     let pencil = AffinePencil::new(&model)?;
     let mut rows = equilibrium_rows(&pencil, &loads, model.column.rods)?;
     let working = spinner("limit cycles: shooting and continuation");
-    let branches = cycle_branches(&model, lo, hi)?;
+    let branches = cycle_branches(&model, lo, hi, &AtomicBool::new(false))?;
     working.finish_and_clear();
     for onset in &branches {
         report(onset.load, &onset.branch);

@@ -138,7 +138,8 @@ pub fn render_frames(
         Panel::Window => Some(app.layout().tab),
         Panel::Scene => None,
     };
-    let background = drawn.filter(|&tab| tab == Tab::MAP || tab == Tab::PARADOX);
+    let background =
+        drawn.filter(|&tab| [Tab::MAP, Tab::PARADOX, Tab::POST_CRITICAL].contains(&tab));
     if let Some(tab) = background {
         app.complete_background_work(tab);
     }

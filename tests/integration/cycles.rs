@@ -12,7 +12,8 @@ use zieglerlab::sim::{EngineKind, Simulation, initial_state};
 
 /// The first branch of cycles of `m` over loads `[lo, hi]`.
 fn first_branch(m: &Model, lo: f64, hi: f64) -> Branch {
-    let branches = cycle_branches(m, lo, hi).expect("an analysis");
+    let never = std::sync::atomic::AtomicBool::new(false);
+    let branches = cycle_branches(m, lo, hi, &never).expect("an analysis");
     let onset = branches.into_iter().next().expect("a flutter onset");
     onset.branch.expect("a branch of cycles")
 }

@@ -9,6 +9,7 @@ pub mod map;
 mod map_key;
 pub use map_key::{largest_rate, rate_strength};
 mod paradox;
+mod postcritical;
 
 use std::any::Any;
 
@@ -37,7 +38,13 @@ pub struct TabSpec {
 }
 
 /// Every tab, in the tab bar's order.
-pub const TABS: [TabSpec; 4] = [locus::TAB, histories::TAB, map::TAB, paradox::TAB];
+pub const TABS: [TabSpec; 5] = [
+    locus::TAB,
+    histories::TAB,
+    map::TAB,
+    paradox::TAB,
+    postcritical::TAB,
+];
 
 /// A tab of [`TABS`], by its place there.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -58,6 +65,7 @@ impl Tab {
     pub const HISTORIES: Self = Self(1);
     pub const MAP: Self = Self(2);
     pub const PARADOX: Self = Self(3);
+    pub const POST_CRITICAL: Self = Self(4);
 
     /// Every tab, in the tab bar's order.
     pub fn all() -> impl Iterator<Item = Self> {
@@ -206,6 +214,7 @@ mod tests {
             (Tab::HISTORIES, "histories"),
             (Tab::MAP, "map"),
             (Tab::PARADOX, "paradox"),
+            (Tab::POST_CRITICAL, "post-critical"),
         ] {
             assert_eq!(tab.id(), id);
             assert_eq!(Tab::named(id), Ok(tab));

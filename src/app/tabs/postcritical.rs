@@ -1,0 +1,368 @@
+//! The post-critical tab: the bifurcation diagram of the current column
+//! (the straight column, stable or not, and the limit cycles born at its
+//! flutter onsets, the largest angle over each cycle against the load,
+//! stable solid and unstable dashed), the current load, the ramp's seen
+//! onset and the running column's own swing as a live dot, so a class sees
+//! it settle onto the curve. The cycles are computed off the UI thread.
+
+#[cfg(test)]
+use std::sync::atomic::AtomicBool;
+
+use eframe::egui;
+use egui_plot::{Corner, Legend, Line, LineStyle, Plot, PlotPoints, Points, VLine};
+
+use super::{TabSpec, TabView, save_buttons};
+use crate::analysis::{Branch, NoBranch, Onset, State, cycle_branches};
+use crate::app::View;
+use crate::app::action::Actions;
+use crate::app::history::{HISTORY_SECS, History};
+use crate::app::jobs::Jobs;
+use crate::app::plot_frame::{Fit, axes, refit_if};
+use crate::app::state::AppState;
+use crate::app::theme::Theme;
+use crate::format::load_text;
+use crate::model::Model;
+
+pub const TAB: TabSpec = TabSpec {
+    id: "post-critical",
+    title: "post-critical",
+    tooltip: "past the flutter onset: the limit cycles' size against the load, stable or not, and the running column's own swing",
+    make: || Box::new(PostCriticalPanel::default()),
+};
+
+/// What the diagram depends on: the column (at load 0) and the load range.
+type DiagramKey = (Model, f64);
+
+/// The branches found, or why there are none.
+type Diagram = Result<Vec<Onset>, String>;
+
+/// The panel and its diagram.
+pub struct PostCriticalPanel {
+    jobs: Jobs<DiagramKey, Diagram>,
+    diagram: Option<(DiagramKey, Diagram)>,
+    /// Refits when a new diagram arrives, and on "reset all".
+    fit: Fit<(u64, DiagramKey)>,
+}
+
+impl Default for PostCriticalPanel {
+    fn default() -> Self {
+        Self {
+            jobs: Jobs::new("limit cycles"),
+            diagram: None,
+            fit: Fit::default(),
+        }
+    }
+}
+
+impl PostCriticalPanel {
+    /// Starts the diagram for `key` unless it is the newest asked for.
+    fn follow(&mut self, key: DiagramKey) {
+        if self.jobs.key() == Some(&key) {
+            return;
+        }
+        let started = self.jobs.request(key, |(model, load_max), cancel, send| {
+            let found = cycle_branches(model, 0.0, *load_max, cancel.flag());
+            if !cancel.requested() {
+                send(found.map_err(|error| error.to_string()));
+            }
+        });
+        if let Err(error) = started {
+            self.diagram = Some((key, Err(format!("no thread for the cycles: {error}"))));
+        }
+    }
+
+    /// Takes the diagram that came in; the newest is kept.
+    fn receive(&mut self) {
+        if let Some(newest) = self.jobs.drain().last() {
+            self.diagram = Some(newest);
+        }
+    }
+
+    fn key(state: &AppState) -> DiagramKey {
+        (state.model().at_load(0.0), state.load_max())
+    }
+}
+
+impl TabView for PostCriticalPanel {
+    fn complete_background_work(&mut self, state: &AppState) {
+        self.follow(Self::key(state));
+        self.jobs.wait();
+        self.receive();
+    }
+}
+
+impl View for PostCriticalPanel {
+    fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
+        let key = Self::key(state);
+        self.follow(key);
+        self.receive();
+        let Some((_, diagram)) = self.diagram.as_ref().filter(|(k, _)| *k == key) else {
+            ui.ctx().request_repaint();
+            ui.horizontal(|ui| {
+                ui.spinner();
+                ui.label("following the limit cycles from each flutter onset ...");
+            });
+            return;
+        };
+        let onsets = match diagram {
+            Ok(onsets) => onsets,
+            Err(why) => {
+                ui.colored_label(theme.warning, format!("no limit cycles: {why}"));
+                return;
+            }
+        };
+        for line in notes(onsets) {
+            ui.label(egui::RichText::new(line).small());
+        }
+        self.fit.bar_ui(ui, state.for_picture(), |ui| {
+            save_buttons(ui, None, actions);
+        });
+        let refit = self.fit.refit((state.view_generation(), key));
+        let load = state.model().load_p();
+        let branches: Vec<&Branch> = onsets
+            .iter()
+            .filter_map(|o| o.branch.as_ref().ok())
+            .collect();
+        let swing = live_swing(state.history(), &branches, load);
+        // Amplitudes are >= 0: the axis starts at zero and reaches the
+        // largest cycle (or a tenth of a radian where there is none).
+        let highest = branches
+            .iter()
+            .flat_map(|b| {
+                b.cycles
+                    .iter()
+                    .map(crate::analysis::Cycle::largest_amplitude_rad)
+            })
+            .chain(swing)
+            .fold(0.1, f64::max);
+        let plot = Plot::new("post-critical")
+            .legend(Legend::default().position(Corner::LeftTop))
+            .include_x(0.0)
+            .include_x(load)
+            .include_y(0.0)
+            .include_y(1.1 * highest);
+        let plot = axes(plot, "p = P l/k", "largest |phi_i| over a cycle (rad)");
+        let key_load_max = key.1;
+        refit_if(plot, refit).show(ui, |plot_ui| {
+            draw(plot_ui, state, key_load_max, &branches, swing, theme);
+        });
+    }
+}
+
+/// The diagram's lines and points: the straight column, the cycles, the
+/// onsets, the load, the ramp's seen onset and the live dot.
+fn draw(
+    plot_ui: &mut egui_plot::PlotUi<'_>,
+    state: &AppState,
+    load_max: f64,
+    branches: &[&Branch],
+    swing: Option<f64>,
+    theme: &Theme,
+) {
+    let load = state.model().load_p();
+    for (from, to, stable) in equilibrium(state, load_max) {
+        let line = Line::new(
+            "straight column",
+            PlotPoints::from(vec![[from, 0.0], [to, 0.0]]),
+        )
+        .color(theme.text)
+        .width(2.0 * theme.stroke_scale);
+        plot_ui.line(if stable {
+            line
+        } else {
+            line.style(LineStyle::dashed_loose())
+        });
+    }
+    for branch in branches {
+        for (points, stable) in runs(branch) {
+            let (name, style) = if stable {
+                ("stable cycle", LineStyle::Solid)
+            } else {
+                ("unstable cycle", LineStyle::dashed_loose())
+            };
+            plot_ui.line(
+                Line::new(name, PlotPoints::from(points))
+                    .color(theme.flutter)
+                    .style(style)
+                    .width(2.0 * theme.stroke_scale),
+            );
+        }
+    }
+    let hopf: Vec<[f64; 2]> = branches.iter().map(|b| [b.hopf().load, 0.0]).collect();
+    if !hopf.is_empty() {
+        plot_ui.points(
+            Points::new("flutter onset (Hopf point)", hopf)
+                .radius(4.0 * theme.stroke_scale)
+                .color(theme.flutter)
+                .filled(false),
+        );
+    }
+    plot_ui.vline(
+        VLine::new("load", load)
+            .color(theme.load_line)
+            .width(1.5 * theme.stroke_scale),
+    );
+    if let Some(seen) = state.ramp().and_then(|ramp| ramp.seen_at_p) {
+        plot_ui.vline(
+            VLine::new("seen during the ramp", seen)
+                .color(theme.measured)
+                .style(LineStyle::dashed_dense())
+                .width(1.5 * theme.stroke_scale),
+        );
+    }
+    if let Some(swing) = swing {
+        plot_ui.points(
+            Points::new("this run's largest angle, last period", vec![[load, swing]])
+                .radius(5.0 * theme.stroke_scale)
+                .color(theme.now)
+                .filled(true),
+        );
+    }
+}
+
+/// The straight column's stretches over `[0, load_max]`, stable or not,
+/// from the app's analysis when it is of this column.
+fn equilibrium(state: &AppState, load_max: f64) -> Vec<(f64, f64, bool)> {
+    let model = state.model().at_load(0.0);
+    state
+        .analysis()
+        .filter(|analysis| *analysis.key == model)
+        .map(|analysis| {
+            analysis
+                .ranges
+                .iter()
+                .filter(|(from, _, _)| *from < load_max)
+                .map(|&(from, to, s)| (from, to.min(load_max), s == State::Stable))
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+/// The branch as runs of equal stability, from its Hopf point on (each
+/// run starts where the one before ended, so the curve is unbroken).
+fn runs(branch: &Branch) -> Vec<(Vec<[f64; 2]>, bool)> {
+    let mut runs: Vec<(Vec<[f64; 2]>, bool)> = Vec::new();
+    let mut last = [branch.hopf().load, 0.0];
+    for cycle in &branch.cycles {
+        let point = [cycle.load, cycle.largest_amplitude_rad()];
+        match runs.last_mut() {
+            Some((points, stable)) if *stable == cycle.stable => points.push(point),
+            _ => runs.push((vec![last, point], cycle.stable)),
+        }
+        last = point;
+    }
+    runs
+}
+
+/// The running column's largest `|phi_i|` over its last period (that of
+/// the cycle nearest the current load, else of the onset), once the
+/// history holds a whole period.
+fn live_swing(history: &History, branches: &[&Branch], load: f64) -> Option<f64> {
+    let period = branches
+        .iter()
+        .flat_map(|b| b.cycles.iter())
+        .min_by(|a, b| (a.load - load).abs().total_cmp(&(b.load - load).abs()))
+        .map(|cycle| cycle.period_secs)
+        .or_else(|| {
+            branches
+                .first()
+                .map(|b| std::f64::consts::TAU / b.hopf().frequency_rad_per_s)
+        })?
+        .min(HISTORY_SECS);
+    let now = history.samples().last()?.t_secs;
+    let oldest = history.samples().next()?.t_secs;
+    if now - oldest < period {
+        return None;
+    }
+    history
+        .samples()
+        .filter(|o| o.t_secs >= now - period)
+        .flat_map(|o| o.angles_rad.iter().map(|a| a.abs()))
+        .reduce(f64::max)
+}
+
+/// One line per flutter onset: soft or hard, and where its branch ended.
+fn notes(onsets: &[Onset]) -> Vec<String> {
+    if onsets.is_empty() {
+        return vec!["no flutter onset in the load bar's range: no limit cycles".to_owned()];
+    }
+    onsets
+        .iter()
+        .map(|onset| {
+            let at = load_text(onset.load);
+            match &onset.branch {
+                Ok(branch) => format!(
+                    "{}: {} onset at p = {at}; the branch ended: {}",
+                    branch.name(),
+                    if branch.hopf().first_lyapunov < 0.0 { "soft" } else { "hard" },
+                    branch.end
+                ),
+                Err(NoBranch::Reversible) => format!(
+                    "flutter onset at p = {at}: no damping, a reversible column: no limit cycle to settle on"
+                ),
+                Err(NoBranch::Degenerate) => format!(
+                    "flutter onset at p = {at}: neither soft nor hard to first order; cycles not followed"
+                ),
+                Err(NoBranch::NotConverged) => format!(
+                    "flutter onset at p = {at}: the shooting did not converge next to the onset"
+                ),
+            }
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::PresetId;
+    use crate::sim::{EngineKind, Simulation};
+
+    fn damped_ziegler() -> Model {
+        let mut model = PresetId::Ziegler1952.model();
+        model.column.c1_nms_per_rad = 0.3;
+        model.column.c2_nms_per_rad = 0.3;
+        model
+    }
+
+    /// The diagram's curve starts at the Hopf point and runs on unbroken;
+    /// the live dot of a run on the cycle is the cycle's amplitude, and
+    /// there is no dot before the history holds a period.
+    #[test]
+    fn the_curve_starts_at_the_onset_and_a_run_on_the_cycle_sits_on_it() {
+        let model = damped_ziegler();
+        let never = AtomicBool::new(false);
+        let onsets = cycle_branches(&model, 0.0, 2.4, &never).unwrap();
+        let branch = onsets[0].branch.as_ref().unwrap();
+        let runs = runs(branch);
+        assert_eq!(runs.len(), 1, "a stable branch is one run");
+        let (points, stable) = &runs[0];
+        assert!(*stable);
+        assert_eq!(points[0], [branch.hopf().load, 0.0]);
+        assert_eq!(points.len(), branch.cycles.len() + 1);
+        let cycle = crate::analysis::cycles_at(&model, branch, 2.2).remove(0);
+        let at = model.at_load(2.2);
+        let mut sim = Simulation::new(
+            at,
+            EngineKind::Reference,
+            cycle.start_state(&at),
+            1.0 / 60.0,
+        )
+        .unwrap();
+        let mut history = History::default();
+        history.push(sim.observe());
+        let branches = [branch];
+        sim.run(0.5 * cycle.period_secs, |o| history.push(o.clone()));
+        assert_eq!(live_swing(&history, &branches, 2.2), None);
+        sim.run(cycle.period_secs, |o| history.push(o.clone()));
+        let swing = live_swing(&history, &branches, 2.2).unwrap();
+        assert!(
+            (swing / cycle.largest_amplitude_rad() - 1.0).abs() < 1e-4,
+            "{swing} vs {cycle:?}"
+        );
+        let notes = notes(&onsets);
+        assert!(
+            notes[0].starts_with("cycle-1: soft onset at p = 1.9143"),
+            "{notes:?}"
+        );
+    }
+}
