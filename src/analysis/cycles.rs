@@ -32,6 +32,7 @@ use nalgebra::{DMatrix, DVector};
 use super::field::Field;
 use super::hopf::{HopfPoint, Steps as HopfSteps, hopf_point};
 use super::{AffinePencil, AnalysisError, C64, Hopf, HopfKind, critical_loads, is_hopf};
+use crate::format::load_text;
 use crate::model::{Model, StateVec};
 
 /// One periodic orbit.
@@ -128,17 +129,17 @@ impl std::fmt::Display for BranchEnd {
             Self::Lost { load } => write!(
                 f,
                 "the shooting did not converge past p = {}",
-                crate::model::Shown(*load)
+                load_text(*load)
             ),
             Self::StickSlip { load } => write!(
                 f,
                 "the roller's contact nears sticking on the band past p = {} (stick-slip: the friction is not smooth there)",
-                crate::model::Shown(*load)
+                load_text(*load)
             ),
             Self::Unresolved { load } => write!(
                 f,
                 "the cycles past p = {} are not resolved (trivial multiplier off 1 by more than {TRIVIAL_TOLERANCE:e})",
-                crate::model::Shown(*load)
+                load_text(*load)
             ),
             Self::PointLimit => write!(f, "{MAX_POINTS} cycles computed"),
             Self::Cancelled => write!(f, "stopped on request"),
@@ -162,6 +163,24 @@ impl Branch {
     #[must_use]
     pub fn hopf(&self) -> &Hopf {
         &self.onset.hopf
+    }
+
+    /// The branch as runs of equal stability, each a polyline of
+    /// `[load, largest angle's amplitude]` from the Hopf point on (each run
+    /// starts where the one before ended, so the curve is unbroken).
+    #[must_use]
+    pub fn runs(&self) -> Vec<(Vec<[f64; 2]>, bool)> {
+        let mut runs: Vec<(Vec<[f64; 2]>, bool)> = Vec::new();
+        let mut last = [self.hopf().load, 0.0];
+        for cycle in &self.cycles {
+            let point = [cycle.load, cycle.largest_amplitude_rad()];
+            match runs.last_mut() {
+                Some((points, stable)) if *stable == cycle.stable => points.push(point),
+                _ => runs.push((vec![last, point], cycle.stable)),
+            }
+            last = point;
+        }
+        runs
     }
 
     /// The branch's name in tables: `cycle-1`, `cycle-2`, ... in the

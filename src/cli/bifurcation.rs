@@ -1,7 +1,7 @@
 //! `zieglerlab bifurcation`: the straight column's stability and the limit
 //! cycles born at its flutter onsets, at evenly spaced loads, as CSV or
-//! JSON; with `--sweep`, also what a run shows with the load stepped up and
-//! back down.
+//! JSON, or as a figure (PNG); with `--sweep`, also what a run shows with
+//! the load stepped up and back down.
 
 use std::io::Write;
 use std::sync::atomic::AtomicBool;
@@ -11,9 +11,10 @@ use clap::ValueEnum;
 use serde_json::json;
 
 use zieglerlab::analysis::{
-    AffinePencil, Branch, Cycle, NoBranch, Onset, State, classify, cycle_branches, cycles_at,
-    load_grid,
+    AffinePencil, Branch, Cycle, NoBranch, Onset, State, classify, critical_loads, cycle_branches,
+    cycles_at, load_grid, stability_ranges,
 };
+use zieglerlab::figure::{self, BifurcationData, Content, Page, render};
 use zieglerlab::format::{Exact, Shown};
 use zieglerlab::model::Model;
 use zieglerlab::sim::{Status, SweepStep, SweepTimes, sweep};
@@ -26,6 +27,8 @@ use super::{LOAD_AXIS, ModelArgs, printable, progress_bar, spinner};
 enum Format {
     Csv,
     Json,
+    /// The diagram as a figure (the page of `figure`'s defaults).
+    Png,
 }
 
 #[derive(clap::Args, Debug)]
@@ -91,8 +94,12 @@ struct Row {
 }
 
 pub fn run(args: &Args) -> Result<()> {
-    if let Some(out) = &args.out {
-        check_output(out, false)?;
+    match (&args.out, args.format) {
+        (None, Format::Png) => {
+            anyhow::bail!("--format png: give the picture's file with --out FILE.png")
+        }
+        (Some(out), format) => check_output(out, format == Format::Png)?,
+        (None, _) => {}
     }
     let (name, model) = args.model.build()?;
     let loads = loads(&args.x)?;
@@ -122,10 +129,23 @@ pub fn run(args: &Args) -> Result<()> {
     if args.sweep {
         rows.extend(sweep_rows(&model, &pencil, &loads, args)?);
     }
+    if args.format == Format::Png {
+        let data = figure_data(&pencil, (lo, hi), &branches, &rows)?;
+        let rendered = render(
+            &Content::Bifurcation(&data),
+            &Page::default(),
+            figure::Format::Png,
+        )?;
+        let out = args
+            .out
+            .as_ref()
+            .ok_or_else(|| anyhow::anyhow!("no --out"))?;
+        return write_atomically(out, |file| file.write_all(&rendered.bytes));
+    }
     let write = |out: &mut dyn Write| -> std::io::Result<()> {
         match args.format {
-            Format::Csv => write_csv(out, &rows, model.column.rods),
             Format::Json => write_json(out, &name.to_string(), &branches, &rows),
+            Format::Csv | Format::Png => write_csv(out, &rows, model.column.rods),
         }
     };
     match &args.out {
@@ -173,6 +193,38 @@ fn equilibrium_rows(pencil: &AffinePencil, loads: &[f64], rods: usize) -> Result
             })
         })
         .collect()
+}
+
+/// The figure's data: the straight column's stability over the range, the
+/// branches and the sweep's steps.
+fn figure_data(
+    pencil: &AffinePencil,
+    (lo, hi): (f64, f64),
+    onsets: &[Onset],
+    rows: &[Row],
+) -> Result<BifurcationData> {
+    let first = pencil.spectrum(lo)?;
+    let first = classify(&first.eigenvalues, first.scale_per_s).state;
+    let transitions = critical_loads(pencil, lo, hi)?;
+    let equilibrium = stability_ranges(&transitions, first, lo, hi)
+        .into_iter()
+        .map(|(from, to, state)| (from, to, state == State::Stable))
+        .collect();
+    let largest = |row: &Row| row.amplitude_rad.iter().copied().fold(0.0, f64::max);
+    let sweep = rows
+        .iter()
+        .filter(|row| row.branch.starts_with("sweep-"))
+        .map(|row| (row.load, largest(row), row.branch == "sweep-up"))
+        .collect();
+    Ok(BifurcationData {
+        load_range: (lo, hi),
+        equilibrium,
+        branches: onsets
+            .iter()
+            .filter_map(|o| o.branch.clone().ok())
+            .collect(),
+        sweep,
+    })
 }
 
 /// What was found at one flutter onset, on stderr.

@@ -285,18 +285,17 @@ where
     Ok(())
 }
 
-/// A dashed straight line from `a` to `b` on `chart`, cut to its box.
+/// The polyline `points` dashed on `chart`, cut to its box.
 pub fn dashed<DB: DrawingBackend>(
     chart: &mut Chart<'_, DB>,
-    a: (f64, f64),
-    b: (f64, f64),
+    points: &[(f64, f64)],
     color: RGBColor,
     ink: &Ink,
 ) -> Result<(), FigureError>
 where
     DB::ErrorType: 'static,
 {
-    for piece in clip_polyline(&[a, b], bounds(chart)) {
+    for piece in clip_polyline(points, bounds(chart)) {
         drawing(chart.draw_series(DashedLineSeries::new(
             piece,
             ink.units(3.0),

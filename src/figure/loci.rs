@@ -145,8 +145,7 @@ where
     )?;
     dashed(
         &mut plane,
-        (0.0, -half_height),
-        (0.0, half_height),
+        &[(0.0, -half_height), (0.0, half_height)],
         tint(INK, 0.5),
         ink,
     )?;
@@ -249,8 +248,7 @@ where
         for t in &main.transitions {
             dashed(
                 &mut plot,
-                (t.load, y0),
-                (t.load, y1),
+                &[(t.load, y0), (t.load, y1)],
                 state_color(t.to),
                 ink,
             )?;

@@ -1,7 +1,9 @@
 //! Figures for a paper: the root locus, Re and Im of the eigenvalues against
-//! the load, the stability map and the paradox curves, drawn with plotters
+//! the load, the stability map, the paradox curves and the limit cycles'
+//! bifurcation diagram, drawn with plotters
 //! at a journal's size and font size, as SVG (vector) or PNG.
 
+mod bifurcation;
 mod clip;
 mod glyphs;
 mod layout;
@@ -13,6 +15,7 @@ mod style;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+pub use bifurcation::BifurcationData;
 pub use loci::{Analysed, analyse};
 pub use map::MapData;
 pub use paradox::ParadoxData;
@@ -35,6 +38,8 @@ pub enum Content<'a> {
     Map(&'a MapData),
     /// The first loss of stability against a damping ratio.
     Paradox(&'a ParadoxData),
+    /// The limit cycles' amplitude against the load.
+    Bifurcation(&'a BifurcationData),
 }
 
 /// The file format, from the output's extension.
@@ -179,6 +184,7 @@ where
         Content::ReIm { main, overlays } => loci::draw_versus_load(root, main, overlays, ink),
         Content::Map(data) => map::draw(root, data, ink),
         Content::Paradox(data) => paradox::draw(root, data, ink),
+        Content::Bifurcation(data) => bifurcation::draw(root, data, ink),
     }
 }
 

@@ -92,7 +92,7 @@ where
         ink,
     )?;
     if let Some((_, p)) = &curves.reference {
-        dashed(&mut plot, (x0, *p), (x1, *p), INK, ink)?;
+        dashed(&mut plot, &[(x0, *p), (x1, *p)], INK, ink)?;
     }
     for (k, (_, points)) in curves.lines.iter().enumerate() {
         let points: Vec<(f64, f64)> = points.iter().map(|p| (p[0], p[1])).collect();

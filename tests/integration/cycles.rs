@@ -339,3 +339,36 @@ fn a_sweep_down_follows_the_stable_cycle_and_comes_to_rest_below_the_onset() {
     }
     assert!(amplitude("sweep-down", "1.8") < 1e-2);
 }
+
+#[test]
+fn the_diagram_figure_draws_each_cycle_at_its_amplitude() {
+    use zieglerlab::figure::{BifurcationData, Content, Format, Page, render};
+    let m = damped_ziegler();
+    let branch = first_branch(&m, 1.6, 3.0);
+    let onset = branch.hopf().load;
+    let data = BifurcationData {
+        load_range: (1.6, 3.0),
+        equilibrium: vec![(1.6, onset, true), (onset, 3.0, false)],
+        branches: vec![branch.clone()],
+        sweep: Vec::new(),
+    };
+    let rendered =
+        render(&Content::Bifurcation(&data), &Page::default(), Format::Png).expect("a figure");
+    let image = image::load_from_memory(&rendered.bytes)
+        .expect("a PNG")
+        .to_rgb8();
+    let panel = &rendered.panels[0];
+    #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+    let pixel = |(x, y): (f64, f64)| image.get_pixel(x.round() as u32, y.round() as u32).0;
+    // The app's flutter orange where each solved cycle lies.
+    for p in [2.2, 2.6] {
+        let cycle = cycles_at(&m, &branch, p).remove(0);
+        let [r, g, b] = pixel(panel.page_point(p, cycle.largest_amplitude_rad())).map(i32::from);
+        assert!(r > g + 10 && g > b + 10, "p = {p}: {:?}", [r, g, b]);
+        // ... and nothing a tenth of a radian above it.
+        let above = pixel(panel.page_point(p, cycle.largest_amplitude_rad() + 0.1));
+        assert_eq!(above, [255, 255, 255], "p = {p}");
+    }
+    // The straight column in black along the load axis below the onset.
+    assert!(pixel(panel.page_point(1.7, 0.0)).iter().all(|&c| c < 80));
+}

@@ -174,7 +174,7 @@ fn draw(
         });
     }
     for branch in branches {
-        for (points, stable) in runs(branch) {
+        for (points, stable) in branch.runs() {
             let (name, style) = if stable {
                 ("stable cycle", LineStyle::Solid)
             } else {
@@ -236,22 +236,6 @@ fn equilibrium(state: &AppState, load_max: f64) -> Vec<(f64, f64, bool)> {
                 .collect()
         })
         .unwrap_or_default()
-}
-
-/// The branch as runs of equal stability, from its Hopf point on (each
-/// run starts where the one before ended, so the curve is unbroken).
-fn runs(branch: &Branch) -> Vec<(Vec<[f64; 2]>, bool)> {
-    let mut runs: Vec<(Vec<[f64; 2]>, bool)> = Vec::new();
-    let mut last = [branch.hopf().load, 0.0];
-    for cycle in &branch.cycles {
-        let point = [cycle.load, cycle.largest_amplitude_rad()];
-        match runs.last_mut() {
-            Some((points, stable)) if *stable == cycle.stable => points.push(point),
-            _ => runs.push((vec![last, point], cycle.stable)),
-        }
-        last = point;
-    }
-    runs
 }
 
 /// The running column's largest `|phi_i|` over its last period (that of
@@ -333,7 +317,7 @@ mod tests {
         let never = AtomicBool::new(false);
         let onsets = cycle_branches(&model, 0.0, 2.4, &never).unwrap();
         let branch = onsets[0].branch.as_ref().unwrap();
-        let runs = runs(branch);
+        let runs = branch.runs();
         assert_eq!(runs.len(), 1, "a stable branch is one run");
         let (points, stable) = &runs[0];
         assert!(*stable);

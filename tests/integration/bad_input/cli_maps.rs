@@ -496,4 +496,16 @@ pub const CLI_MAPS: &[Cli] = &[
         ],
         "--settle-periods -1: must be a number of periods in (0, 10000]",
     ),
+    refused(
+        &[
+            "bifurcation",
+            "--preset",
+            "roller",
+            "--x",
+            "load:0:0.05:3",
+            "--format",
+            "png",
+        ],
+        "--format png: give the picture's file with --out FILE.png",
+    ),
 ];
