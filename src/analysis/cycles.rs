@@ -628,7 +628,7 @@ pub fn cycle_branches(
         if !is_hopf(t.from, t.to) || cancel.load(Ordering::Relaxed) {
             continue;
         }
-        let found = match hopf_point(model, t.load, HopfSteps::DEFAULT)? {
+        let found = match hopf_point(model, t.load, HopfSteps::DEFAULT.into())? {
             Err(_) => Err(NoBranch::Reversible),
             Ok(point) if point.hopf.kind == HopfKind::Degenerate => Err(NoBranch::Degenerate),
             Ok(point) => {

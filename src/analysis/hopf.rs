@@ -13,9 +13,11 @@
 //!
 //! where `B` and `C` are the second and third derivatives of `f` at rest.
 //! They are taken by central differences of the equations of motion
-//! (`model::state_derivative`), with complex arguments by multilinearity;
-//! [`Steps`] are the difference steps, so a result can be checked against
-//! another set. Pure: no UI, no clock.
+//! (`model::state_derivative`), with complex arguments by multilinearity
+//! ([`Steps`] are the difference steps), or, for the follower columns
+//! without drag, exactly by automatic differentiation of the equations
+//! written a second time (`jet`): two independent means. Pure: no UI, no
+//! clock.
 
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
@@ -38,6 +40,22 @@ impl Steps {
         second: 1e-4,
         third: 1e-3,
     };
+}
+
+/// How the derivatives of the equations of motion are taken.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Derivatives {
+    /// Central differences of the equations with these steps (every column).
+    Differences(Steps),
+    /// Exactly, by truncated Taylor arithmetic on the equations written a
+    /// second time (`jet`): the follower columns without drag.
+    Automatic,
+}
+
+impl From<Steps> for Derivatives {
+    fn from(steps: Steps) -> Self {
+        Self::Differences(steps)
+    }
 }
 
 /// Whether flutter sets in softly or with a jump.
@@ -93,9 +111,9 @@ pub enum NoHopf {
 pub fn hopf_at(
     model: &Model,
     load: f64,
-    steps: Steps,
+    derivatives: impl Into<Derivatives>,
 ) -> Result<Result<Hopf, NoHopf>, AnalysisError> {
-    Ok(hopf_point(model, load, steps)?.map(|point| point.hopf))
+    Ok(hopf_point(model, load, derivatives.into())?.map(|point| point.hopf))
 }
 
 /// A Hopf point with the critical eigenvector: where the limit cycles start.
@@ -124,17 +142,26 @@ fn dissipative(model: &Model) -> bool {
 pub(crate) fn hopf_point(
     model: &Model,
     load: f64,
-    steps: Steps,
+    derivatives: Derivatives,
 ) -> Result<Result<HopfPoint, NoHopf>, AnalysisError> {
     if !dissipative(model) {
         return Ok(Err(NoHopf::Reversible));
     }
+    if derivatives == Derivatives::Automatic && !super::jet::covers(model) {
+        return Err(AnalysisError::NotCovered(
+            "the automatic derivatives cover the follower columns with joint springs and dampers, without drag along the rods",
+        ));
+    }
     let at = model.at_load(load);
     let pencil = AffinePencil::new(&at)?;
     let critical = critical_pair(&pencil, load)?;
-    let field = Field(super::field::Field::new(&at));
-    let n = field.0.dimension();
-    let a = field.0.jacobian(&DVector::zeros(n), steps.jacobian);
+    let field = Field {
+        reduced: super::field::Field::new(&at),
+        model: at,
+        derivatives,
+    };
+    let n = field.reduced.dimension();
+    let a = field.jacobian();
     let not_found = AnalysisError::NotConverged { load };
     let (lambda, q) = eigenvector(&a, critical).ok_or(not_found.clone())?;
     let omega = lambda.im;
@@ -142,8 +169,8 @@ pub(crate) fn hopf_point(
     // <p, q> = 1.
     let overlap = adjoint.dotc(&q);
     let p = adjoint.map(|v| v / overlap.conj());
-    let b = |x: &DVector<C64>, y: &DVector<C64>| field.second(x, y, steps.second);
-    let cubic = field.third(&q, steps.third);
+    let b = |x: &DVector<C64>, y: &DVector<C64>| field.second(x, y);
+    let cubic = field.third(&q);
     let qq_bar = b(&q, &q.conjugate());
     let qq = b(&q, &q);
     let complex_a = a.map(|v| C64::new(v, 0.0));
@@ -169,7 +196,7 @@ pub(crate) fn hopf_point(
     let growth_per_load = growth_per_load(&pencil, load, critical)?;
     // r^2 = -mu' eps / (omega l1) for z' = lambda z + c1 z |z|^2, x = 2 Re(z q).
     let radius_per_sqrt_load = (growth_per_load.abs() / (omega * first_lyapunov.abs())).sqrt();
-    let amplitude_per_sqrt_load_rad = (0..field.0.rods())
+    let amplitude_per_sqrt_load_rad = (0..field.reduced.rods())
         .map(|i| 2.0 * q[i].norm() * radius_per_sqrt_load)
         .collect();
     Ok(Ok(HopfPoint {
@@ -248,42 +275,92 @@ fn eigenvector(a: &DMatrix<f64>, guess: C64) -> Option<(C64, DVector<C64>)> {
     (residual <= 1e-6 * a.norm().max(1.0)).then_some((lambda, x))
 }
 
-/// The second and third derivatives of the reduced field at rest.
-struct Field(super::field::Field);
+/// The derivatives of the reduced field at rest, by the means asked for.
+struct Field {
+    reduced: super::field::Field,
+    model: Model,
+    derivatives: Derivatives,
+}
 
 impl Field {
     fn at(&self, x: &DVector<f64>) -> DVector<f64> {
-        self.0.at(x)
+        self.reduced.at(x)
+    }
+
+    /// The first, second and third directional derivatives along `v` by
+    /// jets (only called for [`Derivatives::Automatic`], on a covered model).
+    fn jets(&self, v: &DVector<f64>) -> [DVector<f64>; 3] {
+        super::jet::directional_derivatives(&self.model, v)
+            .unwrap_or_else(|| std::array::from_fn(|_| DVector::from_element(v.len(), f64::NAN)))
+    }
+
+    /// The Jacobian at rest.
+    fn jacobian(&self) -> DMatrix<f64> {
+        let n = self.reduced.dimension();
+        match self.derivatives {
+            Derivatives::Differences(steps) => {
+                self.reduced.jacobian(&DVector::zeros(n), steps.jacobian)
+            }
+            Derivatives::Automatic => {
+                let mut a = DMatrix::zeros(n, n);
+                for j in 0..n {
+                    let [first, ..] =
+                        self.jets(&DVector::from_fn(n, |i, _| f64::from(u8::from(i == j))));
+                    a.set_column(j, &first);
+                }
+                a
+            }
+        }
     }
 
     /// The second derivative `B(x, y)` at rest for real `x`, `y`.
-    fn second_real(&self, x: &DVector<f64>, y: &DVector<f64>, h: f64) -> DVector<f64> {
-        let (s, d) = ((x + y) * h, (x - y) * h);
-        (self.at(&s) - self.at(&d) - self.at(&-&d) + self.at(&-&s)) / (4.0 * h * h)
+    fn second_real(&self, x: &DVector<f64>, y: &DVector<f64>) -> DVector<f64> {
+        match self.derivatives {
+            Derivatives::Differences(steps) => {
+                let h = steps.second;
+                let (s, d) = ((x + y) * h, (x - y) * h);
+                (self.at(&s) - self.at(&d) - self.at(&-&d) + self.at(&-&s)) / (4.0 * h * h)
+            }
+            // B(x, y) = (D²[x + y] - D²[x - y]) / 4.
+            Derivatives::Automatic => {
+                let [_, plus, _] = self.jets(&(x + y));
+                let [_, minus, _] = self.jets(&(x - y));
+                (plus - minus) / 4.0
+            }
+        }
     }
 
     /// `B(x, y)` for complex `x`, `y`, by bilinearity.
-    fn second(&self, x: &DVector<C64>, y: &DVector<C64>, h: f64) -> DVector<C64> {
+    fn second(&self, x: &DVector<C64>, y: &DVector<C64>) -> DVector<C64> {
         let (xr, xi) = (x.map(|v| v.re), x.map(|v| v.im));
         let (yr, yi) = (y.map(|v| v.re), y.map(|v| v.im));
-        let re = self.second_real(&xr, &yr, h) - self.second_real(&xi, &yi, h);
-        let im = self.second_real(&xr, &yi, h) + self.second_real(&xi, &yr, h);
+        let re = self.second_real(&xr, &yr) - self.second_real(&xi, &yi);
+        let im = self.second_real(&xr, &yi) + self.second_real(&xi, &yr);
         DVector::from_fn(re.len(), |i, _| C64::new(re[i], im[i]))
     }
 
     /// The third directional derivative `C(v, v, v)` at rest, real `v`.
-    fn cube(&self, v: &DVector<f64>, h: f64) -> DVector<f64> {
-        (self.at(&(v * (2.0 * h))) - self.at(&(v * h)) * 2.0 + self.at(&(v * -h)) * 2.0
-            - self.at(&(v * (-2.0 * h))))
-            / (2.0 * h * h * h)
+    fn cube(&self, v: &DVector<f64>) -> DVector<f64> {
+        match self.derivatives {
+            Derivatives::Differences(steps) => {
+                let h = steps.third;
+                (self.at(&(v * (2.0 * h))) - self.at(&(v * h)) * 2.0 + self.at(&(v * -h)) * 2.0
+                    - self.at(&(v * (-2.0 * h))))
+                    / (2.0 * h * h * h)
+            }
+            Derivatives::Automatic => {
+                let [_, _, third] = self.jets(v);
+                third
+            }
+        }
     }
 
     /// `C(q, q, q̄)` for complex `q = a + ib`: `C(a,a,a) + C(a,b,b) +
     /// i (C(a,a,b) + C(b,b,b))`, the mixed terms by polarization along
     /// `a + t b` for t = 0, 1, -1, 2.
-    fn third(&self, q: &DVector<C64>, h: f64) -> DVector<C64> {
+    fn third(&self, q: &DVector<C64>) -> DVector<C64> {
         let (a, b) = (q.map(|v| v.re), q.map(|v| v.im));
-        let along = |t: f64| self.cube(&(&a + &b * t), h);
+        let along = |t: f64| self.cube(&(&a + &b * t));
         let (c0, c1, cm, c2) = (along(0.0), along(1.0), along(-1.0), along(2.0));
         // c(t) = aaa + 3t aab + 3t^2 abb + t^3 bbb.
         let aaa = c0.clone();

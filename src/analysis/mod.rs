@@ -6,6 +6,7 @@ mod crossing;
 mod cycles;
 mod field;
 mod hopf;
+mod jet;
 mod locus;
 mod map;
 mod paradox;
@@ -22,7 +23,7 @@ pub use crossing::{Transition, stability_ranges};
 pub use cycles::{
     Branch, BranchEnd, Cycle, MAX_AMPLITUDE_RAD, NoBranch, Onset, Peaks, cycle_branches, cycles_at,
 };
-pub use hopf::{Hopf, HopfKind, NoHopf, Steps as HopfSteps, hopf_at, is_hopf};
+pub use hopf::{Derivatives, Hopf, HopfKind, NoHopf, Steps as HopfSteps, hopf_at, is_hopf};
 pub use locus::{Locus, MAX_HELD_EIGENVALUES, load_grid, locus, locus_streamed, max_samples};
 pub use map::{
     Cell, MapSpec, Row, RowResult, boundaries as map_boundaries, compute as compute_map,
@@ -57,6 +58,8 @@ pub enum AnalysisError {
         most: usize,
         eigenvalues: usize,
     },
+    #[error("{0}")]
+    NotCovered(&'static str),
     #[error("{what} = {}: {allowed}", Shown(*.value))]
     BadRange {
         what: &'static str,
@@ -73,7 +76,7 @@ impl AnalysisError {
             Self::Model(error) => error.parameter(),
             Self::BadRange { what, .. } => Some(what),
             Self::TooManySamples { .. } => Some("samples"),
-            Self::NotConverged { .. } => None,
+            Self::NotConverged { .. } | Self::NotCovered(_) => None,
         }
     }
 }
