@@ -24,31 +24,43 @@ fn damped_ziegler() -> Model {
 
 #[test]
 fn near_the_onset_the_cycles_are_the_normal_form_s() {
-    let m = damped_ziegler();
-    let branch = first_branch(&m, 1.8, 2.2);
-    let hopf = branch.hopf().clone();
-    assert_eq!(hopf.kind, HopfKind::Supercritical);
-    let mut errors = Vec::new();
-    for above in [1e-2, 1e-3, 1e-4] {
-        let p = hopf.load + above;
-        let cycles = cycles_at(&m, &branch, p);
-        assert_eq!(cycles.len(), 1, "one cycle at p = {p}");
-        let cycle = &cycles[0];
-        assert!(cycle.stable);
-        // The amplitudes imply l1: r^2 = mu' eps / (omega |l1|) and
-        // amplitude = 2 |q_i| r, so l1 scales as (predicted / computed)^2.
-        let ratio = cycle.amplitude_rad[0] / (hopf.amplitude_per_sqrt_load_rad[0] * above.sqrt());
-        let implied_l1 = hopf.first_lyapunov * ratio.powi(-2);
-        errors.push((implied_l1 / hopf.first_lyapunov - 1.0).abs());
-        // The period tends to the onset's 2 pi / omega.
-        let period = std::f64::consts::TAU / hopf.frequency_rad_per_s;
-        assert!(
-            (cycle.period_secs / period - 1.0).abs() < 50.0 * above,
-            "{cycle:?}"
-        );
+    // Joint dampers, drag along the rods, and the roller's slipping spin.
+    for (m, hi) in [
+        (damped_ziegler(), 2.2),
+        (model("ziegler-1952", &["c_ext=0.05"]), 2.4),
+        (model("roller", &[]), 0.04),
+    ] {
+        let branch = first_branch(&m, 0.0, hi);
+        let hopf = branch.hopf().clone();
+        assert_eq!(hopf.kind, HopfKind::Supercritical);
+        let per_sqrt = hopf.amplitude_per_sqrt_load_rad[0];
+        let mut errors = Vec::new();
+        // Cycles whose phi1 the normal form puts at 0.04 to 0.0013 rad.
+        for amplitude in [0.04, 0.013, 0.004, 0.0013] {
+            let above = (amplitude / per_sqrt).powi(2);
+            let p = hopf.load + above;
+            let cycles = cycles_at(&m, &branch, p);
+            assert_eq!(cycles.len(), 1, "one cycle at p = {p}");
+            let cycle = &cycles[0];
+            assert!(cycle.stable);
+            // The amplitudes imply l1, with no derivative of the equations:
+            // r^2 = mu' eps / (omega |l1|) and amplitude = 2 |q_i| r, so l1
+            // scales as (predicted / computed)^2.
+            let ratio = cycle.amplitude_rad[0] / amplitude;
+            let implied_l1 = hopf.first_lyapunov * ratio.powi(-2);
+            errors.push((implied_l1 / hopf.first_lyapunov - 1.0).abs());
+            // The period tends to the onset's 2 pi / omega.
+            let period = std::f64::consts::TAU / hopf.frequency_rad_per_s;
+            assert!(
+                (cycle.period_secs / period - 1.0).abs() < 10.0 * amplitude,
+                "{cycle:?}"
+            );
+        }
+        // The error falls with the amplitude until it meets the accuracy
+        // of l1 and of the shooting (seen: 3e-6 to 4e-4 at 0.0013 rad).
+        assert!(errors[1..].iter().all(|e| *e < errors[0]), "{errors:?}");
+        assert!(errors[3] < 1e-3, "{errors:?}");
     }
-    assert!(errors.windows(2).all(|w| w[1] < w[0]), "{errors:?}");
-    assert!(errors[2] < 1e-3, "{errors:?}");
 }
 
 #[test]
