@@ -30,6 +30,10 @@ pub const TAB: TabSpec = TabSpec {
     make: || Box::new(PostCriticalPanel::default()),
 };
 
+/// The longest chain whose cycles the window follows (a chain of 4 rods
+/// takes about 20 s in a release build on two cores, 8 rods 8 minutes).
+const WINDOW_MAX_RODS: usize = 4;
+
 /// What the diagram depends on: the column (at load 0) and the load range.
 type DiagramKey = (Model, f64);
 
@@ -55,12 +59,20 @@ impl Default for PostCriticalPanel {
 }
 
 impl PostCriticalPanel {
-    /// Starts the diagram for `key` unless it is the newest asked for.
+    /// Starts the diagram for `key` unless it is the newest asked for (a
+    /// chain too long for the window is told so instead).
     fn follow(&mut self, key: DiagramKey) {
         if self.jobs.key() == Some(&key) {
             return;
         }
         let started = self.jobs.request(key, |(model, load_max), cancel, send| {
+            let rods = model.column.rods;
+            if rods > WINDOW_MAX_RODS {
+                send(Err(format!(
+                    "a chain of {rods} rods takes many minutes to follow (8 rods about 8 minutes on two cores: its fastest modes set the step), too long for the window; `zieglerlab bifurcation` computes them from the command line"
+                )));
+                return;
+            }
             let found = cycle_branches(model, 0.0, *load_max, cancel.flag());
             if !cancel.requested() {
                 send(found.map_err(|error| error.to_string()));
@@ -348,5 +360,26 @@ mod tests {
             notes[0].starts_with("cycle-1: soft onset at p = 1.9143"),
             "{notes:?}"
         );
+    }
+
+    /// A chain too long to follow in the window is told so, not left
+    /// spinning, and a column after it is computed again.
+    #[test]
+    fn a_long_chain_is_told_to_use_the_command_line() {
+        let mut panel = PostCriticalPanel::default();
+        let mut chain = damped_ziegler();
+        chain.column.rods = 8;
+        for (model, too_long) in [(chain, true), (damped_ziegler(), false)] {
+            let key = (model, 2.0);
+            panel.follow(key);
+            panel.jobs.wait();
+            panel.receive();
+            let (got, diagram) = panel.diagram.as_ref().unwrap();
+            assert_eq!(*got, key);
+            match diagram {
+                Err(why) => assert!(too_long && why.contains("chain of 8 rods"), "{why}"),
+                Ok(onsets) => assert!(!too_long && onsets[0].branch.is_ok()),
+            }
+        }
     }
 }
