@@ -7,9 +7,11 @@
 //! `T` with `phi_T(x0) = x0`, `phi_T` the flow of the equations of motion.
 //! The flow and its Jacobian (the monodromy matrix, from the variational
 //! equations `Y' = A(x) Y`) are integrated together by the classical
-//! fourth-order Runge-Kutta method at a fixed number of steps per period,
-//! so that the monodromy is the exact derivative of the computed flow and
-//! Newton's method converges quadratically. Newton solves
+//! fourth-order Runge-Kutta method at a fixed number of steps per period:
+//! with `A` at every stage the monodromy is the exact derivative of the
+//! computed flow (for the multipliers); Newton's iterations hold each
+//! step's `A` over its stages (a quarter of the work, fast-linear
+//! convergence to the same solution). Newton solves
 //!
 //! ```text
 //! phi_T(x0; p) - x0 = 0                (d equations)
@@ -229,12 +231,32 @@ struct Orbit {
 /// Difference step of the Jacobian in the variational equations.
 const JACOBIAN_STEP: f64 = 1e-7;
 
-fn flow(field: &Field, x0: &DVector<f64>, period: f64, steps: usize, variational: bool) -> Orbit {
+/// How the flow's Jacobian (the monodromy) is integrated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Monodromy {
+    /// Not at all: the end point only.
+    None,
+    /// The field's Jacobian at every Runge-Kutta stage: the exact derivative
+    /// of the computed flow (for the multipliers).
+    Exact,
+    /// The Jacobian once per step, held over its stages: a quarter of the
+    /// work, off by the step's change of the Jacobian, which slows Newton's
+    /// convergence from quadratic to fast linear but not where it ends.
+    HeldPerStep,
+}
+
+fn flow(
+    field: &Field,
+    x0: &DVector<f64>,
+    period: f64,
+    steps: usize,
+    monodromy: Monodromy,
+) -> Orbit {
     let d = x0.len();
     #[expect(clippy::cast_precision_loss, reason = "a step count")]
     let h = period / steps as f64;
     let mut x = x0.clone();
-    let mut y = variational.then(|| DMatrix::<f64>::identity(d, d));
+    let mut y = (monodromy != Monodromy::None).then(|| DMatrix::<f64>::identity(d, d));
     let rods = field.rods();
     let mut peaks = Peaks::new(&x0.as_slice()[..rods]);
     let mut closest_slip_m_per_s = field.slip_m_per_s(x0);
@@ -247,11 +269,16 @@ fn flow(field: &Field, x0: &DVector<f64>, period: f64, steps: usize, variational
         let x4 = &x + &k3 * h;
         let k4 = field.at(&x4);
         if let Some(y) = y.as_mut() {
-            let a = |at: &DVector<f64>| field.jacobian(at, JACOBIAN_STEP);
-            let m1 = a(&x) * &*y;
-            let m2 = a(&x2) * (&*y + &m1 * (h / 2.0));
-            let m3 = a(&x3) * (&*y + &m2 * (h / 2.0));
-            let m4 = a(&x4) * (&*y + &m3 * h);
+            let jacobian = |at: &DVector<f64>| field.jacobian(at, JACOBIAN_STEP);
+            let a1 = jacobian(&x);
+            let [a2, a3, a4] = match monodromy {
+                Monodromy::Exact => [jacobian(&x2), jacobian(&x3), jacobian(&x4)],
+                Monodromy::HeldPerStep | Monodromy::None => [a1.clone(), a1.clone(), a1.clone()],
+            };
+            let m1 = &a1 * &*y;
+            let m2 = a2 * (&*y + &m1 * (h / 2.0));
+            let m3 = a3 * (&*y + &m2 * (h / 2.0));
+            let m4 = a4 * (&*y + &m3 * h);
             *y += (m1 + (m2 + m3) * 2.0 + m4) * (h / 6.0);
         }
         x += (k1 + (k2 + k3) * 2.0 + k4) * (h / 6.0);
@@ -362,8 +389,22 @@ struct Shooting {
 
 impl Shooting {
     /// The cycle through the guess `u = (x0, T, p)` under `constraint`,
-    /// with its Newton iterations, or `None` where Newton fails.
+    /// with its Newton iterations, or `None` where Newton fails: first with
+    /// each step's Jacobian held over its stages, then, where that fails
+    /// (its slower convergence runs out of iterations on a hard stretch),
+    /// with the exact monodromy.
     fn solve(&self, guess: &DVector<f64>, constraint: &Constraint) -> Option<(Cycle, usize)> {
+        self.newton(guess, constraint, Monodromy::HeldPerStep)
+            .or_else(|| self.newton(guess, constraint, Monodromy::Exact))
+    }
+
+    /// [`Self::solve`] with the monodromy of the iterations taken as `monodromy`.
+    fn newton(
+        &self,
+        guess: &DVector<f64>,
+        constraint: &Constraint,
+        monodromy: Monodromy,
+    ) -> Option<(Cycle, usize)> {
         let d = self.field.dimension();
         let reference = guess.rows(0, d).into_owned();
         let reference_flow = self.field.at_load(guess[d + 1]).at(&reference);
@@ -374,7 +415,7 @@ impl Shooting {
                 return None;
             }
             let field = self.field.at_load(load);
-            let (orbit, steps) = self.orbit(&field, &x0, period);
+            let (orbit, steps) = self.orbit(&field, &x0, period, monodromy);
             let monodromy = orbit.monodromy?;
             let mut jacobian = DMatrix::<f64>::zeros(d + 2, d + 2);
             let mut residual = DVector::<f64>::zeros(d + 2);
@@ -396,8 +437,9 @@ impl Shooting {
                 }
                 Constraint::Arclength { tangent, predicted } => {
                     let delta = 1e-6 * load.abs().max(1e-3);
-                    let ends = [load + delta, load - delta]
-                        .map(|p| flow(&self.field.at_load(p), &x0, period, steps, false).end);
+                    let ends = [load + delta, load - delta].map(|p| {
+                        flow(&self.field.at_load(p), &x0, period, steps, Monodromy::None).end
+                    });
                     jacobian
                         .view_mut((0, d + 1), (d, 1))
                         .copy_from(&((&ends[0] - &ends[1]) / (2.0 * delta)));
@@ -421,7 +463,7 @@ impl Shooting {
     fn cycle(&self, u: &DVector<f64>) -> Option<Cycle> {
         let d = self.field.dimension();
         let (x0, period, load) = (u.rows(0, d).into_owned(), u[d], u[d + 1]);
-        let (orbit, _) = self.orbit(&self.field.at_load(load), &x0, period);
+        let (orbit, _) = self.orbit(&self.field.at_load(load), &x0, period, Monodromy::Exact);
         let multipliers = sorted_multipliers(&orbit.monodromy?);
         let trivial = multipliers
             .iter()
@@ -448,16 +490,22 @@ impl Shooting {
     /// friction over the spin inertia and the slip speed), so an orbit
     /// whose slip falls below the band speed is taken again with the steps
     /// scaled up to match.
-    fn orbit(&self, field: &Field, x0: &DVector<f64>, period: f64) -> (Orbit, usize) {
+    fn orbit(
+        &self,
+        field: &Field,
+        x0: &DVector<f64>,
+        period: f64,
+        monodromy: Monodromy,
+    ) -> (Orbit, usize) {
         let steps = steps_for(period, self.fastest_per_s);
-        let orbit = flow(field, x0, period, steps, true);
+        let orbit = flow(field, x0, period, steps, monodromy);
         let slowed = match (orbit.closest_slip_m_per_s, field.band_speed_m_per_s()) {
             (Some(slip), Some(band)) if slip > 0.0 && slip < band => band / slip,
             _ => return (orbit, steps),
         };
         let needed = steps_for(period, self.fastest_per_s * slowed);
         if needed > steps {
-            (flow(field, x0, period, needed, true), needed)
+            (flow(field, x0, period, needed, monodromy), needed)
         } else {
             (orbit, steps)
         }
@@ -575,7 +623,7 @@ fn branch(
             }
             Some((cycle, iterations)) => {
                 cycles.push(cycle);
-                if iterations <= 3 {
+                if iterations <= 6 {
                     distance *= 1.5;
                 }
             }
