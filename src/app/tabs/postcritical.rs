@@ -31,7 +31,7 @@ pub const TAB: TabSpec = TabSpec {
 };
 
 /// The longest chain whose cycles the window follows (a chain of 4 rods
-/// takes about 8 s in a release build on two cores, 8 rods about 6 minutes).
+/// takes about 8 s in a release build on two cores, 8 rods about 7 minutes).
 const WINDOW_MAX_RODS: usize = 4;
 
 /// What the diagram depends on: the column (at load 0) and the load range.
@@ -69,7 +69,7 @@ impl PostCriticalPanel {
             let rods = model.column.rods;
             if rods > WINDOW_MAX_RODS {
                 send(Err(format!(
-                    "a chain of {rods} rods takes minutes to follow (8 rods about 6 on two cores: its fastest modes set the step), too long for the window; `zieglerlab bifurcation` computes them from the command line"
+                    "a chain of {rods} rods takes minutes to follow (8 rods about 7 on two cores: its fastest modes set the step), too long for the window; `zieglerlab bifurcation` computes them from the command line"
                 )));
                 return;
             }
