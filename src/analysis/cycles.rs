@@ -61,11 +61,7 @@ impl Cycle {
     /// accuracy of the monodromy.
     #[must_use]
     pub fn trivial_multiplier(&self) -> C64 {
-        self.multipliers
-            .iter()
-            .copied()
-            .min_by(|a, b| (a - 1.0).norm().total_cmp(&(b - 1.0).norm()))
-            .unwrap_or(C64::new(f64::NAN, 0.0))
+        trivial_index(&self.multipliers).map_or(C64::new(f64::NAN, 0.0), |i| self.multipliers[i])
     }
 
     /// The cycle's start as a full state of `model` (the spin angle zero;
@@ -183,6 +179,16 @@ impl Branch {
             last = point;
         }
         runs
+    }
+
+    /// "soft" or "hard": how flutter sets in at the branch's onset.
+    #[must_use]
+    pub fn onset_word(&self) -> &'static str {
+        if self.hopf().first_lyapunov < 0.0 {
+            "soft"
+        } else {
+            "hard"
+        }
     }
 
     /// The branch's name in tables: `cycle-1`, `cycle-2`, ... in the
@@ -465,11 +471,7 @@ impl Shooting {
         let (x0, period, load) = (u.rows(0, d).into_owned(), u[d], u[d + 1]);
         let (orbit, _) = self.orbit(&self.field.at_load(load), &x0, period, Monodromy::Exact);
         let multipliers = sorted_multipliers(&orbit.monodromy?);
-        let trivial = multipliers
-            .iter()
-            .enumerate()
-            .min_by(|a, b| (a.1 - 1.0).norm().total_cmp(&(b.1 - 1.0).norm()))
-            .map(|(i, _)| i)?;
+        let trivial = trivial_index(&multipliers)?;
         let stable = multipliers
             .iter()
             .enumerate()
@@ -548,6 +550,15 @@ impl Shooting {
         self.solve(&guess, &Constraint::Load(load))
             .map(|(cycle, _)| cycle)
     }
+}
+
+/// Where the multiplier nearest 1 (the shift along the orbit) stands.
+fn trivial_index(multipliers: &[C64]) -> Option<usize> {
+    multipliers
+        .iter()
+        .enumerate()
+        .min_by(|a, b| (a.1 - 1.0).norm().total_cmp(&(b.1 - 1.0).norm()))
+        .map(|(i, _)| i)
 }
 
 /// Eigenvalues of the monodromy, largest modulus first.
@@ -639,14 +650,18 @@ fn branch(
     })
 }
 
-/// Why no cycles were computed at a flutter onset.
-#[derive(Clone, Debug, PartialEq)]
+/// Why no cycles were computed at a flutter onset (in words, as the
+/// command line and the window say it after "flutter onset at p = ...: ").
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum NoBranch {
     /// The column is undamped (see [`super::NoHopf`]).
+    #[error("no damping, a reversible column: no limit cycle to follow")]
     Reversible,
     /// The first Lyapunov coefficient is zero within its accuracy.
+    #[error("the first Lyapunov coefficient is zero within its accuracy; cycles not followed")]
     Degenerate,
     /// The shooting did not converge next to the onset.
+    #[error("the shooting did not converge next to the onset; no cycles")]
     NotConverged,
 }
 

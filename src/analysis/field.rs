@@ -43,6 +43,12 @@ impl Field {
         }
     }
 
+    /// The model the field is of.
+    #[must_use]
+    pub fn model(&self) -> &Model {
+        &self.model
+    }
+
     /// How many rods: the reduced state's first `rods` entries are the angles.
     #[must_use]
     pub fn rods(&self) -> usize {

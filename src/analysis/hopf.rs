@@ -157,7 +157,6 @@ pub(crate) fn hopf_point(
     let critical = critical_pair(&pencil, load)?;
     let field = Field {
         reduced: super::field::Field::new(&at),
-        model: at,
         derivatives,
     };
     let n = field.reduced.dimension();
@@ -278,7 +277,6 @@ fn eigenvector(a: &DMatrix<f64>, guess: C64) -> Option<(C64, DVector<C64>)> {
 /// The derivatives of the reduced field at rest, by the means asked for.
 struct Field {
     reduced: super::field::Field,
-    model: Model,
     derivatives: Derivatives,
 }
 
@@ -290,7 +288,7 @@ impl Field {
     /// The first, second and third directional derivatives along `v` by
     /// jets (only called for [`Derivatives::Automatic`], on a covered model).
     fn jets(&self, v: &DVector<f64>) -> [DVector<f64>; 3] {
-        super::jet::directional_derivatives(&self.model, v)
+        super::jet::directional_derivatives(self.reduced.model(), v)
             .unwrap_or_else(|| std::array::from_fn(|_| DVector::from_element(v.len(), f64::NAN)))
     }
 

@@ -19,7 +19,7 @@ use zieglerlab::format::{Exact, Shown};
 use zieglerlab::model::Model;
 use zieglerlab::sim::{Status, SweepStep, SweepTimes, sweep};
 
-use super::map::AxisArg;
+use super::map::{AxisArg, check_load_axis};
 use super::output::{check_output, write_atomically};
 use super::{LOAD_AXIS, ModelArgs, printable, progress_bar, spinner};
 
@@ -157,15 +157,7 @@ pub fn run(args: &Args) -> Result<()> {
 
 /// The grid of `--x`, checked: the load, from 0 up.
 fn loads(x: &AxisArg) -> Result<Vec<f64>> {
-    if x.name != "load" {
-        anyhow::bail!(
-            "--x {}: the diagram's axis is the load: load:MIN:MAX:N",
-            x.text
-        );
-    }
-    if x.min < 0.0 {
-        anyhow::bail!("--x {}: loads must be >= 0", x.text);
-    }
+    check_load_axis(x, "the diagram's axis")?;
     if x.count < 2 || x.max <= x.min {
         anyhow::bail!(
             "--x {}: a diagram needs a range of loads (MAX above MIN, N at least 2)",
@@ -236,25 +228,13 @@ fn report(onset: f64, found: &Result<Branch, NoBranch>) {
             format!(
                 "{}: {} onset at p = {at} (first Lyapunov coefficient {:.4e}), {} cycles followed; the branch ended: {}",
                 branch.name(),
-                if hopf.first_lyapunov < 0.0 {
-                    "soft"
-                } else {
-                    "hard"
-                },
+                branch.onset_word(),
                 hopf.first_lyapunov,
                 branch.cycles.len(),
                 branch.end
             )
         }
-        Err(NoBranch::Reversible) => format!(
-            "flutter onset at p = {at}: no damping, a reversible column: no limit cycle to follow"
-        ),
-        Err(NoBranch::Degenerate) => format!(
-            "flutter onset at p = {at}: the first Lyapunov coefficient is zero within its accuracy; cycles not followed"
-        ),
-        Err(NoBranch::NotConverged) => format!(
-            "flutter onset at p = {at}: the shooting did not converge next to the onset; no cycles"
-        ),
+        Err(why) => format!("flutter onset at p = {at}: {why}"),
     };
     eprintln!("{}", printable(&line));
 }

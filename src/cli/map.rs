@@ -146,15 +146,7 @@ pub fn run(args: &Args) -> Result<()> {
 /// An axis that is not the load first, negative loads, an unknown second
 /// axis or the load again.
 pub fn map_spec(model: Model, x: &AxisArg, y: &AxisArg) -> Result<MapSpec> {
-    if x.name != "load" {
-        anyhow::bail!(
-            "--x {}: the map's first axis is the load: load:MIN:MAX:N",
-            x.text
-        );
-    }
-    if x.min < 0.0 {
-        anyhow::bail!("--x {}: loads must be >= 0", x.text);
-    }
+    check_load_axis(x, "the map's first axis")?;
     let axis = Axis::parse(&y.name, &model)?;
     if axis == Axis::Key(Key::Load) {
         anyhow::bail!("--y {}: the second axis cannot be the load again", y.text);
@@ -167,6 +159,20 @@ pub fn map_spec(model: Model, x: &AxisArg, y: &AxisArg) -> Result<MapSpec> {
         axis_range: (y.min, y.max),
         values: y.count,
     })
+}
+
+/// That `--x` is the load from 0 up (`what`: the axis, for the message).
+///
+/// # Errors
+/// Another axis, or negative loads.
+pub fn check_load_axis(x: &AxisArg, what: &str) -> Result<()> {
+    if x.name != "load" {
+        anyhow::bail!("--x {}: {what} is the load: load:MIN:MAX:N", x.text);
+    }
+    if x.min < 0.0 {
+        anyhow::bail!("--x {}: loads must be >= 0", x.text);
+    }
+    Ok(())
 }
 
 /// Every row of a computed map, or why one has no analysis (`y_text`: the

@@ -22,6 +22,20 @@ fn damped_ziegler() -> Model {
     model("ziegler-1952", &["c1=0.3", "c2=0.3"])
 }
 
+/// `bifurcation` of [`damped_ziegler`] with `args` after the model: stdout.
+fn damped_ziegler_bifurcation(args: &[&str]) -> String {
+    let model = [
+        "bifurcation",
+        "--preset",
+        "ziegler-1952",
+        "--set",
+        "c1=0.3",
+        "--set",
+        "c2=0.3",
+    ];
+    crate::cli::stdout(&[&model[..], args].concat())
+}
+
 #[test]
 fn near_the_onset_the_cycles_are_the_normal_form_s() {
     // Joint dampers, drag along the rods, and the roller's slipping spin.
@@ -233,17 +247,7 @@ fn the_roller_s_branch_stops_before_its_contact_sticks() {
 
 #[test]
 fn bifurcation_csv_lists_the_equilibrium_and_the_cycles() {
-    let text = crate::cli::stdout(&[
-        "bifurcation",
-        "--preset",
-        "ziegler-1952",
-        "--set",
-        "c1=0.3",
-        "--set",
-        "c2=0.3",
-        "--x",
-        "load:1.8:2.2:5",
-    ]);
+    let text = damped_ziegler_bifurcation(&["--x", "load:1.8:2.2:5"]);
     let mut lines = text.lines();
     assert_eq!(
         lines.next(),
@@ -271,19 +275,7 @@ fn bifurcation_csv_lists_the_equilibrium_and_the_cycles() {
 
 #[test]
 fn bifurcation_json_names_each_onset_and_an_undamped_column_has_no_cycles() {
-    let text = crate::cli::stdout(&[
-        "bifurcation",
-        "--preset",
-        "ziegler-1952",
-        "--set",
-        "c1=0.3",
-        "--set",
-        "c2=0.3",
-        "--x",
-        "load:1.8:2.0:3",
-        "--format",
-        "json",
-    ]);
+    let text = damped_ziegler_bifurcation(&["--x", "load:1.8:2.0:3", "--format", "json"]);
     let value: serde_json::Value = serde_json::from_str(&text).expect("json");
     let onset = &value["onsets"][0];
     assert_eq!(onset["branch"], "cycle-1");
@@ -312,18 +304,7 @@ fn bifurcation_json_names_each_onset_and_an_undamped_column_has_no_cycles() {
 
 #[test]
 fn a_sweep_down_follows_the_stable_cycle_and_comes_to_rest_below_the_onset() {
-    let text = crate::cli::stdout(&[
-        "bifurcation",
-        "--preset",
-        "ziegler-1952",
-        "--set",
-        "c1=0.3",
-        "--set",
-        "c2=0.3",
-        "--x",
-        "load:1.8:2.4:4",
-        "--sweep",
-    ]);
+    let text = damped_ziegler_bifurcation(&["--x", "load:1.8:2.4:4", "--sweep"]);
     let rows: Vec<Vec<&str>> = text
         .lines()
         .skip(1)

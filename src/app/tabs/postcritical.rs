@@ -12,7 +12,7 @@ use eframe::egui;
 use egui_plot::{Corner, Legend, Line, LineStyle, Plot, PlotPoints, Points, VLine};
 
 use super::{TabSpec, TabView, save_buttons};
-use crate::analysis::{Branch, NoBranch, Onset, State, cycle_branches};
+use crate::analysis::{Branch, Onset, State, cycle_branches};
 use crate::app::View;
 use crate::app::action::Actions;
 use crate::app::history::{HISTORY_SECS, History};
@@ -290,18 +290,10 @@ fn notes(onsets: &[Onset]) -> Vec<String> {
                 Ok(branch) => format!(
                     "{}: {} onset at p = {at}; the branch ended: {}",
                     branch.name(),
-                    if branch.hopf().first_lyapunov < 0.0 { "soft" } else { "hard" },
+                    branch.onset_word(),
                     branch.end
                 ),
-                Err(NoBranch::Reversible) => format!(
-                    "flutter onset at p = {at}: no damping, a reversible column: no limit cycle to settle on"
-                ),
-                Err(NoBranch::Degenerate) => format!(
-                    "flutter onset at p = {at}: neither soft nor hard to first order; cycles not followed"
-                ),
-                Err(NoBranch::NotConverged) => format!(
-                    "flutter onset at p = {at}: the shooting did not converge next to the onset"
-                ),
+                Err(why) => format!("flutter onset at p = {at}: {why}"),
             }
         })
         .collect()
