@@ -78,6 +78,13 @@ pub struct Report {
     pub numpy_eig_us_per_pencil: Option<f64>,
     /// `numpy_eig_us_per_pencil / locus_us_per_load`.
     pub locus_speedup_vs_numpy: Option<f64>,
+    /// A plain numpy scan for the first flutter load of the same 32-rod
+    /// chain, measured in this run: 400 loads' eigenvalues of `M^-1 K` in one
+    /// batched call, then 50 bisection steps; ms (null without numpy).
+    pub numpy_chain32_scan_ms: Option<f64>,
+    /// `critical_chain32_ms / numpy_chain32_scan_ms`: at most 1 when every
+    /// change of stability comes as fast as numpy's first one.
+    pub critical_chain32_over_numpy: Option<f64>,
     /// The real window (the default launch, the default renderer) at
     /// 1280x800, repainted continuously: frames drawn per second, drawing
     /// and buffer swap included (null without a display, or when skipped).
@@ -143,12 +150,15 @@ pub fn run(frames: usize, window: bool) -> Result<Report> {
     let frame_ms_chain = chain_frame_times_ms(frames)?;
     let locus_us = locus_us_per_load(&roller)?;
     let numpy_us = numpy_eig_us_per_pencil(&roller)?;
+    let chain = chain32()?;
+    let chain_ms = critical_chain32_ms(&chain)?;
+    let numpy_chain_ms = numpy_chain_scan_ms(&chain)?;
     Ok(Report {
         locus_us_per_load: locus_us,
         locus2_us_per_load: locus_us_per_load(&midpoint)?,
         eig_us_per_pencil: eig_us_per_pencil(&roller)?,
         critical_ms: critical_ms(&roller)?,
-        critical_chain32_ms: critical_chain32_ms()?,
+        critical_chain32_ms: chain_ms,
         sim_reference_x_realtime: x_realtime(EngineKind::Reference)?,
         sim_rapier_x_realtime: x_realtime(EngineKind::Rapier)?,
         frame_ms_p50: quantile(&frame_ms, 0.5),
@@ -159,6 +169,8 @@ pub fn run(frames: usize, window: bool) -> Result<Report> {
         map_ms: map_ms()?,
         numpy_eig_us_per_pencil: numpy_us,
         locus_speedup_vs_numpy: numpy_us.map(|numpy| numpy / locus_us),
+        numpy_chain32_scan_ms: numpy_chain_ms,
+        critical_chain32_over_numpy: numpy_chain_ms.map(|numpy| chain_ms / numpy),
         window_fps: small.map(|(fps, _)| fps),
         window_frame_ms_p99: small.map(|(_, p99)| p99),
         window_fps_1920x1080: large.map(|(fps, _)| fps),
@@ -199,11 +211,6 @@ fn map_ms() -> Result<f64> {
 /// benchmarked locus's loads. `None` when python3 or numpy is missing.
 fn numpy_eig_us_per_pencil(pencil: &AffinePencil) -> Result<Option<f64>> {
     const SCRIPT: &str = r"
-import json, sys, time
-try:
-    import numpy as np
-except ImportError:
-    print('null'); sys.exit()
 a = np.array(json.load(sys.stdin))
 np.linalg.eigvals(a)
 times = []
@@ -225,12 +232,89 @@ print(times[len(times) // 2] * 1e6 / len(a))
             .copy_from(&(-&mass_inv * &lin.stiffness));
         a.view_mut((n, n), (n, n))
             .copy_from(&(-&mass_inv * &lin.damping));
-        let rows: Vec<Vec<f64>> = a.row_iter().map(|r| r.iter().copied().collect()).collect();
-        matrices.push(rows);
+        matrices.push(rows(&a));
     }
-    let input = serde_json::to_vec(&matrices)?;
+    let Some(text) = run_numpy(SCRIPT, &serde_json::to_vec(&matrices)?)? else {
+        return Ok(None);
+    };
+    Ok(text.trim().parse::<f64>().ok().filter(|us| us.is_finite()))
+}
+
+/// The rows of `a`, for JSON.
+fn rows(a: &DMatrix<f64>) -> Vec<Vec<f64>> {
+    a.row_iter().map(|r| r.iter().copied().collect()).collect()
+}
+
+/// Times, in a python3 child process, the plain numpy scan for the first
+/// flutter load of the undamped `chain`: the eigenvalues `mu` of `M^-1 K(p)`
+/// at 400 loads over the analysis range in one batched call (stable while
+/// every `mu` is real and positive), then 50 bisection steps in the first
+/// bracket that loses stability. `None` without python3 or numpy; an error
+/// when the load it finds is not [`critical_loads`]' first loss.
+fn numpy_chain_scan_ms(chain: &Chain) -> Result<Option<f64>> {
+    const SCRIPT: &str = r"
+d = json.load(sys.stdin)
+m, k0, k1 = (np.array(d[k]) for k in ('mass', 'stiffness', 'per_load'))
+p_max = d['load_max']
+def unstable(mu):
+    tol = 1e-9 * np.abs(mu).max(axis=-1, keepdims=True)
+    return ((np.abs(mu.imag) > tol) | (mu.real < -tol)).any(axis=-1)
+def scan():
+    loads = np.linspace(0.0, p_max, 400)
+    mu = np.linalg.eigvals(np.linalg.solve(m, k0 + loads[:, None, None] * k1))
+    lost = unstable(mu)
+    i = int(np.argmax(lost))
+    if not lost[i] or i == 0:
+        return float('nan')
+    a, b = loads[i - 1], loads[i]
+    for _ in range(50):
+        c = 0.5 * (a + b)
+        if unstable(np.linalg.eigvals(np.linalg.solve(m, k0 + c * k1))):
+            b = c
+        else:
+            a = c
+    return b
+scan()
+times = []
+for _ in range(7):
+    start = time.perf_counter(); load = scan(); times.append(time.perf_counter() - start)
+times.sort()
+print(times[len(times) // 2] * 1e3, load)
+";
+    let lin = chain.pencil.at(0.0);
+    let per_load = &chain.pencil.at(1.0).stiffness - &lin.stiffness;
+    let input = serde_json::json!({
+        "mass": rows(&lin.mass),
+        "stiffness": rows(&lin.stiffness),
+        "per_load": rows(&per_load),
+        "load_max": chain.load_max,
+    });
+    let Some(text) = run_numpy(SCRIPT, &serde_json::to_vec(&input)?)? else {
+        return Ok(None);
+    };
+    let mut words = text.split_whitespace().map(str::parse::<f64>);
+    let (Some(Ok(ms)), Some(Ok(load))) = (words.next(), words.next()) else {
+        return Ok(None);
+    };
+    let first_loss = critical_loads(&chain.pencil, 0.0, chain.load_max)?
+        .into_iter()
+        .find(|t| t.from == crate::analysis::State::Stable)
+        .map(|t| t.load);
+    match first_loss {
+        Some(ours) if (ours - load).abs() <= 1e-6 * ours => Ok(Some(ms)),
+        _ => anyhow::bail!("numpy's scan finds p = {load}, critical {first_loss:?}"),
+    }
+}
+
+/// Runs `script` in a python3 child process (with `json`, `sys`, `time`
+/// and numpy as `np` imported) with `input` on its stdin: its output, or
+/// `None` when python3 or numpy is missing.
+fn run_numpy(script: &str, input: &[u8]) -> Result<Option<String>> {
+    let script = format!(
+        "import json, sys, time\ntry:\n    import numpy as np\nexcept ImportError:\n    sys.exit(3)\n{script}"
+    );
     let child = std::process::Command::new("python3")
-        .args(["-c", SCRIPT])
+        .args(["-c", &script])
         .stdin(std::process::Stdio::piped())
         .stdout(std::process::Stdio::piped())
         .stderr(std::process::Stdio::null())
@@ -241,11 +325,13 @@ print(times[len(times) // 2] * 1e6 / len(a))
     if let Some(mut stdin) = child.stdin.take() {
         use std::io::Write as _;
         // A child that exits early (no numpy) closes the pipe: not an error here.
-        drop(stdin.write_all(&input));
+        drop(stdin.write_all(input));
     }
     let output = child.wait_with_output()?;
-    let text = String::from_utf8_lossy(&output.stdout);
-    Ok(text.trim().parse::<f64>().ok().filter(|us| us.is_finite()))
+    Ok(output
+        .status
+        .success()
+        .then(|| String::from_utf8_lossy(&output.stdout).into_owned()))
 }
 
 fn pencil(id: PresetId) -> Result<AffinePencil> {
@@ -306,7 +392,13 @@ fn critical_ms(pencil: &AffinePencil) -> Result<f64> {
 /// Rods of the benchmarked chain.
 const CHAIN_RODS: f64 = 32.0;
 
-fn critical_chain32_ms() -> Result<f64> {
+/// The benchmarked chain's pencil and `critical`'s default load range.
+struct Chain {
+    pencil: AffinePencil,
+    load_max: f64,
+}
+
+fn chain32() -> Result<Chain> {
     let mut chain = PresetId::UniformRods.model();
     apply_assignments(
         &mut chain,
@@ -315,10 +407,15 @@ fn critical_chain32_ms() -> Result<f64> {
             value: CHAIN_RODS,
         }],
     )?;
-    let pencil = AffinePencil::new(&chain)?;
-    let load_max = chain.analysis_max_p();
-    let secs = median_secs(3, || {
-        black_box(critical_loads(&pencil, 0.0, load_max)?);
+    Ok(Chain {
+        pencil: AffinePencil::new(&chain)?,
+        load_max: chain.analysis_max_p(),
+    })
+}
+
+fn critical_chain32_ms(chain: &Chain) -> Result<f64> {
+    let secs = median_secs(5, || {
+        black_box(critical_loads(&chain.pencil, 0.0, chain.load_max)?);
         Ok(())
     })?;
     Ok(secs * 1e3)

@@ -4,7 +4,7 @@
 use super::AnalysisError;
 use super::C64;
 use super::crossing::{Transition, refine, state_at};
-use super::locus::{Locus, load_resolution, locus_until};
+use super::locus::{Crossings, Locus, load_grid, load_resolution, locus_until, max_samples};
 use super::pencil::AffinePencil;
 use super::stability::{State, classify};
 
@@ -22,6 +22,39 @@ pub fn critical_loads(
     load_max: f64,
 ) -> Result<Vec<Transition>, AnalysisError> {
     critical_loads_along(pencil, &bracketing_locus(pencil, load_min, load_max)?)
+}
+
+/// A bracketing locus whose evenly spaced loads include `cells` evenly
+/// spaced loads of the same range, at every `stride`-th: at least
+/// [`BRACKET_SAMPLES`] of them, as fine as [`bracketing_locus`]'s, so a
+/// stability map's row has its critical loads and its cells from one locus.
+/// `None` where [`bracketing_locus`] brackets in sections (a range beyond
+/// ten times the natural one) or the range cannot hold so many distinct
+/// loads: the row then takes a locus of its own for the cells.
+///
+/// # Errors
+/// A failed eigenvalue computation.
+pub(crate) fn bracketing_locus_through(
+    pencil: &AffinePencil,
+    (load_min, load_max): (f64, f64),
+    cells: usize,
+) -> Result<Option<(Locus, usize)>, AnalysisError> {
+    let natural = pencil.natural_load_max().max(load_min);
+    if cells < 2 || load_max > 10.0 * natural || load_max > LARGEST_LOAD {
+        return Ok(None);
+    }
+    let stride = (BRACKET_SAMPLES - 1).div_ceil(cells - 1);
+    let samples = (cells - 1) * stride + 1;
+    if samples > max_samples(pencil) || load_grid(load_min, load_max, samples).is_err() {
+        return Ok(None);
+    }
+    let bracket = locus_until(
+        pencil,
+        (load_min, load_max, samples),
+        Crossings::Bracketed,
+        |_, _| false,
+    )?;
+    Ok(Some((bracket, stride)))
 }
 
 /// Samples of each decade of load in a wide range (see [`bracketing_locus`]).
@@ -110,9 +143,8 @@ pub fn bracketing_locus_reporting(
     for (start, end, samples) in sections {
         whole.extend_with(&locus_until(
             pencil,
-            start,
-            end,
-            samples,
+            (start, end, samples),
+            Crossings::Bracketed,
             counting(done, total, progress),
         )?);
         done += samples - 1;
@@ -195,7 +227,12 @@ fn evenly_bracketed_until(
     } else {
         1
     };
-    locus_until(pencil, load_min, load_max, samples, stop)
+    locus_until(
+        pencil,
+        (load_min, load_max, samples),
+        Crossings::Bracketed,
+        stop,
+    )
 }
 
 /// Every change of stability over the loads of `locus` (a tracked, refined
@@ -224,10 +261,12 @@ fn transitions_along(
     locus: &Locus,
     range: (f64, f64),
 ) -> Result<Vec<Transition>, AnalysisError> {
+    let mut moving = Vec::with_capacity(locus.moving_branches().len());
     let tracked: Vec<State> = (0..locus.loads.len())
         .map(|i| {
-            let scale = pencil.scale_per_s(locus.loads[i]);
-            classify(&locus.moving_at(i), scale).state
+            moving.clear();
+            moving.extend(locus.moving_branches().iter().map(|branch| branch[i]));
+            classify(&moving, pencil.scale_per_s(locus.loads[i])).state
         })
         .collect();
     // Whether the Schur path agrees with the tracked roots at sample j, and its state.

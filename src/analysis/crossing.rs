@@ -124,25 +124,32 @@ fn bisect(
 }
 
 /// Every transition in `[a, b]` (states `sa != sb` on the Schur path), as
-/// brackets of [`RELATIVE_LOAD_TOLERANCE`]. The first halvings, down to
+/// brackets of [`RELATIVE_LOAD_TOLERANCE`], each with its load polished by
+/// [`polish_crossing`] where it is a loss or gain of stability at a
+/// transversal crossing. The first halvings, down to
 /// [`RELATIVE_FAST_WIDTH`], read the state on the polynomial path (Aberth
 /// refined from the nearest load's roots, a few times cheaper than a Schur
 /// decomposition); the Schur path confirms both ends of each narrowed
-/// bracket and does the last halvings. Where the paths disagree the whole
-/// bisection is done again on the Schur path, so the answer is always the
-/// Schur path's.
+/// bracket. A crossing is polished from there (Brent's method needs no
+/// narrower bracket); any other change takes the last halvings on the
+/// Schur path. Where the paths disagree the whole bisection is done again
+/// on the Schur path, so the answer is always the Schur path's.
 fn bisect_confirmed(
     pencil: &AffinePencil,
     near_a: &[C64],
     (a, sa): (f64, State),
     (b, sb): (f64, State),
-) -> Result<Vec<Bracket>, AnalysisError> {
+    range: (f64, f64),
+) -> Result<Vec<(Bracket, Option<f64>)>, AnalysisError> {
     let mut roots = near_a.to_vec();
     let mut fast_state = |p: f64| -> Result<State, AnalysisError> {
         eigenvalues_near(pencil, p, &mut roots)?;
         Ok(classify(&roots, pencil.scale_per_s(p)).state)
     };
     let mut schur_state = |p: f64| state_at(pencil, p);
+    let polished = |bracket: Bracket, half_width: f64| {
+        polish_crossing(pencil, &bracket, half_width, range).map(|root| (bracket, root))
+    };
     let mut narrowed = Vec::new();
     bisect(
         &mut fast_state,
@@ -154,23 +161,33 @@ fn bisect_confirmed(
     let mut found = Vec::new();
     for bracket in narrowed {
         if schur_state(bracket.a)? != bracket.sa || schur_state(bracket.b)? != bracket.sb {
-            found.clear();
+            let mut again = Vec::new();
             bisect(
                 &mut schur_state,
                 (a, sa),
                 (b, sb),
                 RELATIVE_LOAD_TOLERANCE,
-                &mut found,
+                &mut again,
             )?;
-            return Ok(found);
+            return again
+                .into_iter()
+                .map(|bracket| polished(bracket, width_tolerance(bracket.a, bracket.b)))
+                .collect();
         }
-        bisect(
-            &mut schur_state,
-            (bracket.a, bracket.sa),
-            (bracket.b, bracket.sb),
-            RELATIVE_LOAD_TOLERANCE,
-            &mut found,
-        )?;
+        match polished(bracket, 0.5 * (bracket.b - bracket.a))? {
+            (bracket, Some(root)) => found.push((bracket, Some(root))),
+            (bracket, None) => {
+                let mut last = Vec::new();
+                bisect(
+                    &mut schur_state,
+                    (bracket.a, bracket.sa),
+                    (bracket.b, bracket.sb),
+                    RELATIVE_LOAD_TOLERANCE,
+                    &mut last,
+                )?;
+                found.extend(last.into_iter().map(|bracket| (bracket, None)));
+            }
+        }
     }
     Ok(found)
 }
@@ -244,16 +261,12 @@ pub(super) fn refine(
     range: (f64, f64),
     out: &mut Vec<Transition>,
 ) -> Result<(), AnalysisError> {
-    for bracket in bisect_confirmed(pencil, near_a, (a, sa), (b, sb))? {
-        let mut transition = Transition {
-            load: 0.5 * (bracket.a + bracket.b),
+    for (bracket, polished) in bisect_confirmed(pencil, near_a, (a, sa), (b, sb), range)? {
+        out.push(Transition {
+            load: polished.unwrap_or(0.5 * (bracket.a + bracket.b)),
             from: bracket.sa,
             to: bracket.sb,
-        };
-        if let Some(root) = polish_crossing(pencil, &transition, range)? {
-            transition.load = root;
-        }
-        out.push(transition);
+        });
     }
     Ok(())
 }
@@ -268,25 +281,29 @@ pub(super) fn refine(
 /// range. An undamped column never has a strictly damped side (its stable
 /// eigenvalues sit on the axis); the bisection's answer is exact there
 /// (square-root branch point) and is kept.
+///
+/// The first loads tried are `half_width` either side of the bracket's
+/// middle.
 fn polish_crossing(
     pencil: &AffinePencil,
-    transition: &Transition,
+    bracket: &Bracket,
+    half_width: f64,
     (load_min, load_max): (f64, f64),
 ) -> Result<Option<f64>, AnalysisError> {
-    let toward_unstable = match (transition.from, transition.to) {
+    let toward_unstable = match (bracket.sa, bracket.sb) {
         (State::Stable, State::Stable) => return Ok(None),
         (State::Stable, _) => 1.0,
         (_, State::Stable) => -1.0,
         _ => return Ok(None),
     };
     let growth = |p| max_real_part(pencil, p).map(|(re, _)| re);
-    let p = transition.load;
-    let unstable_p = (p + toward_unstable * width_tolerance(p, p)).clamp(load_min, load_max);
+    let p = 0.5 * (bracket.a + bracket.b);
+    let unstable_p = (p + toward_unstable * half_width).clamp(load_min, load_max);
     let unstable_growth = growth(unstable_p)?;
     if unstable_growth <= 0.0 {
         return Ok(None);
     }
-    let mut width = 2.0 * width_tolerance(p, p);
+    let mut width = 2.0 * half_width;
     loop {
         let stable_p = p - toward_unstable * width;
         if !(load_min..=load_max).contains(&stable_p) {
@@ -357,8 +374,9 @@ mod tests {
             }
             let (a, b) = (bracket_locus.loads[i - 1], bracket_locus.loads[i]);
             let ends = ((a, states[i - 1]), (b, states[i]));
-            let fast =
-                bisect_confirmed(&pencil, &bracket_locus.moving_at(i - 1), ends.0, ends.1).unwrap();
+            let range = (0.0, model.analysis_max_p());
+            let near_a = bracket_locus.moving_at(i - 1);
+            let fast = bisect_confirmed(&pencil, &near_a, ends.0, ends.1, range).unwrap();
             let mut schur = Vec::new();
             let mut schur_state = |q| state_at(&pencil, q);
             bisect(
@@ -369,8 +387,28 @@ mod tests {
                 &mut schur,
             )
             .unwrap();
-            let loads = |v: &[Bracket]| v.iter().map(|b| (b.a, b.b)).collect::<Vec<_>>();
-            assert_eq!(loads(&fast), loads(&schur), "{name} near p = {a}");
+            assert_eq!(fast.len(), schur.len(), "{name} near p = {a}");
+            for ((bracket, polished), narrow) in fast.iter().zip(&schur) {
+                match polished {
+                    // Bisected to the end: the Schur path's own bracket.
+                    None => assert_eq!((bracket.a, bracket.b), (narrow.a, narrow.b)),
+                    // Polished from the wider bracket, which holds the
+                    // Schur path's: the crossing polished from that one.
+                    Some(root) => {
+                        assert!(bracket.a <= narrow.a && narrow.b <= bracket.b);
+                        let half_width = width_tolerance(narrow.a, narrow.b);
+                        let from_narrow = polish_crossing(&pencil, narrow, half_width, range)
+                            .unwrap()
+                            .unwrap();
+                        // Both are Brent's roots of a growth rate that
+                        // rounding blurs: 4e-13 apart seen (roller).
+                        assert!(
+                            (root - from_narrow).abs() <= 2e-12 * root.abs(),
+                            "{name}: {root} vs {from_narrow}"
+                        );
+                    }
+                }
+            }
             checked += 1;
         }
         checked
@@ -378,8 +416,9 @@ mod tests {
 
     /// The polynomial path only speeds the bisection up: at every change of
     /// stability of every two-rod preset (a chain has no polynomial path),
-    /// of a damped column and of a light roller,
-    /// the brackets are those of the bisection on the Schur path alone.
+    /// of a damped column and of a light roller, the brackets are those of
+    /// the bisection on the Schur path alone, and a crossing polished from
+    /// the wider bracket is the one polished from the Schur path's.
     #[test]
     fn the_fast_bisection_gives_the_schur_paths_brackets() {
         let mut checked = 0;

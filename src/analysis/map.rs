@@ -7,7 +7,7 @@ use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use super::AnalysisError;
-use super::critical::{bracketing_locus, critical_loads_along};
+use super::critical::{bracketing_locus, bracketing_locus_through, critical_loads_along};
 use super::crossing::Transition;
 use super::locus::{load_grid, locus};
 use super::pencil::AffinePencil;
@@ -93,13 +93,24 @@ impl MapSpec {
         let model = self.axis.apply(&self.model, value)?;
         let pencil = AffinePencil::new(&model)?;
         let (min, max) = self.load_range;
-        let transitions = critical_loads_along(&pencil, &bracketing_locus(&pencil, min, max)?)?;
-        let grid = locus(&pencil, min, max, self.loads)?;
+        // One locus for both where its evenly spaced loads can hold the cells.
+        let (transitions, grid, stride) =
+            match bracketing_locus_through(&pencil, (min, max), self.loads)? {
+                Some((bracket, stride)) => {
+                    (critical_loads_along(&pencil, &bracket)?, bracket, stride)
+                }
+                None => (
+                    critical_loads_along(&pencil, &bracketing_locus(&pencil, min, max)?)?,
+                    locus(&pencil, min, max, self.loads)?,
+                    1,
+                ),
+            };
         let first = pencil.spectrum(min)?;
         let mut state = classify(&first.eigenvalues, first.scale_per_s).state;
         let mut next = transitions.iter().peekable();
         let cells = (0..grid.loads.len())
             .filter(|&i| grid.on_grid[i])
+            .step_by(stride)
             .map(|i| {
                 let p = grid.loads[i];
                 // The state between critical loads is the one `critical` says.
@@ -107,9 +118,9 @@ impl MapSpec {
                     state = t.to;
                 }
                 let growth_per_s = grid
-                    .moving_at(i)
+                    .moving_branches()
                     .iter()
-                    .map(|z| z.re)
+                    .map(|branch| branch[i].re)
                     .fold(f64::NEG_INFINITY, f64::max);
                 Cell {
                     state,

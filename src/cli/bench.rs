@@ -35,7 +35,7 @@ type Figure = fn(&Report) -> f64;
 
 /// The table: each line's JSON key, figure, unit, what was measured and the
 /// target, if there is one.
-const LINES: [(&str, Figure, &str, &str, Option<Target>); 19] = [
+const LINES: [(&str, Figure, &str, &str, Option<Target>); 21] = [
     (
         "locus_us_per_load",
         |r| r.locus_us_per_load,
@@ -140,6 +140,20 @@ const LINES: [(&str, Figure, &str, &str, Option<Target>); 19] = [
         "x",
         "numpy per pencil over the locus per load",
         Some(Target::AtLeast(10.0)),
+    ),
+    (
+        "numpy_chain32_scan_ms",
+        |r| r.numpy_chain32_scan_ms.unwrap_or(f64::NAN),
+        "ms",
+        "numpy's scan for the first flutter of the 32-rod chain (NaN: no numpy)",
+        None,
+    ),
+    (
+        "critical_chain32_over_numpy",
+        |r| r.critical_chain32_over_numpy.unwrap_or(f64::NAN),
+        "x",
+        "every change of stability of the chain over numpy's first one",
+        Some(Target::AtMost(1.0)),
     ),
     (
         "window_fps",
