@@ -265,8 +265,9 @@ pub(super) fn eigenvalues_near(
 
 /// Evenly spaced loads whose spectra are computed together, on every core,
 /// ahead of the tracking (per thread): a long chain's eigenvalues come from
-/// the Schur path, a quarter of a millisecond each at 32 rods.
-const PREFETCH_PER_THREAD: usize = 32;
+/// the QR iteration, about 50 µs each at 32 rods, and long blocks keep the
+/// threads' start and the wait for the slower one small beside them.
+const PREFETCH_PER_THREAD: usize = 128;
 
 /// The spectra of the evenly spaced loads of a locus whose eigenvalues all
 /// come from the Schur path (more than [`MAX_DEGREE`] of them: no

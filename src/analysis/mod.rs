@@ -6,6 +6,7 @@ mod crossing;
 mod cycles;
 mod field;
 mod hopf;
+mod hqr;
 mod jet;
 mod locus;
 mod map;

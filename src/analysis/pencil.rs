@@ -145,9 +145,16 @@ fn all_finite(eigenvalues: Vec<C64>) -> Option<Vec<C64>> {
 /// `lambda = +/- sqrt(-mu)` for the eigenvalues mu of `M^-1 K`, a matrix of
 /// half the companion's order (an eighth of its cost).
 fn undamped_eigenvalues(lin: &LinearModel) -> Option<Vec<C64>> {
-    let mut a = lin.mass.clone().cholesky()?.solve(&lin.stiffness);
+    eigenvalues_from_squares(lin.mass.clone().cholesky()?.solve(&lin.stiffness))
+}
+
+/// `lambda = +/- sqrt(-mu)` for the eigenvalues mu of `a = M^-1 K`
+/// (balanced, then the double-shift QR iteration; faer's Schur
+/// decomposition where that does not converge).
+fn eigenvalues_from_squares(mut a: DMatrix<f64>) -> Option<Vec<C64>> {
     balance(&mut a);
-    let squares = faer_eigenvalues(&a)?;
+    let squares =
+        super::hqr::eigenvalues(a.nrows(), |i, j| a[(i, j)]).or_else(|| faer_eigenvalues(&a))?;
     Some(
         squares
             .into_iter()
@@ -187,8 +194,7 @@ pub fn spectrum(lin: &LinearModel, load: f64) -> Result<Spectrum, AnalysisError>
         return Err(not_converged);
     }
     let cyclic = cyclic_coordinates(&lin.stiffness);
-    let undamped = cyclic.is_empty() && lin.damping.iter().all(|&d| d == 0.0);
-    let eigenvalues = if undamped && 2 * lin.mass.nrows() > NALGEBRA_MAX_ORDER {
+    let eigenvalues = if takes_squares(lin, &cyclic) {
         undamped_eigenvalues(lin).ok_or(not_converged)?
     } else {
         let a = companion(lin, &cyclic).ok_or(not_converged.clone())?;
@@ -203,6 +209,14 @@ pub fn spectrum(lin: &LinearModel, load: f64) -> Result<Spectrum, AnalysisError>
     })
 }
 
+/// Whether the spectrum of `lin` comes from the squares' matrix `M^-1 K`:
+/// an undamped pencil with no cyclic coordinate, too large for nalgebra.
+fn takes_squares(lin: &LinearModel, cyclic: &[usize]) -> bool {
+    cyclic.is_empty()
+        && lin.damping.iter().all(|&d| d == 0.0)
+        && 2 * lin.mass.nrows() > NALGEBRA_MAX_ORDER
+}
+
 /// The linearization as an affine function of the load p: M is fixed and
 /// `D = D0 + p D1`, `K = K0 + p K1` (every load here is proportional to p).
 #[derive(Clone, Debug, PartialEq)]
@@ -215,6 +229,10 @@ pub struct AffinePencil {
     /// The characteristic polynomial as polynomials in the load, for 2 or 3
     /// degrees of freedom.
     characteristic: Option<CharacteristicPolynomial>,
+    /// `M^-1 K0` and `M^-1 K1` of a pencil undamped at every load: the
+    /// squares' matrix at p is their sum (see [`takes_squares`]), without
+    /// a Cholesky solve per load.
+    squares: Option<[DMatrix<f64>; 2]>,
     natural_load_max: f64,
 }
 
@@ -238,7 +256,20 @@ impl AffinePencil {
             .filter(|j| cyclic_coordinates(&per_unit_load.stiffness).contains(j))
             .count();
         let characteristic = CharacteristicPolynomial::new(&at_zero, &per_unit_load);
+        let undamped = [&at_zero.damping, &per_unit_load.damping]
+            .iter()
+            .all(|d| d.iter().all(|&v| v == 0.0));
+        let squares = undamped
+            .then(|| at_zero.mass.clone().cholesky())
+            .flatten()
+            .map(|mass| {
+                [
+                    mass.solve(&at_zero.stiffness),
+                    mass.solve(&per_unit_load.stiffness),
+                ]
+            });
         Ok(Self {
+            squares,
             norms: NormQuadratics::new(&at_zero, &per_unit_load),
             at_zero,
             per_unit_load,
@@ -284,7 +315,11 @@ impl AffinePencil {
     /// See [`spectrum`].
     pub fn spectrum(&self, p: f64) -> Result<Spectrum, AnalysisError> {
         let lin = self.at(p);
-        let mut spectrum = match spectrum(&lin, p) {
+        let spectrum = match self.squares_spectrum(p, &lin) {
+            Some(found) => found,
+            None => spectrum(&lin, p),
+        };
+        let mut spectrum = match spectrum {
             Ok(spectrum) => spectrum,
             Err(error) => self.polynomial_spectrum(p, &lin).ok_or(error)?,
         };
@@ -297,6 +332,32 @@ impl AffinePencil {
             .extend(std::iter::repeat_n(C64::new(0.0, 0.0), extra));
         spectrum.structural_zeros = structural;
         Ok(spectrum)
+    }
+
+    /// The spectrum at p from `M^-1 K0 + p M^-1 K1` where [`spectrum`] would
+    /// take the squares' matrix (the same matrix but for rounding); `None`
+    /// otherwise.
+    fn squares_spectrum(
+        &self,
+        p: f64,
+        lin: &LinearModel,
+    ) -> Option<Result<Spectrum, AnalysisError>> {
+        let [own, per_load] = self.squares.as_ref()?;
+        let finite = [&lin.mass, &lin.stiffness]
+            .iter()
+            .all(|m| m.iter().all(|v| v.is_finite()));
+        if !finite || !takes_squares(lin, &cyclic_coordinates(&lin.stiffness)) {
+            return None;
+        }
+        Some(
+            eigenvalues_from_squares(own + p * per_load)
+                .map(|eigenvalues| Spectrum {
+                    eigenvalues,
+                    structural_zeros: lin.extra_zero_roots,
+                    scale_per_s: frequency_scale(lin),
+                })
+                .ok_or(AnalysisError::NotConverged { load: p }),
+        )
     }
 
     /// `det(lambda^2 M + lambda D + K)` at load p for 2 or 3 degrees of
@@ -496,24 +557,34 @@ mod tests {
     use super::*;
     use crate::model::{Assignment, Key, PresetId, apply_assignments};
 
-    /// The half-order path of an undamped chain gives the companion
-    /// matrix's eigenvalues, pair for pair, in flutter and before it.
+    /// The half-order path of an undamped chain (the double-shift QR
+    /// iteration on `M^-1 K`, and on the pencil's `M^-1 K0 + p M^-1 K1`)
+    /// gives the eigenvalues of faer's Schur decomposition of the companion
+    /// matrix, pair for pair, in flutter and before it.
     #[test]
     fn an_undamped_chain_s_half_order_eigenvalues_are_the_companion_s() {
-        let mut chain = PresetId::UniformRods.model();
-        let rods = Assignment {
-            key: Key::Rods,
-            value: 6.0,
-        };
-        apply_assignments(&mut chain, &[rods]).unwrap();
-        for p in [0.0, 0.3, 0.9] {
+        for (rods, p) in [
+            (6.0, 0.0),
+            (6.0, 0.3),
+            (6.0, 0.9),
+            (24.0, 0.0),
+            (24.0, 0.05),
+        ] {
+            let mut chain = PresetId::UniformRods.model();
+            let rods = Assignment {
+                key: Key::Rods,
+                value: rods,
+            };
+            apply_assignments(&mut chain, &[rods]).unwrap();
             let lin = linearize(&chain.at_load(p)).unwrap();
+            let from_pencil = AffinePencil::new(&chain).unwrap().spectrum(p).unwrap();
             let half = undamped_eigenvalues(&lin).unwrap();
             let a = companion(&lin, &[]).unwrap();
             let full = faer_eigenvalues(&a).unwrap();
             let scale = full.iter().map(|z| z.norm()).fold(0.0, f64::max);
             assert_eq!(half.len(), full.len());
-            for z in &half {
+            assert_eq!(from_pencil.eigenvalues.len(), full.len());
+            for z in half.iter().chain(&from_pencil.eigenvalues) {
                 let nearest = full
                     .iter()
                     .map(|w| (w - z).norm())

@@ -101,4 +101,27 @@ fn the_card_says_whether_flutter_set_in_softly() {
         undamped.starts_with("no damping: no limit cycle"),
         "{undamped}"
     );
+    assert!(!line.contains("sticking"), "{line}");
+}
+
+/// The roller's card, past its (soft) onset, says that the cycle holds only
+/// until the contact nears sticking on the band: stick-slip, which the
+/// smooth analysis does not follow, sets in within a few hundredths of the
+/// load past the onset.
+#[test]
+fn the_roller_s_card_says_where_the_smooth_cycle_ends() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.apply(Action::Preset(PresetId::Roller));
+    app.apply(Action::Enter {
+        key: zieglerlab::model::Key::Load,
+        value: 1.0,
+    });
+    app.state_mut().settle_analysis();
+    let harness = crate::app_input::harness(&mut app);
+    let line = harness
+        .query_all_by_label_contains("onset")
+        .find_map(|node| node.accesskit_node().value())
+        .unwrap_or_default();
+    assert!(line.starts_with("soft onset at p = 0.0238"), "{line}");
+    assert!(line.contains("until the roller nears sticking"), "{line}");
 }

@@ -145,9 +145,16 @@ fn nearest_mode(z: C64, modes: &[C64]) -> Option<usize> {
 }
 
 /// How the flutter set in at `onset`: soft or hard (the first Lyapunov
-/// coefficient), or that an undamped column has no cycle to settle on.
-fn onset_ui(ui: &mut egui::Ui, onset: f64, hopf: &Result<Hopf, NoHopf>) {
+/// coefficient), or that an undamped column has no cycle to settle on. On
+/// the roller (`sliding`) the smooth analysis holds only while the contact
+/// slides: the card says where that ends.
+fn onset_ui(ui: &mut egui::Ui, onset: f64, hopf: &Result<Hopf, NoHopf>, sliding: bool) {
     let at = load_text(onset);
+    let sticking_tip = if sliding {
+        " On the roller the slip at the contact falls as the cycle grows; where it nears zero the friction is no longer smooth and the motion turns to stick-slip, which this analysis does not follow: the post-critical tab's branch ends there."
+    } else {
+        ""
+    };
     let (words, more) = match hopf {
         Ok(hopf) => {
             let amplitude = hopf
@@ -156,11 +163,15 @@ fn onset_ui(ui: &mut egui::Ui, onset: f64, hopf: &Result<Hopf, NoHopf>) {
                 .map(|a| format!(" Near it the cycle's |phi1| is about {} sqrt(p - {at}) rad.", number_text(*a)))
                 .unwrap_or_default();
             let tip = format!(
-                "First Lyapunov coefficient {} at the onset p = {at} (Hopf point, frequency {} rad/s).{amplitude}",
+                "First Lyapunov coefficient {} at the onset p = {at} (Hopf point, frequency {} rad/s).{amplitude}{sticking_tip}",
                 number_text(hopf.first_lyapunov),
                 number_text(hopf.frequency_rad_per_s)
             );
             match hopf.kind {
+                HopfKind::Supercritical if sliding => (
+                    format!("soft onset at p = {at}: a cycle grows from zero, until the roller nears sticking"),
+                    tip,
+                ),
                 HopfKind::Supercritical => (
                     format!("soft onset at p = {at}: the swing settles on a limit cycle that grows from zero"),
                     tip,
@@ -244,7 +255,8 @@ impl View for StatusSection {
         if s.state == State::Flutter
             && let Some((onset, Some(hopf))) = analysis.onset_below(state.settings().model.load_p())
         {
-            onset_ui(ui, *onset, hopf);
+            let sliding = state.settings().model.roller().is_some();
+            onset_ui(ui, *onset, hopf, sliding);
         }
         if weak {
             let per_period = 100.0 * (growth * std::f64::consts::TAU / frequency).exp_m1();
