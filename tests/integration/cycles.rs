@@ -3,7 +3,9 @@
 //! formula gives); each is a periodic orbit of the independent reference
 //! integrator and the attractor a long run settles on, on both engines; the
 //! trivial Floquet multiplier is 1; over one cycle the load feeds in what
-//! the dampers take out; the roller's branch stops before stick-slip.
+//! the dampers take out; the roller's branch stops before stick-slip; a
+//! hard onset's unstable cycles fold back into stable ones, and a sweep
+//! over it shows hysteresis.
 
 use crate::common::model;
 use zieglerlab::analysis::{Branch, BranchEnd, HopfKind, cycle_branches, cycles_at};
@@ -364,4 +366,100 @@ fn the_diagram_figure_draws_each_cycle_at_its_amplitude() {
     }
     // The straight column in black along the load axis below the onset.
     assert!(pixel(panel.page_point(1.7, 0.0)).iter().all(|&c| c < 80));
+}
+
+/// Drag along the rods with a light first rod (`c_ext = 0.05`, `m1 = 0.2`
+/// on Ziegler's column): a hard onset (l1 > 0). From the Hopf point the
+/// cycles are unstable and lie below the onset, with the normal form's
+/// amplitudes; the branch folds back at a lower load, where the cycles turn
+/// stable (one change of stability along the branch, at its fold), and the
+/// large stable cycles go on past the onset.
+#[test]
+fn a_hard_onset_s_unstable_cycles_fold_back_into_large_stable_ones() {
+    let m = hard_onset_column();
+    let branch = first_branch(&m, 2.0, 2.3);
+    let hopf = branch.hopf().clone();
+    assert_eq!(hopf.kind, HopfKind::Subcritical);
+    assert!(hopf.first_lyapunov > 0.0);
+    let first = &branch.cycles[0];
+    assert!(!first.stable && first.load < hopf.load, "{first:?}");
+    // The fold: the branch's least load, below the onset.
+    let (fold, fold_load) = branch
+        .cycles
+        .iter()
+        .enumerate()
+        .map(|(i, c)| (i, c.load))
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .unwrap();
+    assert!(fold_load < hopf.load - 1e-4, "fold at {fold_load}");
+    // One change of stability, from unstable to stable, next to the fold.
+    let runs = branch.runs();
+    assert_eq!(runs.iter().map(|r| r.1).collect::<Vec<_>>(), [false, true]);
+    let first_stable = branch.cycles.iter().position(|c| c.stable).unwrap();
+    assert!(first_stable.abs_diff(fold) <= 1, "{first_stable} vs {fold}");
+    assert!(branch.cycles.last().unwrap().load > hopf.load);
+    // Near the onset the unstable cycles are the normal form's, below it.
+    let per_sqrt = hopf.amplitude_per_sqrt_load_rad[0];
+    let mut errors = Vec::new();
+    for amplitude in [0.004, 0.0013] {
+        let p = hopf.load - (amplitude / per_sqrt).powi(2);
+        let cycles = cycles_at(&m, &branch, p);
+        let small = cycles
+            .iter()
+            .min_by(|a, b| a.amplitude_rad[0].total_cmp(&b.amplitude_rad[0]))
+            .unwrap_or_else(|| panic!("no cycle at p = {p}"));
+        assert!(!small.stable);
+        errors.push((small.amplitude_rad[0] / amplitude - 1.0).abs());
+    }
+    // Seen: 2.6e-4 and 2.1e-4, the accuracy of l1 by differences with drag.
+    assert!(errors.iter().all(|e| *e < 1e-3), "{errors:?}");
+}
+
+/// The experiment's way on the same column: stepping the load up, the
+/// column stays at rest between the fold and the onset; stepping it down
+/// from the large cycle, it stays on that cycle there, as the shooting
+/// finds it: hysteresis, the mark of a hard onset.
+#[test]
+fn a_sweep_over_a_hard_onset_shows_hysteresis() {
+    let text = crate::cli::stdout(&[
+        "bifurcation",
+        "--preset",
+        "ziegler-1952",
+        "--set",
+        "c_ext=0.05",
+        "--set",
+        "m1=0.2",
+        "--x",
+        "load:2.125:2.145:5",
+        "--sweep",
+    ]);
+    let rows: Vec<Vec<&str>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
+    let amplitudes = |branch: &str, load: &str| -> Vec<(f64, &str)> {
+        rows.iter()
+            .filter(|r| r[1] == branch && r[0] == load)
+            .map(|r| (r[5].parse().expect("a number"), r[2]))
+            .collect()
+    };
+    // Between the fold and the onset: an unstable and a stable cycle.
+    let cycles = amplitudes("cycle-1", "2.135");
+    assert_eq!(cycles.len(), 2, "{text}");
+    let large = cycles.iter().find(|c| c.1 == "true").unwrap().0;
+    let small = cycles.iter().find(|c| c.1 == "false").unwrap().0;
+    assert!(small < 0.2 * large);
+    let up = amplitudes("sweep-up", "2.135")[0].0;
+    let down = amplitudes("sweep-down", "2.135")[0].0;
+    assert!(up < 1e-3, "up: {up}");
+    assert!((down / large - 1.0).abs() < 1e-4, "down: {down} vs {large}");
+    // Just past the onset the way down is on the cycle too.
+    let large = amplitudes("cycle-1", "2.14")[0].0;
+    let down = amplitudes("sweep-down", "2.14")[0].0;
+    assert!((down / large - 1.0).abs() < 1e-4, "down: {down} vs {large}");
+}
+
+fn hard_onset_column() -> Model {
+    model("ziegler-1952", &["c_ext=0.05", "m1=0.2"])
 }
