@@ -249,11 +249,8 @@ pub(super) fn eigenvalues_near(
     if n <= MAX_DEGREE
         && let Some(poly) = pencil.char_poly(p)
     {
-        // Refined on a copy: a failed iteration leaves the guess for the Schur path.
-        let mut refined = [C64::new(0.0, 0.0); MAX_DEGREE];
-        refined[..n].copy_from_slice(roots);
-        if aberth(&poly, &mut refined[..n], 60) {
-            roots.copy_from_slice(&refined[..n]);
+        // A failed iteration leaves the guess for the Schur path.
+        if aberth(&poly, roots, 60) {
             return Ok(());
         }
     }
@@ -581,11 +578,11 @@ fn track(
 /// Two eigenvalues this close to conjugate, relative to their size plus the
 /// frequency scale, are a pair (near a double root rounding parts a pair's
 /// computed roots by about the square root of the machine epsilon).
-const PAIR_TOLERANCE: f64 = 1e-6;
+const CONJUGATE_TOLERANCE: f64 = 1e-6;
 
-/// Whether `a` and `b` are a conjugate pair (see [`PAIR_TOLERANCE`]).
+/// Whether `a` and `b` are a conjugate pair (see [`CONJUGATE_TOLERANCE`]).
 fn conjugate(a: C64, b: C64, scale: f64) -> bool {
-    modulus(a - b.conj()) <= PAIR_TOLERANCE * (modulus(a) + scale)
+    modulus(a - b.conj()) <= CONJUGATE_TOLERANCE * (modulus(a) + scale)
 }
 
 /// The weights of the values at `loads` in their interpolating quadratic's
