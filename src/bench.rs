@@ -23,7 +23,9 @@ use std::sync::atomic::{AtomicBool, AtomicUsize};
 
 use nalgebra::DMatrix;
 
-use crate::analysis::{AffinePencil, MapSpec, compute_map, critical_loads, load_grid, locus};
+use crate::analysis::{
+    AffinePencil, MapSpec, compute_map, critical_loads, first_loss_of_stability, load_grid, locus,
+};
 use crate::app::{Action, Settings, Tab, ZieglerApp};
 use crate::model::{Assignment, Axis, Key, Model, PresetId, apply_assignments};
 use crate::sim::{DEFAULT_STEP_SECS, EngineKind, Simulation, initial_state};
@@ -296,10 +298,7 @@ print(times[len(times) // 2] * 1e3, load)
     let (Some(Ok(ms)), Some(Ok(load))) = (words.next(), words.next()) else {
         return Ok(None);
     };
-    let first_loss = critical_loads(&chain.pencil, 0.0, chain.load_max)?
-        .into_iter()
-        .find(|t| t.from == crate::analysis::State::Stable)
-        .map(|t| t.load);
+    let first_loss = first_loss_of_stability(&critical_loads(&chain.pencil, 0.0, chain.load_max)?);
     match first_loss {
         Some(ours) if (ours - load).abs() <= 1e-6 * ours => Ok(Some(ms)),
         _ => anyhow::bail!("numpy's scan finds p = {load}, critical {first_loss:?}"),

@@ -39,8 +39,7 @@ pub(crate) fn bracketing_locus_through(
     (load_min, load_max): (f64, f64),
     cells: usize,
 ) -> Result<Option<(Locus, usize)>, AnalysisError> {
-    let natural = pencil.natural_load_max().max(load_min);
-    if cells < 2 || load_max > 10.0 * natural || load_max > LARGEST_LOAD {
+    if cells < 2 || load_max > LARGEST_LOAD || !within_natural_decade(pencil, load_min, load_max) {
         return Ok(None);
     }
     let stride = (BRACKET_SAMPLES - 1).div_ceil(cells - 1);
@@ -55,6 +54,18 @@ pub(crate) fn bracketing_locus_through(
         |_, _| false,
     )?;
     Ok(Some((bracket, stride)))
+}
+
+/// Whether `[load_min, load_max]` ends within ten times the column's
+/// natural range (from `load_min` on): bracketed by evenly spaced loads
+/// alone, not in sections.
+fn within_natural_decade(pencil: &AffinePencil, load_min: f64, load_max: f64) -> bool {
+    load_max <= 10.0 * natural_end(pencil, load_min)
+}
+
+/// The end of the column's natural range, or `load_min` past it.
+fn natural_end(pencil: &AffinePencil, load_min: f64) -> f64 {
+    pencil.natural_load_max().max(load_min)
 }
 
 /// Samples of each decade of load in a wide range (see [`bracketing_locus`]).
@@ -113,8 +124,7 @@ pub fn bracketing_locus_reporting(
             allowed: "must be at most 1e150, the largest load the analysis resolves",
         });
     }
-    let natural = pencil.natural_load_max().max(load_min);
-    if load_max <= 10.0 * natural {
+    if within_natural_decade(pencil, load_min, load_max) {
         return evenly_bracketed_until(
             pencil,
             load_min,
@@ -123,6 +133,7 @@ pub fn bracketing_locus_reporting(
         );
     }
     // The sections beyond the natural range, planned first to know the total.
+    let natural = natural_end(pencil, load_min);
     let rounded_away = ROUNDED_AWAY * pencil.stiffness_matching_load().max(natural);
     let mut sections = Vec::new();
     let mut start = natural;

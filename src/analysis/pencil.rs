@@ -141,16 +141,16 @@ fn all_finite(eigenvalues: Vec<C64>) -> Option<Vec<C64>> {
         .then_some(eigenvalues)
 }
 
-/// The eigenvalues of an undamped pencil `lambda^2 M + K` of a long chain:
-/// `lambda = +/- sqrt(-mu)` for the eigenvalues mu of `M^-1 K`, a matrix of
-/// half the companion's order (an eighth of its cost).
-fn undamped_eigenvalues(lin: &LinearModel) -> Option<Vec<C64>> {
-    eigenvalues_from_squares(lin.mass.clone().cholesky()?.solve(&lin.stiffness))
+/// `M^-1 K` of `lin` by a Cholesky solve; `None` when M is not positive
+/// definite.
+fn squares_matrix(lin: &LinearModel) -> Option<DMatrix<f64>> {
+    Some(lin.mass.clone().cholesky()?.solve(&lin.stiffness))
 }
 
-/// `lambda = +/- sqrt(-mu)` for the eigenvalues mu of `a = M^-1 K`
-/// (balanced, then the double-shift QR iteration; faer's Schur
-/// decomposition where that does not converge).
+/// The eigenvalues of an undamped pencil `lambda^2 M + K` of a long chain:
+/// `lambda = +/- sqrt(-mu)` for the eigenvalues mu of `a = M^-1 K`, a
+/// matrix of half the companion's order (balanced, then the double-shift QR
+/// iteration; faer's Schur decomposition where that does not converge).
 fn eigenvalues_from_squares(mut a: DMatrix<f64>) -> Option<Vec<C64>> {
     balance(&mut a);
     let squares =
@@ -186,6 +186,16 @@ fn eigenvalues_of(balanced: &DMatrix<f64>, a: &DMatrix<f64>) -> Option<Vec<C64>>
 /// Non-finite entries, a mass matrix that is not positive definite, or a
 /// QR iteration that converges for neither matrix.
 pub fn spectrum(lin: &LinearModel, load: f64) -> Result<Spectrum, AnalysisError> {
+    spectrum_from(lin, load, || squares_matrix(lin))
+}
+
+/// [`spectrum`], with `squares` giving `M^-1 K` where the squares' matrix
+/// is taken (see [`takes_squares`]).
+fn spectrum_from(
+    lin: &LinearModel,
+    load: f64,
+    squares: impl FnOnce() -> Option<DMatrix<f64>>,
+) -> Result<Spectrum, AnalysisError> {
     let finite = [&lin.mass, &lin.damping, &lin.stiffness]
         .iter()
         .all(|m| m.iter().all(|v| v.is_finite()));
@@ -195,7 +205,9 @@ pub fn spectrum(lin: &LinearModel, load: f64) -> Result<Spectrum, AnalysisError>
     }
     let cyclic = cyclic_coordinates(&lin.stiffness);
     let eigenvalues = if takes_squares(lin, &cyclic) {
-        undamped_eigenvalues(lin).ok_or(not_converged)?
+        squares()
+            .and_then(eigenvalues_from_squares)
+            .ok_or(not_converged)?
     } else {
         let a = companion(lin, &cyclic).ok_or(not_converged.clone())?;
         let mut balanced = a.clone();
@@ -230,8 +242,8 @@ pub struct AffinePencil {
     /// degrees of freedom.
     characteristic: Option<CharacteristicPolynomial>,
     /// `M^-1 K0` and `M^-1 K1` of a pencil undamped at every load: the
-    /// squares' matrix at p is their sum (see [`takes_squares`]), without
-    /// a Cholesky solve per load.
+    /// squares' matrix at p is `M^-1 K0 + p M^-1 K1` (see [`takes_squares`]),
+    /// without a Cholesky solve per load.
     squares: Option<[DMatrix<f64>; 2]>,
     natural_load_max: f64,
 }
@@ -315,11 +327,12 @@ impl AffinePencil {
     /// See [`spectrum`].
     pub fn spectrum(&self, p: f64) -> Result<Spectrum, AnalysisError> {
         let lin = self.at(p);
-        let spectrum = match self.squares_spectrum(p, &lin) {
-            Some(found) => found,
-            None => spectrum(&lin, p),
+        // An undamped pencil's squares' matrix from the products formed once.
+        let squares = || match &self.squares {
+            Some([own, per_load]) => Some(own + p * per_load),
+            None => squares_matrix(&lin),
         };
-        let mut spectrum = match spectrum {
+        let mut spectrum = match spectrum_from(&lin, p, squares) {
             Ok(spectrum) => spectrum,
             Err(error) => self.polynomial_spectrum(p, &lin).ok_or(error)?,
         };
@@ -332,32 +345,6 @@ impl AffinePencil {
             .extend(std::iter::repeat_n(C64::new(0.0, 0.0), extra));
         spectrum.structural_zeros = structural;
         Ok(spectrum)
-    }
-
-    /// The spectrum at p from `M^-1 K0 + p M^-1 K1` where [`spectrum`] would
-    /// take the squares' matrix (the same matrix but for rounding); `None`
-    /// otherwise.
-    fn squares_spectrum(
-        &self,
-        p: f64,
-        lin: &LinearModel,
-    ) -> Option<Result<Spectrum, AnalysisError>> {
-        let [own, per_load] = self.squares.as_ref()?;
-        let finite = [&lin.mass, &lin.stiffness]
-            .iter()
-            .all(|m| m.iter().all(|v| v.is_finite()));
-        if !finite || !takes_squares(lin, &cyclic_coordinates(&lin.stiffness)) {
-            return None;
-        }
-        Some(
-            eigenvalues_from_squares(own + p * per_load)
-                .map(|eigenvalues| Spectrum {
-                    eigenvalues,
-                    structural_zeros: lin.extra_zero_roots,
-                    scale_per_s: frequency_scale(lin),
-                })
-                .ok_or(AnalysisError::NotConverged { load: p }),
-        )
     }
 
     /// `det(lambda^2 M + lambda D + K)` at load p for 2 or 3 degrees of
@@ -579,7 +566,9 @@ mod tests {
             apply_assignments(&mut chain, &[rods]).unwrap();
             let lin = linearize(&chain.at_load(p)).unwrap();
             let from_pencil = AffinePencil::new(&chain).unwrap().spectrum(p).unwrap();
-            let half = undamped_eigenvalues(&lin).unwrap();
+            let half = squares_matrix(&lin)
+                .and_then(eigenvalues_from_squares)
+                .unwrap();
             let a = companion(&lin, &[]).unwrap();
             let full = faer_eigenvalues(&a).unwrap();
             let scale = full.iter().map(|z| z.norm()).fold(0.0, f64::max);
