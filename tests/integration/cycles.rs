@@ -307,11 +307,7 @@ fn bifurcation_json_names_each_onset_and_an_undamped_column_has_no_cycles() {
 #[test]
 fn a_sweep_down_follows_the_stable_cycle_and_comes_to_rest_below_the_onset() {
     let text = damped_ziegler_bifurcation(&["--x", "load:1.8:2.4:4", "--sweep"]);
-    let rows: Vec<Vec<&str>> = text
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').collect())
-        .collect();
+    let rows = csv_rows(&text);
     let amplitude = |branch: &str, load: &str| -> f64 {
         let row = rows
             .iter()
@@ -433,11 +429,7 @@ fn a_sweep_over_a_hard_onset_shows_hysteresis() {
         "load:2.125:2.145:5",
         "--sweep",
     ]);
-    let rows: Vec<Vec<&str>> = text
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').collect())
-        .collect();
+    let rows = csv_rows(&text);
     let amplitudes = |branch: &str, load: &str| -> Vec<(f64, &str)> {
         rows.iter()
             .filter(|r| r[1] == branch && r[0] == load)
@@ -458,6 +450,14 @@ fn a_sweep_over_a_hard_onset_shows_hysteresis() {
     let large = amplitudes("cycle-1", "2.14")[0].0;
     let down = amplitudes("sweep-down", "2.14")[0].0;
     assert!((down / large - 1.0).abs() < 1e-4, "down: {down} vs {large}");
+}
+
+/// The rows of `bifurcation`'s CSV after its header, split at the commas.
+fn csv_rows(text: &str) -> Vec<Vec<&str>> {
+    text.lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect()
 }
 
 fn hard_onset_column() -> Model {
