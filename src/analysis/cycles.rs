@@ -5,13 +5,11 @@
 //!
 //! A cycle is a start `x0` on the reduced state (see `field`) and a period
 //! `T` with `phi_T(x0) = x0`, `phi_T` the flow of the equations of motion.
-//! The flow and its Jacobian (the monodromy matrix, from the variational
-//! equations `Y' = A(x) Y`) are integrated together by the classical
-//! fourth-order Runge-Kutta method at a fixed number of steps per period:
-//! with `A` at every stage the monodromy is the exact derivative of the
-//! computed flow (for the multipliers); Newton's iterations hold each
-//! step's `A` over its stages (a quarter of the work, fast-linear
-//! convergence to the same solution). Newton solves
+//! The flow and its Jacobian (the monodromy matrix) are integrated together
+//! by the two-stage Gauss-Legendre method at a fixed number of steps per
+//! period (`gauss`: implicit and A-stable, so a chain's fast modes do not
+//! set the step), the monodromy as the exact derivative of the computed
+//! flow for the multipliers. Newton solves
 //!
 //! ```text
 //! phi_T(x0; p) - x0 = 0                (d equations)
@@ -20,7 +18,12 @@
 //! p = p_target  or  t . (u - u_pred) = 0   (fixed load, or pseudo-arclength)
 //! ```
 //!
-//! for `u = (x0, T, p)`. A branch starts at the normal form's cycle near its
+//! for `u = (x0, T, p)`, by Broyden's method: Newton's matrix once (from
+//! the last cycle's monodromy along a branch, else from a flow with each
+//! step's Jacobian held over its stages), then rank-one corrections from
+//! each iteration's change of the residual, so that a later iteration is
+//! one flow without the monodromy; where that fails, by Newton's method
+//! proper. A branch starts at the normal form's cycle near its
 //! Hopf point (`hopf`) and is followed by pseudo-arclength continuation,
 //! which passes folds (a hard onset's unstable cycle turning into the large
 //! stable one). The multipliers are the monodromy's eigenvalues: one is 1
@@ -32,7 +35,9 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use nalgebra::{DMatrix, DVector};
 
 use super::field::Field;
+use super::gauss::{Monodromy, Stepper};
 use super::hopf::{HopfPoint, Steps as HopfSteps, hopf_point};
+use super::peaks::Peaks;
 use super::{AffinePencil, AnalysisError, C64, Hopf, HopfKind, critical_loads, is_hopf};
 use crate::format::load_text;
 use crate::model::{Model, StateVec};
@@ -213,19 +218,56 @@ pub const STICK_FRACTION: f64 = 0.1;
 /// A cycle is resolved when its trivial multiplier is within this of 1.
 pub const TRIVIAL_TOLERANCE: f64 = 1e-6;
 
-/// Fewest Runge-Kutta steps per period.
+/// Fewest steps per period: with the Gauss-Legendre method's order 4, the
+/// period to about 1e-10 and the amplitudes (read off the cubic between
+/// steps, see `peaks`) to about 1e-9 of themselves.
 const MIN_STEPS: u32 = 800;
 /// The step times the spectral radius of the Jacobian at rest stays below
-/// this: fast, strongly damped modes (a chain's highest, the roller's spin)
-/// stay resolved and stable.
-const FAST_MODE_STEP: f64 = 0.3;
+/// this. The method is stable at any step (see `gauss`); the bound keeps
+/// the stage equations' Newton iterations, which start from the last
+/// step's stages, in their quick range where a mode is far faster than the
+/// flutter (the roller's spin as its slip slows).
+const FAST_MODE_STEP: f64 = 100.0;
+/// A continuation step that converged in at most this many iterations
+/// makes the next one longer.
+const GROW_ITERATIONS: usize = 8;
 /// The first cycles' amplitudes, rad: small enough for the normal form to be
 /// a good first guess, large enough for a well conditioned shooting.
 const START_AMPLITUDES_RAD: [f64; 3] = [0.003, 0.006, 0.012];
 /// Newton iterations for one cycle.
 const NEWTON_ITERATIONS: usize = 12;
+/// Newton's iterations end when each part of the step is this fraction of
+/// its part of the unknowns (see [`converged`]).
+const NEWTON_TOLERANCE: f64 = 1e-9;
+/// The smallest load the load's step is measured against.
+const LOAD_SCALE_FLOOR: f64 = 1e-3;
+/// Broyden iterations for one cycle (each is one flow without the
+/// monodromy).
+const BROYDEN_ITERATIONS: usize = 16;
 
-/// The flow over one period from `x0` with `steps` Runge-Kutta steps: the
+/// How Newton's matrix is updated over the iterations.
+#[derive(Clone, Copy)]
+enum Update<'a> {
+    /// Broyden's method: the matrix of the first iteration, corrected by a
+    /// rank-one update from each later iteration's change of the residual
+    /// (each later iteration is then one flow without the monodromy). The
+    /// first iteration's monodromy is the one given (the last cycle's, next
+    /// on the branch), or else the flow's with each step's Jacobian held
+    /// over its stages.
+    Broyden(Option<&'a DMatrix<f64>>),
+    /// Newton's method: the matrix anew at every iteration, with the
+    /// monodromy taken as given.
+    Newton(Monodromy),
+}
+
+/// A converged cycle with its exact monodromy and Newton's iterations.
+struct Solved {
+    cycle: Cycle,
+    monodromy: DMatrix<f64>,
+    iterations: usize,
+}
+
+/// The flow over one period from `x0` in a number of steps: the
 /// end point, the largest `|phi_i|` on the way, and (when asked) the monodromy.
 struct Orbit {
     end: DVector<f64>,
@@ -234,119 +276,49 @@ struct Orbit {
     closest_slip_m_per_s: Option<f64>,
 }
 
-/// Difference step of the Jacobian in the variational equations.
-const JACOBIAN_STEP: f64 = 1e-7;
-
-/// How the flow's Jacobian (the monodromy) is integrated.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Monodromy {
-    /// Not at all: the end point only.
-    None,
-    /// The field's Jacobian at every Runge-Kutta stage: the exact derivative
-    /// of the computed flow (for the multipliers).
-    Exact,
-    /// The Jacobian once per step, held over its stages: a quarter of the
-    /// work, off by the step's change of the Jacobian, which slows Newton's
-    /// convergence from quadratic to fast linear but not where it ends.
-    HeldPerStep,
-}
-
+/// The flow over `period` from `x0` in `steps` steps of the Gauss-Legendre
+/// method, with the monodromy as asked; `None` where a step fails.
 fn flow(
     field: &Field,
     x0: &DVector<f64>,
     period: f64,
     steps: usize,
     monodromy: Monodromy,
-) -> Orbit {
+) -> Option<Orbit> {
     let d = x0.len();
     #[expect(clippy::cast_precision_loss, reason = "a step count")]
-    let h = period / steps as f64;
+    let mut stepper = Stepper::new(field, period / steps as f64);
     let mut x = x0.clone();
     let mut y = (monodromy != Monodromy::None).then(|| DMatrix::<f64>::identity(d, d));
     let rods = field.rods();
-    let mut peaks = Peaks::new(&x0.as_slice()[..rods]);
+    let h = stepper.step_secs();
+    let (angles, rates) = (0..rods, rods..2 * rods);
+    let mut peaks = Peaks::new(
+        &x0.as_slice()[angles.clone()],
+        &x0.as_slice()[rates.clone()],
+    );
     let mut closest_slip_m_per_s = field.slip_m_per_s(x0);
     for _ in 0..steps {
-        let k1 = field.at(&x);
-        let x2 = &x + &k1 * (h / 2.0);
-        let k2 = field.at(&x2);
-        let x3 = &x + &k2 * (h / 2.0);
-        let k3 = field.at(&x3);
-        let x4 = &x + &k3 * h;
-        let k4 = field.at(&x4);
-        if let Some(y) = y.as_mut() {
-            let jacobian = |at: &DVector<f64>| field.jacobian(at, JACOBIAN_STEP);
-            let a1 = jacobian(&x);
-            let [a2, a3, a4] = match monodromy {
-                Monodromy::Exact => [jacobian(&x2), jacobian(&x3), jacobian(&x4)],
-                Monodromy::HeldPerStep | Monodromy::None => [a1.clone(), a1.clone(), a1.clone()],
-            };
-            let m1 = &a1 * &*y;
-            let m2 = a2 * (&*y + &m1 * (h / 2.0));
-            let m3 = a3 * (&*y + &m2 * (h / 2.0));
-            let m4 = a4 * (&*y + &m3 * h);
-            *y += (m1 + (m2 + m3) * 2.0 + m4) * (h / 6.0);
-        }
-        x += (k1 + (k2 + k3) * 2.0 + k4) * (h / 6.0);
-        peaks.push(&x.as_slice()[..rods]);
+        stepper.step(&mut x, y.as_mut(), monodromy)?;
+        peaks.push(
+            &x.as_slice()[angles.clone()],
+            &x.as_slice()[rates.clone()],
+            h,
+        );
         if let (Some(closest), Some(slip)) = (closest_slip_m_per_s.as_mut(), field.slip_m_per_s(&x))
         {
             *closest = closest.min(slip);
         }
     }
-    Orbit {
+    Some(Orbit {
         end: x,
-        amplitude_rad: peaks.largest,
+        amplitude_rad: peaks.largest().to_vec(),
         monodromy: y,
         closest_slip_m_per_s,
-    }
+    })
 }
 
-/// The largest `|v_i|` of each of several quantities along evenly spaced
-/// samples (a swing's angles), each local peak refined by the parabola
-/// through it and its neighbours: a sine sampled n times a period is read
-/// to about `(pi/n)^4` instead of `(pi/n)^2 / 2`.
-#[derive(Clone, Debug)]
-pub struct Peaks {
-    last: Vec<[f64; 2]>,
-    largest: Vec<f64>,
-}
-
-impl Peaks {
-    /// Starting from the first samples `values`.
-    #[must_use]
-    pub fn new(values: &[f64]) -> Self {
-        Self {
-            last: values.iter().map(|v| [v.abs(); 2]).collect(),
-            largest: values.iter().map(|v| v.abs()).collect(),
-        }
-    }
-
-    /// The largest `|v_i|` so far.
-    #[must_use]
-    pub fn largest(&self) -> &[f64] {
-        &self.largest
-    }
-
-    /// The next samples.
-    pub fn push(&mut self, values: &[f64]) {
-        for ((last, largest), value) in self.last.iter_mut().zip(&mut self.largest).zip(values) {
-            let [a, b] = *last;
-            let c = value.abs();
-            let mut top = b.max(c);
-            if b >= a && b >= c {
-                let curvature = a - 2.0 * b + c;
-                if curvature < 0.0 {
-                    top = top.max(b - (c - a).powi(2) / (8.0 * curvature));
-                }
-            }
-            *largest = largest.max(top);
-            *last = [b, c];
-        }
-    }
-}
-
-/// Runge-Kutta steps for one period of `period` of a field whose Jacobian
+/// Steps for one period of `period` of a field whose Jacobian
 /// at rest has spectral radius `fastest_per_s`.
 fn steps_for(period: f64, fastest_per_s: f64) -> usize {
     let needed = (period * fastest_per_s / FAST_MODE_STEP)
@@ -395,88 +367,142 @@ struct Shooting {
 
 impl Shooting {
     /// The cycle through the guess `u = (x0, T, p)` under `constraint`,
-    /// with its Newton iterations, or `None` where Newton fails: first with
-    /// each step's Jacobian held over its stages, then, where that fails
-    /// (its slower convergence runs out of iterations on a hard stretch),
+    /// with its exact monodromy and Newton's iterations, or `None` where
+    /// Newton fails: first by Broyden's method (see [`Update::Broyden`]),
+    /// then, where that fails, by Newton's method with the matrix anew at
+    /// every iteration, each step's Jacobian held over its stages, and last
     /// with the exact monodromy.
-    fn solve(&self, guess: &DVector<f64>, constraint: &Constraint) -> Option<(Cycle, usize)> {
-        self.newton(guess, constraint, Monodromy::HeldPerStep)
-            .or_else(|| self.newton(guess, constraint, Monodromy::Exact))
+    fn solve(&self, guess: &DVector<f64>, constraint: &Constraint) -> Option<Solved> {
+        self.newton(guess, constraint, Update::Broyden(None))
+            .or_else(|| self.newton(guess, constraint, Update::Newton(Monodromy::HeldPerStep)))
+            .or_else(|| self.newton(guess, constraint, Update::Newton(Monodromy::Exact)))
     }
 
-    /// [`Self::solve`] with the monodromy of the iterations taken as `monodromy`.
+    /// [`Self::solve`] with Newton's matrix updated as `update` says.
     fn newton(
         &self,
         guess: &DVector<f64>,
         constraint: &Constraint,
-        monodromy: Monodromy,
-    ) -> Option<(Cycle, usize)> {
+        update: Update,
+    ) -> Option<Solved> {
         let d = self.field.dimension();
         let reference = guess.rows(0, d).into_owned();
         let reference_flow = self.field.at_load(guess[d + 1]).at(&reference);
         let mut u = guess.clone();
-        for iteration in 1..=NEWTON_ITERATIONS {
+        // The inverse of Newton's matrix, and the last step with the
+        // residual it was taken from (for Broyden's update).
+        let mut inverse: Option<DMatrix<f64>> = None;
+        let mut last: Option<(DVector<f64>, DVector<f64>)> = None;
+        let iterations = match update {
+            Update::Broyden(_) => BROYDEN_ITERATIONS,
+            Update::Newton(_) => NEWTON_ITERATIONS,
+        };
+        for iteration in 1..=iterations {
             let (x0, period, load) = (u.rows(0, d).into_owned(), u[d], u[d + 1]);
             if !(period > 0.0 && load >= 0.0 && u.iter().all(|v| v.is_finite())) {
                 return None;
             }
             let field = self.field.at_load(load);
-            let (orbit, steps) = self.orbit(&field, &x0, period, monodromy);
-            let monodromy = orbit.monodromy?;
-            let mut jacobian = DMatrix::<f64>::zeros(d + 2, d + 2);
+            let taken = match update {
+                Update::Broyden(None) if inverse.is_none() => Monodromy::HeldPerStep,
+                Update::Broyden(_) => Monodromy::None,
+                Update::Newton(monodromy) => monodromy,
+            };
+            let (orbit, steps) = self.orbit(&field, &x0, period, taken)?;
             let mut residual = DVector::<f64>::zeros(d + 2);
-            jacobian
-                .view_mut((0, 0), (d, d))
-                .copy_from(&(&monodromy - DMatrix::identity(d, d)));
-            jacobian
-                .view_mut((0, d), (d, 1))
-                .copy_from(&field.at(&orbit.end));
             residual.rows_mut(0, d).copy_from(&(&orbit.end - &x0));
-            jacobian
-                .view_mut((d, 0), (1, d))
-                .copy_from(&reference_flow.transpose());
             residual[d] = reference_flow.dot(&(&x0 - &reference));
-            match constraint {
-                Constraint::Load(target) => {
-                    jacobian[(d + 1, d + 1)] = 1.0;
-                    residual[d + 1] = load - target;
-                }
-                Constraint::Arclength { tangent, predicted } => {
-                    let delta = 1e-6 * load.abs().max(1e-3);
-                    let ends = [load + delta, load - delta].map(|p| {
-                        flow(&self.field.at_load(p), &x0, period, steps, Monodromy::None).end
-                    });
-                    jacobian
-                        .view_mut((0, d + 1), (d, 1))
-                        .copy_from(&((&ends[0] - &ends[1]) / (2.0 * delta)));
-                    jacobian
-                        .view_mut((d + 1, 0), (1, d + 2))
-                        .copy_from(&tangent.transpose());
-                    residual[d + 1] = tangent.dot(&(&u - *predicted));
-                }
+            residual[d + 1] = match constraint {
+                Constraint::Load(target) => load - target,
+                Constraint::Arclength { tangent, predicted } => tangent.dot(&(&u - *predicted)),
+            };
+            let monodromy = match (update, &inverse) {
+                (Update::Broyden(Some(known)), None) => Some(known),
+                (Update::Broyden(_), Some(_)) => None,
+                _ => Some(orbit.monodromy.as_ref()?),
+            };
+            if let Some(monodromy) = monodromy {
+                let jacobian = self.newton_matrix(
+                    (&x0, period, load),
+                    steps,
+                    (&orbit.end, monodromy),
+                    &reference_flow,
+                    constraint,
+                )?;
+                inverse = Some(jacobian.try_inverse()?);
+            } else if let (Some(h), Some((step, before))) = (inverse.as_mut(), &last) {
+                broyden_update(h, &-step, &(&residual - before));
             }
-            let step = jacobian.lu().solve(&residual)?;
+            let step = inverse.as_ref()? * &residual;
             u -= &step;
-            let size = u.amax().max(1.0);
-            if step.amax() <= 1e-11 * size {
-                return Some((self.cycle(&u)?, iteration));
+            if converged(&step, &u, d) {
+                let (cycle, monodromy) = self.cycle(&u)?;
+                return Some(Solved {
+                    cycle,
+                    monodromy,
+                    iterations: iteration,
+                });
             }
+            last = Some((step, residual));
         }
         None
     }
 
-    /// The cycle at the converged unknowns `u`, with its multipliers.
-    fn cycle(&self, u: &DVector<f64>) -> Option<Cycle> {
+    /// The matrix of Newton's equations at `(x0, period, load)` (see the
+    /// module's notes), from the flow's `end` there and a `monodromy`, and
+    /// the flow's derivative in the load, by differences over `steps` steps.
+    fn newton_matrix(
+        &self,
+        (x0, period, load): (&DVector<f64>, f64, f64),
+        steps: usize,
+        (end, monodromy): (&DVector<f64>, &DMatrix<f64>),
+        reference_flow: &DVector<f64>,
+        constraint: &Constraint,
+    ) -> Option<DMatrix<f64>> {
+        let d = x0.len();
+        let field = self.field.at_load(load);
+        let mut jacobian = DMatrix::<f64>::zeros(d + 2, d + 2);
+        jacobian
+            .view_mut((0, 0), (d, d))
+            .copy_from(&(monodromy - DMatrix::identity(d, d)));
+        jacobian.view_mut((0, d), (d, 1)).copy_from(&field.at(end));
+        jacobian
+            .view_mut((d, 0), (1, d))
+            .copy_from(&reference_flow.transpose());
+        match constraint {
+            Constraint::Load(_) => jacobian[(d + 1, d + 1)] = 1.0,
+            Constraint::Arclength { tangent, .. } => {
+                let delta = 1e-6 * load.abs().max(1e-3);
+                let end = |p| {
+                    flow(&self.field.at_load(p), x0, period, steps, Monodromy::None)
+                        .map(|orbit| orbit.end)
+                };
+                let (plus, minus) = (end(load + delta)?, end(load - delta)?);
+                jacobian
+                    .view_mut((0, d + 1), (d, 1))
+                    .copy_from(&((plus - minus) / (2.0 * delta)));
+                jacobian
+                    .view_mut((d + 1, 0), (1, d + 2))
+                    .copy_from(&tangent.transpose());
+            }
+        }
+        Some(jacobian)
+    }
+
+    /// The cycle at the converged unknowns `u`, with its multipliers, and
+    /// its exact monodromy.
+    fn cycle(&self, u: &DVector<f64>) -> Option<(Cycle, DMatrix<f64>)> {
         let d = self.field.dimension();
         let (x0, period, load) = (u.rows(0, d).into_owned(), u[d], u[d + 1]);
-        let (orbit, _) = self.orbit(&self.field.at_load(load), &x0, period, Monodromy::Exact);
-        let multipliers = sorted_multipliers(&orbit.monodromy?);
+        let (orbit, _) = self.orbit(&self.field.at_load(load), &x0, period, Monodromy::Exact)?;
+        let monodromy = orbit.monodromy?;
+        let multipliers = sorted_multipliers(&monodromy);
         let trivial = trivial_index(&multipliers)?;
         let stable = multipliers
             .iter()
             .enumerate()
             .all(|(i, m)| i == trivial || m.norm() < 1.0);
-        Some(Cycle {
+        let cycle = Cycle {
             load,
             period_secs: period,
             start: x0,
@@ -484,7 +510,8 @@ impl Shooting {
             multipliers,
             stable,
             closest_slip_m_per_s: orbit.closest_slip_m_per_s,
-        })
+        };
+        Some((cycle, monodromy))
     }
 
     /// The flow over `period` with its monodromy, and the steps it took.
@@ -498,18 +525,18 @@ impl Shooting {
         x0: &DVector<f64>,
         period: f64,
         monodromy: Monodromy,
-    ) -> (Orbit, usize) {
+    ) -> Option<(Orbit, usize)> {
         let steps = steps_for(period, self.fastest_per_s);
-        let orbit = flow(field, x0, period, steps, monodromy);
+        let orbit = flow(field, x0, period, steps, monodromy)?;
         let slowed = match (orbit.closest_slip_m_per_s, field.band_speed_m_per_s()) {
             (Some(slip), Some(band)) if slip > 0.0 && slip < band => band / slip,
-            _ => return (orbit, steps),
+            _ => return Some((orbit, steps)),
         };
         let needed = steps_for(period, self.fastest_per_s * slowed);
         if needed > steps {
-            (flow(field, x0, period, needed, monodromy), needed)
+            Some((flow(field, x0, period, needed, monodromy)?, needed))
         } else {
-            (orbit, steps)
+            Some((orbit, steps))
         }
     }
 
@@ -524,7 +551,7 @@ impl Shooting {
     /// The cycle whose largest angle's amplitude is about `amplitude_rad`
     /// by the normal form of the Hopf point `point`, on the side where
     /// cycles exist.
-    fn near_onset(&self, point: &HopfPoint, amplitude_rad: f64) -> Option<Cycle> {
+    fn near_onset(&self, point: &HopfPoint, amplitude_rad: f64) -> Option<Solved> {
         let hopf = &point.hopf;
         let per_sqrt = hopf
             .amplitude_per_sqrt_load_rad
@@ -538,7 +565,7 @@ impl Shooting {
     }
 
     /// The cycle at `load` from the normal form's as the first guess.
-    fn normal_form_cycle(&self, point: &HopfPoint, load: f64) -> Option<Cycle> {
+    fn normal_form_cycle(&self, point: &HopfPoint, load: f64) -> Option<Solved> {
         let hopf = &point.hopf;
         let radius = point.radius_per_sqrt_load * (load - hopf.load).abs().sqrt();
         let d = self.field.dimension();
@@ -548,8 +575,34 @@ impl Shooting {
             _ => load,
         });
         self.solve(&guess, &Constraint::Load(load))
-            .map(|(cycle, _)| cycle)
     }
+}
+
+/// Broyden's ("good") rank-one update of the inverse `h` of Newton's
+/// matrix after a step `s` changed the residual by `y`, by the formula of
+/// Sherman and Morrison: `h += (s - h y) (s^T h) / (s^T h y)`. The updated
+/// matrix maps `y` to `s`, and is unchanged across `s`. Left as it is
+/// where `s^T h y` vanishes.
+fn broyden_update(h: &mut DMatrix<f64>, s: &DVector<f64>, y: &DVector<f64>) {
+    let hy = &*h * y;
+    let denominator = s.dot(&hy);
+    if denominator.abs() > f64::MIN_POSITIVE && denominator.is_finite() {
+        let st_h = s.transpose() * &*h;
+        *h += (s - hy) * st_h / denominator;
+    }
+}
+
+/// Whether Newton's `step` at the unknowns `u = (x0, T, p)` (the state's
+/// length `d`) is down to [`NEWTON_TOLERANCE`] of each part's own size: the
+/// state's largest entry, the period, the load (at least
+/// [`LOAD_SCALE_FLOOR`]). Measured by one size for all, a cycle of small
+/// amplitude and long period (a long chain's near its onset) would ask its
+/// period to more digits than the state determines it to.
+fn converged(step: &DVector<f64>, u: &DVector<f64>, d: usize) -> bool {
+    let state = u.rows(0, d).amax();
+    step.rows(0, d).amax() <= NEWTON_TOLERANCE * state
+        && step[d].abs() <= NEWTON_TOLERANCE * u[d].abs()
+        && step[d + 1].abs() <= NEWTON_TOLERANCE * u[d + 1].abs().max(LOAD_SCALE_FLOOR)
 }
 
 /// Where the multiplier nearest 1 (the shift along the orbit) stands.
@@ -583,8 +636,11 @@ fn branch(
         field,
     };
     let mut cycles = Vec::new();
+    let mut monodromy = DMatrix::zeros(0, 0);
     for amplitude in START_AMPLITUDES_RAD {
-        cycles.push(shooting.near_onset(point, amplitude)?);
+        let solved = shooting.near_onset(point, amplitude)?;
+        cycles.push(solved.cycle);
+        monodromy = solved.monodromy;
     }
     let load_step_most = (load_max - load_min) / 40.0;
     let hopf_period = std::f64::consts::TAU / point.hopf.frequency_rad_per_s;
@@ -625,20 +681,34 @@ fn branch(
             tangent: &tangent,
             predicted: &predicted,
         };
-        match shooting.solve(&predicted, &constraint) {
-            Some((cycle, _)) if shooting.near_sticking(&cycle) => {
+        // Broyden's method from the last cycle's monodromy; where it fails,
+        // a shorter step, and at the shortest the whole of `solve`.
+        let shortest = distance <= 1e-6 * u.norm().max(1.0);
+        let solved =
+            match shooting.newton(&predicted, &constraint, Update::Broyden(Some(&monodromy))) {
+                None if !shortest => {
+                    distance /= 3.0;
+                    continue;
+                }
+                None => shooting.solve(&predicted, &constraint),
+                solved => solved,
+            };
+        match solved {
+            Some(solved) if shooting.near_sticking(&solved.cycle) => {
                 break BranchEnd::StickSlip { load: last.load };
             }
-            Some((cycle, _)) if (cycle.trivial_multiplier() - 1.0).norm() > TRIVIAL_TOLERANCE => {
+            Some(solved)
+                if (solved.cycle.trivial_multiplier() - 1.0).norm() > TRIVIAL_TOLERANCE =>
+            {
                 break BranchEnd::Unresolved { load: last.load };
             }
-            Some((cycle, iterations)) => {
-                cycles.push(cycle);
-                if iterations <= 6 {
+            Some(solved) => {
+                cycles.push(solved.cycle);
+                monodromy = solved.monodromy;
+                if solved.iterations <= GROW_ITERATIONS {
                     distance *= 1.5;
                 }
             }
-            None if distance > 1e-6 * u.norm().max(1.0) => distance /= 3.0,
             None => break BranchEnd::Lost { load: last.load },
         }
     };
@@ -724,7 +794,9 @@ pub fn cycles_at(model: &Model, branch: &Branch, p: f64) -> Vec<Cycle> {
         let (lo, hi) = (onset.min(first.load), onset.max(first.load));
         lo < p && p < hi
     });
-    let near_onset = near.and_then(|_| shooting.normal_form_cycle(&branch.onset, p));
+    let near_onset = near
+        .and_then(|_| shooting.normal_form_cycle(&branch.onset, p))
+        .map(|solved| solved.cycle);
     let along = branch.cycles.windows(2).filter_map(|pair| {
         let (a, b) = (&pair[0], &pair[1]);
         let (lo, hi) = (a.load.min(b.load), a.load.max(b.load));
@@ -739,7 +811,7 @@ pub fn cycles_at(model: &Model, branch: &Branch, p: f64) -> Vec<Cycle> {
         let guess = a.unknowns() * (1.0 - t) + b.unknowns() * t;
         shooting
             .solve(&guess, &Constraint::Load(p))
-            .map(|(cycle, _)| cycle)
+            .map(|solved| solved.cycle)
     });
     near_onset.into_iter().chain(along).collect()
 }

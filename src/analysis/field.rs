@@ -125,6 +125,24 @@ impl Field {
         }
         a
     }
+
+    /// The Jacobian of `f` at `x` by forward differences (half the
+    /// evaluations of [`Self::jacobian`], to about the square root of its
+    /// accuracy: for Newton's matrices, not for the multipliers).
+    #[must_use]
+    pub fn jacobian_one_sided(&self, x: &DVector<f64>, h: f64) -> DMatrix<f64> {
+        let n = self.dimension();
+        let at_x = self.at(x);
+        let mut a = DMatrix::zeros(n, n);
+        let mut shifted = x.clone();
+        for j in 0..n {
+            let step = h * x[j].abs().max(1.0);
+            shifted[j] = x[j] + step;
+            a.set_column(j, &((self.at(&shifted) - &at_x) / step));
+            shifted[j] = x[j];
+        }
+        a
+    }
 }
 
 #[cfg(test)]

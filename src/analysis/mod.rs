@@ -5,12 +5,14 @@ mod critical;
 mod crossing;
 mod cycles;
 mod field;
+mod gauss;
 mod hopf;
 mod hqr;
 mod jet;
 mod locus;
 mod map;
 mod paradox;
+mod peaks;
 mod pencil;
 mod resolution;
 mod roots;
@@ -22,7 +24,7 @@ pub use critical::{
 };
 pub use crossing::{Transition, stability_ranges};
 pub use cycles::{
-    Branch, BranchEnd, Cycle, MAX_AMPLITUDE_RAD, NoBranch, Onset, Peaks, cycle_branches, cycles_at,
+    Branch, BranchEnd, Cycle, MAX_AMPLITUDE_RAD, NoBranch, Onset, cycle_branches, cycles_at,
 };
 pub use hopf::{Derivatives, Hopf, HopfKind, NoHopf, Steps as HopfSteps, hopf_at, is_hopf};
 pub use locus::{Locus, MAX_HELD_EIGENVALUES, load_grid, locus, locus_streamed, max_samples};
@@ -34,6 +36,7 @@ pub use paradox::{
     Curves, DampingKind, curves as paradox_curves, first_instability, first_loss_of_stability,
     flutter_load_damped, flutter_load_external, own_point, swept_ratio,
 };
+pub use peaks::Peaks;
 pub use pencil::{AffinePencil, Spectrum, spectrum};
 pub use resolution::resolution_warning;
 pub use roots::{Poly, aberth};

@@ -89,12 +89,17 @@ fn lagrange(
     let (phi, rate) = angles_and_rates(x);
     let n = phi.len();
     let mu = chain_mass_matrix(model);
-    let mass = DMatrix::from_fn(n, n, |j, k| mu[(j, k)] * (phi[j] - phi[k]).cos());
+    // cos and sin of every difference phi_j - phi_k from one sin_cos per
+    // rod (N calls instead of 2 N^2).
+    let trig: Vec<(f64, f64)> = phi.iter().map(|a| a.sin_cos()).collect();
+    let cos_diff = |j: usize, k: usize| trig[j].1 * trig[k].1 + trig[j].0 * trig[k].0;
+    let sin_diff = |j: usize, k: usize| trig[j].0 * trig[k].1 - trig[j].1 * trig[k].0;
+    let mass = DMatrix::from_fn(n, n, |j, k| mu[(j, k)] * cos_diff(j, k));
     let q = joint_and_drag_forces(&model.column, x, phi, rate);
     let rhs = DVector::from_fn(n, |j, _| {
         q[j] + tip_q[j]
             - (0..n)
-                .map(|k| mu[(j, k)] * (phi[j] - phi[k]).sin() * rate[k] * rate[k])
+                .map(|k| mu[(j, k)] * sin_diff(j, k) * rate[k] * rate[k])
                 .sum::<f64>()
     });
     Some((mass.cholesky()?, rhs))

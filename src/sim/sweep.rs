@@ -75,10 +75,12 @@ pub fn sweep(
             return Ok((steps, sim.status()));
         }
         let start = sim.observe();
-        let mut peaks = Peaks::new(&start.angles_rad);
+        let mut peaks = Peaks::new(&start.angles_rad, &start.rates_rad_per_s);
         let mut trace = vec![(start.t_secs, start.angles_rad)];
+        let mut last_secs = start.t_secs;
         let status = sim.run(times.measure_secs, |o| {
-            peaks.push(&o.angles_rad);
+            peaks.push(&o.angles_rad, &o.rates_rad_per_s, o.t_secs - last_secs);
+            last_secs = o.t_secs;
             trace.push((o.t_secs, o.angles_rad.clone()));
         });
         let amplitude_rad = peaks.largest().to_vec();

@@ -463,3 +463,47 @@ fn csv_rows(text: &str) -> Vec<Vec<&str>> {
 fn hard_onset_column() -> Model {
     model("ziegler-1952", &["c_ext=0.05", "m1=0.2"])
 }
+
+/// A chain of four rods with joint dampers: its cycles come from the same
+/// shooting (the implicit steps that keep a chain's fast modes from setting
+/// the step), and one of them is a periodic orbit of the reference
+/// integrator, with its trivial multiplier 1 and its amplitudes those the
+/// run sees.
+#[test]
+fn a_chain_s_cycle_is_a_periodic_orbit_of_the_reference_integrator() {
+    let m = model("uniform-rods", &["rods=4", "c1=0.05", "c2=0.05"]);
+    let branch = first_branch(&m, 0.5, 0.6);
+    assert_eq!(branch.hopf().kind, HopfKind::Supercritical);
+    let cycle = cycles_at(&m, &branch, 0.58).remove(0);
+    assert!(cycle.stable);
+    assert!((cycle.trivial_multiplier() - 1.0).norm() < 1e-8);
+    let at = m.at_load(0.58);
+    let x0 = cycle.start_state(&at);
+    let steps = 2000.0;
+    let mut sim = Simulation::new(
+        at,
+        EngineKind::Reference,
+        x0.clone(),
+        cycle.period_secs / steps,
+    )
+    .expect("a run");
+    let mut largest = [0.0_f64; 4];
+    sim.run(cycle.period_secs, |o| {
+        for (most, angle) in largest.iter_mut().zip(&o.angles_rad) {
+            *most = most.max(angle.abs());
+        }
+    });
+    let back = sim.state();
+    let gap = (0..x0.len())
+        .map(|i| (back[i] - x0[i]).abs())
+        .fold(0.0, f64::max);
+    assert!(
+        gap < 1e-7,
+        "after one period the run is {gap} from its start"
+    );
+    for (seen, computed) in largest.iter().zip(&cycle.amplitude_rad) {
+        // The run's samples miss a peak by at most (pi/2000)^2/2.
+        assert!(*seen <= computed * (1.0 + 1e-8), "{seen} vs {computed}");
+        assert!((seen / computed - 1.0).abs() < 2e-6, "{seen} vs {computed}");
+    }
+}
