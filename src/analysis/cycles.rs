@@ -215,6 +215,9 @@ pub const MAX_POINTS: usize = 400;
 /// A roller's branch stops before a cycle whose slip speed falls below
 /// this fraction of the band speed (see [`BranchEnd::StickSlip`]).
 pub const STICK_FRACTION: f64 = 0.1;
+/// The cycle that ends a roller's branch has a slip speed between this
+/// fraction of [`STICK_FRACTION`] of the band speed and that bound.
+const STICK_END_FRACTION: f64 = 0.9;
 /// A cycle is resolved when its trivial multiplier is within this of 1.
 pub const TRIVIAL_TOLERANCE: f64 = 1e-6;
 
@@ -540,10 +543,11 @@ impl Shooting {
         }
     }
 
-    /// Whether the roller's contact comes near sticking on `cycle`.
-    fn near_sticking(&self, cycle: &Cycle) -> bool {
+    /// Whether the roller's contact comes near sticking on `cycle`: its
+    /// slip falls below `fraction` of the band speed.
+    fn near_sticking(&self, cycle: &Cycle, fraction: f64) -> bool {
         match (cycle.closest_slip_m_per_s, self.field.band_speed_m_per_s()) {
-            (Some(slip), Some(band)) => slip < STICK_FRACTION * band,
+            (Some(slip), Some(band)) => slip < fraction * band,
             _ => false,
         }
     }
@@ -694,7 +698,16 @@ fn branch(
                 solved => solved,
             };
         match solved {
-            Some(solved) if shooting.near_sticking(&solved.cycle) => {
+            // A step far past the stick-slip bound is taken again shorter,
+            // so that the branch ends next to the bound whatever the step.
+            Some(solved)
+                if !shortest
+                    && shooting
+                        .near_sticking(&solved.cycle, STICK_END_FRACTION * STICK_FRACTION) =>
+            {
+                distance /= 3.0;
+            }
+            Some(solved) if shooting.near_sticking(&solved.cycle, STICK_FRACTION) => {
                 break BranchEnd::StickSlip { load: last.load };
             }
             Some(solved)

@@ -222,6 +222,24 @@ fn the_roller_s_branch_stops_before_its_contact_sticks() {
         let slip = cycle.closest_slip_m_per_s.expect("a roller's slip");
         assert!(slip >= 0.1 * band, "p = {}: slip {slip}", cycle.load);
     }
+    // It ends next to that bound, at the same load whatever the range
+    // (which sets the continuation's longest step).
+    let last_slip = branch.cycles.last().and_then(|c| c.closest_slip_m_per_s);
+    assert!(
+        last_slip.is_some_and(|slip| slip < 0.2 * band),
+        "{last_slip:?}"
+    );
+    let end = |b: &Branch| match b.end {
+        BranchEnd::StickSlip { load } => load,
+        other => panic!("{other:?}"),
+    };
+    let narrow = first_branch(&m, 0.0, 0.06);
+    assert!(
+        (end(&narrow) / end(&branch) - 1.0).abs() < 0.01,
+        "{} vs {}",
+        end(&narrow),
+        end(&branch)
+    );
     // The last smooth cycle is a periodic orbit of the reference integrator.
     let last = branch.cycles.last().expect("cycles");
     let at = m.at_load(last.load);
