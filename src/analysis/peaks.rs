@@ -6,7 +6,7 @@
 /// rates. Between two samples each is the cubic through the samples' values
 /// and rates (Hermite's), so a peak between samples is read to the cubic's
 /// accuracy, about `(h w)^4 / 384` of the amplitude for a swing of angular
-/// frequency `w` sampled every `h` (2e-12 at 400 samples a period), instead
+/// frequency `w` sampled every `h` (2e-10 at 400 samples a period), instead
 /// of `(h w)^2 / 8` for the samples alone.
 #[derive(Clone, Debug)]
 pub struct Peaks {
