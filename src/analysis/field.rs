@@ -111,19 +111,7 @@ impl Field {
     /// by each coordinate's size (at least 1).
     #[must_use]
     pub fn jacobian(&self, x: &DVector<f64>, h: f64) -> DMatrix<f64> {
-        let n = self.dimension();
-        let mut a = DMatrix::zeros(n, n);
-        let mut shifted = x.clone();
-        for j in 0..n {
-            let step = h * x[j].abs().max(1.0);
-            shifted[j] = x[j] + step;
-            let plus = self.at(&shifted);
-            shifted[j] = x[j] - step;
-            let minus = self.at(&shifted);
-            shifted[j] = x[j];
-            a.set_column(j, &((plus - minus) / (2.0 * step)));
-        }
-        a
+        self.differences(x, h, None)
     }
 
     /// The Jacobian of `f` at `x` by forward differences (half the
@@ -131,15 +119,28 @@ impl Field {
     /// accuracy: for Newton's matrices, not for the multipliers).
     #[must_use]
     pub fn jacobian_one_sided(&self, x: &DVector<f64>, h: f64) -> DMatrix<f64> {
+        self.differences(x, h, Some(&self.at(x)))
+    }
+
+    /// The Jacobian by differences with steps `h` scaled by each
+    /// coordinate's size (at least 1): forward from `at_x` (`f(x)`) where
+    /// given, else central.
+    fn differences(&self, x: &DVector<f64>, h: f64, at_x: Option<&DVector<f64>>) -> DMatrix<f64> {
         let n = self.dimension();
-        let at_x = self.at(x);
         let mut a = DMatrix::zeros(n, n);
         let mut shifted = x.clone();
         for j in 0..n {
             let step = h * x[j].abs().max(1.0);
             shifted[j] = x[j] + step;
-            a.set_column(j, &((self.at(&shifted) - &at_x) / step));
+            let plus = self.at(&shifted);
+            let column = if let Some(at_x) = at_x {
+                (plus - at_x) / step
+            } else {
+                shifted[j] = x[j] - step;
+                (plus - self.at(&shifted)) / (2.0 * step)
+            };
             shifted[j] = x[j];
+            a.set_column(j, &column);
         }
         a
     }

@@ -8,8 +8,8 @@
 //! over it shows hysteresis.
 
 use crate::common::model;
-use zieglerlab::analysis::{Branch, BranchEnd, HopfKind, cycle_branches, cycles_at};
-use zieglerlab::model::Model;
+use zieglerlab::analysis::{Branch, BranchEnd, Cycle, HopfKind, cycle_branches, cycles_at};
+use zieglerlab::model::{Model, StateVec};
 use zieglerlab::sim::{EngineKind, Simulation, initial_state};
 
 /// The first branch of cycles of `m` over loads `[lo, hi]`.
@@ -79,14 +79,12 @@ fn near_the_onset_the_cycles_are_the_normal_form_s() {
     }
 }
 
-#[test]
-fn a_cycle_is_a_periodic_orbit_of_the_reference_integrator() {
-    let m = damped_ziegler();
-    let branch = first_branch(&m, 1.8, 2.4);
-    let cycle = cycles_at(&m, &branch, 2.2).remove(0);
-    let at = m.at_load(2.2);
+/// One period of `cycle` (at load `p` of `m`) on the reference integrator
+/// from the cycle's start in `steps` steps: the start, the state it returns
+/// to, and the largest `|phi_i|` the run's samples see.
+fn one_period(m: &Model, cycle: &Cycle, p: f64, steps: f64) -> (StateVec, StateVec, Vec<f64>) {
+    let at = m.at_load(p);
     let x0 = cycle.start_state(&at);
-    let steps = 2000.0;
     let mut sim = Simulation::new(
         at,
         EngineKind::Reference,
@@ -94,16 +92,29 @@ fn a_cycle_is_a_periodic_orbit_of_the_reference_integrator() {
         cycle.period_secs / steps,
     )
     .expect("a run");
-    let mut largest = [0.0_f64; 2];
+    let mut largest = vec![0.0_f64; m.column.rods];
     sim.run(cycle.period_secs, |o| {
         for (most, angle) in largest.iter_mut().zip(&o.angles_rad) {
             *most = most.max(angle.abs());
         }
     });
-    let back = sim.state();
-    let gap = (0..x0.len())
-        .map(|i| (back[i] - x0[i]).abs())
-        .fold(0.0, f64::max);
+    (x0, sim.state(), largest)
+}
+
+/// The largest difference of two states.
+fn gap(a: &StateVec, b: &StateVec) -> f64 {
+    (0..a.len())
+        .map(|i| (a[i] - b[i]).abs())
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn a_cycle_is_a_periodic_orbit_of_the_reference_integrator() {
+    let m = damped_ziegler();
+    let branch = first_branch(&m, 1.8, 2.4);
+    let cycle = cycles_at(&m, &branch, 2.2).remove(0);
+    let (x0, back, largest) = one_period(&m, &cycle, 2.2, 2000.0);
+    let gap = gap(&x0, &back);
     assert!(
         gap < 1e-7,
         "after one period the run is {gap} from its start"
@@ -242,17 +253,7 @@ fn the_roller_s_branch_stops_before_its_contact_sticks() {
     );
     // The last smooth cycle is a periodic orbit of the reference integrator.
     let last = branch.cycles.last().expect("cycles");
-    let at = m.at_load(last.load);
-    let x0 = last.start_state(&at);
-    let mut sim = Simulation::new(
-        at,
-        EngineKind::Reference,
-        x0.clone(),
-        last.period_secs / 1000.0,
-    )
-    .expect("a run");
-    sim.run(last.period_secs, |_| ());
-    let back = sim.state();
+    let (x0, back, _) = one_period(&m, last, last.load, 1000.0);
     let n = m.column.rods;
     // The angles and rates return (the spin angle advances with the band).
     for i in (0..n).chain((n + 1)..=(2 * n)) {
@@ -495,26 +496,8 @@ fn a_chain_s_cycle_is_a_periodic_orbit_of_the_reference_integrator() {
     let cycle = cycles_at(&m, &branch, 0.58).remove(0);
     assert!(cycle.stable);
     assert!((cycle.trivial_multiplier() - 1.0).norm() < 1e-8);
-    let at = m.at_load(0.58);
-    let x0 = cycle.start_state(&at);
-    let steps = 2000.0;
-    let mut sim = Simulation::new(
-        at,
-        EngineKind::Reference,
-        x0.clone(),
-        cycle.period_secs / steps,
-    )
-    .expect("a run");
-    let mut largest = [0.0_f64; 4];
-    sim.run(cycle.period_secs, |o| {
-        for (most, angle) in largest.iter_mut().zip(&o.angles_rad) {
-            *most = most.max(angle.abs());
-        }
-    });
-    let back = sim.state();
-    let gap = (0..x0.len())
-        .map(|i| (back[i] - x0[i]).abs())
-        .fold(0.0, f64::max);
+    let (x0, back, largest) = one_period(&m, &cycle, 0.58, 2000.0);
+    let gap = gap(&x0, &back);
     assert!(
         gap < 1e-7,
         "after one period the run is {gap} from its start"
