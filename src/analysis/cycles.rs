@@ -234,6 +234,9 @@ const FAST_MODE_STEP: f64 = 100.0;
 /// A continuation step that converged in at most this many iterations
 /// makes the next one longer.
 const GROW_ITERATIONS: usize = 8;
+/// The cosine of the largest turn between a step of the continuation and
+/// the last one (in the scaled unknowns) that is kept: 25 degrees.
+const MAX_TURN_COS: f64 = 0.9;
 /// The first cycles' amplitudes, rad: small enough for the normal form to be
 /// a good first guess, large enough for a well conditioned shooting.
 const START_AMPLITUDES_RAD: [f64; 3] = [0.003, 0.006, 0.012];
@@ -625,6 +628,48 @@ fn sorted_multipliers(monodromy: &DMatrix<f64>) -> Vec<C64> {
     multipliers
 }
 
+/// The size of each unknown `u = (x0, T, p)` that the continuation
+/// measures its steps in: the state as it is (rad, rad/s), the period in
+/// Hopf periods and the load in Hopf loads (at least [`LOAD_SCALE_FLOOR`]).
+/// In plain units a long chain's cycle near the onset (angles of 0.01 rad,
+/// a period of 1000 s) weighs a change of its period by a second as much as
+/// a change of its angles by a radian: the arclength equation all but
+/// repeated the others (Newton's matrix had a singular value of 2e-7
+/// against 51 at 16 rods), and the branch was lost there.
+fn unknown_scales(point: &HopfPoint, d: usize) -> DVector<f64> {
+    let hopf = &point.hopf;
+    DVector::from_fn(d + 2, |i, _| match i {
+        i if i < d => 1.0,
+        i if i == d => std::f64::consts::TAU / hopf.frequency_rad_per_s,
+        _ => hopf.load.abs().max(LOAD_SCALE_FLOOR),
+    })
+}
+
+/// Where a branch whose last cycle is `cycles`' last stops for a reason
+/// of its own (not the shooting's): it left `[load_min, load_max]`, grew
+/// too large or too slow, has too many cycles, or the caller asked.
+fn stop_reason(
+    cycles: &[Cycle],
+    (load_min, load_max): (f64, f64),
+    hopf_period: f64,
+    cancel: &AtomicBool,
+) -> Option<BranchEnd> {
+    let last = cycles.last()?;
+    if !(load_min..=load_max).contains(&last.load) {
+        Some(BranchEnd::LeftRange)
+    } else if last.largest_amplitude_rad() > MAX_AMPLITUDE_RAD {
+        Some(BranchEnd::LargeAmplitude)
+    } else if last.period_secs > MAX_PERIOD_GROWTH * hopf_period {
+        Some(BranchEnd::LongPeriod)
+    } else if cycles.len() >= MAX_POINTS {
+        Some(BranchEnd::PointLimit)
+    } else if cancel.load(Ordering::Relaxed) {
+        Some(BranchEnd::Cancelled)
+    } else {
+        None
+    }
+}
+
 /// The branch of cycles born at the Hopf point `point` of `model`,
 /// continued while its loads stay within `[load_min, load_max]`.
 fn branch(
@@ -648,46 +693,39 @@ fn branch(
     }
     let load_step_most = (load_max - load_min) / 40.0;
     let hopf_period = std::f64::consts::TAU / point.hopf.frequency_rad_per_s;
+    let scales = unknown_scales(point, shooting.field.dimension());
+    let scaled = |u: &DVector<f64>| u.component_div(&scales);
     let mut distance = {
         let [.., a, b] = cycles.as_slice() else {
             return None;
         };
-        (b.unknowns() - a.unknowns()).norm()
+        scaled(&(b.unknowns() - a.unknowns())).norm()
     };
     let end = loop {
         let [.., before, last] = cycles.as_slice() else {
             return None;
         };
-        if !(load_min..=load_max).contains(&last.load) {
-            break BranchEnd::LeftRange;
+        if let Some(end) = stop_reason(&cycles, (load_min, load_max), hopf_period, cancel) {
+            break end;
         }
-        if last.largest_amplitude_rad() > MAX_AMPLITUDE_RAD {
-            break BranchEnd::LargeAmplitude;
-        }
-        if last.period_secs > MAX_PERIOD_GROWTH * hopf_period {
-            break BranchEnd::LongPeriod;
-        }
-        if cycles.len() >= MAX_POINTS {
-            break BranchEnd::PointLimit;
-        }
-        if cancel.load(Ordering::Relaxed) {
-            break BranchEnd::Cancelled;
-        }
+        // The step along the secant, in the scaled unknowns; the arclength
+        // equation `direction . (u - predicted) / scales = 0`.
         let (u, previous) = (last.unknowns(), before.unknowns());
-        let secant = &u - &previous;
-        let tangent = &secant / secant.norm();
-        let load_rate = tangent[tangent.len() - 1].abs();
+        let secant = scaled(&(&u - &previous));
+        let direction = &secant / secant.norm();
+        let load_rate = (direction[direction.len() - 1] * scales[scales.len() - 1]).abs();
         if load_rate * distance > load_step_most {
             distance = load_step_most / load_rate;
         }
-        let predicted = &u + &tangent * distance;
+        let predicted = &u + direction.component_mul(&scales) * distance;
+        let tangent = direction.component_div(&scales);
         let constraint = Constraint::Arclength {
             tangent: &tangent,
             predicted: &predicted,
         };
         // Broyden's method from the last cycle's monodromy; where it fails,
         // a shorter step, and at the shortest the whole of `solve`.
-        let shortest = distance <= 1e-6 * u.norm().max(1.0);
+        let shortest = distance <= 1e-6 * scaled(&u).norm().max(1.0);
         let solved =
             match shooting.newton(&predicted, &constraint, Update::Broyden(Some(&monodromy))) {
                 None if !shortest => {
@@ -709,6 +747,16 @@ fn branch(
             }
             Some(solved) if shooting.near_sticking(&solved.cycle, STICK_FRACTION) => {
                 break BranchEnd::StickSlip { load: last.load };
+            }
+            // A step that turns the branch sharply may have jumped to
+            // another part of it (or back along it): taken again shorter.
+            Some(solved)
+                if !shortest && {
+                    let next = scaled(&(solved.cycle.unknowns() - &u));
+                    next.dot(&direction) < MAX_TURN_COS * next.norm()
+                } =>
+            {
+                distance /= 3.0;
             }
             Some(solved)
                 if (solved.cycle.trivial_multiplier() - 1.0).norm() > TRIVIAL_TOLERANCE =>

@@ -508,3 +508,44 @@ fn a_chain_s_cycle_is_a_periodic_orbit_of_the_reference_integrator() {
         assert!((seen / computed - 1.0).abs() < 2e-6, "{seen} vs {computed}");
     }
 }
+
+/// A chain of 16 rods: a small first Lyapunov coefficient (-1.3e-4) and a
+/// period near 1000 s, so that next to the onset the cycles grow by
+/// hundredths of a radian while the load moves by millionths. The branch is
+/// followed past there (it was lost at p = 0.0401 while the continuation
+/// weighed a second of the period as much as a radian of the angles), every
+/// cycle on it is stable and larger than the last, and the last one is a
+/// periodic orbit of the reference integrator.
+#[test]
+fn a_long_chain_s_branch_is_followed_past_its_onset() {
+    let m = model("uniform-rods", &["rods=16", "c1=0.05", "c2=0.05"]);
+    let branch = first_branch(&m, 0.0395, 0.0402);
+    assert_eq!(branch.hopf().kind, HopfKind::Supercritical);
+    assert_eq!(branch.end, BranchEnd::LeftRange, "{}", branch.end);
+    let onset = branch.hopf().load;
+    assert!((0.0401..0.0402).contains(&onset), "onset at {onset}");
+    for pair in branch.cycles.windows(2) {
+        let (a, b) = (&pair[0], &pair[1]);
+        assert!(b.load > a.load && b.largest_amplitude_rad() > a.largest_amplitude_rad());
+    }
+    for cycle in &branch.cycles {
+        assert!(cycle.stable, "unstable at p = {}", cycle.load);
+        let trivial = (cycle.trivial_multiplier() - 1.0).norm();
+        assert!(trivial < 1e-7, "trivial multiplier off by {trivial}");
+    }
+    let last = branch.cycles.last().expect("cycles");
+    assert!(
+        last.largest_amplitude_rad() > 0.05,
+        "{}",
+        last.largest_amplitude_rad()
+    );
+    let (x0, back, largest) = one_period(&m, last, last.load, 2000.0);
+    let gap = gap(&x0, &back);
+    assert!(
+        gap < 1e-6,
+        "after one period the run is {gap} from its start"
+    );
+    for (seen, computed) in largest.iter().zip(&last.amplitude_rad) {
+        assert!((seen / computed - 1.0).abs() < 1e-5, "{seen} vs {computed}");
+    }
+}
