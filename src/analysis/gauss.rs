@@ -102,7 +102,7 @@ impl<'a> Stepper<'a> {
             k
         } else {
             let jacobian = match monodromy {
-                Monodromy::Exact => self.field.jacobian(x, JACOBIAN_STEP),
+                Monodromy::Exact => self.field.jacobian_extrapolated(x, JACOBIAN_STEP),
                 Monodromy::None | Monodromy::HeldPerStep => {
                     self.field.jacobian_one_sided(x, JACOBIAN_STEP)
                 }
@@ -117,7 +117,7 @@ impl<'a> Stepper<'a> {
                 (Monodromy::Exact, _) => {
                     let [j1, j2] = [0, 1].map(|i| {
                         self.field
-                            .jacobian(&stage_point(x, &k1, &k2, h, i), JACOBIAN_STEP)
+                            .jacobian_extrapolated(&stage_point(x, &k1, &k2, h, i), JACOBIAN_STEP)
                     });
                     let rhs = stack(&(&j1 * &*y), &(&j2 * &*y));
                     stage_matrix(&j1, &j2, h).lu().solve(&rhs)?

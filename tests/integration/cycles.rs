@@ -7,7 +7,7 @@
 //! hard onset's unstable cycles fold back into stable ones, and a sweep
 //! over it shows hysteresis.
 
-use crate::common::model;
+use crate::common::{eigenvalues, model};
 use zieglerlab::analysis::{Branch, BranchEnd, Cycle, HopfKind, cycle_branches, cycles_at};
 use zieglerlab::model::{Model, StateVec};
 use zieglerlab::sim::{EngineKind, Simulation, initial_state};
@@ -514,8 +514,10 @@ fn a_chain_s_cycle_is_a_periodic_orbit_of_the_reference_integrator() {
 /// hundredths of a radian while the load moves by millionths. The branch is
 /// followed past there (it was lost at p = 0.0401 while the continuation
 /// weighed a second of the period as much as a radian of the angles), every
-/// cycle on it is stable and larger than the last, and the last one is a
-/// periodic orbit of the reference integrator.
+/// cycle on it is stable and larger than the last with its trivial
+/// multiplier 1 to 1e-8 (5e-8 before the monodromy's Jacobians were
+/// extrapolated), and the last one is a periodic orbit of the reference
+/// integrator.
 #[test]
 fn a_long_chain_s_branch_is_followed_past_its_onset() {
     let m = model("uniform-rods", &["rods=16", "c1=0.05", "c2=0.05"]);
@@ -531,7 +533,7 @@ fn a_long_chain_s_branch_is_followed_past_its_onset() {
     for cycle in &branch.cycles {
         assert!(cycle.stable, "unstable at p = {}", cycle.load);
         let trivial = (cycle.trivial_multiplier() - 1.0).norm();
-        assert!(trivial < 1e-7, "trivial multiplier off by {trivial}");
+        assert!(trivial < 1e-8, "trivial multiplier off by {trivial}");
     }
     let last = branch.cycles.last().expect("cycles");
     assert!(
@@ -548,4 +550,39 @@ fn a_long_chain_s_branch_is_followed_past_its_onset() {
     for (seen, computed) in largest.iter().zip(&last.amplitude_rad) {
         assert!((seen / computed - 1.0).abs() < 1e-5, "{seen} vs {computed}");
     }
+}
+
+/// Past a chain's onset its swing grows and slows until three times its
+/// frequency meets the second mode's: there the swing's third harmonic
+/// (from the cubic terms) drives that mode at resonance, and the largest
+/// amplitude stops growing and dips before it grows on (6 rods near
+/// p = 0.3; 16 rods at p = 0.046, where it falls from 0.54 to 0.26 rad).
+/// The dip's load is read off the branch, the second mode's frequency off
+/// the linear pencil there: independent of each other.
+#[test]
+fn a_chain_s_amplitude_dips_where_its_third_harmonic_meets_the_second_mode() {
+    let m = model("uniform-rods", &["rods=6", "c1=0.05", "c2=0.05"]);
+    let branch = first_branch(&m, 0.25, 0.36);
+    let amplitudes: Vec<f64> = branch
+        .cycles
+        .iter()
+        .map(Cycle::largest_amplitude_rad)
+        .collect();
+    let dip = (1..amplitudes.len() - 1)
+        .find(|&i| amplitudes[i] < amplitudes[i - 1] && amplitudes[i] <= amplitudes[i + 1])
+        .expect("a dip in the largest amplitude");
+    let cycle = &branch.cycles[dip];
+    let mut frequencies: Vec<f64> = eigenvalues(&m.at_load(cycle.load))
+        .iter()
+        .filter(|z| z.im > 0.0)
+        .map(|z| z.im)
+        .collect();
+    frequencies.sort_by(f64::total_cmp);
+    let cycle_rad_per_s = std::f64::consts::TAU / cycle.period_secs;
+    let ratio = frequencies[1] / cycle_rad_per_s;
+    assert!(
+        (ratio - 3.0).abs() < 0.05,
+        "at the dip (p = {}) the second mode is {ratio} times the cycle's frequency",
+        cycle.load
+    );
 }
