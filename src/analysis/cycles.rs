@@ -24,8 +24,9 @@
 //! each iteration's change of the residual, so that a later iteration is
 //! one flow without the monodromy; where that fails, by Newton's method
 //! proper. A branch starts at the normal form's cycle near its
-//! Hopf point (`hopf`) and is followed by pseudo-arclength continuation,
-//! which passes folds (a hard onset's unstable cycle turning into the large
+//! Hopf point (`hopf`) and is followed by pseudo-arclength continuation
+//! (distances in unknowns scaled by the Hopf period and load), which passes
+//! folds (a hard onset's unstable cycle turning into the large
 //! stable one). The multipliers are the monodromy's eigenvalues: one is 1
 //! (the shift along the orbit); the cycle is stable when every other one
 //! lies inside the unit circle. Pure: no UI, no clock.

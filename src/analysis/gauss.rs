@@ -30,7 +30,8 @@ use super::field::Field;
 pub enum Monodromy {
     /// None: the end point only.
     None,
-    /// The field's Jacobian at both stages: the exact derivative of the
+    /// The field's Jacobian at both stages (extrapolated differences,
+    /// [`Field::jacobian_extrapolated`]): the exact derivative of the
     /// computed flow (for the multipliers).
     Exact,
     /// The Jacobian at the step's start held over its stages: off by the
