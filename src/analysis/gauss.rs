@@ -102,8 +102,10 @@ impl<'a> Stepper<'a> {
         let k = if let Some(k) = kept {
             k
         } else {
+            // Newton's matrix for the stages only: where they converge
+            // does not depend on its accuracy.
             let jacobian = match monodromy {
-                Monodromy::Exact => self.field.jacobian_extrapolated(x, JACOBIAN_STEP),
+                Monodromy::Exact => self.field.jacobian(x, JACOBIAN_STEP),
                 Monodromy::None | Monodromy::HeldPerStep => {
                     self.field.jacobian_one_sided(x, JACOBIAN_STEP)
                 }
