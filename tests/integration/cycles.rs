@@ -108,22 +108,39 @@ fn gap(a: &StateVec, b: &StateVec) -> f64 {
         .fold(0.0, f64::max)
 }
 
+/// Asserts that `cycle` (at load `p` of `m`) is a periodic orbit of the
+/// reference integrator: one period in 2000 steps comes back to within
+/// `gap_most` of its start, and its samples see each computed amplitude to
+/// `amplitude_most` of itself (2000 samples a period miss a peak by at most
+/// (pi/2000)^2/2 of it). The run's largest angles.
+fn assert_reference_orbit(
+    m: &Model,
+    cycle: &Cycle,
+    p: f64,
+    gap_most: f64,
+    amplitude_most: f64,
+) -> Vec<f64> {
+    let (x0, back, largest) = one_period(m, cycle, p, 2000.0);
+    let gap = gap(&x0, &back);
+    assert!(
+        gap < gap_most,
+        "after one period the run is {gap} from its start"
+    );
+    for (seen, computed) in largest.iter().zip(&cycle.amplitude_rad) {
+        assert!(
+            (seen / computed - 1.0).abs() < amplitude_most,
+            "{seen} vs {computed}"
+        );
+    }
+    largest
+}
+
 #[test]
 fn a_cycle_is_a_periodic_orbit_of_the_reference_integrator() {
     let m = damped_ziegler();
     let branch = first_branch(&m, 1.8, 2.4);
     let cycle = cycles_at(&m, &branch, 2.2).remove(0);
-    let (x0, back, largest) = one_period(&m, &cycle, 2.2, 2000.0);
-    let gap = gap(&x0, &back);
-    assert!(
-        gap < 1e-7,
-        "after one period the run is {gap} from its start"
-    );
-    for (seen, computed) in largest.iter().zip(&cycle.amplitude_rad) {
-        // The run's samples are 2000 per period: a peak is missed by at
-        // most (pi/2000)^2/2 of the amplitude.
-        assert!((seen / computed - 1.0).abs() < 2e-6, "{seen} vs {computed}");
-    }
+    assert_reference_orbit(&m, &cycle, 2.2, 1e-7, 2e-6);
 }
 
 /// The largest `|phi_i|` over two periods after 60 periods of a run from
@@ -496,16 +513,10 @@ fn a_chain_s_cycle_is_a_periodic_orbit_of_the_reference_integrator() {
     let cycle = cycles_at(&m, &branch, 0.58).remove(0);
     assert!(cycle.stable);
     assert!((cycle.trivial_multiplier() - 1.0).norm() < 1e-8);
-    let (x0, back, largest) = one_period(&m, &cycle, 0.58, 2000.0);
-    let gap = gap(&x0, &back);
-    assert!(
-        gap < 1e-7,
-        "after one period the run is {gap} from its start"
-    );
+    let largest = assert_reference_orbit(&m, &cycle, 0.58, 1e-7, 2e-6);
     for (seen, computed) in largest.iter().zip(&cycle.amplitude_rad) {
-        // The run's samples miss a peak by at most (pi/2000)^2/2.
+        // The samples never see more than the cycle's peaks.
         assert!(*seen <= computed * (1.0 + 1e-8), "{seen} vs {computed}");
-        assert!((seen / computed - 1.0).abs() < 2e-6, "{seen} vs {computed}");
     }
 }
 
@@ -541,15 +552,7 @@ fn a_long_chain_s_branch_is_followed_past_its_onset() {
         "{}",
         last.largest_amplitude_rad()
     );
-    let (x0, back, largest) = one_period(&m, last, last.load, 2000.0);
-    let gap = gap(&x0, &back);
-    assert!(
-        gap < 1e-6,
-        "after one period the run is {gap} from its start"
-    );
-    for (seen, computed) in largest.iter().zip(&last.amplitude_rad) {
-        assert!((seen / computed - 1.0).abs() < 1e-5, "{seen} vs {computed}");
-    }
+    assert_reference_orbit(&m, last, last.load, 1e-6, 1e-5);
 }
 
 /// Past a chain's onset its swing grows and slows until three times its
