@@ -3,7 +3,9 @@
 //! and pan, and a refit when what the plots show changes).
 
 use eframe::egui::{self, Color32, Sense, Stroke, WidgetText, vec2};
-use egui_plot::{AxisHints, GridInput, GridMark, Plot, PlotPoint, PlotPoints, PlotUi};
+use egui_plot::{
+    AxisHints, GridInput, GridMark, Line, Plot, PlotBounds, PlotPoint, PlotPoints, PlotUi,
+};
 
 use crate::format::tick_text;
 
@@ -26,31 +28,81 @@ const GRID_SPACING: std::ops::RangeInclusive<f32> = 16.0..=300.0;
 /// CPU renderer pays for on every frame.
 pub const CURVE_TOLERANCE_PX: f32 = 0.15;
 
-/// The points of a curve as drawn in `plot_ui`'s current view, simplified
-/// (Ramer-Douglas-Peucker) so that no point left out lies farther than
-/// [`CURVE_TOLERANCE_PX`] from the polyline drawn. In pixels of the view in
-/// use: zooming in brings the detail back.
-pub fn thinned(
+/// What [`view_settled`] remembers of a plot's view between frames.
+#[derive(Clone, Copy, PartialEq)]
+struct SeenView {
+    frame: egui::Rect,
+    bounds: PlotBounds,
+}
+
+/// Whether `plot_ui`'s transform, which is the last frame's, is also the
+/// one this frame is drawn with: the view is not `refit` now, the plot has
+/// the same size, the view did not change between the last two frames, and
+/// no pointer event reached the plot (a drag or a scroll moves the view
+/// after the curves are handed over). Call it once per plot and frame.
+pub fn view_settled(plot_ui: &PlotUi<'_>, refit: bool) -> bool {
+    let transform = plot_ui.transform();
+    let response = plot_ui.response();
+    let seen = SeenView {
+        frame: *transform.frame(),
+        bounds: *transform.bounds(),
+    };
+    let id = response.id.with("view seen");
+    let ctx = plot_ui.ctx();
+    let before = ctx.data_mut(|data| {
+        let before = data.get_temp::<SeenView>(id);
+        data.insert_temp(id, seen);
+        before
+    });
+    let touched = response.contains_pointer() && ctx.input(|input| !input.events.is_empty());
+    !refit && !touched && response.rect == seen.frame && before == Some(seen)
+}
+
+/// A curve through `points` as drawn in `plot_ui`'s current view: through
+/// a subset of them (Ramer-Douglas-Peucker) so that no point left out lies
+/// farther than [`CURVE_TOLERANCE_PX`] from the polyline drawn. In pixels of
+/// the view in use: zooming in brings the detail back. `settled` is
+/// [`view_settled`]'s answer for the plot.
+///
+/// Drawn as a stroked line, not as the plot crate's bands (which merge the
+/// points within a pixel column into a vertical band): a simplified curve
+/// has long segments, and a band at a branch point's dense samples, whose
+/// width is interpolated to the next point, drew a wedge along the whole
+/// segment before it.
+pub fn curve(
     plot_ui: &PlotUi<'_>,
+    settled: bool,
+    points: impl IntoIterator<Item = [f64; 2]>,
+) -> Line<'static> {
+    Line::new("", thinned(plot_ui, settled, points)).allow_band(false)
+}
+
+/// The points of [`curve`].
+fn thinned(
+    plot_ui: &PlotUi<'_>,
+    settled: bool,
     points: impl IntoIterator<Item = [f64; 2]>,
 ) -> PlotPoints<'static> {
+    let tolerance_pt = CURVE_TOLERANCE_PX / plot_ui.ctx().pixels_per_point();
     let transform = plot_ui.transform();
     let points: Vec<[f64; 2]> = points.into_iter().collect();
     let screen: Vec<egui::Pos2> = points
         .iter()
         .map(|&[x, y]| transform.position_from_point(&PlotPoint::new(x, y)))
         .collect();
-    // The plot's transform is the last frame's: just after a change of
-    // view it may belong to other bounds, and a tolerance in its pixels may
-    // be far too coarse (it drew chords beside the curves near branch
-    // points). The curve also keeps what a fine canvas of its own extent
-    // needs, so it is never coarser than that.
-    let canvas = on_canvas(&points);
-    let keep: Vec<bool> = simplified(&screen, CURVE_TOLERANCE_PX)
-        .into_iter()
-        .zip(simplified(&canvas, CURVE_TOLERANCE_PX))
-        .map(|(a, b)| a || b)
-        .collect();
+    let mut keep = simplified(&screen, tolerance_pt);
+    // While the view changes, the plot's transform may belong to other
+    // bounds, and a tolerance in its pixels may be far too coarse (it drew
+    // chords beside the curves near branch points). The curve then also
+    // keeps what a fine canvas of its own extent needs, so it is never
+    // coarser than that; a settled view (every frame of a running column)
+    // pays only for its own pixels.
+    if !settled {
+        let canvas = on_canvas(&points);
+        for (keep, fine) in keep.iter_mut().zip(simplified(&canvas, CURVE_TOLERANCE_PX)) {
+            *keep |= fine;
+        }
+    }
     PlotPoints::from(
         points
             .into_iter()
@@ -427,5 +479,79 @@ mod tests {
         fit.asked = true;
         assert!(fit.refit(2), "the button fits");
         assert!(!fit.refit(2), "once");
+    }
+
+    #[test]
+    fn a_simplified_curve_stays_within_the_tolerance_of_every_sample() {
+        // A square-root branch point, as Im(lambda) near a flutter onset: a
+        // vertical tangent at x = 100, a flat stretch after it.
+        let points: Vec<egui::Pos2> = (0..=400u16)
+            .map(|i| {
+                let x = f32::from(i) * 0.5;
+                egui::pos2(x, 40.0 * (100.0 - x).max(0.0).sqrt())
+            })
+            .collect();
+        let keep = simplified(&points, 0.15);
+        let kept: Vec<egui::Pos2> = points
+            .iter()
+            .zip(&keep)
+            .filter_map(|(p, k)| k.then_some(*p))
+            .collect();
+        assert!(keep[0] && keep[400], "the ends");
+        assert!(kept.len() < points.len() / 4, "{} kept", kept.len());
+        for p in &points {
+            let nearest = kept
+                .windows(2)
+                .map(|ab| distance_to_segment(*p, ab[0], ab[1]))
+                .fold(f32::INFINITY, f32::min);
+            assert!(nearest <= 0.15, "{p:?} is {nearest} away");
+        }
+        assert!(
+            kept.contains(&egui::pos2(100.0, 0.0)),
+            "the branch point itself"
+        );
+        // A point that is not finite splits the curve, and each piece keeps
+        // its ends.
+        let mut split = points[..5].to_vec();
+        split[2] = egui::pos2(f32::NAN, 0.0);
+        assert_eq!(simplified(&split, 0.15), [true, true, false, true, true]);
+    }
+
+    /// Whether the plot's view counted as settled in each of `frames`
+    /// frames of a 400 x 300 window, refitted in the frames `refit` names.
+    fn settled_in_frames(frames: usize, refit: impl Fn(usize) -> bool) -> Vec<bool> {
+        let ctx = egui::Context::default();
+        let mut answers = Vec::new();
+        for frame in 0..frames {
+            let input = egui::RawInput {
+                screen_rect: Some(egui::Rect::from_min_size(
+                    egui::Pos2::ZERO,
+                    vec2(400.0, 300.0),
+                )),
+                ..Default::default()
+            };
+            let refit = refit(frame);
+            let mut output = ctx.run_ui(input, |ui| {
+                let plot = Plot::new("settling").default_x_bounds(0.0, 1.0);
+                refit_if(plot, refit).show(ui, |plot_ui| {
+                    answers.push(view_settled(plot_ui, refit));
+                });
+            });
+            // No renderer takes the font atlas here.
+            output.textures_delta.clear();
+        }
+        answers
+    }
+
+    #[test]
+    fn a_plot_s_view_settles_when_two_frames_agree_and_never_in_a_refit() {
+        let answers = settled_in_frames(10, |frame| frame == 5);
+        // The first frames have no view before theirs (and the plot lays out
+        // its axes in the first ones); a refit frame is never settled, and
+        // the view settles again two frames after the last change.
+        assert!(!answers[0] && !answers[1], "{answers:?}");
+        assert!(answers[4], "settled before the refit: {answers:?}");
+        assert!(!answers[5], "the refit: {answers:?}");
+        assert!(answers[8] && answers[9], "settled again: {answers:?}");
     }
 }

@@ -9,7 +9,7 @@ use super::history::History;
 use super::locus_view::{
     EdgeMark, Side, ViewRect, deciding_extent, default_view, edge_marks, versus_load_extent,
 };
-use super::plot_frame::{Swatch, axes, legend_row, refit_if, thinned};
+use super::plot_frame::{Swatch, axes, curve, legend_row, refit_if, view_settled};
 use super::state::Overlay;
 use super::theme::{Theme, load_color};
 use crate::analysis::{C64, Locus, State};
@@ -76,6 +76,7 @@ pub fn root_locus_ui(
         .default_x_bounds(-half_width, half_width)
         .default_y_bounds(-half_height, half_height);
     refit_if(axes(plot, "Re λ (1/s)", "Im λ (rad/s)"), refit).show(ui, |plot_ui| {
+        let settled = view_settled(plot_ui, refit);
         plot_ui.vline(
             VLine::new("", 0.0)
                 .color(theme.axis)
@@ -83,9 +84,9 @@ pub fn root_locus_ui(
         );
         if let Some(other) = overlay {
             for branch in &other.locus.branches {
-                let points = thinned(plot_ui, branch.iter().map(|z| [z.re, z.im]));
+                let points = branch.iter().map(|z| [z.re, z.im]);
                 plot_ui.line(
-                    Line::new("", points)
+                    curve(plot_ui, settled, points)
                         .color(theme.overlay)
                         .width(1.5 * theme.stroke_scale),
                 );
@@ -103,13 +104,10 @@ pub fn root_locus_ui(
                     continue;
                 }
                 let (i0, i1) = (shown[k0], shown[k1]);
-                let points = thinned(
-                    plot_ui,
-                    shown[k0..=k1].iter().map(|&i| [branch[i].re, branch[i].im]),
-                );
+                let points = shown[k0..=k1].iter().map(|&i| [branch[i].re, branch[i].im]);
                 let mid = 0.5 * (locus.loads[i0] + locus.loads[i1]);
                 plot_ui.line(
-                    Line::new("", points)
+                    curve(plot_ui, settled, points)
                         .color(load_color(mid, min, max))
                         .width(2.0 * theme.stroke_scale),
                 );
@@ -218,6 +216,7 @@ pub fn versus_load_ui(
         .default_x_bounds(min, max)
         .default_y_bounds(-1.1 * extent, 1.1 * extent);
     refit_if(axes(plot, "p = P l/k", label), refit).show(ui, |plot_ui| {
+        let settled = view_settled(plot_ui, refit);
         for &(start, end, state) in ranges {
             let color = theme.state_color(state).gamma_multiply(0.18);
             plot_ui.span(Span::new(state.name(), start..=end).fill(color));
@@ -228,21 +227,14 @@ pub fn versus_load_ui(
             .into_iter()
             .chain([(locus, theme.text)]);
         for (shown, color) in layers {
-            // Not simplified: at most a few hundred samples per branch. A
-            // simplified branch has long segments, and where the tracking
-            // turns sharply at a branch point (a chain's flutter onset) the
-            // line's join drew a wedge along the whole segment before it.
             let samples = drawn_samples(shown);
             for branch in &shown.branches {
-                let points: Vec<[f64; 2]> = samples
-                    .iter()
-                    .map(|&i| {
-                        let z = branch[i];
-                        [shown.loads[i], if imaginary { z.im } else { z.re }]
-                    })
-                    .collect();
+                let points = samples.iter().map(|&i| {
+                    let z = branch[i];
+                    [shown.loads[i], if imaginary { z.im } else { z.re }]
+                });
                 plot_ui.line(
-                    Line::new("", PlotPoints::from(points))
+                    curve(plot_ui, settled, points)
                         .color(color)
                         .width(1.5 * theme.stroke_scale),
                 );

@@ -23,38 +23,43 @@ pub fn welcome_ui(ctx: &egui::Context, state: &AppState, actions: &mut Actions, 
     if !state.welcome() {
         return;
     }
-    let modal = egui::Modal::new(egui::Id::unique("welcome")).show(ctx, |ui| {
-        ui.set_max_width(34.0 * theme.text_size);
-        ui.heading("Welcome to zieglerlab");
-        for paragraph in WELCOME {
-            ui.add_space(0.4 * theme.text_size);
-            ui.label(paragraph);
-        }
-        ui.add_space(0.8 * theme.text_size);
-        ui.horizontal(|ui| {
-            let (name, text) = BUILT_IN[0];
-            if ui
-                .button("start the first lesson")
-                .on_hover_text("a few steps: predict where flutter starts, then watch")
-                .clicked()
-            {
-                match Lesson::read(text, &Tab::ids()) {
-                    Ok(lesson) => actions.push(Action::LessonOpen(Box::new(lesson))),
-                    Err(error) => actions.push(Action::Say(super::notice::Notice::error(format!(
-                        "lesson {name}: {error}"
-                    )))),
+    // Over the running column without dimming it: a translucent layer over
+    // the whole window costs a CPU renderer (Mesa's llvmpipe) a fifth of
+    // its frame, and the class sees the column move behind the text.
+    let modal = egui::Modal::new(egui::Id::unique("welcome"))
+        .backdrop_color(egui::Color32::TRANSPARENT)
+        .show(ctx, |ui| {
+            ui.set_max_width(34.0 * theme.text_size);
+            ui.heading("Welcome to zieglerlab");
+            for paragraph in WELCOME {
+                ui.add_space(0.4 * theme.text_size);
+                ui.label(paragraph);
+            }
+            ui.add_space(0.8 * theme.text_size);
+            ui.horizontal(|ui| {
+                let (name, text) = BUILT_IN[0];
+                if ui
+                    .button("start the first lesson")
+                    .on_hover_text("a few steps: predict where flutter starts, then watch")
+                    .clicked()
+                {
+                    match Lesson::read(text, &Tab::ids()) {
+                        Ok(lesson) => actions.push(Action::LessonOpen(Box::new(lesson))),
+                        Err(error) => actions.push(Action::Say(super::notice::Notice::error(
+                            format!("lesson {name}: {error}"),
+                        ))),
+                    }
+                    actions.push(Action::CloseWelcome);
                 }
-                actions.push(Action::CloseWelcome);
-            }
-            if ui
-                .button("explore on my own")
-                .on_hover_text("close this; the lessons stay at the top of the sidebar")
-                .clicked()
-            {
-                actions.push(Action::CloseWelcome);
-            }
+                if ui
+                    .button("explore on my own")
+                    .on_hover_text("close this; the lessons stay at the top of the sidebar")
+                    .clicked()
+                {
+                    actions.push(Action::CloseWelcome);
+                }
+            });
         });
-    });
     if modal.should_close() {
         actions.push(Action::CloseWelcome);
     }
