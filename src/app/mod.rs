@@ -514,7 +514,10 @@ impl ZieglerApp {
         ui.advance_cursor_after_rect(top);
         load_bar::load_bar_ui(ui, &self.state, &mut self.actions, theme);
         tab_bar_ui(ui, self.tab, &mut self.actions);
-        if ui.available_height() < min_plot_height {
+        // With the root locus beside the scene, or the tab in its place, the
+        // tab is on the screen already: never a second time below, whatever
+        // room the estimate above left there.
+        if locus_beside || ui.available_height() < min_plot_height {
             ui.weak(if locus_beside && self.state.answer_hidden() {
                 "The plots are hidden until the lesson reveals the answer; they need a taller window, or projector mode off (P).".to_owned()
             } else if tab_on_top {

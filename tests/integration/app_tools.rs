@@ -89,3 +89,38 @@ fn settings_are_pasted_from_the_clipboard() {
         .unwrap_or_default();
     assert!(said.contains("the clipboard holds no text"), "{said}");
 }
+
+/// Projector mode with each tab, on a small projector, a laptop and a full
+/// HD projector: every tab is on the screen once, never twice (at 1920x1080
+/// a tab shown in the column's place was drawn again below the tab bar, and
+/// the column was nowhere). The root locus tab shows its plots below the
+/// tab bar, or the complex plane beside the column and a note below.
+#[test]
+fn in_projector_mode_every_tab_is_shown_once() {
+    for size in [[1024.0, 768.0], [1280.0, 800.0], [1920.0, 1080.0]] {
+        for tab in Tab::all() {
+            let mut app = ZieglerApp::new(Settings {
+                projector: true,
+                ..Settings::default()
+            })
+            .unwrap();
+            app.show_tab(tab);
+            // The post-critical tab's diagram, computed in the background.
+            app.complete_background_work(tab);
+            let mut harness = egui_kittest::Harness::builder()
+                .with_size(size)
+                .build_ui(|ui| app.contents_ui(ui));
+            harness.run_steps(4);
+            let bars = harness.query_all_by_label("save PNG...").count();
+            let at = format!("{} at {size:?}", tab.title());
+            if tab == Tab::LOCUS {
+                let beside = harness
+                    .query_by_label_contains("The root locus is beside the column")
+                    .is_some();
+                assert_eq!(bars, usize::from(!beside), "{at}: {bars} tab bars");
+            } else {
+                assert_eq!(bars, 1, "{at}: {bars} tab bars");
+            }
+        }
+    }
+}
