@@ -456,18 +456,23 @@ impl ZieglerApp {
     /// small projector), the load bar, the tab bar and the tab.
     fn central_ui(&mut self, ui: &mut egui::Ui, theme: &Theme) {
         let height = ui.available_height();
-        // In front of a class the scene gets most of the height.
-        let scene_share = if self.state.settings().projector {
+        let min_plot_height = MIN_PLOT_HEIGHT * theme.text_size / 14.0;
+        let plots_fit = |scene_share: f32| {
+            (1.0 - scene_share) * height - below_scene_height(theme) >= min_plot_height
+        };
+        // In front of a class the scene gets most of the height, or half
+        // of it where that leaves the tab's plots room below (a full HD
+        // projector) and most of it does not.
+        let projector = self.state.settings().projector;
+        let scene_share = if projector && (plots_fit(0.6) || !plots_fit(0.5)) {
             0.6
         } else {
             0.5
         };
-        let min_plot_height = MIN_PLOT_HEIGHT * theme.text_size / 14.0;
         // On a projector too small for the tab's plots, the root
         // locus goes beside the scene: the class sees the column, the
         // load bar and the eigenvalues together.
-        let locus_beside = self.state.settings().projector
-            && (1.0 - scene_share) * height - below_scene_height(theme) < min_plot_height;
+        let locus_beside = projector && !plots_fit(scene_share);
         // While a lesson hides the answer, only the time histories show.
         let tab_hidden = self.state.answer_hidden() && self.tab != Tab::HISTORIES;
         let (top, _) = ui.allocate_exact_size(
