@@ -108,10 +108,7 @@ fn in_projector_mode_every_tab_is_shown_once() {
             app.show_tab(tab);
             // The post-critical tab's diagram, computed in the background.
             app.complete_background_work(tab);
-            let mut harness = egui_kittest::Harness::builder()
-                .with_size(size)
-                .build_ui(|ui| app.contents_ui(ui));
-            harness.run_steps(4);
+            let harness = harness_at(&mut app, size);
             let bars = harness.query_all_by_label("save PNG...").count();
             let at = format!("{} at {size:?}", tab.title());
             // A full HD projector has room for the column and any tab: the
