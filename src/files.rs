@@ -1,8 +1,10 @@
 //! Files written whole or not at all (a temporary file in the same folder,
 //! synced and renamed over the target or to a free name, with the
 //! permissions a new file or the one it replaces would have; devices and
-//! pipes are written directly; a temporary file left by a stopping signal
-//! is removed), and text files read with a bound on size.
+//! pipes are written directly, and a stream of the process named by a path,
+//! `/dev/stdout` or `/dev/fd/N`, where the shell opened it; a temporary
+//! file left by a stopping signal is removed), and text files read with a
+//! bound on size.
 
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -139,6 +141,17 @@ pub fn write_atomically(
         path: out.display().to_string(),
         why: e.to_string(),
     };
+    // A stream of this process named by a path (`--out /dev/stdout` with
+    // the shell's `>> results.csv`): written where the shell opened it,
+    // appended where it opened it for appending; renaming over the file
+    // behind it would destroy what it held.
+    if let Some(descriptor) = named_descriptor(out) {
+        let mut file = open_descriptor(descriptor).map_err(|e| error(&e))?;
+        let mut buffered = std::io::BufWriter::new(&mut file);
+        return write(&mut buffered)
+            .and_then(|()| buffered.flush())
+            .map_err(|e| error(&e));
+    }
     // A symbolic link is written through: the file it names is replaced,
     // the link stays (renaming over the link would replace the link).
     let target = link_target(out).map_err(|e| error(&e))?;
@@ -164,6 +177,81 @@ pub fn write_atomically(
         written_temporary(folder_of(out), permissions, write).map_err(|e| error(&e))?;
     file.persist(out).map_err(|e| error(&e.error))?;
     Ok(())
+}
+
+/// Most links followed from a path to the stream it names.
+const MOST_LINKS: usize = 40;
+
+/// The descriptor of this process that `path` names, if it names one:
+/// `/dev/stdout`, `/dev/stderr`, `/dev/fd/N`, `/proc/self/fd/N` or
+/// `/proc/<this process>/fd/N`, as typed or through symbolic links to them.
+/// Such a path is a stream the shell opened, not a file to replace.
+#[must_use]
+pub fn named_descriptor(path: &Path) -> Option<u32> {
+    let own = format!("/proc/{}/fd/", std::process::id());
+    let in_name = |path: &Path| -> Option<u32> {
+        let text = path.to_str()?;
+        match text {
+            "/dev/stdin" => Some(0),
+            "/dev/stdout" => Some(1),
+            "/dev/stderr" => Some(2),
+            _ => ["/dev/fd/", "/proc/self/fd/", own.as_str()]
+                .iter()
+                .find_map(|prefix| text.strip_prefix(prefix)?.parse().ok()),
+        }
+    };
+    let mut current = path.to_owned();
+    for _ in 0..MOST_LINKS {
+        if let Some(descriptor) = in_name(&current) {
+            return Some(descriptor);
+        }
+        // Only this hop's own link: the links of the folders above it
+        // (`/dev/fd` itself) would take the path past its name.
+        let next = std::fs::read_link(&current).ok()?;
+        current = if next.is_absolute() {
+            next
+        } else {
+            folder_of(&current).join(next)
+        };
+    }
+    None
+}
+
+/// Descriptor `descriptor` of this process opened for writing where it
+/// stands: standard output and error shared (their offset and append mode
+/// are the shell's); another one reopened through `/proc/self/fd` with its
+/// append mode, or at its offset, as `/proc/self/fdinfo` gives them.
+fn open_descriptor(descriptor: u32) -> std::io::Result<std::fs::File> {
+    use std::io::Seek as _;
+    use std::os::fd::AsFd as _;
+    /// `O_APPEND` in the octal flags of `/proc/self/fdinfo`.
+    const APPEND_FLAG: u32 = 0o2000;
+    match descriptor {
+        1 => return Ok(std::io::stdout().as_fd().try_clone_to_owned()?.into()),
+        2 => return Ok(std::io::stderr().as_fd().try_clone_to_owned()?.into()),
+        _ => {}
+    }
+    let info = std::fs::read_to_string(format!("/proc/self/fdinfo/{descriptor}"))?;
+    let field = |name: &str| {
+        info.lines()
+            .find_map(|line| line.strip_prefix(name))
+            .map(str::trim)
+    };
+    let append = field("flags:")
+        .and_then(|flags| u32::from_str_radix(flags, 8).ok())
+        .is_some_and(|flags| flags & APPEND_FLAG != 0);
+    let path = format!("/proc/self/fd/{descriptor}");
+    let mut file = std::fs::File::options()
+        .write(true)
+        .append(append)
+        .open(&path)?;
+    if !append
+        && file.metadata()?.is_file()
+        && let Some(offset) = field("pos:").and_then(|pos| pos.parse::<u64>().ok())
+    {
+        file.seek(std::io::SeekFrom::Start(offset))?;
+    }
+    Ok(file)
 }
 
 /// `image` as a PNG file at `out`, written as [`write_atomically`] does.

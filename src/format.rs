@@ -179,14 +179,21 @@ impl std::fmt::Display for Shown {
 }
 
 /// A number for a data file: every digit needed to read it back exactly
-/// (Rust's shortest round-trip form), and zero without a sign: a -0 from
-/// rounding means nothing and reads as a negative number to a sign test.
+/// (Rust's shortest round-trip form), in exponent form beyond 1e16 and
+/// below 1e-7 (plain, 1e150 is 151 digits and 1e-300 is 302), and zero
+/// without a sign: a -0 from rounding means nothing and reads as a negative
+/// number to a sign test.
 pub struct Exact(pub f64);
+
+/// Magnitudes [`Exact`] writes plain; outside, in exponent form.
+const PLAIN_EXACT: std::ops::Range<f64> = 1e-7..1e16;
 
 impl std::fmt::Display for Exact {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         if self.0 == 0.0 {
             f.write_str("0")
+        } else if self.0.is_finite() && !PLAIN_EXACT.contains(&self.0.abs()) {
+            write!(f, "{:e}", self.0)
         } else {
             write!(f, "{}", self.0)
         }

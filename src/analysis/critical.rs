@@ -4,7 +4,10 @@
 use super::AnalysisError;
 use super::C64;
 use super::crossing::{Transition, refine, state_at};
-use super::locus::{Crossings, Locus, load_grid, load_resolution, locus_until, max_samples};
+use super::locus::{
+    Crossings, LARGEST_LOAD, Locus, check_largest_load, load_grid, load_resolution, locus_until,
+    max_samples,
+};
 use super::pencil::AffinePencil;
 use super::stability::{State, classify};
 
@@ -81,9 +84,6 @@ const ROUNDED_AWAY: f64 = 1e12;
 /// Samples of the range beyond [`ROUNDED_AWAY`].
 const ROUNDED_AWAY_SAMPLES: usize = 100;
 
-/// The largest load a range may reach, as for the load itself (`--set load`).
-pub const LARGEST_LOAD: f64 = crate::model::LARGEST_DERIVED;
-
 /// The tracked locus that brackets every change of stability over
 /// `[load_min, load_max]`. Up to ten times the column's natural range
 /// ([`AffinePencil::natural_load_max`]), [`BRACKET_SAMPLES`] evenly spaced
@@ -117,18 +117,42 @@ pub fn bracketing_locus_reporting(
     load_max: f64,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Locus, AnalysisError> {
-    if load_max > LARGEST_LOAD {
-        return Err(AnalysisError::BadRange {
-            what: "load-max",
-            value: load_max,
-            allowed: "must be at most 1e150, the largest load the analysis resolves",
-        });
-    }
+    sectioned_locus(pencil, (load_min, load_max), Crossings::Bracketed, progress)
+}
+
+/// The locus a figure draws over `[load_min, load_max]`: the loads of
+/// [`bracketing_locus`] (so a wide range finds the windows `critical`
+/// finds, and a range past [`LARGEST_LOAD`] is refused as there), with
+/// every crossing of an axis refined as a plot shows it.
+///
+/// # Errors
+/// As [`bracketing_locus`].
+pub fn plotted_locus(
+    pencil: &AffinePencil,
+    load_min: f64,
+    load_max: f64,
+) -> Result<Locus, AnalysisError> {
+    sectioned_locus(
+        pencil,
+        (load_min, load_max),
+        Crossings::Refined,
+        &mut |_, _| {},
+    )
+}
+
+/// [`bracketing_locus_reporting`], refining `crossings`.
+fn sectioned_locus(
+    pencil: &AffinePencil,
+    (load_min, load_max): (f64, f64),
+    crossings: Crossings,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Locus, AnalysisError> {
+    check_largest_load(load_max)?;
     if within_natural_decade(pencil, load_min, load_max) {
         return evenly_bracketed_until(
             pencil,
-            load_min,
-            load_max,
+            (load_min, load_max),
+            crossings,
             counting(0, BRACKET_SAMPLES - 1, progress),
         );
     }
@@ -148,14 +172,18 @@ pub fn bracketing_locus_reporting(
     }
     // Each section's first load is the one before's last: the steps count.
     let total = BRACKET_SAMPLES - 1 + sections.iter().map(|&(_, _, n)| n - 1).sum::<usize>();
-    let mut whole =
-        evenly_bracketed_until(pencil, load_min, natural, counting(0, total, progress))?;
+    let mut whole = evenly_bracketed_until(
+        pencil,
+        (load_min, natural),
+        crossings,
+        counting(0, total, progress),
+    )?;
     let mut done = BRACKET_SAMPLES - 1;
     for (start, end, samples) in sections {
         whole.extend_with(&locus_until(
             pencil,
             (start, end, samples),
-            Crossings::Bracketed,
+            crossings,
             counting(done, total, progress),
         )?);
         done += samples - 1;
@@ -195,15 +223,20 @@ pub(super) fn first_loss_within(
 ) -> Result<Option<Transition>, AnalysisError> {
     let mut seen_stable = false;
     let mut past = None;
-    let bracket = evenly_bracketed_until(pencil, 0.0, load_max, |p, eigenvalues| {
-        let stable = classify(eigenvalues, pencil.scale_per_s(p)).state == State::Stable;
-        seen_stable |= stable;
-        if seen_stable && !stable && past.is_none() {
-            past = Some(0);
-        }
-        past = past.map(|n: usize| n + 1);
-        past.is_some_and(|n| n > PAST_FIRST_LOSS)
-    })?;
+    let bracket = evenly_bracketed_until(
+        pencil,
+        (0.0, load_max),
+        Crossings::Bracketed,
+        |p, eigenvalues| {
+            let stable = classify(eigenvalues, pencil.scale_per_s(p)).state == State::Stable;
+            seen_stable |= stable;
+            if seen_stable && !stable && past.is_none() {
+                past = Some(0);
+            }
+            past = past.map(|n: usize| n + 1);
+            past.is_some_and(|n| n > PAST_FIRST_LOSS)
+        },
+    )?;
     Ok(transitions_along(pencil, &bracket, (0.0, load_max))?
         .into_iter()
         .find(|t| t.from == State::Stable))
@@ -214,8 +247,8 @@ pub(super) fn first_loss_within(
 /// [`locus_until`]).
 fn evenly_bracketed_until(
     pencil: &AffinePencil,
-    load_min: f64,
-    load_max: f64,
+    (load_min, load_max): (f64, f64),
+    crossings: Crossings,
     stop: impl FnMut(f64, &[C64]) -> bool,
 ) -> Result<Locus, AnalysisError> {
     // A range only a few units in the last place wide holds fewer distinct loads.
@@ -238,12 +271,7 @@ fn evenly_bracketed_until(
     } else {
         1
     };
-    locus_until(
-        pencil,
-        (load_min, load_max, samples),
-        Crossings::Bracketed,
-        stop,
-    )
+    locus_until(pencil, (load_min, load_max, samples), crossings, stop)
 }
 
 /// Every change of stability over the loads of `locus` (a tracked, refined

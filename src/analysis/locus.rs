@@ -112,6 +112,25 @@ impl Locus {
     }
 }
 
+/// The largest load a range may reach, as for the load itself (`--set load`).
+pub const LARGEST_LOAD: f64 = crate::model::LARGEST_DERIVED;
+
+/// Refuses a range reaching past [`LARGEST_LOAD`]: beyond it the column's
+/// stiffness is far below rounding and the eigenvalues are noise in scale.
+///
+/// # Errors
+/// `load_max` above [`LARGEST_LOAD`].
+pub(crate) fn check_largest_load(load_max: f64) -> Result<(), AnalysisError> {
+    if load_max > LARGEST_LOAD {
+        return Err(AnalysisError::BadRange {
+            what: "load-max",
+            value: load_max,
+            allowed: "must be at most 1e150, the largest load the analysis resolves",
+        });
+    }
+    Ok(())
+}
+
 /// The evenly spaced loads from `min` to `max` inclusive.
 ///
 /// # Errors
@@ -431,6 +450,7 @@ fn track(
         });
     }
     let grid = load_grid(min, max, samples)?;
+    check_largest_load(max)?;
     let mut refinement_left = (REFINED_PER_SAMPLE * grid.len()).max(MIN_REFINED_SAMPLES);
     // Never below a few units in the last place: p + step must move p.
     let min_step = ((max - min) * MIN_STEP_FRACTION).max(load_resolution(max));

@@ -19,15 +19,17 @@ mod roots;
 mod stability;
 
 pub use critical::{
-    BRACKET_SAMPLES, LARGEST_LOAD, bracketing_locus, bracketing_locus_reporting, critical_loads,
-    critical_loads_along,
+    BRACKET_SAMPLES, bracketing_locus, bracketing_locus_reporting, critical_loads,
+    critical_loads_along, plotted_locus,
 };
 pub use crossing::{Transition, stability_ranges};
 pub use cycles::{
     Branch, BranchEnd, Cycle, MAX_AMPLITUDE_RAD, NoBranch, Onset, cycle_branches, cycles_at,
 };
 pub use hopf::{Derivatives, Hopf, HopfKind, NoHopf, Steps as HopfSteps, hopf_at, is_hopf};
-pub use locus::{Locus, MAX_HELD_EIGENVALUES, load_grid, locus, locus_streamed, max_samples};
+pub use locus::{
+    LARGEST_LOAD, Locus, MAX_HELD_EIGENVALUES, load_grid, locus, locus_streamed, max_samples,
+};
 pub use map::{
     Cell, MapSpec, Row, RowResult, boundaries as map_boundaries, compute as compute_map,
     default_map_axis,

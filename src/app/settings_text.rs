@@ -24,10 +24,22 @@ pub struct Read {
 pub enum SettingsError {
     #[error("not settings text: {0}")]
     NotSettings(String),
+    #[error(
+        "the text holds {bytes} bytes; settings text is at most {MOST_SETTINGS_BYTES} (the longest the app writes is under 2000)"
+    )]
+    TooLong { bytes: usize },
 }
 
 /// The most characters of a line a message repeats.
 const MOST_LINE_CHARS: usize = 60;
+
+/// The longest settings text read, in bytes: every parameter changed is
+/// under 2 kB, so this is text of some other kind (and a reader bounded by
+/// it never keeps the window waiting).
+pub const MOST_SETTINGS_BYTES: usize = 16 * 1024;
+
+/// The most lines a message names as ignored; the rest are counted.
+const MOST_IGNORED_NAMED: usize = 10;
 
 impl Settings {
     /// The settings as text: the preset, every parameter that differs from
@@ -67,11 +79,26 @@ impl Settings {
 /// # Errors
 /// Text with no settings in it at all.
 pub fn read(text: &str) -> Result<Read, SettingsError> {
+    if text.len() > MOST_SETTINGS_BYTES {
+        return Err(SettingsError::TooLong { bytes: text.len() });
+    }
     // Text saved by an editor that writes a byte-order mark reads the same.
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    if text.trim_start().starts_with('(') {
-        return read_ron(text);
+    let mut read = if text.trim_start().starts_with('(') {
+        read_ron(text)?
+    } else {
+        read_lines(text)?
+    };
+    let more = read.ignored.len().saturating_sub(MOST_IGNORED_NAMED);
+    if more > 0 {
+        read.ignored.truncate(MOST_IGNORED_NAMED);
+        read.ignored.push(format!("{more} more"));
     }
+    Ok(read)
+}
+
+/// [`read`] of the `name = value` form.
+fn read_lines(text: &str) -> Result<Read, SettingsError> {
     let mut ignored = Vec::new();
     let lines = name_value_lines(text, &mut ignored);
     if lines.is_empty() {
@@ -80,17 +107,19 @@ pub fn read(text: &str) -> Result<Read, SettingsError> {
         ));
     }
     let mut settings = Settings::default();
-    let mut seen: Vec<&str> = Vec::new();
+    let mut seen = std::collections::HashSet::new();
     let mut entries = Vec::new();
     let mut preset = None;
     for (name, value) in lines {
         let value = clipped(value, MOST_LINE_CHARS);
         let value = value.as_str();
-        if seen.contains(&name) {
-            ignored.push(format!("{name} (given twice; the first is kept)"));
+        if !seen.insert(name) {
+            ignored.push(format!(
+                "{} (given twice; the first is kept)",
+                clipped(name, MOST_LINE_CHARS)
+            ));
             continue;
         }
-        seen.push(name);
         match name {
             "preset" => match value.parse::<PresetId>() {
                 Ok(id) => preset = Some(id),
@@ -184,7 +213,8 @@ pub(super) fn take_speed(settings: &mut Settings, speed: f64, ignored: &mut Vec<
         settings.speed = speed;
     } else {
         ignored.push(format!(
-            "speed ({speed} is outside {} to {})",
+            "speed ({} is outside {} to {})",
+            crate::format::Shown(speed),
             SPEED_RANGE.start(),
             SPEED_RANGE.end()
         ));
@@ -299,6 +329,30 @@ mod tests {
             assert!(ignored.contains(fragment), "{fragment}: {ignored}");
         }
         assert_eq!(read.ignored.len(), 7, "{ignored}");
+    }
+
+    /// Text of many lines is read in one pass and named briefly: 16 kB
+    /// of repeated or bad lines name ten and count the rest; longer text is
+    /// refused by its size before any line is read.
+    #[test]
+    fn long_text_is_bounded_and_named_briefly() {
+        let repeated = format!("preset = roller\n{}", "speed = 2\n".repeat(1500));
+        assert!(repeated.len() <= MOST_SETTINGS_BYTES);
+        let read = read(&repeated).unwrap();
+        assert_eq!(read.settings.speed, 2.0);
+        assert_eq!(read.ignored.len(), MOST_IGNORED_NAMED + 1);
+        assert_eq!(read.ignored.last().unwrap(), "1489 more");
+        let huge = "speed = 2\n".repeat(300_000);
+        assert_eq!(
+            super::read(&huge).unwrap_err(),
+            SettingsError::TooLong { bytes: huge.len() }
+        );
+        assert!(
+            super::read(&huge)
+                .unwrap_err()
+                .to_string()
+                .contains("at most 16384")
+        );
     }
 
     /// The vocabulary of `--set`: the load and the groups read as they do

@@ -7,6 +7,7 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use super::SETTINGS_KEY;
+use crate::format::Shown;
 
 /// The zoom factors egui's own settings offer.
 const ZOOM_RANGE: std::ops::RangeInclusive<f64> = 0.2..=5.0;
@@ -28,7 +29,7 @@ fn harmful(key: &str, value: &str) -> Option<String> {
     match key {
         "egui" => number_after(value, "zoom_factor:")
             .filter(|zoom| !ZOOM_RANGE.contains(zoom))
-            .map(|zoom| format!("the zoom factor {zoom} (allowed 0.2 to 5)")),
+            .map(|zoom| format!("the zoom factor {} (allowed 0.2 to 5)", Shown(zoom))),
         "window" => {
             let size = value
                 .find("inner_size_points:")
@@ -43,21 +44,63 @@ fn harmful(key: &str, value: &str) -> Option<String> {
                 && WINDOW_POINTS.contains(&height)
                 && scale.is_finite()
                 && scale > 0.0;
-            (!sound)
-                .then(|| format!("the window geometry {width} x {height} points at scale {scale}"))
+            (!sound).then(|| {
+                format!(
+                    "the window geometry {} x {} points at scale {}",
+                    Shown(width),
+                    Shown(height),
+                    Shown(scale)
+                )
+            })
         }
         _ => None,
     }
 }
 
-/// A copy of `path` beside it, named with the time, that no autosave touches.
+/// The local date and time in a name (`2026-12-03T11-40-32`), so copies
+/// made on different days sort and read as dates.
+fn stamp() -> String {
+    jiff::Zoned::now().strftime("%Y-%m-%dT%H-%M-%S").to_string()
+}
+
+/// `path` with `.what-<date>` after its name (`app.ron.unreadable-<date>`),
+/// at a name no file holds yet.
+fn beside(path: &Path, what: &str) -> PathBuf {
+    let name = path
+        .file_name()
+        .map_or_else(|| "app.ron".into(), |n| n.to_string_lossy().into_owned());
+    let stem = format!("{name}.{what}-{}", stamp());
+    let mut candidate = path.with_file_name(&stem);
+    let mut k = 2;
+    while std::fs::symlink_metadata(&candidate).is_ok() {
+        candidate = path.with_file_name(format!("{stem}-{k}"));
+        k += 1;
+    }
+    candidate
+}
+
+/// A copy of `path` beside it, named with the date, that no autosave
+/// touches.
 fn keep_copy(path: &Path) -> std::io::Result<PathBuf> {
-    let secs = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs());
-    let copy = path.with_extension(format!("ron.unreadable-{secs}"));
+    let copy = beside(path, "unreadable");
     std::fs::copy(path, &copy)?;
     Ok(copy)
+}
+
+/// What to say of a store that could not be read (`why`): a copy of it is
+/// kept beside, or, where none can be made, the store is moved aside so
+/// the autosave cannot overwrite what nobody has a copy of.
+fn unreadable(path: &Path, why: &str) -> String {
+    match keep_copy(path) {
+        Ok(copy) => format!(
+            "the stored state could not be read ({why}); a copy is kept at {}; starting from the defaults",
+            copy.display()
+        ),
+        Err(copy_error) => move_aside(
+            path,
+            &format!("could not be read ({why}) nor copied ({copy_error})"),
+        ),
+    }
 }
 
 /// The largest store read, in bytes: a few kB are written; anything near
@@ -68,10 +111,7 @@ const MOST_STORE_BYTES: u64 = 16 << 20;
 /// be the app's store), so that eframe neither blocks on reading it nor
 /// fails to write the settings. Says what was done.
 fn move_aside(path: &Path, why: &str) -> String {
-    let secs = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs());
-    let aside = path.with_extension(format!("ron.unusable-{secs}"));
+    let aside = beside(path, "unusable");
     match std::fs::rename(path, &aside) {
         Ok(()) => format!(
             "the stored state {} {why}; it is moved to {} and the defaults are used",
@@ -147,20 +187,15 @@ fn check_stored_entries(path: &Path) -> Option<String> {
             ),
         ));
     }
-    let text = crate::files::read_text(path, MOST_STORE_BYTES).ok()?;
+    // Bytes that are not UTF-8 (a Latin-1 edit, binary junk) make eframe
+    // start from nothing and autosave over the file: kept first.
+    let text = match crate::files::read_text(path, MOST_STORE_BYTES) {
+        Ok(text) => text,
+        Err(error) => return Some(unreadable(path, &error.why)),
+    };
     let mut entries: BTreeMap<String, String> = match ron::from_str(&text) {
         Ok(entries) => entries,
-        Err(error) => {
-            return Some(match keep_copy(path) {
-                Ok(copy) => format!(
-                    "the stored state could not be read ({error}); a copy is kept at {}; starting from the defaults",
-                    copy.display()
-                ),
-                Err(copy_error) => format!(
-                    "the stored state could not be read ({error}) nor copied aside ({copy_error}); starting from the defaults"
-                ),
-            });
-        }
+        Err(error) => return Some(unreadable(path, &error.to_string())),
     };
     let harmful_entries: Vec<(String, String)> = entries
         .iter()
@@ -287,6 +322,56 @@ mod tests {
         );
         assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 2);
         std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    /// A store that is not UTF-8 (a Latin-1 byte, binary junk) is said to
+    /// be unreadable and kept byte for byte beside, named with the date,
+    /// before eframe's autosave can overwrite it.
+    #[test]
+    fn a_store_that_is_not_utf8_is_kept_and_said_so() {
+        // "café" with é as the one Latin-1 byte 0xe9.
+        let latin1 = [
+            &br#"{"zieglerlab-settings":"preset = roller\n# caf"#[..],
+            &[0xe9],
+            br#""}"#,
+        ]
+        .concat();
+        for (name, bytes) in [
+            ("latin1", latin1),
+            ("binary", vec![0u8, 0xff, 0xfe, 7, 0x80]),
+        ] {
+            let dir = dir(name);
+            std::fs::create_dir_all(&dir).unwrap();
+            let path = dir.join("app.ron");
+            std::fs::write(&path, &bytes).unwrap();
+            let note = check_stored_file(&path).unwrap();
+            assert!(
+                note.contains("could not be read (it is not UTF-8")
+                    && note.contains("a copy is kept at"),
+                "{name}: {note}"
+            );
+            let copies: Vec<PathBuf> = std::fs::read_dir(&dir)
+                .unwrap()
+                .map(|e| e.unwrap().path())
+                .filter(|p| p != &path)
+                .collect();
+            assert_eq!(copies.len(), 1, "{name}");
+            let copy_name = copies[0]
+                .file_name()
+                .unwrap()
+                .to_string_lossy()
+                .into_owned();
+            assert!(
+                copy_name.starts_with("app.ron.unreadable-20"),
+                "{copy_name}"
+            );
+            assert_eq!(
+                std::fs::read(&copies[0]).unwrap(),
+                bytes,
+                "{name}: byte for byte"
+            );
+            std::fs::remove_dir_all(&dir).unwrap();
+        }
     }
 
     /// A folder or a pipe where the store should be is moved aside before

@@ -12,14 +12,14 @@ use serde_json::json;
 
 use zieglerlab::analysis::{
     AffinePencil, Branch, Cycle, NoBranch, Onset, State, classify, critical_loads, cycle_branches,
-    cycles_at, load_grid, stability_ranges,
+    cycles_at, stability_ranges,
 };
 use zieglerlab::figure::{self, BifurcationData, Content, Page, render};
 use zieglerlab::format::{Exact, Shown};
 use zieglerlab::model::Model;
 use zieglerlab::sim::{Status, SweepStep, SweepTimes, sweep};
 
-use super::map::{AxisArg, check_load_axis};
+use super::map::{AxisArg, check_load_axis, load_axis_grid};
 use super::output::{check_output, write_atomically};
 use super::{LOAD_AXIS, ModelArgs, printable, progress_bar, spinner};
 
@@ -103,16 +103,23 @@ pub fn run(args: &Args) -> Result<()> {
     }
     let (name, model) = args.model.build()?;
     let loads = loads(&args.x)?;
-    for (what, value) in [
-        ("--settle-periods", args.settle_periods),
-        ("--measure-periods", args.measure_periods),
-    ] {
-        if !(value.is_finite() && value > 0.0 && value <= MAX_SWEEP_PERIODS) {
-            anyhow::bail!(
-                "{what} {}: must be a number of periods in (0, {MAX_SWEEP_PERIODS}]",
-                Shown(value)
-            );
-        }
+    if !(args.settle_periods.is_finite()
+        && args.settle_periods > 0.0
+        && args.settle_periods <= MAX_SWEEP_PERIODS)
+    {
+        anyhow::bail!(
+            "--settle-periods {}: must be a number of periods in (0, {MAX_SWEEP_PERIODS}]",
+            Shown(args.settle_periods)
+        );
+    }
+    // The largest angle of a swing is only seen over a whole period.
+    if !(args.measure_periods.is_finite()
+        && (1.0..=MAX_SWEEP_PERIODS).contains(&args.measure_periods))
+    {
+        anyhow::bail!(
+            "--measure-periods {}: must be a number of periods from 1 to {MAX_SWEEP_PERIODS} (the largest angle of a swing is seen over a whole period)",
+            Shown(args.measure_periods)
+        );
     }
     let (lo, hi) = (args.x.min, args.x.max);
     let pencil = AffinePencil::new(&model)?;
@@ -165,7 +172,7 @@ fn loads(x: &AxisArg) -> Result<Vec<f64>> {
         );
     }
     // The grid of the other commands (`locus`, `map`): the same loads.
-    Ok(load_grid(x.min, x.max, x.count)?)
+    load_axis_grid(x)
 }
 
 /// The straight column at each load: stable or not, at rest.

@@ -30,9 +30,6 @@ pub struct Args {
     json: bool,
 }
 
-/// Changes of stability listed when the stability is not resolved.
-const UNRESOLVED_LISTED: usize = 20;
-
 pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     let (name, model) = args.model.build()?;
     let load_min = args.load_min;
@@ -58,11 +55,11 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     if let Some(warning) = &warning {
         eprintln!("warning: {}", printable(warning));
     }
-    // Where rounding decides the states, the changes it makes can number
-    // thousands (a roller of mass nu = 1e-50): list the first few and count
-    // the rest, rather than bury the warning.
+    // Where rounding decides the states, the changes it makes are noise
+    // (thousands, for a roller of mass nu = 1e-50): none is listed as if it
+    // were found; they are counted.
     let unlisted = if warning.is_some() {
-        transitions.len().saturating_sub(UNRESOLVED_LISTED)
+        transitions.len()
     } else {
         0
     };
@@ -93,7 +90,7 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
         Shown(load_min),
         Shown(load_max)
     )?;
-    if transitions.is_empty() {
+    if transitions.is_empty() && unlisted == 0 {
         writeln!(out, "  none")?;
     }
     // The roller's own load q = R l/k = p / mu, beside p.
@@ -114,7 +111,7 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     if unlisted > 0 {
         writeln!(
             out,
-            "  ... and {unlisted} more changes, not listed: the stability is not resolved (see the warning)"
+            "  not resolved: the {unlisted} changes that rounding makes over this range are not listed (see the warning)"
         )?;
     }
     Ok(())

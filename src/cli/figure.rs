@@ -7,6 +7,7 @@ use clap::ValueEnum;
 
 use zieglerlab::analysis::{BRACKET_SAMPLES, DampingKind, RowResult, default_map_axis, load_grid};
 use zieglerlab::figure::{Analysed, Content, Format, MapData, Page, ParadoxData, analyse, render};
+use zieglerlab::format::{Shown, number_text};
 use zieglerlab::model::PresetId;
 
 use super::map::{AxisArg, complete_rows, compute_rows, map_spec, warn_if_unresolved};
@@ -160,19 +161,45 @@ pub fn run(args: &Args) -> Result<()> {
     })?;
     check_output(&args.out, false)?;
     args.check_options()?;
-    // The page is checked before the work (a map takes seconds).
+    // The page is checked before the work (a map takes seconds); a height
+    // not typed is the width's, said so.
     let page = args.page();
+    let (lowest, highest) = Page::WIDTH_MM;
+    if args.height_mm.is_none()
+        && (lowest..=highest).contains(&args.width_mm)
+        && !(lowest..=highest).contains(&page.height_mm)
+    {
+        let aspect = default_aspect(args.kind);
+        anyhow::bail!(
+            "--width-mm {}: a {} figure is {} times as tall as it is wide unless --height-mm is given, here {} mm, beyond the page's {lowest} to {highest} mm; give --height-mm, or a width of {} to {} mm",
+            Shown(args.width_mm),
+            args.kind_name(),
+            number_text(aspect),
+            number_text(page.height_mm),
+            number_text((lowest / aspect).max(lowest).ceil()),
+            number_text((highest / aspect).min(highest).floor())
+        );
+    }
     page.check(format)?;
     let (preset, model) = args.model.build()?;
     let rendered = match args.kind {
         Kind::Locus | Kind::ReIm => {
             let load_min = args.load_min.unwrap_or(0.0);
             let load_max = args.load_max.unwrap_or_else(|| model.load_bar_max_p());
-            // The range is checked once, with the main model's words.
+            // The range is checked once, with the main model's words; the
+            // analysis has the rules of `critical` (at most 1e150).
             load_grid(load_min, load_max, BRACKET_SAMPLES)?;
             let progress = progress_bar(1 + args.overlay.len() as u64, "loci");
             let each = |name: &str, model: &zieglerlab::model::Model| -> Result<Analysed> {
-                let analysed = analyse(name, model, load_min, load_max, BRACKET_SAMPLES)?;
+                let analysed = analyse(name, model, load_min, load_max)?;
+                if let Some(warning) = &analysed.warning {
+                    progress.suspend(|| {
+                        eprintln!(
+                            "warning: {name}: {}; no critical load is drawn and no range tinted",
+                            printable(warning)
+                        );
+                    });
+                }
                 progress.inc(1);
                 Ok(analysed)
             };

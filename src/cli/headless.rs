@@ -141,7 +141,10 @@ pub fn render_frames(
     let background =
         drawn.filter(|&tab| [Tab::MAP, Tab::PARADOX, Tab::POST_CRITICAL].contains(&tab));
     if let Some(tab) = background {
+        // A long chain's map takes minutes: say what is being waited for.
+        let working = super::spinner(&format!("computing the {} tab", tab.title()));
         app.complete_background_work(tab);
+        working.finish_and_clear();
     }
     let previous_hook = std::panic::take_hook();
     std::panic::set_hook(Box::new(|_| {}));

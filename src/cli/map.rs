@@ -9,7 +9,8 @@ use anyhow::Result;
 use clap::ValueEnum;
 
 use zieglerlab::analysis::{
-    AffinePencil, MapSpec, Row, RowResult, bracketing_locus, compute_map, resolution_warning,
+    AffinePencil, AnalysisError, LARGEST_LOAD, MapSpec, Row, RowResult, bracketing_locus,
+    compute_map, load_grid, resolution_warning,
 };
 use zieglerlab::model::{Axis, Key, Model, Shown};
 
@@ -147,18 +148,23 @@ pub fn run(args: &Args) -> Result<()> {
 /// axis or the load again.
 pub fn map_spec(model: Model, x: &AxisArg, y: &AxisArg) -> Result<MapSpec> {
     check_load_axis(x, "the map's first axis")?;
+    load_axis_grid(x)?;
     let axis = Axis::parse(&y.name, &model)?;
     if axis == Axis::Key(Key::Load) {
         anyhow::bail!("--y {}: the second axis cannot be the load again", y.text);
     }
-    Ok(MapSpec {
+    let spec = MapSpec {
         model,
         axis,
         load_range: (x.min, x.max),
         loads: x.count,
         axis_range: (y.min, y.max),
         values: y.count,
-    })
+    };
+    // The second axis's ends and grid, named as typed, before any work.
+    spec.value_grid()
+        .map_err(|error| in_axis_words("--y", y, &error))?;
+    Ok(spec)
 }
 
 /// That `--x` is the load from 0 up (`what`: the axis, for the message).
@@ -173,6 +179,50 @@ pub fn check_load_axis(x: &AxisArg, what: &str) -> Result<()> {
         anyhow::bail!("--x {}: loads must be >= 0", x.text);
     }
     Ok(())
+}
+
+/// The loads of `--x` (checked by [`check_load_axis`] first): at most
+/// [`LARGEST_LOAD`], and a grid of distinct loads, refused in the axis's
+/// own words.
+///
+/// # Errors
+/// A range past [`LARGEST_LOAD`] or a grid the loads cannot hold.
+pub fn load_axis_grid(x: &AxisArg) -> Result<Vec<f64>> {
+    if x.max > LARGEST_LOAD {
+        anyhow::bail!(
+            "--x {}: MAX = {}: must be at most {}, the largest load the analysis resolves",
+            x.text,
+            Shown(x.max),
+            Shown(LARGEST_LOAD)
+        );
+    }
+    load_grid(x.min, x.max, x.count).map_err(|error| in_axis_words("--x", x, &error))
+}
+
+/// `error` about the grid of the axis `flag` said in the axis's words
+/// (`MIN`, `MAX`, `N`), not in those of `critical`'s options.
+fn in_axis_words(flag: &str, x: &AxisArg, error: &AnalysisError) -> anyhow::Error {
+    match error {
+        AnalysisError::BadRange {
+            what,
+            value,
+            allowed,
+        } => {
+            let part = match *what {
+                "load-min" => "MIN",
+                "load-max" => "MAX",
+                "samples" => "N",
+                "axis range" => "MIN:MAX",
+                other => other,
+            };
+            let allowed = allowed
+                .replace("load-min", "MIN")
+                .replace("load-max", "MAX")
+                .replace("samples", "N");
+            anyhow::anyhow!("{flag} {}: {part} = {}: {allowed}", x.text, Shown(*value))
+        }
+        other => anyhow::anyhow!("{flag} {}: {other}", x.text),
+    }
 }
 
 /// Every row of a computed map, or why one has no analysis (`y_text`: the

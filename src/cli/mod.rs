@@ -43,6 +43,45 @@ struct Cli {
     /// the environment variable `ZIEGLERLAB_RENDERER`; the flag wins.
     #[arg(long, value_enum)]
     renderer: Option<RendererArg>,
+    /// Seconds a command may run before it stops with a message (status
+    /// 124), 1 to 604800; the slowest allowed inputs take minutes (see the
+    /// README's "Bad input and extremes").
+    #[arg(long, global = true, value_name = "SECS", default_value_t = DEFAULT_TIME_LIMIT_SECS, allow_hyphen_values = true)]
+    time_limit: f64,
+}
+
+/// The time a command may run by default, in seconds (15 minutes: the
+/// slowest answer the README lists, a 32-rod chain's limit cycles, takes 6).
+const DEFAULT_TIME_LIMIT_SECS: f64 = 900.0;
+
+/// The longest time limit that may be asked for: a week.
+const MOST_TIME_LIMIT_SECS: f64 = 604_800.0;
+
+/// Status of a command stopped by its time limit (as `timeout` reports it).
+const TIMED_OUT: i32 = 124;
+
+/// Stops the process after `limit_secs`, watched on a thread of its own:
+/// the file being written is removed and one line says why, so no input
+/// keeps a command (or a script waiting on it) running without end.
+fn stop_after(limit_secs: f64) {
+    let watch = move || {
+        std::thread::sleep(std::time::Duration::from_secs_f64(limit_secs));
+        zieglerlab::files::remove_unfinished();
+        // A progress bar may hold the terminal's line: start a new one.
+        if std::io::IsTerminal::is_terminal(&std::io::stderr()) {
+            eprintln!();
+        }
+        eprintln!(
+            "error: stopped after {} s, the time limit of a command (--time-limit SECS allows more); no file was left half-written",
+            zieglerlab::format::number_text(limit_secs)
+        );
+        std::process::exit(TIMED_OUT);
+    };
+    drop(
+        std::thread::Builder::new()
+            .name("time-limit".to_owned())
+            .spawn(watch),
+    );
 }
 
 /// The environment variable that chooses the window's renderer.
@@ -266,6 +305,15 @@ pub fn run() -> ExitCode {
             }
         };
     };
+    if !(1.0..=MOST_TIME_LIMIT_SECS).contains(&cli.time_limit) {
+        eprintln!(
+            "error: --time-limit {}: must be 1 to {} seconds",
+            zieglerlab::format::Shown(cli.time_limit),
+            zieglerlab::format::number_text(MOST_TIME_LIMIT_SECS)
+        );
+        return ExitCode::from(2);
+    }
+    stop_after(cli.time_limit);
     if cli.renderer.is_some() {
         eprintln!(
             "error: --renderer chooses what draws the window; give it without a subcommand (snapshot and record draw headlessly with wgpu)"

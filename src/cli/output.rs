@@ -17,6 +17,11 @@ pub fn check_output(out: &Path, png: bool) -> Result<()> {
     {
         anyhow::bail!("out = {shown}: pictures are written as PNG; name the file *.png");
     }
+    // A stream the shell opened (/dev/stdout, /dev/fd/3) is written where
+    // it stands: there is no folder to check.
+    if zieglerlab::files::named_descriptor(out).is_some() {
+        return Ok(());
+    }
     // A link is written through: the file it names is what is checked.
     let target = zieglerlab::files::link_target(out)
         .map_err(|e| anyhow::anyhow!("out = {shown}: the link cannot be read ({e})"))?;

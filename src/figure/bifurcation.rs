@@ -57,7 +57,7 @@ where
             entries.push((Swatch::Marker(INK, upward), words.to_owned()));
         }
     }
-    let area = legend_above(root, &entries, ink)?;
+    let area = legend_above(root, &entries, 1, ink)?;
     let (x0, x1) = data.load_range;
     let highest = runs
         .iter()

@@ -11,6 +11,7 @@ use plotters::prelude::*;
 use super::clip::{Bounds, clip_polyline};
 use super::style::{INK, Ink};
 use super::{FigureError, Panel, drawing};
+use crate::format::number_text;
 
 /// A plot with two numeric axes.
 pub type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
@@ -47,12 +48,23 @@ fn wrapped(text: &str, most: f64, width: impl Fn(&str) -> f64) -> Vec<String> {
     lines
 }
 
+/// The smallest plot a figure draws, in font sizes each way: smaller, the
+/// curves are a smudge between the axes' words.
+const MIN_PLOT_EMS: i32 = 4;
+
 /// The legend's entries laid out in rows across `root`'s width (an entry
 /// wider than the page is wrapped onto lines of its own); draws them at the
-/// top and returns the area below for the plots.
+/// top and returns the area below for `plots` plots stacked one above the
+/// other.
+///
+/// # Errors
+/// A page on which the legend and the axes' words leave less than
+/// [`MIN_PLOT_EMS`] font sizes each way for each plot, with the page size
+/// or font size that would fit; or the drawing failing.
 pub fn legend_above<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     entries: &[(Swatch, String)],
+    plots: i32,
     ink: &Ink,
 ) -> Result<DrawingArea<DB, Shift>, FigureError>
 where
@@ -88,6 +100,7 @@ where
     } else {
         (line + row_lines) * line_height + margin
     };
+    check_room(root, height, plots, ink)?;
     let anchor = plotters::style::text_anchor::Pos::new(
         plotters::style::text_anchor::HPos::Left,
         plotters::style::text_anchor::VPos::Center,
@@ -105,6 +118,54 @@ where
     }
     let (_, below) = root.split_vertically(height);
     Ok(below)
+}
+
+/// Refuses a page on which a legend `legend_height` tall leaves less than
+/// [`MIN_PLOT_EMS`] font sizes each way for each of `plots` plots stacked
+/// below it, saying what would fit.
+fn check_room<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    legend_height: i32,
+    plots: i32,
+    ink: &Ink,
+) -> Result<(), FigureError> {
+    let (width, height) = root.dim_in_pixel();
+    let (width, height) = (f64::from(width), f64::from(height));
+    let [margin, right, below, left] = frame(ink);
+    let least = f64::from(MIN_PLOT_EMS * ink.font_units());
+    let beside = f64::from(margin + right + left);
+    let under = f64::from(legend_height) + f64::from(plots) * f64::from(2 * margin + below);
+    let (need_width, need_height) = (beside + least, under + f64::from(plots) * least);
+    if width >= need_width && height >= need_height {
+        return Ok(());
+    }
+    // Everything above scales with the font: the largest font that fits
+    // this page (the legend wraps differently at another size, so this is
+    // an estimate, said as one).
+    let ratio = (width / need_width).min(height / need_height);
+    let page = |w: f64, h: f64| {
+        format!(
+            "{} x {} mm",
+            number_text(ink.mm(w).ceil()),
+            number_text(ink.mm(h).ceil())
+        )
+    };
+    let font_pt = (ink.font_pt() * ratio * 10.0).floor() / 10.0;
+    let smaller_font = if font_pt >= super::Page::FONT_PT.0 {
+        format!(
+            " or a font of about {} pt or less (--font-pt)",
+            number_text(font_pt)
+        )
+    } else {
+        String::new()
+    };
+    Err(FigureError::Page(format!(
+        "a {} page at {} pt leaves no room for the plot{}: its legend and the axes' words need about {}; use a page of at least that (--width-mm, --height-mm){smaller_font}",
+        page(width, height),
+        number_text(ink.font_pt()),
+        if plots > 1 { "s" } else { "" },
+        page(width.max(need_width), height.max(need_height)),
+    )))
 }
 
 /// One swatch, `length` wide, its middle left end at `at`.

@@ -12,7 +12,7 @@ use super::style::{INK, Ink, series_color, state_color, tint};
 use super::{Drawn, FigureError, drawing};
 use crate::analysis::{
     AffinePencil, AnalysisError, C64, Locus, State, Transition, classify, critical_loads_along,
-    locus, stability_ranges,
+    plotted_locus, resolution_warning, stability_ranges,
 };
 use crate::app::{deciding_extent, default_view, versus_load_extent};
 use crate::format::{load_text, number_text};
@@ -28,11 +28,15 @@ pub struct Analysed {
     pub ranges: Vec<(f64, f64, State)>,
     /// The moving eigenvalues at each transition's load.
     pub at_transitions: Vec<Vec<C64>>,
+    /// Why the states are not resolved over the range, if they are not.
+    pub warning: Option<String>,
 }
 
-/// `model`'s locus from `load_min` to `load_max` at `samples` evenly spaced
-/// loads (plus the refinement), its critical loads found on it as
-/// `critical` finds them.
+/// `model`'s locus from `load_min` to `load_max` on the loads `critical`
+/// brackets with (evenly spaced over the column's natural range, by decades
+/// beyond it; [`plotted_locus`]) and the range rules it has, its critical
+/// loads found on it as `critical` finds them, and the warning `critical`
+/// gives where rounding decides the states.
 ///
 /// # Errors
 /// A bad range, or an eigenvalue computation that fails.
@@ -41,14 +45,25 @@ pub fn analyse(
     model: &Model,
     load_min: f64,
     load_max: f64,
-    samples: usize,
 ) -> Result<Analysed, AnalysisError> {
     let pencil = AffinePencil::new(model)?;
-    let locus = locus(&pencil, load_min, load_max, samples)?;
-    let transitions = critical_loads_along(&pencil, &locus)?;
+    let locus = plotted_locus(&pencil, load_min, load_max)?;
+    let warning = resolution_warning(&pencil, &locus)?;
+    // Where rounding decides the states, the changes it makes are noise
+    // (thousands of them, for a roller of mass nu = 1e-50): none is drawn
+    // as if it were found, and no range is tinted.
+    let transitions = if warning.is_some() {
+        Vec::new()
+    } else {
+        critical_loads_along(&pencil, &locus)?
+    };
     let start = pencil.spectrum(load_min)?;
     let first = classify(&start.eigenvalues, start.scale_per_s).state;
-    let ranges = stability_ranges(&transitions, first, load_min, load_max);
+    let ranges = if warning.is_some() {
+        Vec::new()
+    } else {
+        stability_ranges(&transitions, first, load_min, load_max)
+    };
     let at_transitions = transitions
         .iter()
         .map(|t| Ok(pencil.spectrum(t.load)?.eigenvalues))
@@ -59,6 +74,7 @@ pub fn analyse(
         transitions,
         ranges,
         at_transitions,
+        warning,
     })
 }
 
@@ -72,7 +88,12 @@ fn transition_text(t: &Transition) -> String {
     )
 }
 
-/// The legend: each model's curve, then the main model's critical loads.
+/// The most critical loads the legend names; the rest are counted in one
+/// entry (`critical` lists them all).
+const MOST_LEGEND_LOADS: usize = 8;
+
+/// The legend: each model's curve, then the main model's critical loads
+/// (at most [`MOST_LEGEND_LOADS`], the rest counted).
 fn legend(main: &Analysed, overlays: &[Analysed], critical: Swatch) -> Vec<(Swatch, String)> {
     let mut entries = vec![(Swatch::Line(INK), main.name.clone())];
     entries.extend(
@@ -81,13 +102,23 @@ fn legend(main: &Analysed, overlays: &[Analysed], critical: Swatch) -> Vec<(Swat
             .enumerate()
             .map(|(k, other)| (Swatch::Line(series_color(k)), other.name.clone())),
     );
-    entries.extend(main.transitions.iter().map(|t| {
+    entries.extend(main.transitions.iter().take(MOST_LEGEND_LOADS).map(|t| {
         let swatch = match critical {
             Swatch::Marker(_, filled) => Swatch::Marker(state_color(t.to), filled),
             _ => Swatch::Dashed(state_color(t.to)),
         };
         (swatch, transition_text(t))
     }));
+    let more = main.transitions.len().saturating_sub(MOST_LEGEND_LOADS);
+    if more > 0 {
+        entries.push((
+            match critical {
+                Swatch::Marker(_, filled) => Swatch::Marker(INK, filled),
+                _ => Swatch::Dashed(INK),
+            },
+            format!("{more} more critical loads (zieglerlab critical lists them)"),
+        ));
+    }
     entries
 }
 
@@ -127,7 +158,7 @@ where
             format!("p = {}", number_text(first_load)),
         ),
     );
-    let area = legend_above(root, &entries, ink)?;
+    let area = legend_above(root, &entries, 1, ink)?;
     // Equal scales: the view has the plot's shape.
     let (width, height) = plot_size(&area, ink);
     let shape = width / height.max(1.0);
@@ -219,7 +250,7 @@ where
             entries.push((Swatch::Fill(range_tint(state)), state.name().to_owned()));
         }
     }
-    let area = legend_above(root, &entries, ink)?;
+    let area = legend_above(root, &entries, 2, ink)?;
     let (top, bottom) = area.split_vertically(area.dim_in_pixel().1 / 2);
     let (p0, p1) = (
         main.locus.loads.first().copied().unwrap_or(0.0),

@@ -84,7 +84,7 @@ where
         ),
     ));
     entries.push((Swatch::Line(INK), "critical loads".to_owned()));
-    let area = legend_above(root, &entries, ink)?;
+    let area = legend_above(root, &entries, 1, ink)?;
     let loads = spec
         .load_grid()
         .map_err(|e| FigureError::Empty(e.to_string()))?;

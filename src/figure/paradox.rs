@@ -63,7 +63,7 @@ where
             format!("this model: p = {}", load_text(p)),
         ));
     }
-    let area = legend_above(root, &entries, ink)?;
+    let area = legend_above(root, &entries, 1, ink)?;
     let points = curves.lines.iter().flat_map(|(_, points)| points.iter());
     let (x0, x1) = points
         .clone()

@@ -66,7 +66,8 @@ impl Page {
                 Ok(())
             } else {
                 Err(FigureError::Page(format!(
-                    "{what} = {value}: must be {lo} to {hi}"
+                    "{what} = {}: must be {lo} to {hi}",
+                    crate::format::Shown(value)
                 )))
             }
         };
@@ -148,6 +149,16 @@ impl Ink {
     /// The font size in the drawing's units.
     pub fn font_units(&self) -> i32 {
         self.units(self.font_pt)
+    }
+
+    /// The font size in points.
+    pub fn font_pt(&self) -> f64 {
+        self.font_pt
+    }
+
+    /// `units` of the drawing in millimetres on the page.
+    pub fn mm(&self, units: f64) -> f64 {
+        units / self.per_pt / PT_PER_INCH * MM_PER_INCH
     }
 }
 

@@ -9,6 +9,7 @@ use std::path::Path;
 
 use serde::Deserialize;
 
+use crate::format::Shown;
 use crate::model::{Assignment, Key, Model, ModelError, PresetId, apply_assignments};
 use crate::sim::{Ramp, SPEED_RANGE};
 
@@ -175,7 +176,8 @@ impl Run {
                     Ok(())
                 } else {
                     Err(format!(
-                        "kick of {angle_rad} rad: expected a turn of each rod other than 0, at most {KICK_MOST_RAD} rad either way"
+                        "kick of {} rad: expected a turn of each rod other than 0, at most {KICK_MOST_RAD} rad either way",
+                        Shown(angle_rad)
                     ))
                 }
             }
@@ -287,9 +289,7 @@ impl Lesson {
             message: format!("step {}: {message}", index + 1),
         };
         check_title(&self.title).map_err(|message| LessonError {
-            line: text
-                .find("title")
-                .map_or(1, |at| text[..at].lines().count().max(1)),
+            line: code_find(text, "title").map_or(1, |at| line_at(text, at)),
             message,
         })?;
         if self.steps.is_empty() {
@@ -339,7 +339,8 @@ impl Lesson {
                 return Err(at_step(
                     index,
                     format!(
-                        "speed = {speed}: expected {} to {} simulated seconds per second",
+                        "speed = {}: expected {} to {} simulated seconds per second",
+                        Shown(speed),
                         SPEED_RANGE.start(),
                         SPEED_RANGE.end()
                     ),
@@ -405,11 +406,22 @@ fn check_title(title: &str) -> Result<(), String> {
 /// `index`-th `Step(` after `steps:` outside strings and comments, or 1
 /// when it cannot be found.
 fn step_line(text: &str, index: usize) -> usize {
-    let start = text.find("steps").unwrap_or(0);
+    let start = code_find(text, "steps").unwrap_or(0);
     code_offsets(&text[start..])
         .filter(|&offset| text[start + offset..].starts_with("Step("))
         .nth(index)
-        .map_or(1, |offset| text[..start + offset].lines().count().max(1))
+        .map_or(1, |offset| line_at(text, start + offset))
+}
+
+/// The first offset of `word` in `text` outside strings and comments (a
+/// title may hold the word "steps").
+fn code_find(text: &str, word: &str) -> Option<usize> {
+    code_offsets(text).find(|&offset| text[offset..].starts_with(word))
+}
+
+/// The line (from 1) holding byte `offset` of `text`.
+fn line_at(text: &str, offset: usize) -> usize {
+    text[..offset].matches('\n').count() + 1
 }
 
 /// The byte offsets of `text` that are code: outside string literals

@@ -167,7 +167,11 @@ fn within(key: Key, value: f64, min: f64, max: f64, max_key: Key) -> Result<(), 
         Err(ModelError::invalid(
             key,
             value,
-            &format!("must lie between {min} and {max_key} = {max}"),
+            &format!(
+                "must lie between {} and {max_key} = {}",
+                crate::format::Shown(min),
+                crate::format::Shown(max)
+            ),
         ))
     }
 }

@@ -16,6 +16,28 @@ pub enum RampError {
     /// A rate that is not a positive load per second.
     #[error("ramp rate = {}: must be a positive load per second", Shown(*.0))]
     Rate(f64),
+    /// A rate so slow that the load would not visibly move.
+    #[error(
+        "ramp rate = {}: must be at least {} load per second (slower, the load would not move visibly within days)",
+        Shown(*.0),
+        Shown(SLOWEST_RATE_P_PER_S)
+    )]
+    TooSlow(f64),
+    /// A ramp longer than any run watched.
+    #[error(
+        "ramp from {} to {} at {} per second takes {} s of simulated time; at most {} s (about four months): a faster rate or nearer ends",
+        Shown(*from_p),
+        Shown(*to_p),
+        Shown(*rate_p_per_s),
+        crate::format::number_text(*secs),
+        Shown(LONGEST_RAMP_SECS)
+    )]
+    TooLong {
+        from_p: f64,
+        to_p: f64,
+        rate_p_per_s: f64,
+        secs: f64,
+    },
     /// An end the model does not take, with the model's reason.
     #[error("ramp {end} = {}: {why}", Shown(*.value))]
     Refused {
@@ -30,6 +52,14 @@ pub enum RampError {
     #[error("ramp {part} '{text}' is not a number")]
     NotANumber { part: &'static str, text: String },
 }
+
+/// The slowest ramp, in load p per second: a chain's load bar of 0.008
+/// (64 rods) takes about two hours at this rate, the two-rod bar of 8
+/// three months.
+pub const SLOWEST_RATE_P_PER_S: f64 = 1e-6;
+
+/// The longest ramp, in simulated seconds (about four months).
+pub const LONGEST_RAMP_SECS: f64 = 1e7;
 
 /// A load ramp: `p` from `from_p` toward `to_p` at `rate_p_per_s` (> 0) per
 /// simulated second, then held at `to_p`.
@@ -54,6 +84,9 @@ impl Ramp {
         if !(rate_p_per_s.is_finite() && rate_p_per_s > 0.0) {
             return Err(RampError::Rate(rate_p_per_s));
         }
+        if rate_p_per_s < SLOWEST_RATE_P_PER_S {
+            return Err(RampError::TooSlow(rate_p_per_s));
+        }
         Ok(Self {
             from_p,
             to_p,
@@ -63,16 +96,26 @@ impl Ramp {
 
     /// Whether `model` takes every load of the ramp: both ends (the loads
     /// between them are in between), so a ramp is refused before its run,
-    /// not when it reaches a load the model cannot take.
+    /// not when it reaches a load the model cannot take; and whether it
+    /// ends within [`LONGEST_RAMP_SECS`].
     ///
     /// # Errors
-    /// The end the model refuses, with the model's reason.
+    /// The end the model refuses, with the model's reason, or a ramp too long.
     pub fn check_for(&self, model: &Model) -> Result<(), RampError> {
         for (end, value) in [("from", self.from_p), ("to", self.to_p)] {
             model
                 .at_load(value)
                 .validate()
                 .map_err(|why| RampError::Refused { end, value, why })?;
+        }
+        let secs = self.duration_secs();
+        if secs > LONGEST_RAMP_SECS {
+            return Err(RampError::TooLong {
+                from_p: self.from_p,
+                to_p: self.to_p,
+                rate_p_per_s: self.rate_p_per_s,
+                secs,
+            });
         }
         Ok(())
     }

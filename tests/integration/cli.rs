@@ -491,26 +491,78 @@ fn the_renderer_choice_is_checked_before_anything_opens() {
 }
 
 /// Where rounding decides the states (a roller of mass nu = 1e-50, a second
-/// rod 1e74 times the first), `critical` lists the first 20 changes and
-/// counts the rest, under its warning; the JSON says how many it left out.
-/// It once printed thousands of lines made by rounding.
+/// rod 1e74 times the first), `critical` lists no change as if it were
+/// found: it counts them under its warning, and the JSON lists none and
+/// says how many it left out. It once printed thousands of lines made by
+/// rounding, then the first 20.
 #[test]
 fn unresolved_changes_are_counted_not_listed() {
-    let out = run(&["critical", "--preset", "roller", "--set", "nu=1e-50"]);
-    assert!(out.status.success());
-    assert!(String::from_utf8_lossy(&out.stderr).contains("the stability is not resolved"));
-    let text = String::from_utf8(out.stdout).unwrap();
-    let listed = text.lines().filter(|l| l.starts_with("  p = ")).count();
-    assert_eq!(listed, 20, "{text}");
-    let last = text.lines().last().unwrap();
-    assert!(last.contains("more changes, not listed"), "{last}");
-    let json: serde_json::Value = serde_json::from_str(&stdout(&[
-        "critical", "--preset", "roller", "--set", "nu=1e-50", "--json",
-    ]))
-    .unwrap();
-    assert_eq!(json["resolved"], false);
-    assert_eq!(json["transitions"].as_array().unwrap().len(), 20);
-    assert!(json["transitions_not_listed"].as_u64().unwrap() > 100);
+    for set in ["nu=1e-50", "l2=1e74"] {
+        let preset = if set.starts_with("nu") {
+            "roller"
+        } else {
+            "ziegler-1952"
+        };
+        let out = run(&["critical", "--preset", preset, "--set", set]);
+        assert!(out.status.success());
+        assert!(String::from_utf8_lossy(&out.stderr).contains("the stability is not resolved"));
+        let text = String::from_utf8(out.stdout).unwrap();
+        let listed = text.lines().filter(|l| l.starts_with("  p = ")).count();
+        assert_eq!(listed, 0, "{text}");
+        let last = text.lines().last().unwrap();
+        assert!(last.starts_with("  not resolved: the "), "{last}");
+        let json: serde_json::Value = serde_json::from_str(&stdout(&[
+            "critical", "--preset", preset, "--set", set, "--json",
+        ]))
+        .unwrap();
+        assert_eq!(json["resolved"], false);
+        assert_eq!(json["transitions"].as_array().unwrap().len(), 0);
+        assert!(
+            json["transitions_not_listed"].as_u64().unwrap() > 10,
+            "{set}"
+        );
+    }
+}
+
+/// Data files too write numbers far from 1 in exponent form, still to the
+/// last bit: a locus and a map to p = 1e150 have no field of 151 digits,
+/// and every field reads back to a finite number.
+#[test]
+fn data_files_write_extreme_numbers_in_exponent_form() {
+    let locus = stdout(&[
+        "locus",
+        "--preset",
+        "ziegler-1952",
+        "--load-min",
+        "0",
+        "--load-max",
+        "1e150",
+        "--samples",
+        "3",
+    ]);
+    let folder = tempfile::tempdir().unwrap();
+    let out = folder.path().join("map.csv");
+    stdout(&[
+        "map",
+        "--preset",
+        "ziegler-1952",
+        "--x",
+        "load:0:1e150:3",
+        "--y",
+        "damping:0:0.5:2",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let map = std::fs::read_to_string(&out).unwrap();
+    for (what, text) in [("locus", &locus), ("map", &map)] {
+        assert!(text.contains("1e150"), "{what}: {text}");
+        for field in text.lines().skip(1).flat_map(|l| l.split(',')) {
+            assert!(field.len() <= 25, "{what}: {field}");
+            if let Ok(number) = field.parse::<f64>() {
+                assert!(number.is_finite(), "{what}: {field}");
+            }
+        }
+    }
 }
 
 /// Loads far from 1 are written in exponent form: a range to 1e150 gives

@@ -214,3 +214,82 @@ fn snapshot_draws_a_lesson_at_a_step() {
         assert!(!refused.exists(), "{args:?}");
     }
 }
+
+/// `--out /dev/stdout` (or a link to it) with the shell's `>> file` appends
+/// to what the file held, and with `> file` writes where the shell opened
+/// it; neither renames over the file behind the stream. Every command with
+/// `--out` writes through the same function; `map` and `locus`-like CSV
+/// from `bifurcation` stand for them.
+#[cfg(unix)]
+#[test]
+fn a_stream_named_by_a_path_is_written_where_the_shell_opened_it() {
+    use std::io::Write as _;
+    let folder = tempfile::tempdir().expect("a temporary folder");
+    let results = folder.path().join("results.csv");
+    let link = folder.path().join("to-stdout");
+    std::os::unix::fs::symlink("/dev/stdout", &link).expect("a link");
+    let map = |out: &str| {
+        vec![
+            "map".to_owned(),
+            "--preset".to_owned(),
+            "ziegler-1952".to_owned(),
+            "--x".to_owned(),
+            "load:0:4:3".to_owned(),
+            "--y".to_owned(),
+            "damping:0:0.5:2".to_owned(),
+            "--out".to_owned(),
+            out.to_owned(),
+        ]
+    };
+    let run_into = |args: &[String], append: bool| {
+        let file = std::fs::File::options()
+            .write(true)
+            .create(true)
+            .append(append)
+            .truncate(!append)
+            .open(&results)
+            .expect("the shell's file");
+        let status = std::process::Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+            .args(args)
+            .stdout(file)
+            .status()
+            .expect("runs");
+        assert!(status.success(), "{args:?}");
+    };
+    let alone = {
+        let out = folder.path().join("alone.csv");
+        run_into(&map(out.to_str().expect("a path")), false);
+        std::fs::read_to_string(out).expect("written")
+    };
+    assert!(alone.starts_with("load,"), "{alone}");
+    for out in ["/dev/stdout", "/dev/fd/1", link.to_str().expect("a path")] {
+        std::fs::File::create(&results)
+            .and_then(|mut f| f.write_all(b"earlier results\n"))
+            .expect("written");
+        run_into(&map(out), true);
+        let held = std::fs::read_to_string(&results).expect("read");
+        assert_eq!(held, format!("earlier results\n{alone}"), "{out} >>");
+        run_into(&map(out), false);
+        let held = std::fs::read_to_string(&results).expect("read");
+        assert_eq!(held, alone, "{out} >");
+        run_into(&map(out), true);
+        run_into(&map(out), true);
+        let held = std::fs::read_to_string(&results).expect("read");
+        assert_eq!(held, alone.repeat(3), "{out}: twice more >>");
+    }
+    // A FIFO by its own path is a stream too: read as it is written.
+    let fifo = folder.path().join("fifo");
+    let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+    assert!(made.expect("mkfifo").success());
+    let reader = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || std::fs::read_to_string(fifo).expect("read"))
+    };
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+        .args(map(fifo.to_str().expect("a path")))
+        .status()
+        .expect("runs");
+    assert!(status.success());
+    assert_eq!(reader.join().expect("read"), alone);
+    assert!(fifo.exists(), "the FIFO is not replaced by a file");
+}

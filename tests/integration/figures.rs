@@ -40,7 +40,110 @@ fn has_hue_of(color: [u8; 3], state: State) -> bool {
 /// The analysis of a preset over the load bar's range.
 fn analysed(name: &str, sets: &[&str]) -> Analysed {
     let m = model(name, sets);
-    analyse(name, &m, 0.0, m.load_bar_max_p(), 1000).expect("an analysis")
+    analyse(name, &m, 0.0, m.load_bar_max_p()).expect("an analysis")
+}
+
+/// A figure takes the loads and the range rules of `critical`: over beck's
+/// 0 to 1e6 it finds the eight changes `critical` finds (the divergence
+/// windows from p = 4.75 to 5.22, which an even grid of the range misses),
+/// on a page whose legend still holds (the rest counted); past 1e150 it is
+/// refused as `critical` refuses; where rounding decides the states it
+/// marks none (thousands were drawn, and a second rod 1e74 times the first
+/// aborted on a 4 GB legend) and says so on stderr.
+#[test]
+fn figures_take_the_loads_and_the_range_rules_of_critical() {
+    let beck = model("beck", &[]);
+    let wide = analyse("beck", &beck, 0.0, 1e6).expect("an analysis");
+    let found = zieglerlab::analysis::critical_loads(
+        &zieglerlab::analysis::AffinePencil::new(&beck).unwrap(),
+        0.0,
+        1e6,
+    )
+    .unwrap();
+    assert_eq!(wide.transitions.len(), found.len());
+    assert!(found.len() >= 8, "{found:?}");
+    assert!(
+        wide.transitions
+            .iter()
+            .any(|t| (4.7..4.8).contains(&t.load))
+    );
+    for (drawn, found) in wide.transitions.iter().zip(&found) {
+        assert_eq!(drawn.load, found.load);
+    }
+    assert!(wide.warning.is_none());
+    let content = Content::ReIm {
+        main: &wide,
+        overlays: &[],
+    };
+    let page = Page {
+        width_mm: 85.0,
+        height_mm: 93.5,
+        font_pt: 8.0,
+        dpi: 150.0,
+    };
+    render(&content, &page, Format::Png).expect("the legend fits");
+    let refused = analyse("beck", &beck, 0.0, 1e300).unwrap_err().to_string();
+    assert!(
+        refused.contains("load-max = 1e300: must be at most 1e150"),
+        "{refused}"
+    );
+    for (name, sets) in [
+        ("roller", &["nu=1e-50"][..]),
+        ("ziegler-1952", &["l2=1e74"][..]),
+    ] {
+        let m = model(name, sets);
+        let unresolved = analyse(name, &m, 0.0, m.load_bar_max_p()).expect("an analysis");
+        assert!(unresolved.warning.is_some(), "{name}");
+        assert!(unresolved.transitions.is_empty() && unresolved.ranges.is_empty());
+        let folder = tempfile::tempdir().unwrap();
+        let out = folder.path().join("f.png");
+        let mut args = vec!["figure", "--preset", name, "--kind", "re-im"];
+        for set in sets {
+            args.extend(["--set", set]);
+        }
+        args.extend(["--out", out.to_str().unwrap()]);
+        let done = run(&args);
+        assert!(done.status.success(), "{name}");
+        let said = String::from_utf8_lossy(&done.stderr);
+        assert!(
+            said.contains("the stability is not resolved")
+                && said.contains("no critical load is drawn"),
+            "{said}"
+        );
+    }
+}
+
+/// A page too small for its legend and labels is refused with a page that
+/// fits, and that page draws.
+#[test]
+fn a_page_too_small_for_its_legend_is_refused_with_one_that_fits() {
+    let main = analysed("ziegler-1952", &[]);
+    let content = Content::ReIm {
+        main: &main,
+        overlays: &[],
+    };
+    let small = Page {
+        width_mm: 30.0,
+        height_mm: 30.0,
+        font_pt: 8.0,
+        dpi: 300.0,
+    };
+    let why = render(&content, &small, Format::Svg)
+        .unwrap_err()
+        .to_string();
+    let size = why
+        .split("need about ")
+        .nth(1)
+        .and_then(|rest| rest.split(" mm").next())
+        .expect(&why);
+    let (w, h) = size.split_once(" x ").expect(&why);
+    let fits = Page {
+        width_mm: w.parse().unwrap(),
+        height_mm: h.parse().unwrap(),
+        ..small
+    };
+    assert!(fits.height_mm > small.height_mm, "{why}");
+    render(&content, &fits, Format::Svg).expect("the page it names fits");
 }
 
 #[test]

@@ -384,3 +384,43 @@ fn hand_typed_text_is_pasted_and_a_bad_line_named() {
         "{said}"
     );
 }
+
+/// Stored settings of many lines (300,000, 5 MB: no window came within
+/// 30 s) are refused by their size at once and said so; 16 kB of repeated
+/// lines are read in one pass, naming ten and counting the rest; a stored
+/// speed of 1e300 is named in exponent form, not in 301 digits.
+#[test]
+fn long_stored_settings_are_bounded_and_named_briefly() {
+    let huge = format!("preset = roller\n{}", "speed = 2\n".repeat(300_000));
+    let app = ZieglerApp::from_stored_text(Some(&huge));
+    let said = app
+        .state()
+        .notice()
+        .map(|n| n.text.clone())
+        .unwrap_or_default();
+    assert!(
+        said.contains(
+            "stored settings ignored (the text holds 3000016 bytes; settings text is at most 16384"
+        ),
+        "{said}"
+    );
+    assert_eq!(app.settings(), &Settings::default());
+    let repeated = format!("preset = beck\n{}", "speed = 2\n".repeat(1500));
+    let app = ZieglerApp::from_stored_text(Some(&repeated));
+    assert_eq!(app.settings().preset, PresetId::Beck);
+    assert_eq!(app.settings().speed, 2.0);
+    let said = app
+        .state()
+        .notice()
+        .map(|n| n.text.clone())
+        .unwrap_or_default();
+    assert!(said.contains("1489 more"), "{said}");
+    assert!(said.len() < 1000, "{} characters", said.len());
+    let app = ZieglerApp::from_stored_text(Some("preset = roller\nspeed = 1e300\n"));
+    let said = app
+        .state()
+        .notice()
+        .map(|n| n.text.clone())
+        .unwrap_or_default();
+    assert!(said.contains("speed (1e300 is outside"), "{said}");
+}

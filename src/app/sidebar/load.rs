@@ -101,7 +101,8 @@ fn notes(state: &AppState, p: f64, theme: &Theme, weak: egui::Color32) -> Vec<No
     if p > state.load_max() {
         notes.push(Note::new(
             format!(
-                "p = {p} is beyond the plotted range (0 to {}); the status below is at p",
+                "p = {} is beyond the plotted range (0 to {}); the status below is at p",
+                number_text(p),
                 number_text(state.load_max())
             ),
             theme.warning,

@@ -5,12 +5,36 @@ use eframe::egui;
 
 use crate::app::action::{Action, Actions};
 use crate::app::notice::Notice;
+use crate::app::settings_text::MOST_SETTINGS_BYTES;
 use crate::app::state::AppState;
 
 /// Frames to wait for the clipboard's text after asking the window for it:
 /// the window answers in the next frame, or not at all when the clipboard
 /// holds no text.
 const CLIPBOARD_FRAMES: u32 = 3;
+
+/// Takes out of the frame's input every paste longer than settings text
+/// can be, before any text field lays it out (a 10 MB paste froze the
+/// window), and says what was refused.
+fn refuse_long_pastes(ctx: &egui::Context, actions: &mut Actions) -> bool {
+    let refused = ctx.input_mut(|input| {
+        let mut refused = Vec::new();
+        input.events.retain(|event| match event {
+            egui::Event::Paste(text) if text.len() > MOST_SETTINGS_BYTES => {
+                refused.push(text.len());
+                false
+            }
+            _ => true,
+        });
+        refused
+    });
+    for bytes in &refused {
+        actions.push(Action::Say(Notice::error(format!(
+            "paste refused, nothing changed: the text holds {bytes} bytes; no field here takes more than {MOST_SETTINGS_BYTES} (settings text is under 2000)"
+        ))));
+    }
+    !refused.is_empty()
+}
 
 /// The text box's contents, and whether a paste from the clipboard is on
 /// its way.
@@ -26,6 +50,10 @@ impl ShareSection {
     /// input (no text field receives it) and pasted as settings. Called
     /// every frame, before any widget reads the input.
     pub fn take_clipboard(&mut self, ctx: &egui::Context, actions: &mut Actions) {
+        if refuse_long_pastes(ctx, actions) {
+            // The clipboard's answer was that text: already said.
+            self.awaiting_clipboard = None;
+        }
         let Some(frames_left) = self.awaiting_clipboard else {
             return;
         };

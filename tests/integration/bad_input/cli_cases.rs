@@ -2,7 +2,8 @@
 //! the exit status and the piece of stderr it must answer with.
 
 /// A command line and what it must answer: the exit status and a piece of
-/// stderr (for status 2, its only line; for status 0, "" means silence).
+/// stderr (for status 2 or 124, its only line; for status 0, "" means
+/// silence).
 pub struct Cli {
     pub args: &'static [&'static str],
     pub status: i32,
@@ -13,6 +14,15 @@ pub const fn refused(args: &'static [&'static str], stderr: &'static str) -> Cli
     Cli {
         args,
         status: 2,
+        stderr,
+    }
+}
+
+/// A command stopped by its time limit: status 124 and one line.
+pub const fn stopped(args: &'static [&'static str], stderr: &'static str) -> Cli {
+    Cli {
+        args,
+        status: 124,
         stderr,
     }
 }

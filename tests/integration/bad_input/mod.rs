@@ -14,11 +14,13 @@ use zieglerlab::analysis::{
 use zieglerlab::model::{Model, apply_assignments, parse_assignment, preset};
 use zieglerlab::sim::{EngineKind, SimError, Simulation, Status, initial_state};
 
+mod cli_bounds;
 mod cli_cases;
 mod cli_extremes;
 mod cli_maps;
 mod lesson_files;
 
+use cli_bounds::CLI_BOUNDS;
 use cli_cases::CLI;
 use cli_extremes::CLI_EXTREMES;
 use cli_maps::CLI_MAPS;
@@ -77,7 +79,12 @@ pub(super) fn run_limited(args: &[&str]) -> Output {
 
 #[test]
 fn every_command_line_case_gets_its_answer() {
-    for case in CLI.iter().chain(CLI_MAPS).chain(CLI_EXTREMES) {
+    for case in CLI
+        .iter()
+        .chain(CLI_MAPS)
+        .chain(CLI_EXTREMES)
+        .chain(CLI_BOUNDS)
+    {
         let out = run_limited(case.args);
         let stderr = String::from_utf8_lossy(&out.stderr);
         let stdout = String::from_utf8_lossy(&out.stdout);
@@ -85,7 +92,7 @@ fn every_command_line_case_gets_its_answer() {
         assert_eq!(out.status.code(), Some(case.status), "{args:?}: {stderr}");
         assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
         assert!(stderr.contains(case.stderr), "{args:?}: {stderr}");
-        if case.status == 2 {
+        if case.status != 0 {
             assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
             assert!(stdout.is_empty(), "{args:?}");
         } else {
