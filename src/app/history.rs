@@ -72,7 +72,8 @@ impl History {
             .filter(|o| o.t_secs >= self.measure_from_secs)
             .collect();
         let (first, last) = (window.first()?, window.last()?);
-        if last.t_secs - first.t_secs < MIN_WINDOW_SECS {
+        let window_secs = last.t_secs - first.t_secs;
+        if window_secs < MIN_WINDOW_SECS {
             return None;
         }
         let amplitude = window
@@ -87,6 +88,14 @@ impl History {
         let dt_secs = picked.get(1)?.t_secs - picked.first()?.t_secs;
         let phi1: Vec<f64> = picked.iter().map(|o| o.phi1_rad).collect();
         let phi2: Vec<f64> = picked.iter().map(|o| o.phi2_rad).collect();
-        identify(&[&phi1, &phi2], dt_secs, order)
+        // A swing slower than the window is not measured from it: less
+        // than one period fits a made-up frequency and growth (the
+        // 42 s mode of ziegler-1952 at p = 1 came out as +0.006 ± 0.171i
+        // from 25 s).
+        let measured: Vec<C64> = identify(&[&phi1, &phi2], dt_secs, order)?
+            .into_iter()
+            .filter(|z| z.im == 0.0 || std::f64::consts::TAU / z.im.abs() <= window_secs)
+            .collect();
+        (!measured.is_empty()).then_some(measured)
     }
 }

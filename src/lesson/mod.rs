@@ -205,6 +205,9 @@ pub enum Predict {
 pub enum Reveal {
     /// The load at which the current model first loses stability.
     FirstInstability,
+    /// What the theory says of the column at the load shown: its state, and
+    /// how fast a kick grows or dies away.
+    StabilityHere,
     /// The right answer of the last choice, by its place (from 0).
     Answer(usize),
     /// A text.

@@ -275,3 +275,87 @@ fn f11_asks_for_full_screen() {
         "asked once per press"
     );
 }
+
+/// The last step of "Is the roller a follower force?" shows the strong
+/// flutter at p = 3, and its reveal says that, from the theory at the load
+/// shown (it revealed "unstable from p = 0.0238", the weak onset of the
+/// step before): flutter, and the swing's doubling time, ln 2 over the
+/// growth rate of the spectrum at p = 3.
+#[test]
+fn the_roller_lesson_s_last_reveal_says_what_the_step_shows() {
+    let (_, text) = zieglerlab::lesson::BUILT_IN
+        .iter()
+        .find(|(name, _)| *name == "is-the-roller-a-follower.ron")
+        .expect("the lesson");
+    let lesson = zieglerlab::lesson::Lesson::read(text, &zieglerlab::app::Tab::ids()).unwrap();
+    let steps = lesson.steps.len();
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.apply(zieglerlab::app::Action::LessonOpen(Box::new(lesson)));
+    for _ in 1..steps {
+        app.apply(zieglerlab::app::Action::Command(
+            zieglerlab::app::Command::LessonNext,
+        ));
+    }
+    let state = app.state();
+    assert!((state.model().load_p() - 3.0).abs() < 1e-12);
+    let spectrum = state.current_spectrum().unwrap();
+    let stability = zieglerlab::analysis::classify(&spectrum.eigenvalues, spectrum.scale_per_s);
+    assert_eq!(stability.state, zieglerlab::analysis::State::Flutter);
+    let doubling = std::f64::consts::LN_2 / stability.growth_rate_per_s();
+    let said = state
+        .lesson()
+        .unwrap()
+        .reveal_text(None, state.load_max(), None, Some((3.0, &stability)))
+        .unwrap();
+    let expected = format!(
+        "The theory at p = {}: flutter: the swing doubles every {} s",
+        zieglerlab::format::load_text(3.0),
+        zieglerlab::format::secs_text(doubling)
+    );
+    assert!(said.starts_with(&expected), "{said} / {expected}");
+    assert!(!said.contains("0.0238"), "{said}");
+    // And the window shows the same words at that step.
+    let mut harness = harness(&mut app);
+    harness.run();
+    harness.get_by_label_contains(&expected);
+}
+
+/// A choice's reveal reads differently for a right and a wrong answer, in
+/// words as well as in colour (it was the same red sentence for both).
+#[test]
+fn a_right_and_a_wrong_answer_are_revealed_differently() {
+    let (_, text) = zieglerlab::lesson::BUILT_IN
+        .iter()
+        .find(|(name, _)| *name == "is-the-roller-a-follower.ron")
+        .expect("the lesson");
+    let mut said = Vec::new();
+    for (choice, verdict) in [(2, true), (0, false)] {
+        let lesson = zieglerlab::lesson::Lesson::read(text, &zieglerlab::app::Tab::ids()).unwrap();
+        let mut app = ZieglerApp::new(Settings::default()).unwrap();
+        app.apply(zieglerlab::app::Action::LessonOpen(Box::new(lesson)));
+        app.apply(zieglerlab::app::Action::Command(
+            zieglerlab::app::Command::LessonNext,
+        ));
+        app.apply(zieglerlab::app::Action::LessonChoose(choice));
+        app.apply(zieglerlab::app::Action::Command(
+            zieglerlab::app::Command::LessonNext,
+        ));
+        let run = app.state().lesson().unwrap();
+        assert_eq!(run.verdict(), Some(verdict));
+        let text = run.reveal_text(None, 8.0, None, None).unwrap();
+        let mut harness = harness(&mut app);
+        harness.run();
+        harness.get_by_label(&text);
+        said.push(text);
+    }
+    assert!(
+        said[0].starts_with("Right: you chose \"at a much lower load\""),
+        "{}",
+        said[0]
+    );
+    assert!(
+        said[1].starts_with("Not this one: you chose \"at a higher load"),
+        "{}",
+        said[1]
+    );
+}

@@ -168,8 +168,18 @@ fn step_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &T
         .analysis()
         .and_then(crate::app::analysis_cache::Analysis::first_instability);
     let seen = state.ramp().and_then(|r| r.seen_at_p);
-    if let Some(result) = run.reveal_text(first, state.load_max(), seen) {
-        ui.label(RichText::new(result).color(theme.measured));
+    let spectrum = state.current_spectrum();
+    let here = spectrum.map(|s| crate::analysis::classify(&s.eigenvalues, s.scale_per_s));
+    let here = here.as_ref().map(|s| (state.model().load_p(), s));
+    if let Some(result) = run.reveal_text(first, state.load_max(), seen, here) {
+        // Right in the stable colour and strong, wrong in the warning
+        // colour, a result of the theory in the text's: the words differ too.
+        let text = RichText::new(result);
+        ui.label(match run.verdict() {
+            Some(true) => text.color(theme.stable).strong(),
+            Some(false) => text.color(theme.warning),
+            None => text.color(theme.text),
+        });
     }
     // The prediction beside the steps after it, but for the reveal of the
     // first instability, which says it itself.

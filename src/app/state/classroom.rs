@@ -81,8 +81,10 @@ impl AppState {
             Ok(()) => {
                 self.held = true;
                 self.first_launch.hint = false;
-                // The tip was moved by hand: its path before is not motion.
+                // The tip was moved by hand: its path before is not motion,
+                // nor is the held column measured.
                 self.trail.clear();
+                self.forget_measured();
             }
             Err(error) => self.say(Notice::error(error.to_string())),
         }

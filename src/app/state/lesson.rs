@@ -48,6 +48,16 @@ impl LessonRun {
             .is_some_and(|asked| !steps[asked..].iter().any(|s| s.reveal.is_some()))
     }
 
+    /// Whether the choice made was the answer the step shown reveals:
+    /// `None` where it reveals no answer or none was chosen.
+    #[must_use]
+    pub fn verdict(&self) -> Option<bool> {
+        match self.current().reveal {
+            Some(Reveal::Answer(right)) => self.chosen.map(|i| i == right),
+            _ => None,
+        }
+    }
+
     /// The revealed result of the step shown, in words, beside what was
     /// predicted; `first_instability` (searched up to `bar_max_p`, the load
     /// bar's top) and `seen_at_p` come from the state.
@@ -57,6 +67,7 @@ impl LessonRun {
         first_instability: Option<f64>,
         bar_max_p: f64,
         seen_at_p: Option<f64>,
+        here: Option<(f64, &crate::analysis::Stability)>,
     ) -> Option<String> {
         let load = |p: f64| crate::format::load_text(p);
         let text = match self.current().reveal.as_ref()? {
@@ -82,16 +93,55 @@ impl LessonRun {
             Reveal::Answer(right) => {
                 let answers = self.last_choice.as_deref().unwrap_or_default();
                 let name = |i: usize| answers.get(i).cloned().unwrap_or_default();
-                let chosen = self
-                    .chosen
-                    .map(|i| format!("You chose \"{}\". ", name(i)))
-                    .unwrap_or_default();
-                format!("{chosen}The answer: \"{}\".", name(*right))
+                // Right and wrong read differently in words, not only in
+                // colour.
+                match self.chosen {
+                    Some(i) if i == *right => {
+                        format!("Right: you chose \"{}\", the answer.", name(i))
+                    }
+                    Some(i) => format!(
+                        "Not this one: you chose \"{}\"; the answer is \"{}\".",
+                        name(i),
+                        name(*right)
+                    ),
+                    None => format!("The answer: \"{}\".", name(*right)),
+                }
             }
+            Reveal::StabilityHere => match here {
+                Some((p, stability)) => stability_words(p, stability),
+                None => "the theory has no answer at this load".to_owned(),
+            },
             Reveal::Text(text) => text.clone(),
         };
         Some(text)
     }
+}
+
+/// The theory's word on the column at load `p`: its state and how a kick
+/// grows or dies away, in doubling or halving times and the period.
+fn stability_words(p: f64, stability: &crate::analysis::Stability) -> String {
+    use crate::analysis::State;
+    use crate::format::{load_text, secs_text};
+    let rate = stability.growth_rate_per_s();
+    let frequency = stability.frequency_rad_per_s();
+    let period = if frequency > stability.tolerance_per_s {
+        format!(
+            ", a period of {} s",
+            secs_text(std::f64::consts::TAU / frequency)
+        )
+    } else {
+        String::new()
+    };
+    let times = |rate: f64| secs_text(std::f64::consts::LN_2 / rate.abs());
+    let how = match stability.state {
+        State::Flutter => format!("flutter: the swing doubles every {} s{period}", times(rate)),
+        State::Divergence => format!("divergence: the lean doubles every {} s", times(rate)),
+        State::Stable if rate < -stability.tolerance_per_s => {
+            format!("stable: a kick halves every {} s{period}", times(rate))
+        }
+        State::Stable => format!("stable: a kick neither grows nor dies away{period}"),
+    };
+    format!("The theory at p = {}: {how}.", load_text(p))
 }
 
 impl AppState {

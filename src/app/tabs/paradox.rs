@@ -153,9 +153,9 @@ impl ParadoxPanel {
             return;
         }
         ui.label(match (model.load, self.kind) {
-            (Load::Roller(_), _) => "The load at which the roller column first loses stability, against the roller's mass, for three band speeds (the slip damping is mu R / V). As nu -> 0 it goes to zero, not to the massless roller's (ideal follower's) value.",
-            (Load::Follower { .. }, DampingKind::Joints) => "The flutter load with joint dampers c1 = (c1/c2) c2 as the damping level g2 = c2 / sqrt(k m l^2) goes to zero: the limit depends on the ratio and lies below the undamped load (Ziegler's paradox).",
-            (Load::Follower { .. }, DampingKind::External) => "The flutter load with equal joint dampers c1 = c2 = c (internal damping) and drag c_ext = (c_ext l^3 / c) c / l^3 along the rods (external damping) as the level g2 = c / sqrt(k m l^2) goes to zero: external damping destabilizes too, and the limit depends on the ratio.",
+            (Load::Roller(_), _) => roller_caption(curves),
+            (Load::Follower { .. }, DampingKind::Joints) => "The flutter load with joint dampers c1 = (c1/c2) c2 as the damping level g2 = c2 / sqrt(k m l^2) goes to zero: the limit depends on the ratio and lies below the undamped load (Ziegler's paradox).".to_owned(),
+            (Load::Follower { .. }, DampingKind::External) => "The flutter load with equal joint dampers c1 = c2 = c (internal damping) and drag c_ext = (c_ext l^3 / c) c / l^3 along the rods (external damping) as the level g2 = c / sqrt(k m l^2) goes to zero: external damping destabilizes too, and the limit depends on the ratio.".to_owned(),
         });
         self.fit
             .bar_ui(ui, for_picture, |ui| save_buttons(ui, None, actions));
@@ -245,5 +245,107 @@ impl ParadoxPanel {
                 "drag c_ext along the rods (external) and equal joint dampers c1 = c2 = c (internal) in the ratio c_ext l^3 / c",
             );
         });
+    }
+}
+
+/// A curve falling to below this share of its value at the largest mass
+/// shown is said to go toward zero.
+const FALLING_SHARE: f64 = 0.5;
+
+/// The roller's caption, said from what its curves show: where they stand
+/// at the smallest mass shown beside the massless roller's load, and
+/// whether they fall toward zero as nu -> 0 (with drag along the rods they
+/// stay flat, and a caption that always said "goes to zero" contradicted
+/// them).
+fn roller_caption(curves: &Curves) -> String {
+    let intro = "The load at which the roller column first loses stability, against the roller's mass, for three band speeds (the slip damping is mu R / V).";
+    // Each line's load at its smallest and at its largest mass (x is log10 nu).
+    let ends: Vec<(f64, f64, f64)> = curves
+        .lines
+        .iter()
+        .filter_map(|(_, points)| {
+            let first = points.iter().min_by(|a, b| a[0].total_cmp(&b[0]))?;
+            let last = points.iter().max_by(|a, b| a[0].total_cmp(&b[0]))?;
+            Some((first[0], first[1], last[1]))
+        })
+        .collect();
+    let Some(smallest_x) = ends.iter().map(|e| e.0).reduce(f64::min) else {
+        return intro.to_owned();
+    };
+    let (low, high) = ends
+        .iter()
+        .map(|e| e.1)
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(p), hi.max(p))
+        });
+    let at_smallest = if high - low <= 1e-3 * high.abs() {
+        format!("p = {}", number_text(low))
+    } else {
+        format!("p = {} to {}", number_text(low), number_text(high))
+    };
+    let falling = ends
+        .iter()
+        .all(|&(_, small, large)| small < FALLING_SHARE * large);
+    let trend = if falling {
+        "falling toward zero as nu -> 0"
+    } else {
+        "not falling toward zero over this range"
+    };
+    let massless = curves
+        .reference
+        .as_ref()
+        .map(|(_, p)| {
+            format!(
+                "; the massless roller (the ideal follower) loses stability at p = {}",
+                number_text(*p)
+            )
+        })
+        .unwrap_or_default();
+    format!(
+        "{intro} At the smallest mass shown, nu = {}, the curves stand at {at_smallest}, {trend}{massless}.",
+        number_text(10f64.powf(smallest_x))
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{Assignment, PresetId, apply_assignments};
+
+    fn caption(sets: &[(Key, f64)]) -> String {
+        let mut model = PresetId::Roller.model();
+        let assignments: Vec<Assignment> = sets
+            .iter()
+            .map(|&(key, value)| Assignment { key, value })
+            .collect();
+        apply_assignments(&mut model, &assignments).unwrap();
+        let curves = paradox_curves(
+            &model,
+            DampingKind::Joints,
+            &std::sync::atomic::AtomicBool::new(false),
+        );
+        roller_caption(&curves)
+    }
+
+    /// The caption says what the curves show: the plain roller's first
+    /// critical load falls toward zero with its mass; with drag along the
+    /// rods (`c_ext` = 0.01) it stays near 0.085 (two rods: 2.54), and the
+    /// caption no longer says "goes to zero" over flat curves.
+    #[test]
+    fn the_roller_s_caption_follows_its_curves() {
+        let plain = caption(&[]);
+        assert!(plain.contains("falling toward zero as nu -> 0"), "{plain}");
+        let dragged = caption(&[
+            (Key::Mu, 0.2),
+            (Key::V, 0.01),
+            (Key::Nu, 0.05),
+            (Key::Rho, 0.2),
+            (Key::CExt, 0.01),
+        ]);
+        assert!(
+            dragged.contains("not falling toward zero over this range"),
+            "{dragged}"
+        );
+        assert!(!dragged.contains("goes to zero"), "{dragged}");
     }
 }
