@@ -205,7 +205,7 @@ impl Command {
             Self::Kick => "kick: every rod turned by 0.01 rad",
             Self::Reset => "reset: a fresh run from the standard perturbation",
             Self::ResetAll => {
-                "reset all: the preset's parameters and load, normal speed, a fresh run, the default views"
+                "reset all: the preset's parameters and load, normal speed, a fresh run, the default views; an open lesson is closed"
             }
             Self::LoadUp => "load up by a hundredth of the load bar",
             Self::LoadDown => "load down by a hundredth of the load bar",

@@ -290,9 +290,35 @@ impl AppState {
             // The hand takes the load over from a ramp.
             self.ramp = None;
         }
+        let (bar_before, load_before) = (self.load_max(), self.settings.model.load_p());
         match self.set_parameter(key, value) {
             Ok(()) => self.clear_refusal(key),
             Err(why) => self.refuse(key, why.to_string()),
+        }
+        if key == Key::Rods && self.load_max() != bar_before && load_before > 0.0 {
+            self.scale_load_with_the_bar(bar_before, load_before);
+        }
+    }
+
+    /// After a change of the rods typed by hand, the load moved as the
+    /// load bar scales (`(2/N)^2`): the same place on the bar and the same
+    /// `P L^2/EI` (typing 16 rods at p = 2 left the load 16 times past the
+    /// chain's bar, the chain whipping under a stick-slip warning), and said.
+    fn scale_load_with_the_bar(&mut self, bar_before: f64, load_before: f64) {
+        let load = load_before * self.load_max() / bar_before;
+        match self.set_parameter(Key::Load, load) {
+            Ok(()) => self.say(Notice::info(format!(
+                "rods = {}: the load bar is now 0 to {}, and the load moved with it from p = {} to {} (the same place on the bar; type the load to set another)",
+                self.settings.model.column.rods,
+                crate::format::number_text(self.load_max()),
+                crate::format::load_text(load_before),
+                crate::format::load_text(load)
+            ))),
+            Err(why) => self.say(Notice::warning(format!(
+                "rods = {}: the load p = {} is kept ({why})",
+                self.settings.model.column.rods,
+                crate::format::load_text(load_before)
+            ))),
         }
     }
 

@@ -562,3 +562,48 @@ fn the_fields_under_the_load_stay_put_as_the_notes_change() {
         assert_eq!(place(&harness), first, "{what}");
     }
 }
+
+/// Typing 16 rods at p = 2 moves the load with the load bar, which scales
+/// as (2/N)^2: p = 2 of the two-rod bar (0 to 8) becomes 1/32 of the
+/// chain's (0 to 0.125), the same place and the same P L^2/EI, and the
+/// message line says so (the load stayed 16 times past the chain's bar).
+#[test]
+fn typed_rods_move_the_load_with_the_bar() {
+    let mut app = ZieglerApp::new(Settings {
+        preset: zieglerlab::model::PresetId::UniformRods,
+        model: zieglerlab::model::PresetId::UniformRods.model(),
+        ..Settings::default()
+    })
+    .unwrap();
+    app.apply(zieglerlab::app::Action::Enter {
+        key: zieglerlab::model::Key::Load,
+        value: 2.0,
+    });
+    let beck_before = app.settings().model.beck_load(2.0).unwrap();
+    {
+        let mut harness = harness(&mut app);
+        harness.get_by_label("SI parameters").click();
+        harness.run();
+        type_into(&mut harness, "rods", "16");
+        press(&mut harness, egui::Key::Enter);
+    }
+    let model = app.settings().model;
+    assert_eq!(model.column.rods, 16);
+    assert!(
+        (model.load_p() - 2.0 / 64.0).abs() < 1e-15,
+        "{}",
+        model.load_p()
+    );
+    assert!(model.load_p() <= model.load_bar_max_p());
+    let beck_after = model.beck_load(model.load_p()).unwrap();
+    assert!((beck_after - beck_before).abs() < 1e-12 * beck_before);
+    let said = app
+        .state()
+        .notice()
+        .map(|n| n.text.clone())
+        .unwrap_or_default();
+    assert!(
+        said.starts_with("rods = 16: the load bar is now 0 to 0.125"),
+        "{said}"
+    );
+}

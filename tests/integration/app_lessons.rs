@@ -359,3 +359,109 @@ fn a_right_and_a_wrong_answer_are_revealed_differently() {
         said[1]
     );
 }
+
+/// "reset all" during a lesson's ramp step ends the lesson, and says so:
+/// it left the step saying "watch the load rise" with the ramp gone.
+#[test]
+fn reset_all_during_a_ramp_step_closes_the_lesson() {
+    let (_, text) = zieglerlab::lesson::BUILT_IN[0];
+    let lesson = zieglerlab::lesson::Lesson::read(text, &zieglerlab::app::Tab::ids()).unwrap();
+    let title = lesson.title.clone();
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.apply(zieglerlab::app::Action::LessonOpen(Box::new(lesson)));
+    for _ in 0..2 {
+        app.apply(zieglerlab::app::Action::Command(
+            zieglerlab::app::Command::LessonNext,
+        ));
+    }
+    assert!(app.state().ramp().is_some(), "the ramp step");
+    let mut harness = harness(&mut app);
+    assert!(
+        harness
+            .query_by_label_contains("as the load rises")
+            .is_some()
+    );
+    harness.get_by_label("reset all").click();
+    harness.run();
+    assert!(
+        harness
+            .query_by_label_contains("as the load rises")
+            .is_none()
+    );
+    drop(harness);
+    assert!(app.state().lesson().is_none());
+    assert!(app.state().ramp().is_none());
+    let said = app
+        .state()
+        .notice()
+        .map(|n| n.text.clone())
+        .unwrap_or_default();
+    assert!(
+        said.contains(&format!("the lesson \"{title}\" is closed")),
+        "{said}"
+    );
+}
+
+/// Past a lesson's last step, Page Down opens the next built-in lesson at
+/// its first step, and the sidebar offers it by name; after the last
+/// lesson, Page Down says how to go on.
+#[test]
+fn page_down_after_the_last_step_opens_the_next_lesson() {
+    let tabs = zieglerlab::app::Tab::ids();
+    let lessons: Vec<zieglerlab::lesson::Lesson> = zieglerlab::lesson::BUILT_IN
+        .iter()
+        .map(|(_, text)| zieglerlab::lesson::Lesson::read(text, &tabs).unwrap())
+        .collect();
+    let app = ZieglerApp::new(Settings::default()).unwrap();
+    let mut harness = Harness::builder()
+        .with_size([1280.0, 900.0])
+        .build_ui_state(
+            |ui, app: &mut ZieglerApp| {
+                app.take_keys(ui.ctx());
+                app.contents_ui(ui);
+            },
+            app,
+        );
+    harness.run_steps(8);
+    harness
+        .state_mut()
+        .apply(zieglerlab::app::Action::LessonOpen(Box::new(
+            lessons[0].clone(),
+        )));
+    harness.run_steps(8);
+    for _ in 1..lessons[0].steps.len() {
+        harness.key_press(egui::Key::PageDown);
+        harness.run_steps(8);
+    }
+    let run = |h: &Harness<'_, ZieglerApp>| {
+        let run = h.state().state().lesson().unwrap();
+        (run.lesson.title.clone(), run.step)
+    };
+    assert_eq!(
+        run(&harness),
+        (lessons[0].title.clone(), lessons[0].steps.len() - 1)
+    );
+    harness.get_by_label(&format!("next lesson: {}", lessons[1].title));
+    harness.key_press(egui::Key::PageDown);
+    harness.run_steps(8);
+    assert_eq!(run(&harness), (lessons[1].title.clone(), 0));
+    // The last lesson's last step: Page Down stays and says how to go on.
+    let last = lessons.last().unwrap();
+    harness
+        .state_mut()
+        .apply(zieglerlab::app::Action::LessonOpen(Box::new(last.clone())));
+    for _ in 1..last.steps.len() {
+        harness.key_press(egui::Key::PageDown);
+        harness.run_steps(8);
+    }
+    harness.key_press(egui::Key::PageDown);
+    harness.run_steps(8);
+    assert_eq!(run(&harness), (last.title.clone(), last.steps.len() - 1));
+    let said = harness
+        .state()
+        .state()
+        .notice()
+        .map(|n| n.text.clone())
+        .unwrap_or_default();
+    assert!(said.contains("this was the lesson's last step"), "{said}");
+}

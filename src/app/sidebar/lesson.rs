@@ -198,8 +198,21 @@ fn step_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &T
         {
             actions.push(Command::LessonBack);
         }
-        if ui
-            .add_enabled(!last, egui::Button::new("next"))
+        if last {
+            // The way on from the last step: the next lesson (Page Down).
+            if let Some(next) = state.next_lesson() {
+                if ui
+                    .button(format!("next lesson: {}", next.title))
+                    .on_hover_text("open the next lesson at its first step (Page Down)")
+                    .clicked()
+                {
+                    actions.push(Command::LessonNext);
+                }
+            } else {
+                ui.weak("the last step of the last lesson");
+            }
+        } else if ui
+            .button("next")
             .on_hover_text("the next step: it sets and starts what it says (Page Down, as a presenter's remote sends)")
             .clicked()
         {

@@ -50,9 +50,17 @@ impl AppState {
 
     /// Everything back to the preset: its parameters and load, no ramp, no
     /// overlay, no refusals, normal speed, a fresh run, and the views at
-    /// their defaults.
+    /// their defaults. A lesson ends too (its step would go on saying what
+    /// no longer happens: "watch the load rise" with the ramp gone), and
+    /// the message line says so.
     pub(super) fn reset_all(&mut self) {
         let preset = self.settings.preset;
+        if let Some(run) = self.lesson.take() {
+            self.say(Notice::info(format!(
+                "reset all: the lesson \"{}\" is closed (open it again from the lessons menu)",
+                run.lesson.title
+            )));
+        }
         self.ramp = None;
         self.overlay = None;
         self.overlay_wanted = None;

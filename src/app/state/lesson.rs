@@ -144,6 +144,19 @@ fn stability_words(p: f64, stability: &crate::analysis::Stability) -> String {
     format!("The theory at p = {}: {how}.", load_text(p))
 }
 
+/// The built-in lessons, read once (the sidebar asks for the next one
+/// every frame of a last step).
+fn built_in_lessons() -> &'static [Lesson] {
+    static READ: std::sync::OnceLock<Vec<Lesson>> = std::sync::OnceLock::new();
+    READ.get_or_init(|| {
+        let tabs = Tab::ids();
+        crate::lesson::BUILT_IN
+            .iter()
+            .filter_map(|(_, text)| Lesson::read(text, &tabs).ok())
+            .collect()
+    })
+}
+
 impl AppState {
     /// Opens `lesson` at its first step, from the lesson's own state
     /// whatever ran before: no ramp, no overlay and the normal speed unless
@@ -188,6 +201,17 @@ impl AppState {
             return Vec::new();
         };
         let last = run.lesson.steps.len() - 1;
+        if forward && run.step == last {
+            // Past the last step: the next built-in lesson, or a word on
+            // how to go on (Page Down did nothing, and nothing said so).
+            if let Some(next) = self.next_lesson() {
+                return vec![Action::LessonOpen(Box::new(next))];
+            }
+            self.say(Notice::info(
+                "this was the lesson's last step: close it, or open another from the lessons menu",
+            ));
+            return Vec::new();
+        }
         let step = if forward {
             (run.step + 1).min(last)
         } else {
@@ -198,6 +222,16 @@ impl AppState {
         }
         run.step = step;
         self.step_actions()
+    }
+
+    /// The built-in lesson after the open one, when the open one is built
+    /// in and not the last.
+    #[must_use]
+    pub fn next_lesson(&self) -> Option<Lesson> {
+        let title = &self.lesson.as_ref()?.lesson.title;
+        let mut built_in = built_in_lessons().iter();
+        built_in.find(|lesson| &lesson.title == title)?;
+        built_in.next().cloned()
     }
 
     /// The student's predicted load.
