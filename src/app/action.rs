@@ -202,7 +202,7 @@ impl Command {
         match self {
             Self::PlayPause => "play / pause",
             Self::Step => "one engine step (1/240 s), then paused",
-            Self::Kick => "kick: every rod turned by 0.01 rad",
+            Self::Kick => "kick: every rod turned by 0.03 rad",
             Self::Reset => "reset: a fresh run from the standard perturbation",
             Self::ResetAll => {
                 "reset all: the preset's parameters and load, normal speed, a fresh run, the default views; an open lesson is closed"
