@@ -39,6 +39,7 @@ impl Exports {
                 .save_file("zieglerlab: save the table", table.file_name(), ctx);
             self.open_for = Some(table);
         }
+        self.dialog.typed_path_ui(ctx, "the table (CSV)");
         let closed = self.dialog.answer()?;
         let table = self.open_for.take()?;
         Some(match closed {

@@ -1,6 +1,7 @@
 //! The desktop's file and folder dialogs, opened off the UI thread (the
 //! window keeps drawing while one is open), the answer handed to the frame
-//! that asks.
+//! that asks; where a desktop has no save dialog, a path typed in the
+//! window instead (the folder and a suggested name filled in).
 
 use std::path::{Path, PathBuf};
 use std::sync::mpsc;
@@ -20,10 +21,22 @@ pub enum Closed {
 pub const NOT_SAVED: &str =
     "not saved: no file chosen (where no dialog opened, this desktop offers none)";
 
+/// A dialog that closes within this time without a file never opened: no
+/// person cancels a dialog so fast (a desktop with neither a portal nor
+/// zenity answers at once).
+const NO_DIALOG_SECS: f64 = 0.5;
+
 /// A dialog that may be open.
 #[derive(Default)]
 pub struct FileDialog {
-    answer: Option<mpsc::Receiver<Option<PathBuf>>>,
+    /// The dialog's answer, and whether it came too fast to be a person's.
+    answer: Option<mpsc::Receiver<(Option<PathBuf>, bool)>>,
+    /// The file a save proposes (its folder and name), for a typed path.
+    proposed: Option<PathBuf>,
+    /// The path being typed where no save dialog opened.
+    typing: Option<String>,
+    /// The typed path's answer, once given.
+    typed: Option<Closed>,
 }
 
 impl FileDialog {
@@ -37,7 +50,15 @@ impl FileDialog {
     /// Opens the desktop's dialog to save a file, proposing `name` (unless a
     /// dialog is open); the window is woken when it closes.
     pub fn save_file(&mut self, title: &str, name: &str, ctx: &egui::Context) {
-        let dialog = rfd::FileDialog::new().set_title(title).set_file_name(name);
+        if self.is_open() {
+            return;
+        }
+        let folder = default_folder();
+        self.proposed = Some(folder.join(name));
+        let dialog = rfd::FileDialog::new()
+            .set_title(title)
+            .set_directory(&folder)
+            .set_file_name(name);
         self.open(ctx, move || dialog.save_file());
     }
 
@@ -54,8 +75,11 @@ impl FileDialog {
         let spawned = std::thread::Builder::new()
             .name("file dialog".to_owned())
             .spawn(move || {
+                let asked = std::time::Instant::now();
+                let chosen = ask();
+                let at_once = asked.elapsed().as_secs_f64() < NO_DIALOG_SECS;
                 // A window closed meanwhile has dropped the receiver.
-                let _ = send.send(ask());
+                let _ = send.send((chosen, at_once));
                 ctx.request_repaint();
             });
         if spawned.is_ok() {
@@ -63,23 +87,83 @@ impl FileDialog {
         }
     }
 
-    /// Whether a dialog is open.
+    /// Whether a dialog is open (or a path is being typed in its place).
     #[must_use]
     pub fn is_open(&self) -> bool {
-        self.answer.is_some()
+        self.answer.is_some() || self.typing.is_some()
     }
 
     /// How the dialog closed, once it has (`None` while it is open or when
-    /// none was opened).
+    /// none was opened). A save whose dialog never opened is not closed:
+    /// a path is typed in its place ([`Self::typed_path_ui`]).
     pub fn answer(&mut self) -> Option<Closed> {
+        if let Some(typed) = self.typed.take() {
+            return Some(typed);
+        }
         let receiver = self.answer.as_ref()?;
         let closed = match receiver.try_recv() {
-            Ok(Some(folder)) => Closed::Chosen(folder),
-            Ok(None) | Err(mpsc::TryRecvError::Disconnected) => Closed::NoneChosen,
+            Ok((Some(chosen), _)) => Closed::Chosen(chosen),
+            Ok((None, true)) if self.proposed.is_some() => {
+                self.answer = None;
+                self.typing = self.proposed.take().map(|p| p.display().to_string());
+                return None;
+            }
+            Ok((None, _)) | Err(mpsc::TryRecvError::Disconnected) => Closed::NoneChosen,
             Err(mpsc::TryRecvError::Empty) => return None,
         };
         self.answer = None;
+        self.proposed = None;
         Some(closed)
+    }
+
+    /// Where a save dialog did not open: a small window to type the file's
+    /// path in, the folder and the suggested name filled in. Draw it every
+    /// frame; it shows only while a path is being typed.
+    pub fn typed_path_ui(&mut self, ctx: &egui::Context, what: &str) {
+        let Some(path) = self.typing.as_mut() else {
+            return;
+        };
+        let mut answer = None;
+        egui::Window::new("save as")
+            .collapsible(false)
+            .resizable(false)
+            .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
+            .show(ctx, |ui| {
+                ui.label(format!(
+                    "No file dialog opened on this desktop: type where to save {what}."
+                ));
+                let edit = ui
+                    .add(egui::TextEdit::singleline(path).desired_width(360.0))
+                    .accessible_name("save as path");
+                let entered = edit.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+                let file = PathBuf::from(path.trim());
+                let folder = crate::files::folder_of(&file);
+                let named = file.file_name().is_some() && !path.trim().is_empty();
+                let why_not = if !named {
+                    Some("type a file's path")
+                } else if !folder.is_dir() {
+                    Some("its folder does not exist")
+                } else {
+                    None
+                };
+                if let Some(why) = why_not {
+                    ui.weak(why);
+                }
+                ui.horizontal(|ui| {
+                    let save = ui.add_enabled(why_not.is_none(), egui::Button::new("save"));
+                    if save.clicked() || (entered && why_not.is_none()) {
+                        answer = Some(Closed::Chosen(file.clone()));
+                    }
+                    if ui.button("cancel").clicked() {
+                        answer = Some(Closed::NoneChosen);
+                    }
+                });
+            });
+        if let Some(answer) = answer {
+            self.typing = None;
+            self.typed = Some(answer);
+            ctx.request_repaint();
+        }
     }
 
     /// A dialog that answers `chosen` at once (for tests of what the window
@@ -88,11 +172,23 @@ impl FileDialog {
     #[must_use]
     pub(crate) fn answered(chosen: Option<PathBuf>) -> Self {
         let (send, answer) = mpsc::channel();
-        let _ = send.send(chosen);
+        let _ = send.send((chosen, false));
         Self {
             answer: Some(answer),
+            ..Self::default()
         }
     }
+}
+
+/// The folder a save proposes: the user's pictures folder (`~/Pictures`)
+/// where there is one, else the home folder, else the working folder.
+fn default_folder() -> PathBuf {
+    let home = std::env::home_dir().filter(|h| h.is_dir());
+    home.as_ref()
+        .map(|h| h.join("Pictures"))
+        .filter(|p| p.is_dir())
+        .or(home)
+        .unwrap_or_else(|| PathBuf::from("."))
 }
 
 #[cfg(test)]
@@ -108,10 +204,11 @@ mod tests {
         assert_eq!(dialog.answer(), Some(Closed::Chosen(PathBuf::from("/tmp"))));
         assert!(!dialog.is_open());
         assert_eq!(dialog.answer(), None);
-        let (send, answer) = mpsc::channel::<Option<PathBuf>>();
+        let (send, answer) = mpsc::channel::<(Option<PathBuf>, bool)>();
         drop(send);
         let mut gone = FileDialog {
             answer: Some(answer),
+            ..FileDialog::default()
         };
         assert_eq!(gone.answer(), Some(Closed::NoneChosen));
     }

@@ -46,6 +46,7 @@ impl PanelPicture {
             self.dialog
                 .save_file("zieglerlab: save the plots as PNG", &name, ctx);
         }
+        self.dialog.typed_path_ui(ctx, "the plots (PNG)");
         match self.dialog.answer() {
             Some(Closed::Chosen(path)) => {
                 self.chosen = Some(path);

@@ -174,3 +174,53 @@ fn in_projector_mode_every_tab_is_shown_once() {
         }
     }
 }
+
+/// On a desktop with no file dialog (no portal, no zenity: this machine),
+/// "save CSV..." opens a window to type the path in, the folder and a
+/// suggested name filled in; a typed path gets the table, and "cancel"
+/// saves nothing and says so. (It said only that no file was chosen, and
+/// there was no way to save.)
+#[test]
+fn a_save_without_a_desktop_dialog_takes_a_typed_path() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.apply(Action::Tab(Tab::HISTORIES));
+    for _ in 0..60 {
+        app.state_mut().advance(1.0 / 60.0);
+    }
+    let folder = tempfile::tempdir().unwrap();
+    let out = folder.path().join("run.csv");
+    {
+        let mut harness = harness_at(&mut app, [1280.0, 800.0]);
+        harness.get_by_label("save CSV...").click();
+        let mut typed = None;
+        for _ in 0..100 {
+            harness.step();
+            std::thread::sleep(std::time::Duration::from_millis(20));
+            if let Some(node) = harness.query_by_label("save as path") {
+                typed = node.value();
+                break;
+            }
+        }
+        let typed = typed.expect("a window to type the path in");
+        assert!(typed.ends_with("zieglerlab-history.csv"), "{typed}");
+        let field = harness.get_by_label("save as path");
+        field.click();
+        harness.run_steps(2);
+        harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+        harness.run_steps(2);
+        harness
+            .get_by_label("save as path")
+            .type_text(out.to_str().unwrap());
+        harness.run_steps(2);
+        harness.get_by_label("save").click();
+        harness.run_steps(4);
+    }
+    let text = std::fs::read_to_string(&out).expect("the table written to the typed path");
+    assert!(text.starts_with("t,phi1,phi2"), "{text}");
+    let said = app
+        .state()
+        .notice()
+        .map(|n| n.text.clone())
+        .unwrap_or_default();
+    assert!(said.starts_with("saved "), "{said}");
+}
