@@ -53,7 +53,7 @@ impl FileDialog {
         if self.is_open() {
             return;
         }
-        let folder = default_folder();
+        let folder = user_folder(&["Pictures"]);
         self.proposed = Some(folder.join(name));
         let dialog = rfd::FileDialog::new()
             .set_title(title)
@@ -180,13 +180,19 @@ impl FileDialog {
     }
 }
 
-/// The folder a save proposes: the user's pictures folder (`~/Pictures`)
-/// where there is one, else the home folder, else the working folder.
-fn default_folder() -> PathBuf {
+/// The folder a save proposes: the first of the user's `preferred`
+/// folders (`~/Videos`, `~/Pictures`) there is, else the home folder, else
+/// the working folder.
+#[must_use]
+pub fn user_folder(preferred: &[&str]) -> PathBuf {
     let home = std::env::home_dir().filter(|h| h.is_dir());
     home.as_ref()
-        .map(|h| h.join("Pictures"))
-        .filter(|p| p.is_dir())
+        .and_then(|h| {
+            preferred
+                .iter()
+                .map(|name| h.join(name))
+                .find(|p| p.is_dir())
+        })
         .or(home)
         .unwrap_or_else(|| PathBuf::from("."))
 }

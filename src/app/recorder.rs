@@ -379,7 +379,11 @@ impl Default for RecordChoice {
     fn default() -> Self {
         Self {
             secs: 10.0,
-            folder: ".".to_owned(),
+            // The user's videos or pictures folder, not the program's
+            // working folder.
+            folder: crate::app::file_dialog::user_folder(&["Videos", "Pictures"])
+                .display()
+                .to_string(),
             dialog: FileDialog::default(),
         }
     }

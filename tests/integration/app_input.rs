@@ -607,3 +607,29 @@ fn typed_rods_move_the_load_with_the_bar() {
         "{said}"
     );
 }
+
+/// A dead load (eta = 0) is said in place of the preset's description,
+/// which names a follower force: the two stood one above the other and
+/// contradicted each other.
+#[test]
+fn a_changed_tip_force_replaces_the_preset_s_words() {
+    let preset = zieglerlab::model::PresetId::Ziegler1952;
+    let mut app = ZieglerApp::new(Settings {
+        preset,
+        model: preset.model(),
+        ..Settings::default()
+    })
+    .unwrap();
+    let description = preset.preset().description;
+    {
+        let harness = harness(&mut app);
+        harness.get_by_label(description);
+    }
+    app.apply(zieglerlab::app::Action::Enter {
+        key: zieglerlab::model::Key::Eta,
+        value: 0.0,
+    });
+    let harness = harness(&mut app);
+    assert!(harness.query_by_label(description).is_none());
+    harness.get_by_label_contains("tip force: a dead load (eta = 0)");
+}

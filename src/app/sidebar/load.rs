@@ -28,7 +28,9 @@ impl View for LoadSection {
                 .on_hover_text(
                     "type a load (Enter applies, Escape restores); beyond the bar's end too",
                 );
-            ui.label("load p = P l/k");
+            ui.label("load p = P l/k").on_hover_text(
+                "the load without units: the tip force P times the rod's length l over the springs' stiffness k (Ziegler's column flutters from p = 2.09)",
+            );
         });
         refusal_ui(ui, state, theme, Key::Load);
         let p = state.model().load_p();
@@ -37,7 +39,10 @@ impl View for LoadSection {
                 "roller: q = R l/k = p/μ = {:.3}   (μ = {})",
                 p / roller.mu,
                 roller.mu
-            ));
+            ))
+            .on_hover_text(
+                "the roller's own load: the force R pressing it on the band, in the units of p; the band's friction pushes with μ R, so p = μ q",
+            );
         }
         // The notes below the field (the critical loads, a ramp's onsets,
         // warnings) take a fixed number of lines whatever their count, so
@@ -56,10 +61,11 @@ impl View for LoadSection {
             } else {
                 let label = ui
                     .add(egui::Label::new(RichText::new(&note.text).color(note.color)).truncate());
-                match &note.more {
-                    Some(more) => label.on_hover_text(more),
-                    None => label.on_hover_text(&note.text),
-                };
+                // A cut line shows itself whole on hover (egui's own): a
+                // second tooltip of the same words stacked under it.
+                if let Some(more) = &note.more {
+                    label.on_hover_text(more);
+                }
             }
         }
         // Up to the same bottom every frame, whatever was drawn above it.
@@ -93,6 +99,29 @@ impl Note {
     }
 }
 
+/// What a critical load means, for its tooltip (the line itself says the
+/// load and the states).
+fn transition_meaning(t: &crate::analysis::Transition) -> String {
+    use crate::analysis::State;
+    let how = match (t.from, t.to) {
+        (_, State::Flutter) => {
+            "past this load a pair of eigenvalues lies right of the imaginary axis: a kick grows into a growing swing"
+        }
+        (_, State::Divergence) => {
+            "past this load a real eigenvalue is positive: the column leans away without swinging"
+        }
+        (_, State::Stable) => {
+            "past this load no eigenvalue lies right of the imaginary axis: a kick no longer grows"
+        }
+    };
+    format!(
+        "p = {}: the column goes from {} to {}; {how}",
+        crate::format::load_text(t.load),
+        t.from.name(),
+        t.to.name()
+    )
+}
+
 /// The notes under the load field, in order: the load beyond the plotted
 /// range, the critical loads (or that a lesson hides them), a ramp's
 /// onsets, the resolution warning.
@@ -122,7 +151,9 @@ fn notes(state: &AppState, p: f64, theme: &Theme, weak: egui::Color32) -> Vec<No
         return notes;
     };
     for t in &analysis.transitions {
-        notes.push(Note::new(t.to_string(), theme.state_color(t.to)));
+        let mut note = Note::new(t.to_string(), theme.state_color(t.to));
+        note.more = Some(transition_meaning(t));
+        notes.push(note);
     }
     if let Some(run) = state.ramp() {
         ramp_onset_notes(

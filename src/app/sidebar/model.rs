@@ -32,7 +32,11 @@ impl View for ModelSection {
                 })
                 .response
                 .labelled_by(label.id)
-                .on_hover_text(chosen.preset().description);
+                .on_hover_text(format!(
+                    "{}\n\n{}: where the model is in the study this program follows (its figure and equations)",
+                    chosen.preset().description,
+                    chosen.preset().source
+                ));
         });
         if chosen != current {
             actions.push(Action::Preset(chosen));
@@ -40,28 +44,31 @@ impl View for ModelSection {
         // In front of a class the picker's tooltip holds the description;
         // while a lesson keeps the answer it is not shown (some name their
         // critical loads).
-        if !state.settings().projector && !state.answer_hidden() {
+        // The preset's words name its force; a changed eta changes that
+        // force, and then they are not shown above words that contradict
+        // them ("ideal follower force" over "a dead load").
+        let eta = state.model().load.eta().filter(|&eta| eta < 1.0);
+        if !state.settings().projector && !state.answer_hidden() && eta.is_none() {
             ui.label(RichText::new(state.settings().preset.preset().description).small());
         }
-        // The preset's words name its force; a changed eta changes that force.
-        match state.model().load.eta() {
+        match eta {
             Some(0.0) => {
-                ui.label("tip force: a dead load (eta = 0), fixed in direction");
+                ui.label("tip force: a dead load (eta = 0), fixed in direction, in place of the preset's follower force");
             }
-            Some(eta) if eta < 1.0 => {
+            Some(eta) => {
                 ui.label(format!(
-                    "tip force: partly tangential, turned by eta = {} of the last rod's angle",
+                    "tip force: partly tangential, turned by eta = {} of the last rod's angle (the preset's follower force has eta = 1)",
                     crate::format::Shown(eta)
                 ));
             }
-            Some(_) | None => {}
+            None => {}
         }
         let mut engine = state.settings().engine;
         egui::ComboBox::from_label("engine")
             .selected_text(format!("{engine:?}").to_lowercase())
             .show_ui(ui, |ui| {
                 ui.selectable_value(&mut engine, EngineKind::Rapier, "rapier")
-                    .on_hover_text("rapier2d multibody, the roller's spin implicit");
+                    .on_hover_text("rapier: the rapier2d physics engine, rods as rigid bodies joined by hinges (a multibody), the roller's spin implicit");
                 ui.selectable_value(&mut engine, EngineKind::Reference, "reference")
                     .on_hover_text("adaptive Dormand-Prince 5(4) on the exact equations");
             })

@@ -28,7 +28,9 @@ impl View for ParametersSection {
             .filter(|k| k.applies_to(&model) && k.key != Key::Load)
             .collect();
         let (groups, si): (Vec<_>, Vec<_>) = applicable.into_iter().partition(|k| k.is_group);
-        ui.label("dimensionless groups");
+        ui.label("dimensionless groups").on_hover_text(
+            "the few combinations of the SI values that decide the motion (a = k/(m l^2) sets how fast it is; the roller's nu, rho, mu and V its mass, size, friction and the band's speed); changing one keeps the others",
+        );
         for spec in groups {
             self.field(ui, state, actions, theme, spec);
         }

@@ -36,6 +36,9 @@ const GROWTH_RATE: &str = "growth rate: how fast the motion grows (positive) or 
 const E_FOLDING: &str =
     "e-folding time: the time in which the swing grows by a factor e = 2.72 (1 / growth rate)";
 const DECAY: &str = "decay time: the time in which the swing shrinks by a factor e = 2.72";
+/// What the measured line means, on hover.
+const MEASURED_TIP: &str = "the eigenvalue fitted to the run's own motion (a matrix pencil of the angles): at least 20 s of small swings (below 0.05 rad) since the last kick, release or change, each mode once the run holds a whole period of it; 'mode 2 of 2' counts the column's modes of swinging from the slowest";
+
 const FREQUENCY_AND_MODES: &str = "frequency: how fast the column swings, in radians per second (the eigenvalue's height); the period is one full swing. A column of n rods has n modes of swinging, counted here from the slowest; the card describes the one that grows fastest (or dies away slowest), and the run's measurement is shown for that same mode";
 
 /// The frequency of the mode the card describes, named among the column's
@@ -95,7 +98,7 @@ fn frequency_and_measured_ui(
         Some(_) => measured.iter().find(|(_, k)| *k == card_mode),
         None => measured.first(),
     };
-    match (like_for_like, measured.first()) {
+    let measured_label = match (like_for_like, measured.first()) {
         (Some(&(z, k)), _) => ui.label(format!(
             "measured from the run{}  {:+.5} ± {:.4}i 1/s",
             k.filter(|_| named)
@@ -123,6 +126,7 @@ fn frequency_and_measured_ui(
             .small(),
         ),
     };
+    measured_label.on_hover_text(MEASURED_TIP);
 }
 
 /// The oscillating modes of a spectrum, slowest first: of each pair, the
@@ -163,7 +167,7 @@ fn onset_ui(ui: &mut egui::Ui, onset: f64, hopf: &Result<Hopf, NoHopf>, sliding:
                 .map(|a| format!(" Near it the cycle's |phi1| is about {} sqrt(p - {at}) rad.", number_text(*a)))
                 .unwrap_or_default();
             let tip = format!(
-                "First Lyapunov coefficient {} at the onset p = {at} (Hopf point, frequency {} rad/s).{amplitude}{sticking_tip}",
+                "Soft: past the onset the swing grows from zero to a small steady cycle, larger as the load rises; hard: it jumps to a large one, which stays when the load is lowered a little. Sticking: the roller stops slipping on the band, where the friction changes its law.\n\nFirst Lyapunov coefficient {} at the onset p = {at} (Hopf point, frequency {} rad/s).{amplitude}{sticking_tip}",
                 number_text(hopf.first_lyapunov),
                 number_text(hopf.frequency_rad_per_s)
             );

@@ -32,7 +32,7 @@ pub const TAB: TabSpec = TabSpec {
 
 /// The longest chain whose cycles the window follows (over the load bar, a
 /// chain of 4 rods with joint dampers takes about 5 s in a release build on
-/// two cores, 6 rods 14 s, 8 rods 35 s).
+/// two cores, 6 rods 10 s, 8 rods 18 s: the README's figures).
 const WINDOW_MAX_RODS: usize = 8;
 
 /// What the diagram depends on: the column (at load 0) and the load range.
@@ -70,7 +70,7 @@ impl PostCriticalPanel {
             let rods = model.column.rods;
             if rods > WINDOW_MAX_RODS {
                 send(Err(format!(
-                    "a chain of {rods} rods takes too long to follow in the window (8 rods take about 35 s on two cores, and the work grows faster than the number of rods); `zieglerlab bifurcation` computes its cycles from the command line"
+                    "a chain of {rods} rods takes too long to follow in the window (8 rods take about 18 s on two cores, and the work grows faster than the number of rods); `zieglerlab bifurcation` computes its cycles from the command line"
                 )));
                 return;
             }
