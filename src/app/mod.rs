@@ -523,15 +523,17 @@ impl ZieglerApp {
         // tab is on the screen already: never a second time below, whatever
         // room the estimate above left there.
         if locus_beside || ui.available_height() < min_plot_height {
-            ui.weak(if locus_beside && self.state.answer_hidden() {
-                "The plots are hidden until the lesson reveals the answer; they need a taller window, or projector mode off (P).".to_owned()
-            } else if tab_on_top {
+            // One reason a line: where the tab is, or that it is hidden,
+            // or that it needs room (they were mixed into one sentence).
+            ui.weak(if tab_on_top {
                 format!(
                     "The {} tab shows in the column's place; the root locus tab brings the column back.",
                     self.tab.title()
                 )
             } else if locus_beside {
                 "The root locus is beside the column; a tab chosen here shows in the column's place.".to_owned()
+            } else if tab_hidden {
+                ANSWER_HIDDEN_NOTE.to_owned()
             } else {
                 "The plots need more room here: a taller window, or projector mode off (P).".to_owned()
             });

@@ -465,3 +465,41 @@ fn page_down_after_the_last_step_opens_the_next_lesson() {
         .unwrap_or_default();
     assert!(said.contains("this was the lesson's last step"), "{said}");
 }
+
+/// Under the tab bar, one reason a line: during a lesson's predict step in
+/// projector mode at 1024x768 with the time histories open (shown in the
+/// column's place, not hidden), the note says where the tab is, and not
+/// that "the plots are hidden ...; they need a taller window".
+#[test]
+fn the_note_under_the_tabs_gives_one_reason() {
+    let (_, text) = zieglerlab::lesson::BUILT_IN[0];
+    let lesson = zieglerlab::lesson::Lesson::read(text, &zieglerlab::app::Tab::ids()).unwrap();
+    let mut app = ZieglerApp::new(Settings {
+        projector: true,
+        ..Settings::default()
+    })
+    .unwrap();
+    app.apply(zieglerlab::app::Action::LessonOpen(Box::new(lesson)));
+    app.apply(zieglerlab::app::Action::Command(
+        zieglerlab::app::Command::LessonNext,
+    ));
+    assert!(
+        app.state().answer_hidden(),
+        "the predict step hides the answer"
+    );
+    app.apply(zieglerlab::app::Action::Tab(
+        zieglerlab::app::Tab::HISTORIES,
+    ));
+    let harness = crate::app_input::harness_at(&mut app, [1024.0, 768.0]);
+    harness.get_by_label_contains("The time histories tab shows in the column's place");
+    assert!(
+        harness
+            .query_by_label_contains("they need a taller window")
+            .is_none()
+    );
+    assert!(
+        harness
+            .query_by_label_contains("The plots are hidden")
+            .is_none()
+    );
+}
