@@ -393,10 +393,7 @@ impl ZieglerApp {
             self.for_pictures || self.recorder.is_capturing() || self.picture.capturing(),
         );
         match self.recorder.frame(ui.ctx()) {
-            Some(Ok(path)) => self.state.say(Notice::info(format!(
-                "recording saved to {}",
-                path.display()
-            ))),
+            Some(Ok(recorded)) => self.state.say(Notice::info(recorded.text())),
             Some(Err(why)) => self
                 .state
                 .say(Notice::error(format!("recording failed: {why}"))),

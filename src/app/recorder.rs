@@ -61,11 +61,46 @@ pub struct Encoder {
     job: Jobs<PathBuf, Result<PathBuf, RecordError>>,
     /// Why the thread could not start, if it could not.
     failed: Option<RecordError>,
+    /// The seconds recorded.
+    secs: f64,
+}
+
+/// A recording written: where, and how many frames of how many seconds.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Recorded {
+    pub path: PathBuf,
+    pub frames: usize,
+    pub secs: f64,
+}
+
+impl Recorded {
+    /// What the message line says of it: where, the frames caught, and on
+    /// a machine too busy for a smooth GIF (fewer than half the frames a
+    /// second asked for), what records more.
+    #[must_use]
+    pub fn text(&self) -> String {
+        #[expect(clippy::cast_precision_loss, reason = "a count of frames")]
+        let per_sec = self.frames as f64 / self.secs.max(1e-9);
+        let slow = if per_sec < f64::from(RECORD_FPS) / 2.0 {
+            format!(
+                "; the machine drew only {} frames a second of the {RECORD_FPS} asked for, so the GIF plays in the right time but jerkily: a smaller window (or projector mode off) records more",
+                crate::format::number_text((per_sec * 10.0).round() / 10.0)
+            )
+        } else {
+            String::new()
+        };
+        format!(
+            "recording saved to {}: {} frames in {} s{slow}",
+            self.path.display(),
+            self.frames,
+            crate::format::number_text(self.secs)
+        )
+    }
 }
 
 impl Encoder {
-    /// Starts the thread that writes the GIF into `folder`.
-    fn start(folder: PathBuf) -> Self {
+    /// Starts the thread that writes the GIF into `folder`, `secs` long.
+    fn start(folder: PathBuf, secs: f64) -> Self {
         let (frames, queue) = mpsc::sync_channel(QUEUED_FRAMES);
         let end_secs = Arc::new(OnceLock::new());
         let done = Arc::new(AtomicUsize::new(0));
@@ -85,6 +120,7 @@ impl Encoder {
             left_out: Arc::default(),
             job,
             failed,
+            secs,
         }
     }
 
@@ -145,7 +181,7 @@ impl Recorder {
             next_secs: now_secs,
             until_secs: now_secs + secs,
             requested: 0,
-            encoder: Encoder::start(folder),
+            encoder: Encoder::start(folder, secs),
         };
     }
 
@@ -159,7 +195,7 @@ impl Recorder {
     /// One frame of the window: a screenshot when one is due; at the end,
     /// the encoder told and then waited for. Returns a finished file's
     /// path, or why the recording failed.
-    pub fn frame(&mut self, ctx: &egui::Context) -> Option<Result<PathBuf, RecordError>> {
+    pub fn frame(&mut self, ctx: &egui::Context) -> Option<Result<Recorded, RecordError>> {
         let now_secs = ctx.input(|i| i.time);
         match self {
             Self::Idle => None,
@@ -213,8 +249,13 @@ impl Recorder {
                     .or_else(|| encoder.failed.take().map(Err));
                 match result {
                     Some(done) => {
+                        let recorded = done.map(|path| Recorded {
+                            path,
+                            frames: encoder.done.load(Ordering::Relaxed),
+                            secs: encoder.secs,
+                        });
                         *self = Self::Idle;
-                        Some(done)
+                        Some(recorded)
                     }
                     None if running => {
                         ctx.request_repaint_after(ENCODER_POLL);
@@ -567,6 +608,28 @@ mod tests {
             }
             made
         })
+    }
+
+    /// The message of a recording counts its frames, and on a machine too
+    /// busy for a smooth GIF (19 frames in 10 s of a 1920x1080 window)
+    /// says so and what records more; a smooth one says nothing more.
+    #[test]
+    fn a_jerky_recording_is_said_to_be_one() {
+        let recorded = |frames| Recorded {
+            path: PathBuf::from("/tmp/clip.gif"),
+            frames,
+            secs: 10.0,
+        };
+        let busy = recorded(19).text();
+        assert!(
+            busy.starts_with("recording saved to /tmp/clip.gif: 19 frames in 10 s; the machine drew only 1.9 frames a second of the 10 asked for"),
+            "{busy}"
+        );
+        assert!(busy.contains("a smaller window"), "{busy}");
+        assert_eq!(
+            recorded(98).text(),
+            "recording saved to /tmp/clip.gif: 98 frames in 10 s"
+        );
     }
 
     #[test]
