@@ -167,8 +167,14 @@ impl ParadoxPanel {
             .flat_map(|(_, points)| points.iter().map(|p| p[1]))
             .chain(curves.reference.as_ref().map(|(_, p)| *p))
             .fold(0.0, f64::max);
+        // The legend in the curves' order (damping from 0.1 down to
+        // vanishing), not sorted by its words (0.01, 0.1, 1e-4).
         let plot = Plot::new("paradox")
-            .legend(Legend::default().position(Corner::LeftTop))
+            .legend(
+                Legend::default()
+                    .position(Corner::LeftTop)
+                    .follow_insertion_order(true),
+            )
             .include_y(0.0)
             .include_y(HEADROOM * highest);
         let plot = axes(
@@ -180,18 +186,30 @@ impl ParadoxPanel {
         .x_grid_spacer(log_grid_spacer(10))
         .x_axis_formatter(|mark, _| number_text(10f64.powf(mark.value)));
         refit_if(plot, refit).show(ui, |plot_ui| {
+            // The undamped (or massless) load dashed in the overlay's grey:
+            // not the white of this model's point.
             if let Some((label, p)) = &curves.reference {
                 plot_ui.hline(
                     HLine::new(label.clone(), *p)
-                        .color(theme.text)
+                        .color(theme.overlay)
+                        .style(egui_plot::LineStyle::dashed_loose())
                         .width(1.5 * theme.stroke_scale),
                 );
             }
-            for ((label, points), color) in curves.lines.iter().zip(palette.iter().cycle()) {
+            // Each curve narrower than the one before, drawn over it, so
+            // that curves that coincide (0.01 and 1e-4 as the damping
+            // vanishes) all show.
+            let widths = [3.5, 2.2, 1.2];
+            for (((label, points), color), width) in curves
+                .lines
+                .iter()
+                .zip(palette.iter().cycle())
+                .zip(widths.iter().chain(std::iter::repeat(&1.2)))
+            {
                 plot_ui.line(
                     Line::new(label.clone(), PlotPoints::from(points.clone()))
                         .color(*color)
-                        .width(2.0 * theme.stroke_scale),
+                        .width(width * theme.stroke_scale),
                 );
             }
             if let Some(point) = here {
