@@ -151,15 +151,34 @@ impl View for PostCriticalPanel {
         let plot = Plot::new("post-critical")
             .legend(Legend::default().position(Corner::LeftTop))
             .include_x(0.0)
-            .include_x(load)
             .include_y(0.0)
             .include_y(1.1 * highest);
+        // Fitted to the cycles, not to the straight column's whole range:
+        // the roller's branch (p = 0.0238 to 0.0441) was a sliver at the
+        // left of a 0 to 8 axis, half under the legend.
+        let plot = match cycles_reach(&branches, key.1) {
+            Some(end) => plot.default_x_bounds(0.0, end),
+            None => plot.include_x(load),
+        };
         let plot = axes(plot, "p = P l/k", "largest |phi_i| over a cycle (rad)");
         let key_load_max = key.1;
         refit_if(plot, refit).show(ui, |plot_ui| {
             draw(plot_ui, state, key_load_max, &branches, swing, theme);
         });
     }
+}
+
+/// The load the diagram's view reaches by default: a quarter past the
+/// furthest cycle, within the straight column's range `load_max` (the
+/// load shown may lie beyond: panning or "fit" after a zoom reaches it);
+/// `None` without cycles (the whole range then).
+fn cycles_reach(branches: &[&Branch], load_max: f64) -> Option<f64> {
+    let furthest = branches
+        .iter()
+        .flat_map(|b| b.cycles.iter().map(|c| c.load))
+        .reduce(f64::max)?;
+    let end = (1.25 * furthest).min(load_max);
+    (end > 0.0).then_some(end)
 }
 
 /// The diagram's lines and points: the straight column, the cycles, the
