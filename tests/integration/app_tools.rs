@@ -12,7 +12,7 @@ use crate::app_input::harness_at;
 /// Opens the share menu and asks for a paste from the clipboard; the
 /// window answers, in the next frame, with `answer` (nothing: an empty
 /// clipboard). The frames after are run.
-fn paste_from_clipboard(app: &mut ZieglerApp, answer: Option<&str>) {
+pub(crate) fn paste_from_clipboard(app: &mut ZieglerApp, answer: Option<&str>) {
     let mut harness = harness_at(app, [1280.0, 800.0]);
     harness.get_by_label("share").click();
     harness.run();
@@ -88,48 +88,6 @@ fn settings_are_pasted_from_the_clipboard() {
         .map(|n| n.text.clone())
         .unwrap_or_default();
     assert!(said.contains("the clipboard holds no text"), "{said}");
-}
-
-/// A 10 MB paste (from the clipboard, or into the share box) is refused
-/// by its size with a message, before any text field lays it out: it froze
-/// the window. Nothing changes, and the window goes on answering.
-#[test]
-fn a_huge_paste_is_refused_by_its_size() {
-    let mut app = ZieglerApp::new(Settings::default()).unwrap();
-    let huge = "speed = 2\n".repeat(1_000_000);
-    paste_from_clipboard(&mut app, Some(&huge));
-    let said = app
-        .state()
-        .notice()
-        .map(|n| n.text.clone())
-        .unwrap_or_default();
-    assert!(
-        said.starts_with("paste refused, nothing changed: the text holds 10000000 bytes"),
-        "{said}"
-    );
-    assert_eq!(app.state().settings(), &Settings::default());
-    // Typed into the box (a paste with the box focused): the same.
-    let mut harness = harness_at(&mut app, [1280.0, 800.0]);
-    harness.get_by_label("share").click();
-    harness.run();
-    harness
-        .get_by_role(egui::accesskit::Role::MultilineTextInput)
-        .click();
-    harness.run();
-    harness.event(egui::Event::Paste(huge.clone()));
-    harness.run();
-    let typed = harness
-        .get_by_role(egui::accesskit::Role::MultilineTextInput)
-        .value()
-        .unwrap_or_default();
-    assert!(typed.len() < 100, "the box holds {} bytes", typed.len());
-    drop(harness);
-    let said = app
-        .state()
-        .notice()
-        .map(|n| n.text.clone())
-        .unwrap_or_default();
-    assert!(said.starts_with("paste refused"), "{said}");
 }
 
 /// Projector mode with each tab, on a small projector, a laptop and a full

@@ -18,6 +18,7 @@ mod cli_bounds;
 mod cli_cases;
 mod cli_extremes;
 mod cli_maps;
+mod files_and_text;
 mod lesson_files;
 
 use cli_bounds::CLI_BOUNDS;
