@@ -189,8 +189,8 @@ fn step_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &T
     {
         ui.weak(format!("your prediction: p = {}", load_text(p)));
     }
+    let last = run.step + 1 == run.lesson.steps.len();
     ui.horizontal(|ui| {
-        let last = run.step + 1 == run.lesson.steps.len();
         if ui
             .add_enabled(run.step > 0, egui::Button::new("back"))
             .on_hover_text("the previous step (Page Up)")
@@ -198,23 +198,11 @@ fn step_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &T
         {
             actions.push(Command::LessonBack);
         }
-        if last {
-            // The way on from the last step: the next lesson (Page Down).
-            if let Some(next) = state.next_lesson() {
-                if ui
-                    .button(format!("next lesson: {}", next.title))
-                    .on_hover_text("open the next lesson at its first step (Page Down)")
-                    .clicked()
-                {
-                    actions.push(Command::LessonNext);
-                }
-            } else {
-                ui.weak("the last step of the last lesson");
-            }
-        } else if ui
-            .button("next")
-            .on_hover_text("the next step: it sets and starts what it says (Page Down, as a presenter's remote sends)")
-            .clicked()
+        if !last
+            && ui
+                .button("next")
+                .on_hover_text("the next step: it sets and starts what it says (Page Down, as a presenter's remote sends)")
+                .clicked()
         {
             actions.push(Command::LessonNext);
         }
@@ -226,4 +214,27 @@ fn step_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &T
             actions.push(Action::LessonClose);
         }
     });
+    if last {
+        next_lesson_ui(ui, state, actions);
+    }
+}
+
+/// The way on from a lesson's last step, on a row of its own and cut to
+/// the sidebar's width (a long title pushed the rows past its edge): the
+/// next lesson (Page Down), its whole title on hover.
+fn next_lesson_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions) {
+    if let Some(next) = state.next_lesson() {
+        if ui
+            .add(egui::Button::new(format!("next lesson: {}", next.title)).truncate())
+            .on_hover_text(format!(
+                "open the next lesson, \"{}\", at its first step (Page Down)",
+                next.title
+            ))
+            .clicked()
+        {
+            actions.push(Command::LessonNext);
+        }
+    } else {
+        ui.weak("the last step of the last lesson");
+    }
 }
