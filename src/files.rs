@@ -146,11 +146,8 @@ pub fn write_atomically(
     // appended where it opened it for appending; renaming over the file
     // behind it would destroy what it held.
     if let Some(descriptor) = named_descriptor(out) {
-        let mut file = open_descriptor(descriptor).map_err(|e| error(&e))?;
-        let mut buffered = std::io::BufWriter::new(&mut file);
-        return write(&mut buffered)
-            .and_then(|()| buffered.flush())
-            .map_err(|e| error(&e));
+        let file = open_descriptor(descriptor).map_err(|e| error(&e))?;
+        return write_stream(file, write).map_err(|e| error(&e));
     }
     // A symbolic link is written through: the file it names is replaced,
     // the link stays (renaming over the link would replace the link).
@@ -158,14 +155,11 @@ pub fn write_atomically(
     let out = target.as_deref().unwrap_or(out);
     if std::fs::metadata(out).is_ok_and(|m| !m.is_file()) {
         // A device or a pipe (/dev/stdout, /dev/null): nothing to replace.
-        let mut file = std::fs::File::options()
+        let file = std::fs::File::options()
             .write(true)
             .open(out)
             .map_err(|e| error(&e))?;
-        let mut buffered = std::io::BufWriter::new(&mut file);
-        return write(&mut buffered)
-            .and_then(|()| buffered.flush())
-            .map_err(|e| error(&e));
+        return write_stream(file, write).map_err(|e| error(&e));
     }
     // A temporary file is private (0600); the result gets the permissions
     // of the file it replaces, or those of a new file (0644 on Unix).
@@ -177,6 +171,17 @@ pub fn write_atomically(
         written_temporary(folder_of(out), permissions, write).map_err(|e| error(&e))?;
     file.persist(out).map_err(|e| error(&e.error))?;
     Ok(())
+}
+
+/// `write` straight into `file` (a device, a pipe or the shell's stream:
+/// nothing to write beside and rename), flushed.
+fn write_stream(
+    mut file: std::fs::File,
+    write: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> std::io::Result<()>,
+) -> std::io::Result<()> {
+    let mut buffered = std::io::BufWriter::new(&mut file);
+    write(&mut buffered)?;
+    buffered.flush()
 }
 
 /// Most links followed from a path to the stream it names.

@@ -120,7 +120,7 @@ pub const LARGEST_LOAD: f64 = crate::model::LARGEST_DERIVED;
 ///
 /// # Errors
 /// `load_max` above [`LARGEST_LOAD`].
-pub(crate) fn check_largest_load(load_max: f64) -> Result<(), AnalysisError> {
+pub fn check_largest_load(load_max: f64) -> Result<(), AnalysisError> {
     if load_max > LARGEST_LOAD {
         return Err(AnalysisError::BadRange {
             what: "load-max",

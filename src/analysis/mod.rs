@@ -28,7 +28,8 @@ pub use cycles::{
 };
 pub use hopf::{Derivatives, Hopf, HopfKind, NoHopf, Steps as HopfSteps, hopf_at, is_hopf};
 pub use locus::{
-    LARGEST_LOAD, Locus, MAX_HELD_EIGENVALUES, load_grid, locus, locus_streamed, max_samples,
+    LARGEST_LOAD, Locus, MAX_HELD_EIGENVALUES, check_largest_load, load_grid, locus,
+    locus_streamed, max_samples,
 };
 pub use map::{
     Cell, MapSpec, Row, RowResult, boundaries as map_boundaries, compute as compute_map,

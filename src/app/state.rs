@@ -450,8 +450,7 @@ impl AppState {
                 if model != self.settings.model {
                     // The run goes on with another column: what was measured
                     // belongs to the old one, and so do the samples before now.
-                    self.history.restart_measurement(self.sim.time_secs());
-                    self.forget_measured();
+                    self.measure_afresh();
                 }
                 self.settings.model = model;
                 self.refresh_analysis();

@@ -9,7 +9,7 @@ use anyhow::Result;
 use clap::ValueEnum;
 
 use zieglerlab::analysis::{
-    AffinePencil, AnalysisError, LARGEST_LOAD, MapSpec, Row, RowResult, bracketing_locus,
+    AffinePencil, AnalysisError, MapSpec, Row, RowResult, bracketing_locus, check_largest_load,
     compute_map, load_grid, resolution_warning,
 };
 use zieglerlab::model::{Axis, Key, Model, Shown};
@@ -181,22 +181,16 @@ pub fn check_load_axis(x: &AxisArg, what: &str) -> Result<()> {
     Ok(())
 }
 
-/// The loads of `--x` (checked by [`check_load_axis`] first): at most
-/// [`LARGEST_LOAD`], and a grid of distinct loads, refused in the axis's
-/// own words.
+/// The loads of `--x` (checked by [`check_load_axis`] first): at most the
+/// largest load the analysis resolves, and a grid of distinct loads, by
+/// the analysis's own checks, refused in the axis's own words.
 ///
 /// # Errors
-/// A range past [`LARGEST_LOAD`] or a grid the loads cannot hold.
+/// A range past the largest load or a grid the loads cannot hold.
 pub fn load_axis_grid(x: &AxisArg) -> Result<Vec<f64>> {
-    if x.max > LARGEST_LOAD {
-        anyhow::bail!(
-            "--x {}: MAX = {}: must be at most {}, the largest load the analysis resolves",
-            x.text,
-            Shown(x.max),
-            Shown(LARGEST_LOAD)
-        );
-    }
-    load_grid(x.min, x.max, x.count).map_err(|error| in_axis_words("--x", x, &error))
+    check_largest_load(x.max)
+        .and_then(|()| load_grid(x.min, x.max, x.count))
+        .map_err(|error| in_axis_words("--x", x, &error))
 }
 
 /// `error` about the grid of the axis `flag` said in the axis's words

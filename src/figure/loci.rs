@@ -52,17 +52,14 @@ pub fn analyse(
     // Where rounding decides the states, the changes it makes are noise
     // (thousands of them, for a roller of mass nu = 1e-50): none is drawn
     // as if it were found, and no range is tinted.
-    let transitions = if warning.is_some() {
-        Vec::new()
+    let (transitions, ranges) = if warning.is_some() {
+        (Vec::new(), Vec::new())
     } else {
-        critical_loads_along(&pencil, &locus)?
-    };
-    let start = pencil.spectrum(load_min)?;
-    let first = classify(&start.eigenvalues, start.scale_per_s).state;
-    let ranges = if warning.is_some() {
-        Vec::new()
-    } else {
-        stability_ranges(&transitions, first, load_min, load_max)
+        let transitions = critical_loads_along(&pencil, &locus)?;
+        let start = pencil.spectrum(load_min)?;
+        let first = classify(&start.eigenvalues, start.scale_per_s).state;
+        let ranges = stability_ranges(&transitions, first, load_min, load_max);
+        (transitions, ranges)
     };
     let at_transitions = transitions
         .iter()

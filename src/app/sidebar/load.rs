@@ -103,14 +103,14 @@ impl Note {
 /// load and the states).
 fn transition_meaning(t: &crate::analysis::Transition) -> String {
     use crate::analysis::State;
-    let how = match (t.from, t.to) {
-        (_, State::Flutter) => {
+    let how = match t.to {
+        State::Flutter => {
             "past this load a pair of eigenvalues lies right of the imaginary axis: a kick grows into a growing swing"
         }
-        (_, State::Divergence) => {
+        State::Divergence => {
             "past this load a real eigenvalue is positive: the column leans away without swinging"
         }
-        (_, State::Stable) => {
+        State::Stable => {
             "past this load no eigenvalue lies right of the imaginary axis: a kick no longer grows"
         }
     };

@@ -104,8 +104,7 @@ impl AppState {
         if self.held {
             self.held = false;
             self.running = true;
-            self.history.restart_measurement(self.sim.time_secs());
-            self.forget_measured();
+            self.measure_afresh();
         }
     }
 

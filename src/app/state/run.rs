@@ -50,6 +50,13 @@ impl AppState {
         true
     }
 
+    /// Measures afresh from now on: what was measured and the samples before
+    /// now belong to another motion (another column, a kick, a release).
+    pub(super) fn measure_afresh(&mut self) {
+        self.history.restart_measurement(self.sim.time_secs());
+        self.forget_measured();
+    }
+
     /// Drops the measured eigenvalues; the next refit comes as soon as the
     /// history allows.
     pub(super) fn forget_measured(&mut self) {
@@ -85,8 +92,7 @@ impl AppState {
         }
         // The kick is a jump in the state, not motion of the column: the
         // fit starts after it, as after a release.
-        self.history.restart_measurement(self.sim.time_secs());
-        self.forget_measured();
+        self.measure_afresh();
         self.running = true;
     }
 
