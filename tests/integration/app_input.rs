@@ -3,6 +3,7 @@
 //! character at a time, Enter, Escape, Tab), with the model and the field's
 //! text checked after each.
 
+use crate::common::message_line;
 use eframe::egui;
 use eframe::egui::accesskit::Role;
 use egui_kittest::Harness;
@@ -597,11 +598,7 @@ fn typed_rods_move_the_load_with_the_bar() {
     assert!(model.load_p() <= model.load_bar_max_p());
     let beck_after = model.beck_load(model.load_p()).unwrap();
     assert!((beck_after - beck_before).abs() < 1e-12 * beck_before);
-    let said = app
-        .state()
-        .notice()
-        .map(|n| n.text.clone())
-        .unwrap_or_default();
+    let said = message_line(&app);
     assert!(
         said.starts_with("rods = 16: the load bar is now 0 to 0.125"),
         "{said}"

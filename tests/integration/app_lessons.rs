@@ -2,6 +2,7 @@
 //! Page Up through the steps, a lesson file typed into the window and read
 //! off the UI thread.
 
+use crate::common::message_line;
 use eframe::egui;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
@@ -391,11 +392,7 @@ fn reset_all_during_a_ramp_step_closes_the_lesson() {
     drop(harness);
     assert!(app.state().lesson().is_none());
     assert!(app.state().ramp().is_none());
-    let said = app
-        .state()
-        .notice()
-        .map(|n| n.text.clone())
-        .unwrap_or_default();
+    let said = message_line(&app);
     assert!(
         said.contains(&format!("the lesson \"{title}\" is closed")),
         "{said}"
@@ -457,12 +454,7 @@ fn page_down_after_the_last_step_opens_the_next_lesson() {
     harness.key_press(egui::Key::PageDown);
     harness.run_steps(8);
     assert_eq!(run(&harness), (last.title.clone(), last.steps.len() - 1));
-    let said = harness
-        .state()
-        .state()
-        .notice()
-        .map(|n| n.text.clone())
-        .unwrap_or_default();
+    let said = message_line(harness.state());
     assert!(said.contains("this was the lesson's last step"), "{said}");
 }
 

@@ -2,6 +2,7 @@
 //! (`egui_kittest`): within reach in a 1024x768 window, the keys help whole,
 //! and settings pasted from the system clipboard.
 
+use crate::common::message_line;
 use eframe::egui;
 use egui_kittest::kittest::Queryable as _;
 use zieglerlab::app::{Action, Command, Settings, Tab, ZieglerApp};
@@ -73,20 +74,12 @@ fn settings_are_pasted_from_the_clipboard() {
     assert!((app.state().model().load_p() - 1.5).abs() < 1e-12);
     assert_eq!(app.layout().tab, Tab::HISTORIES, "a paste keeps the tab");
     paste_from_clipboard(&mut app, Some("hello, world"));
-    let said = app
-        .state()
-        .notice()
-        .map(|n| n.text.clone())
-        .unwrap_or_default();
+    let said = message_line(&app);
     assert!(said.contains("pasted settings"), "{said}");
     assert_eq!(app.state().settings().preset, PresetId::Ziegler1952);
     // No answer: the clipboard holds no text.
     paste_from_clipboard(&mut app, None);
-    let said = app
-        .state()
-        .notice()
-        .map(|n| n.text.clone())
-        .unwrap_or_default();
+    let said = message_line(&app);
     assert!(said.contains("the clipboard holds no text"), "{said}");
 }
 
@@ -175,10 +168,6 @@ fn a_save_without_a_desktop_dialog_takes_a_typed_path() {
     }
     let text = std::fs::read_to_string(&out).expect("the table written to the typed path");
     assert!(text.starts_with("t,phi1,phi2"), "{text}");
-    let said = app
-        .state()
-        .notice()
-        .map(|n| n.text.clone())
-        .unwrap_or_default();
+    let said = message_line(&app);
     assert!(said.starts_with("saved "), "{said}");
 }

@@ -134,3 +134,11 @@ pub fn enter(app: &mut zieglerlab::app::ZieglerApp, key: zieglerlab::model::Key,
     app.apply(zieglerlab::app::Action::Enter { key, value });
     assert_eq!(app.state().refusal(key), None, "{key} = {value}");
 }
+
+/// The message line's text in `app` ("" when it says nothing).
+pub fn message_line(app: &zieglerlab::app::ZieglerApp) -> String {
+    app.state()
+        .notice()
+        .map(|n| n.text.clone())
+        .unwrap_or_default()
+}

@@ -4,6 +4,7 @@
 //! huge paste into the window; numbers far from 1 in data files, and
 //! changes of state that rounding makes, not listed as found.
 
+use crate::common::message_line;
 use eframe::egui;
 use egui_kittest::kittest::Queryable as _;
 use zieglerlab::app::{Settings, ZieglerApp};
@@ -206,11 +207,7 @@ fn a_page_too_small_for_its_legend_is_refused_with_one_that_fits() {
 fn long_stored_settings_are_bounded_and_named_briefly() {
     let huge = format!("preset = roller\n{}", "speed = 2\n".repeat(300_000));
     let app = ZieglerApp::from_stored_text(Some(&huge));
-    let said = app
-        .state()
-        .notice()
-        .map(|n| n.text.clone())
-        .unwrap_or_default();
+    let said = message_line(&app);
     assert!(
         said.contains(
             "stored settings ignored (the text holds 3000016 bytes; settings text is at most 16384"
@@ -222,19 +219,11 @@ fn long_stored_settings_are_bounded_and_named_briefly() {
     let app = ZieglerApp::from_stored_text(Some(&repeated));
     assert_eq!(app.settings().preset, PresetId::Beck);
     assert_eq!(app.settings().speed, 2.0);
-    let said = app
-        .state()
-        .notice()
-        .map(|n| n.text.clone())
-        .unwrap_or_default();
+    let said = message_line(&app);
     assert!(said.contains("1489 more"), "{said}");
     assert!(said.len() < 1000, "{} characters", said.len());
     let app = ZieglerApp::from_stored_text(Some("preset = roller\nspeed = 1e300\n"));
-    let said = app
-        .state()
-        .notice()
-        .map(|n| n.text.clone())
-        .unwrap_or_default();
+    let said = message_line(&app);
     assert!(said.contains("speed (1e300 is outside"), "{said}");
 }
 
@@ -246,11 +235,7 @@ fn a_huge_paste_is_refused_by_its_size() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     let huge = "speed = 2\n".repeat(1_000_000);
     paste_from_clipboard(&mut app, Some(&huge));
-    let said = app
-        .state()
-        .notice()
-        .map(|n| n.text.clone())
-        .unwrap_or_default();
+    let said = message_line(&app);
     assert!(
         said.starts_with("paste refused, nothing changed: the text holds 10000000 bytes"),
         "{said}"
@@ -272,11 +257,7 @@ fn a_huge_paste_is_refused_by_its_size() {
         .unwrap_or_default();
     assert!(typed.len() < 100, "the box holds {} bytes", typed.len());
     drop(harness);
-    let said = app
-        .state()
-        .notice()
-        .map(|n| n.text.clone())
-        .unwrap_or_default();
+    let said = message_line(&app);
     assert!(said.starts_with("paste refused"), "{said}");
 }
 
