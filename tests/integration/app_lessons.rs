@@ -10,20 +10,25 @@ use zieglerlab::app::{Settings, ZieglerApp};
 
 use crate::app_input::{harness, type_into};
 
-/// A presenter's remote sends Page Down and Page Up: they move through the
-/// lesson's steps, carrying each out, and do nothing without a lesson.
-#[test]
-fn page_down_and_page_up_step_through_a_lesson() {
-    let app = ZieglerApp::new(Settings::default()).unwrap();
-    let mut harness = Harness::builder()
+/// The default app's window at 1280x900, with its keys read each frame as
+/// the real window reads them.
+fn keyed_harness() -> Harness<'static, ZieglerApp> {
+    Harness::builder()
         .with_size([1280.0, 900.0])
         .build_ui_state(
             |ui, app: &mut ZieglerApp| {
                 app.take_keys(ui.ctx());
                 app.contents_ui(ui);
             },
-            app,
-        );
+            ZieglerApp::new(Settings::default()).unwrap(),
+        )
+}
+
+/// A presenter's remote sends Page Down and Page Up: they move through the
+/// lesson's steps, carrying each out, and do nothing without a lesson.
+#[test]
+fn page_down_and_page_up_step_through_a_lesson() {
+    let mut harness = keyed_harness();
     harness.run();
     harness.key_press(egui::Key::PageDown);
     harness.run();
@@ -409,16 +414,7 @@ fn page_down_after_the_last_step_opens_the_next_lesson() {
         .iter()
         .map(|(_, text)| zieglerlab::lesson::Lesson::read(text, &tabs).unwrap())
         .collect();
-    let app = ZieglerApp::new(Settings::default()).unwrap();
-    let mut harness = Harness::builder()
-        .with_size([1280.0, 900.0])
-        .build_ui_state(
-            |ui, app: &mut ZieglerApp| {
-                app.take_keys(ui.ctx());
-                app.contents_ui(ui);
-            },
-            app,
-        );
+    let mut harness = keyed_harness();
     harness.run_steps(8);
     harness
         .state_mut()
