@@ -187,7 +187,45 @@ impl Curves {
             note,
         }
     }
+
+    /// The height a plot of the curves fits: their highest point (and
+    /// `here`, the model's own load), and the reference line's load only
+    /// when it lies within `REFERENCE_REACH` times that. A reference far
+    /// above (the massless roller's p = 2.09 over a roller whose curves
+    /// stand near 0.1) would press the curves onto the axis's floor; it is
+    /// then left above the axis and named with its value in the legend.
+    /// Returns the height and whether the reference is within it.
+    #[must_use]
+    pub fn fitted_top(&self, here: Option<f64>) -> (f64, bool) {
+        let curves = self
+            .lines
+            .iter()
+            .flat_map(|(_, points)| points.iter().map(|p| p[1]))
+            .chain(here)
+            .fold(0.0, f64::max);
+        match self.reference {
+            Some((_, p)) if curves <= 0.0 || p <= REFERENCE_REACH * curves => (curves.max(p), true),
+            _ => (curves, self.reference.is_none()),
+        }
+    }
+
+    /// The reference line's name in a legend, with its load, and said to
+    /// lie above the axis when `fitted_top` leaves it out.
+    #[must_use]
+    pub fn reference_label(&self, here: Option<f64>) -> Option<String> {
+        let (name, p) = self.reference.as_ref()?;
+        let within = self.fitted_top(here).1;
+        Some(format!(
+            "{name}: p = {}{}",
+            crate::format::load_text(*p),
+            if within { "" } else { " (above the axis)" }
+        ))
+    }
 }
+
+/// How far above the curves a reference line may lie and still set the
+/// plot's height: the curves then fill at least a third of it.
+pub const REFERENCE_REACH: f64 = 3.0;
 
 /// The points `(log10 x, first critical load)` of `load_at(x)` over
 /// `decades`, leaving out values where the column never loses stability or
@@ -409,7 +447,40 @@ mod tests {
         }
         assert!((vanishing[0][1] - 41.0 / 28.0).abs() < 0.02);
         assert!((vanishing[POINTS - 1][1] - 2.0).abs() < 0.03);
-        let undamped = curves.reference.unwrap().1;
+        let undamped = curves.reference.as_ref().unwrap().1;
         assert!((undamped - (3.5 - 2f64.sqrt())).abs() < 1e-9);
+        // The undamped 2.09 lies among the curves (up to 3.5): it is within
+        // the plot's height, and its name says no more.
+        let (top, within) = curves.fitted_top(None);
+        assert!(within && top >= undamped, "{top}");
+        assert!(!curves.reference_label(None).unwrap().contains("above"));
+    }
+
+    /// The plain roller's curves stand far below the massless roller's
+    /// load (the ideal follower's 2.09): the plot's height follows the
+    /// curves and the reference is named above the axis, with its value;
+    /// a model's own point above the curves still fits.
+    #[test]
+    fn a_reference_far_above_the_curves_is_left_above_the_axis() {
+        let curves = curves(
+            &PresetId::Roller.model(),
+            DampingKind::Joints,
+            &AtomicBool::new(false),
+        );
+        let highest = curves
+            .lines
+            .iter()
+            .flat_map(|(_, points)| points.iter().map(|p| p[1]))
+            .fold(0.0, f64::max);
+        let massless = curves.reference.as_ref().unwrap().1;
+        assert!(massless > REFERENCE_REACH * highest, "{massless} {highest}");
+        assert_eq!(curves.fitted_top(None), (highest, false));
+        let label = curves.reference_label(None).unwrap();
+        assert!(label.ends_with("(above the axis)"), "{label}");
+        assert!(
+            label.contains(&crate::format::load_text(massless)),
+            "{label}"
+        );
+        assert!(curves.fitted_top(Some(2.0 * highest)).0 >= 2.0 * highest);
     }
 }

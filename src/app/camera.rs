@@ -147,4 +147,33 @@ mod tests {
         let whole = target(2.0, [1.0, 0.0], [2.0, 0.0], [], true);
         assert!(whole.contains(&WorldBox::around([[-2.0, -2.0], [2.0, 2.0]])));
     }
+
+    /// Wherever the column swings (a roller at p = 3 or 5 whips round),
+    /// every frame the camera draws holds the clamp as the scene draws it:
+    /// its wall 0.08 of the reach each side of O and the hatching 0.04
+    /// behind and below it. The view moves; the clamp stays in it.
+    #[test]
+    fn every_frame_keeps_the_clamp_in_view() {
+        let reach = 0.5;
+        let clamp = WorldBox::around([[-0.04 * reach, -0.12 * reach], [0.0, 0.08 * reach]]);
+        let mut camera = Camera::default();
+        let at = |k: f64, r: f64| [r * reach * k.cos(), r * reach * k.sin()];
+        let mut trail = std::collections::VecDeque::new();
+        for i in 0..2000 {
+            let t = f64::from(i) * 0.05;
+            // A swing that grows and whirls round the clamp, then folds back.
+            let angle = (0.2 + 0.002 * f64::from(i)) * (1.3 * t).sin() + 0.0015 * f64::from(i);
+            let tip = at(angle, 1.0 - 0.3 * (0.7 * t).sin().abs());
+            let joint = at(0.5 * angle, 0.5);
+            trail.push_back(tip);
+            if trail.len() > 80 {
+                trail.pop_front();
+            }
+            let framed = camera.frame(
+                target(reach, joint, tip, trail.iter().copied(), false),
+                reach,
+            );
+            assert!(framed.contains(&clamp), "frame {i}: {framed:?}");
+        }
+    }
 }

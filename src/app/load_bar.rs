@@ -40,6 +40,18 @@ pub fn x_of_load(load: f64, (left, right): (f32, f32), load_max: f64) -> f32 {
     left + (right - left) * fraction
 }
 
+/// The load as the bar's label says it: rounded to a hundredth of the
+/// bar's span (to 0.01 on a bar of 0 to 8, to 0.001 on a chain's of 0 to
+/// 0.125), and in full where that rounding would say 0 of a load that is not.
+fn bar_load_text(load_p: f64, load_max: f64) -> String {
+    let step = 10f64.powf((load_max / 100.0).log10().floor());
+    let rounded = (load_p / step).round() * step;
+    if !step.is_finite() || step <= 0.0 || (rounded == 0.0 && load_p != 0.0) {
+        return crate::format::load_text(load_p);
+    }
+    number_text(rounded)
+}
+
 /// The bar across `ui`'s width: the load's value at its left, the ranges,
 /// the critical loads above, the scale below, the handle at the load.
 pub fn load_bar_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
@@ -50,10 +62,7 @@ pub fn load_bar_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, t
     ui.horizontal(|ui| {
         let label = ui.add_sized(
             vec2(6.0 * theme.text_size, bar_height + 2.0 * text_height),
-            egui::Label::new(format!(
-                "load\np = {}",
-                number_text((p * 100.0).round() / 100.0)
-            )),
+            egui::Label::new(format!("load\np = {}", bar_load_text(p, state.load_max()))),
         );
         let size = vec2(ui.available_width(), bar_height + 2.0 * text_height);
         let (rect, response) = ui.allocate_exact_size(size, Sense::click_and_drag());
@@ -202,6 +211,17 @@ mod tests {
                 assert!((back - load).abs() < 1e-5 * max, "{load} -> {back}");
             }
         }
+    }
+
+    /// The label rounds to the bar's resolution, and never says 0 of a
+    /// load that is not (a 16-rod chain's 7.8125e-4 was "p = 0").
+    #[test]
+    fn the_label_rounds_to_the_bar_s_resolution() {
+        assert_eq!(bar_load_text(2.541_7, 8.0), number_text(2.54));
+        assert_eq!(bar_load_text(0.073_42, 0.125), number_text(0.073));
+        assert_eq!(bar_load_text(7.8125e-4, 0.125), number_text(0.001));
+        assert_eq!(bar_load_text(1e-5, 0.125), crate::format::load_text(1e-5));
+        assert_eq!(bar_load_text(0.0, 8.0), number_text(0.0));
     }
 
     #[test]

@@ -429,9 +429,25 @@ impl ZieglerApp {
                         recorder::record_ui(ui, choice, recorder, actions);
                     });
                 ui.separator();
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    self.sidebar.ui(ui, &self.state, &mut self.actions, &theme);
-                });
+                if self.state.settings().projector {
+                    egui::Panel::bottom("sidebar foot")
+                        .frame(egui::Frame::NONE)
+                        .resizable(false)
+                        .show_separator_line(false)
+                        .show(ui, |ui| {
+                            sidebar::foot_ui(ui, &self.state, &mut self.actions, &theme);
+                        });
+                }
+                // Each lesson step's text read from its top.
+                let step = self
+                    .state
+                    .lesson()
+                    .map(|run| (run.lesson.title.clone(), run.step));
+                egui::ScrollArea::vertical()
+                    .id_salt(("sidebar", step))
+                    .show(ui, |ui| {
+                        self.sidebar.ui(ui, &self.state, &mut self.actions, &theme);
+                    });
             });
         egui::CentralPanel::default()
             .frame(self.panel_frame(egui::Frame::central_panel(&style)))

@@ -211,6 +211,23 @@ pub fn grid_steps(base_step: f64) -> [f64; 5] {
     [1.0, 5.0, 10.0, 50.0, 100.0].map(|m| m * decade)
 }
 
+/// The smallest of 1 or 5 times a power of ten at or above `value` (a
+/// step of [`grid_steps`]): a symmetric plot this high on each side has a
+/// labelled tick at its edges, where a short plot of small swings (0.03
+/// rad) otherwise had the single tick "0".
+#[must_use]
+pub fn grid_ceil(value: f64) -> f64 {
+    if !(value.is_finite() && value > 0.0) {
+        return 1.0;
+    }
+    let decade = 10f64.powf(value.log10().floor());
+    [1.0, 5.0, 10.0]
+        .into_iter()
+        .map(|m| m * decade)
+        .find(|&step| step >= value * (1.0 - 1e-12))
+        .unwrap_or(10.0 * decade)
+}
+
 /// The grid marks of `input`'s range: every multiple of each of
 /// [`grid_steps`], each value once, with the coarsest step it is on (which
 /// sets how strong its line and label are drawn).
@@ -361,7 +378,9 @@ impl<T: PartialEq> Fit<T> {
                 .small_button("fit")
                 .on_hover_text(VIEW_HINT_MORE)
                 .clicked();
-            ui.weak(VIEW_HINT);
+            // Cut to the row (its whole text on hover): at full length it
+            // widened a projector's tab past the window's right edge.
+            ui.add(egui::Label::new(egui::RichText::new(VIEW_HINT).weak()).truncate());
         });
     }
 
@@ -441,6 +460,17 @@ mod tests {
         assert_eq!(click.update(Some(2), false, 2.0, 0.3), None);
         assert_eq!(click.update(Some(3), true, 2.1, 0.3), None);
         assert_eq!(click.update(None, false, 3.0, 0.3), None);
+    }
+
+    #[test]
+    fn a_symmetric_height_lands_on_a_grid_step() {
+        assert_eq!(grid_ceil(0.035), 0.05);
+        assert_eq!(grid_ceil(0.05), 0.05);
+        assert_eq!(grid_ceil(0.06), 0.1);
+        assert_eq!(grid_ceil(1.0), 1.0);
+        assert_eq!(grid_ceil(3.2), 5.0);
+        assert_eq!(grid_ceil(0.0), 1.0);
+        assert_eq!(grid_ceil(f64::NAN), 1.0);
     }
 
     #[test]

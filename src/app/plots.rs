@@ -185,8 +185,11 @@ fn edge_marks_ui(plot_ui: &mut egui_plot::PlotUi<'_>, marks: &[EdgeMark], theme:
     }
 }
 
-/// Re(lambda) or Im(lambda) of every branch against the load, with the
-/// stability ranges shaded and a cursor at the current load.
+/// Re(lambda) or Im(lambda) >= 0 of every branch against the load, with
+/// the stability ranges shaded and a cursor at the current load. Of Im,
+/// the upper half only, as the figures draw it: the lower is its mirror
+/// image (conjugate pairs), and a chain's 32 branches in both halves were
+/// a blur with one tick.
 #[expect(clippy::too_many_arguments, reason = "one plot's inputs")]
 pub fn versus_load_ui(
     ui: &mut egui::Ui,
@@ -212,9 +215,14 @@ pub fn versus_load_ui(
         locus.loads.last().copied().unwrap_or(1.0),
     );
     // The locus's range, also when the load is beyond it.
+    let lowest = if imaginary {
+        -0.05 * extent
+    } else {
+        -1.1 * extent
+    };
     let plot = Plot::new(label)
         .default_x_bounds(min, max)
-        .default_y_bounds(-1.1 * extent, 1.1 * extent);
+        .default_y_bounds(lowest, 1.1 * extent);
     refit_if(axes(plot, "p = P l/k", label), refit).show(ui, |plot_ui| {
         let settled = view_settled(plot_ui, refit);
         for &(start, end, state) in ranges {
@@ -229,6 +237,9 @@ pub fn versus_load_ui(
         for (shown, color) in layers {
             let samples = drawn_samples(shown);
             for branch in &shown.branches {
+                if imaginary && branch.iter().all(|z| z.im < 0.0) {
+                    continue;
+                }
                 let points = samples.iter().map(|&i| {
                     let z = branch[i];
                     [shown.loads[i], if imaginary { z.im } else { z.re }]
@@ -271,7 +282,15 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, band: bool, refit: boo
                     ));
                 }
                 legend_row(ui, &legend);
-                let plot = Plot::new("angles");
+                // Symmetric about 0 and as high as a labelled grid step.
+                let widest = samples
+                    .iter()
+                    .flat_map(|o| [o.phi1_rad, o.phi2_rad, if band { o.delta_rad } else { 0.0 }])
+                    .map(f64::abs)
+                    .filter(|a| a.is_finite())
+                    .fold(0.0, f64::max);
+                let half = crate::app::plot_frame::grid_ceil(widest);
+                let plot = Plot::new("angles").include_y(-half).include_y(half);
                 refit_if(axes(plot, "t (s)", "rad"), refit).show(ui, |plot_ui| {
                     plot_ui.line(Line::new("φ1", series(&|o| o.phi1_rad)).color(theme.series[0]));
                     plot_ui.line(Line::new("φ2", series(&|o| o.phi2_rad)).color(theme.series[1]));

@@ -89,7 +89,7 @@ pub fn scene_ui(
         target(reach_m, joint_m, now.tip_m, recent, camera.whole_reach),
         reach_m,
     );
-    let (rect, view) = draw(
+    let (rect, view, delta_badge) = draw(
         ui,
         &SceneInput {
             model,
@@ -104,6 +104,10 @@ pub fn scene_ui(
     // No tooltip: the mouse rests over the scene in a lecture, and a
     // tooltip would cover the load bar. The corner says it instead.
     let drag = ui.interact(rect, ui.scope_id().with("drag the column"), Sense::drag());
+    if let Some(badge) = delta_badge {
+        ui.interact(badge, ui.scope_id().with("delta"), Sense::hover())
+            .on_hover_text(DELTA_TIP);
+    }
     if !state.for_picture() {
         plate(
             ui.painter(),
@@ -171,16 +175,16 @@ fn camera_corner_ui(ui: &mut egui::Ui, camera: &mut Camera, rect: Rect, theme: &
             corner,
             egui::Button::selectable(camera.whole_reach, "whole reach"),
         )
-        .on_hover_text("frame the whole disc the tip can reach, instead of following the motion")
+        .on_hover_text("frame the whole disc the tip can reach, still; off, the view follows the motion, zooming out at once as the column swings wide and back in as it settles, always with the clamp in view")
         .clicked()
     {
         camera.whole_reach = !camera.whole_reach;
     }
 }
 
-/// Draws `input` in the space left in `ui`; returns where, and the world's
-/// place on the screen.
-fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View) {
+/// Draws `input` in the space left in `ui`; returns where, the world's
+/// place on the screen, and where the angle delta is said (a roller's).
+fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View, Option<Rect>) {
     let SceneInput {
         model,
         now,
@@ -215,7 +219,7 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View) {
         pixels_per_m,
     };
     let s = theme.stroke_scale;
-    if let Some(roller) = model.roller() {
+    let band_label = model.roller().map(|roller| {
         band(
             &painter,
             theme,
@@ -224,8 +228,8 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View) {
             roller.band_speed_m_per_s,
             now.t_secs,
             rect,
-        );
-    }
+        )
+    });
     clamp(&painter, theme, &view, reach);
     trail_ui(&painter, theme, &view, trail);
     let angles_rad = &now.angles_rad;
@@ -267,9 +271,31 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View) {
             roller.radius_m.max(0.02 * reach),
         );
     }
+    // The angle delta under the band's label, in the scene's corner: beside
+    // the tip it covered the roller and the band's label.
+    let delta_badge = band_label.map(|above| {
+        plate(
+            &painter,
+            theme,
+            above.right_bottom() + vec2(-4.0, 8.0),
+            Align2::RIGHT_TOP,
+            delta_text(now.delta_rad),
+            theme.friction,
+        )
+    });
     notes(&painter, theme, rect, status, now.stick_slip);
-    (rect, view)
+    (rect, view, delta_badge)
 }
+
+/// The angle delta as the scene shows it: rounded first, then -0 turned
+/// into 0, so that no "-0.00" is on the screen.
+fn delta_text(delta_rad: f64) -> String {
+    let degrees = (delta_rad.to_degrees() * 100.0).round() / 100.0 + 0.0;
+    format!("δ = {degrees:+.2}°")
+}
+
+/// What the angle delta is, on hover over it.
+const DELTA_TIP: &str = "δ: the angle from the last rod's direction (the dashed arrow, where an ideal follower force would point) to the force the band's friction actually applies (the solid arrow), drawn as the arc at the tip. δ = 0 is a perfect follower; the roller turns the force by δ as it slips sideways on the band (eq. 23)";
 
 /// The clamp at O: a wall with hatching on the far side.
 fn clamp(painter: &egui::Painter, theme: &Theme, view: &View, reach: f64) {
@@ -356,37 +382,6 @@ fn forces(
             })
             .collect();
         painter.add(Shape::line(arc, Stroke::new(1.5 * s, theme.friction)));
-        // Beyond the tip, along rod 2 continued (away from the column and
-        // from the arrows, which point back along it); beside the tip when
-        // that is out of the picture.
-        let normal = [-last_rad.sin(), last_rad.cos()];
-        let clip = painter.clip_rect().shrink(6.0 + 3.0 * theme.text_size);
-        let label_at = [(-0.45, 0.0), (0.0, 0.5), (0.0, -0.5)]
-            .into_iter()
-            .map(|(along, side)| {
-                view.to(
-                    b[0] + length_m * (along * follower[0] + side * normal[0]),
-                    b[1] + length_m * (along * follower[1] + side * normal[1]),
-                )
-            })
-            .find(|at| clip.contains(*at))
-            .unwrap_or_else(|| {
-                view.to(
-                    b[0] - 0.45 * length_m * follower[0],
-                    b[1] - 0.45 * length_m * follower[1],
-                )
-            });
-        // Rounded first, then -0 turned into 0: no "-0.00" on screen.
-        let degrees = (now.delta_rad.to_degrees() * 100.0).round() / 100.0 + 0.0;
-        let text = format!("δ = {degrees:+.2}°");
-        plate(
-            painter,
-            theme,
-            label_at,
-            Align2::CENTER_CENTER,
-            text,
-            theme.friction,
-        );
     }
 }
 
@@ -468,7 +463,7 @@ fn band(
     speed_m_per_s: f64,
     t_secs: f64,
     rect: Rect,
-) {
+) -> Rect {
     let s = theme.stroke_scale;
     let to = |x, y| view.to(x, y);
     // Everywhere the camera looks, and at least the whole reach.
@@ -521,7 +516,7 @@ fn band(
         Align2::RIGHT_TOP,
         text,
         theme.text,
-    );
+    )
 }
 
 /// `text` on a plate of the scene's background, so that no stripe or rod
@@ -533,7 +528,7 @@ fn plate(
     align: Align2,
     text: String,
     color: Color32,
-) {
+) -> Rect {
     let galley = painter.layout_no_wrap(text, FontId::proportional(theme.text_size), color);
     let inner = align.anchor_size(at, galley.size());
     // Kept inside the scene (a label beyond the tip may point out of it).
@@ -545,6 +540,7 @@ fn plate(
     let inner = inner.translate(shift);
     painter.rect_filled(inner.expand(4.0), 4.0, theme.background);
     painter.galley(inner.min, galley, color);
+    inner.expand(4.0)
 }
 
 /// A torsion spring at `center`: a spiral whose winding follows the joint's

@@ -18,6 +18,10 @@ const WELCOME: [&str; 4] = [
     "Drag the load bar and watch both: the column starts to flutter at the load where the eigenvalues cross the axis.",
 ];
 
+/// The welcome's text size on a projector: a desk screen's, a little
+/// larger than the normal theme's.
+const DESK_TEXT_SIZE: f32 = 16.0;
+
 /// The welcome as a window over the app, while the state shows it.
 pub fn welcome_ui(ctx: &egui::Context, state: &AppState, actions: &mut Actions, theme: &Theme) {
     if !state.welcome() {
@@ -26,10 +30,31 @@ pub fn welcome_ui(ctx: &egui::Context, state: &AppState, actions: &mut Actions, 
     // Over the running column without dimming it: a translucent layer over
     // the whole window costs a CPU renderer (Mesa's llvmpipe) a fifth of
     // its frame, and the class sees the column move behind the text.
-    let modal = egui::Modal::new(egui::Id::unique("welcome"))
+    let id = egui::Id::unique("welcome");
+    // On a projector the scene is narrow and the text large: the card, in
+    // the text size of a desk's screen (it is for the person at the
+    // computer, not the class), sits in the window's lower left corner,
+    // over the sidebar and the tabs, and leaves the column in view.
+    let (area, text_size) = if state.settings().projector {
+        let corner = egui::Modal::default_area(id).anchor(
+            egui::Align2::LEFT_BOTTOM,
+            egui::vec2(8.0, -(1.6 * theme.text_size + 16.0)),
+        );
+        (corner, DESK_TEXT_SIZE)
+    } else {
+        (egui::Modal::default_area(id), theme.text_size)
+    };
+    let modal = egui::Modal::new(id)
+        .area(area)
         .backdrop_color(egui::Color32::TRANSPARENT)
         .show(ctx, |ui| {
-            ui.set_max_width(34.0 * theme.text_size);
+            if text_size < theme.text_size {
+                let style = ui.style_mut();
+                for font in style.text_styles.values_mut() {
+                    font.size *= text_size / theme.text_size;
+                }
+            }
+            ui.set_max_width(34.0 * text_size);
             ui.heading("Welcome to zieglerlab");
             for paragraph in WELCOME {
                 ui.add_space(0.4 * theme.text_size);

@@ -51,11 +51,9 @@ where
         .enumerate()
         .map(|(k, (name, _))| (Swatch::Line(series_color(k)), name.clone()))
         .collect();
-    if let Some((name, p)) = &curves.reference {
-        entries.push((
-            Swatch::Dashed(INK),
-            format!("{name}: p = {}", load_text(*p)),
-        ));
+    let here_load = data.here.map(|h| h.1);
+    if let Some(name) = curves.reference_label(here_load) {
+        entries.push((Swatch::Dashed(INK), name));
     }
     if let Some((_, p)) = data.here {
         entries.push((
@@ -75,11 +73,7 @@ where
     if !(x0.is_finite() && x1 > x0) {
         return Err(FigureError::Empty("the curves have no extent".to_owned()));
     }
-    let highest = points
-        .map(|p| p[1])
-        .chain(curves.reference.as_ref().map(|r| r.1))
-        .chain(data.here.map(|h| h.1))
-        .fold(0.0, f64::max);
+    let (highest, reference_within) = curves.fitted_top(here_load);
     let mut plot = chart(
         &area,
         x0..x1,
@@ -91,7 +85,7 @@ where
         XTicks::Decades,
         ink,
     )?;
-    if let Some((_, p)) = &curves.reference {
+    if let Some((_, p)) = curves.reference.as_ref().filter(|_| reference_within) {
         dashed(&mut plot, &[(x0, *p), (x1, *p)], INK, ink)?;
     }
     for (k, (_, points)) in curves.lines.iter().enumerate() {

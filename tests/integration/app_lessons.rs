@@ -154,6 +154,25 @@ fn every_lesson_step_keeps_the_projector_layout() {
                 hidden,
                 "{at}: the card's verdict hidden"
             );
+            // The lesson's buttons, time's and the card stay in view at the
+            // sidebar's foot, above the status line, however long the
+            // step's text (it scrolls above them).
+            let in_view = 768.0 - 1.6 * 22.0;
+            let card = if hidden {
+                harness.get_by_label("stable or not?")
+            } else {
+                harness.get_by_label_contains("growth rate")
+            };
+            for (what, rect) in [
+                ("kick", harness.get_by_label("kick").rect()),
+                ("close lesson", harness.get_by_label("close lesson").rect()),
+                ("the card", card.rect()),
+            ] {
+                assert!(
+                    rect.top() > 0.0 && rect.bottom() < in_view,
+                    "{at}: {what} at {rect:?}"
+                );
+            }
             let tab_top = harness.get_by_label("time histories").rect().top();
             assert!(
                 tab_top > 0.55 * 768.0,

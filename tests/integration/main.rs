@@ -2,6 +2,7 @@
 //! the app, wgpu and rapier instead of one per topic).
 
 mod app_input;
+mod app_layout;
 mod app_lessons;
 mod app_logic;
 mod app_tools;

@@ -18,7 +18,15 @@ pub struct LessonSection {
     built_in: Option<Vec<(&'static str, Result<Lesson, LessonError>)>>,
     path: String,
     reading: Option<Reading>,
+    /// The step whose reveal is shown (the lesson's title and the step's
+    /// index), and for how many frames.
+    revealed: Option<((String, usize), u32)>,
 }
+
+/// The frames a reveal is shown before it is brought into view: by then
+/// the sidebar's foot has its new height (it changes with a lesson), and
+/// the scroll goes no further than needed.
+const SETTLED_FRAMES: u32 = 2;
 
 /// A lesson file read and checked off the UI thread: a slow disk or a
 /// large file never holds the window.
@@ -69,8 +77,31 @@ impl LessonSection {
 impl View for LessonSection {
     fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
         self.take_reading(ui.ctx(), actions);
-        if state.lesson().is_some() {
-            step_ui(ui, state, actions, theme);
+        if let Some(run) = state.lesson() {
+            // A step's reveal is brought into view once, where the step's
+            // text is longer than the sidebar shows (a projector): the
+            // title scrolls away before the result does.
+            if let Some(reveal) = step_ui(ui, state, actions, theme) {
+                let this = (run.lesson.title.clone(), run.step);
+                let frames = match &mut self.revealed {
+                    Some((at, frames)) if *at == this => {
+                        *frames = frames.saturating_add(1);
+                        *frames
+                    }
+                    _ => {
+                        self.revealed = Some((this, 0));
+                        0
+                    }
+                };
+                if frames == SETTLED_FRAMES {
+                    reveal.scroll_to_me(None);
+                }
+            }
+            // On a projector the buttons stay in view at the sidebar's
+            // foot (`step_buttons_ui`), under the text, which may scroll.
+            if !state.settings().projector {
+                step_buttons_ui(ui, state, actions);
+            }
             return;
         }
         let built_in = self.built_in.get_or_insert_with(|| {
@@ -118,11 +149,15 @@ impl View for LessonSection {
     }
 }
 
-/// The step shown, its prediction and its result.
-fn step_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
-    let Some(run) = state.lesson().cloned() else {
-        return;
-    };
+/// The step shown, its prediction and its result; returns the result's
+/// place when there is one.
+fn step_ui(
+    ui: &mut egui::Ui,
+    state: &AppState,
+    actions: &mut Actions,
+    theme: &Theme,
+) -> Option<egui::Response> {
+    let run = state.lesson()?.clone();
     let step = run.current().clone();
     ui.label(RichText::new(&run.lesson.title).strong());
     ui.weak(format!(
@@ -171,16 +206,18 @@ fn step_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &T
     let spectrum = state.current_spectrum();
     let here = spectrum.map(|s| crate::analysis::classify(&s.eigenvalues, s.scale_per_s));
     let here = here.as_ref().map(|s| (state.model().load_p(), s));
-    if let Some(result) = run.reveal_text(first, state.load_max(), seen, here) {
-        // Right in the stable colour and strong, wrong in the warning
-        // colour, a result of the theory in the text's: the words differ too.
-        let text = RichText::new(result);
-        ui.label(match run.verdict() {
-            Some(true) => text.color(theme.stable).strong(),
-            Some(false) => text.color(theme.warning),
-            None => text.color(theme.text),
+    let revealed = run
+        .reveal_text(first, state.load_max(), seen, here)
+        .map(|result| {
+            // Right in the stable colour and strong, wrong in the warning
+            // colour, a result of the theory in the text's: the words differ too.
+            let text = RichText::new(result);
+            ui.label(match run.verdict() {
+                Some(true) => text.color(theme.stable).strong(),
+                Some(false) => text.color(theme.warning),
+                None => text.color(theme.text),
+            })
         });
-    }
     // The prediction beside the steps after it, but for the reveal of the
     // first instability, which says it itself.
     if let Some(p) = run.predicted_load
@@ -189,6 +226,15 @@ fn step_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &T
     {
         ui.weak(format!("your prediction: p = {}", load_text(p)));
     }
+    revealed
+}
+
+/// A lesson's way through its steps: back, next and close, and at its
+/// last step the next lesson.
+pub fn step_buttons_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions) {
+    let Some(run) = state.lesson() else {
+        return;
+    };
     let last = run.step + 1 == run.lesson.steps.len();
     ui.horizontal(|ui| {
         if ui

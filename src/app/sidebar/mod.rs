@@ -83,13 +83,13 @@ impl View for Sidebar {
         model::ModelSection.ui(ui, state, actions, theme);
         ui.separator();
         if state.settings().projector {
-            // In front of a class: time and the status card first, the load
-            // typed, and the parameters folded, so that everything the
-            // teacher needs fits a 1024x768 projector without scrolling.
-            time::TimeSection.ui(ui, state, actions, theme);
-            ui.separator();
-            status::StatusSection.ui(ui, state, actions, theme);
-            ui.separator();
+            // In front of a class: time and the status card at the foot
+            // (`foot_ui`), always in view; here the load typed, and the
+            // parameters folded, so that all fits a 1024x768 projector.
+            if state.lesson().is_some() {
+                time::speed_ui(ui, state, actions);
+                ui.separator();
+            }
             self.load.ui(ui, state, actions, theme);
             self.ramp.ui(ui, state, actions, theme);
             egui::CollapsingHeader::new("parameters")
@@ -100,12 +100,13 @@ impl View for Sidebar {
             ui.separator();
             self.parameters.ui(ui, state, actions, theme);
             ui.separator();
-            time::TimeSection.ui(ui, state, actions, theme);
+            time::TimeSection { lesson_foot: false }.ui(ui, state, actions, theme);
             ui.separator();
-            status::StatusSection.ui(ui, state, actions, theme);
+            status::StatusSection { compact: false }.ui(ui, state, actions, theme);
         }
         ui.separator();
-        ui.horizontal(|ui| {
+        // Wrapped: on a projector's sidebar the two do not fit one row.
+        ui.horizontal_wrapped(|ui| {
             overlay_ui(ui, state, actions);
             let mut projector = state.settings().projector;
             if ui
@@ -117,6 +118,24 @@ impl View for Sidebar {
             }
         });
     }
+}
+
+/// On a projector, the sidebar's foot, kept in view under what scrolls:
+/// a lesson's buttons, time's controls and the status card (both cut to
+/// their essentials during a lesson, whose step text fills the rest).
+pub fn foot_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
+    let lesson = state.lesson().is_some();
+    ui.separator();
+    if lesson {
+        lesson::step_buttons_ui(ui, state, actions);
+        ui.separator();
+    }
+    time::TimeSection {
+        lesson_foot: lesson,
+    }
+    .ui(ui, state, actions, theme);
+    ui.separator();
+    status::StatusSection { compact: lesson }.ui(ui, state, actions, theme);
 }
 
 /// Another preset's locus behind the current one.

@@ -72,7 +72,10 @@ impl NumberFields {
         let refused = state.refusal(key).is_some();
         let mut edit = egui::TextEdit::singleline(&mut text)
             .id(field_id(key))
-            .desired_width(FIELD_WIDTH);
+            .desired_width(FIELD_WIDTH)
+            // Wider for a long value than cut: "7.8125e-4" cut to "7.812"
+            // on a projector read as another number.
+            .clip_text(false);
         if refused {
             edit = edit.text_color(theme.error);
         }

@@ -198,7 +198,13 @@ fn onset_ui(ui: &mut egui::Ui, onset: f64, hopf: &Result<Hopf, NoHopf>, sliding:
     ui.label(RichText::new(words).small()).on_hover_text(more);
 }
 
-pub struct StatusSection;
+/// The card. `compact`: the verdict, the growth and its time only, for a
+/// lesson on a projector, where the card stays in view at the sidebar's
+/// foot under the step's text (the frequency, the measurement and the
+/// onset's kind are in the full card, on the projector outside a lesson).
+pub struct StatusSection {
+    pub compact: bool,
+}
 
 impl View for StatusSection {
     fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, _actions: &mut Actions, theme: &Theme) {
@@ -255,8 +261,11 @@ impl View for StatusSection {
                 .on_hover_text(DECAY),
             None => ui.label("neutral: no growth, no decay"),
         };
-        frequency_and_measured_ui(ui, state, &s, &spectrum.eigenvalues);
-        if s.state == State::Flutter
+        if !self.compact {
+            frequency_and_measured_ui(ui, state, &s, &spectrum.eigenvalues);
+        }
+        if !self.compact
+            && s.state == State::Flutter
             && let Some((onset, Some(hopf))) = analysis.onset_below(state.settings().model.load_p())
         {
             let sliding = state.settings().model.roller().is_some();

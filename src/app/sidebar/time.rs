@@ -17,43 +17,38 @@ pub const PACES: [(&str, f64, &str); 3] = [
     ("Fast", 4.0, "four times real time"),
 ];
 
-pub struct TimeSection;
+/// Time's controls. `lesson_foot`: the few a lesson on a projector keeps
+/// in view at the sidebar's foot, on one row (the speeds are set by the
+/// lesson's steps and stay above, and "reset all" ends the lesson).
+pub struct TimeSection {
+    pub lesson_foot: bool,
+}
 
 impl View for TimeSection {
     fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
-        ui.horizontal_wrapped(|ui| {
-            for command in [
+        let commands: &[Command] = if self.lesson_foot {
+            &[
+                Command::PlayPause,
+                Command::Step,
+                Command::Kick,
+                Command::Reset,
+            ]
+        } else {
+            &[
                 Command::PlayPause,
                 Command::Step,
                 Command::Kick,
                 Command::Reset,
                 Command::ResetAll,
-            ] {
+            ]
+        };
+        ui.horizontal_wrapped(|ui| {
+            for command in commands {
                 command.button(ui, state.running(), actions);
             }
         });
-        ui.horizontal(|ui| {
-            for (name, speed, tip) in PACES {
-                let chosen = state.settings().speed == speed;
-                if ui
-                    .selectable_label(chosen, name)
-                    .on_hover_text(tip)
-                    .clicked()
-                {
-                    actions.push(Action::Speed(speed));
-                }
-            }
-        });
-        let mut speed = state.settings().speed;
-        let response = ui
-            .add(
-                egui::Slider::new(&mut speed, SPEED_RANGE)
-                    .logarithmic(true)
-                    .text("× speed"),
-            )
-            .on_hover_text("simulated seconds per second of wall-clock time");
-        if response.changed() {
-            actions.push(Action::Speed(speed));
+        if !self.lesson_foot {
+            speed_ui(ui, state, actions);
         }
         let sim = state.simulation();
         let shown = if !state.running() && sim.status() == Status::Running {
@@ -72,5 +67,32 @@ impl View for TimeSection {
                 ),
             );
         }
+    }
+}
+
+/// The named speeds and the speed factor.
+pub fn speed_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions) {
+    ui.horizontal(|ui| {
+        for (name, speed, tip) in PACES {
+            let chosen = state.settings().speed == speed;
+            if ui
+                .selectable_label(chosen, name)
+                .on_hover_text(tip)
+                .clicked()
+            {
+                actions.push(Action::Speed(speed));
+            }
+        }
+    });
+    let mut speed = state.settings().speed;
+    let response = ui
+        .add(
+            egui::Slider::new(&mut speed, SPEED_RANGE)
+                .logarithmic(true)
+                .text("× speed"),
+        )
+        .on_hover_text("simulated seconds per second of wall-clock time");
+    if response.changed() {
+        actions.push(Action::Speed(speed));
     }
 }

@@ -161,12 +161,8 @@ impl ParadoxPanel {
             .bar_ui(ui, for_picture, |ui| save_buttons(ui, None, actions));
         let refit = self.fit.refit((self.generation, *curves_key));
         let palette = [theme.series[0], theme.series[3], theme.series[4]];
-        let highest = curves
-            .lines
-            .iter()
-            .flat_map(|(_, points)| points.iter().map(|p| p[1]))
-            .chain(curves.reference.as_ref().map(|(_, p)| *p))
-            .fold(0.0, f64::max);
+        let here_load = here.map(|h| h[1]);
+        let (highest, _) = curves.fitted_top(here_load);
         // The legend in the curves' order (damping from 0.1 down to
         // vanishing), not sorted by its words (0.01, 0.1, 1e-4).
         let plot = Plot::new("paradox")
@@ -175,8 +171,9 @@ impl ParadoxPanel {
                     .position(Corner::LeftTop)
                     .follow_insertion_order(true),
             )
-            .include_y(0.0)
-            .include_y(HEADROOM * highest);
+            // The height fitted to the curves, not left to the items'
+            // bounds: a reference line far above them would set it.
+            .default_y_bounds(0.0, HEADROOM * highest.max(1e-9));
         let plot = axes(
             plot,
             format!("{} (log scale)", curves.x_label),
@@ -188,9 +185,11 @@ impl ParadoxPanel {
         refit_if(plot, refit).show(ui, |plot_ui| {
             // The undamped (or massless) load dashed in the overlay's grey:
             // not the white of this model's point.
-            if let Some((label, p)) = &curves.reference {
+            if let (Some((_, p)), Some(label)) =
+                (&curves.reference, curves.reference_label(here_load))
+            {
                 plot_ui.hline(
-                    HLine::new(label.clone(), *p)
+                    HLine::new(label, *p)
                         .color(theme.overlay)
                         .style(egui_plot::LineStyle::dashed_loose())
                         .width(1.5 * theme.stroke_scale),
