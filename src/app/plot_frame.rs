@@ -287,6 +287,9 @@ pub fn axes(
         ])
 }
 
+/// The space between two entries of a legend row, in points.
+const ENTRY_GAP: f32 = 8.0;
+
 /// How a legend entry is drawn.
 pub enum Swatch {
     /// A filled dot (a marker).
@@ -302,13 +305,18 @@ pub enum Swatch {
 /// A legend as a row of text above the plots, so that it never covers data.
 pub fn legend_row(ui: &mut egui::Ui, entries: &[(Swatch, String)]) {
     ui.horizontal_wrapped(|ui| {
-        for (swatch, text) in entries {
+        for (k, (swatch, text)) in entries.iter().enumerate() {
             let width = if matches!(swatch, Swatch::Scale(_)) {
                 48.0
             } else {
                 16.0
             };
-            let (rect, _) = ui.allocate_exact_size(vec2(width, 12.0), Sense::hover());
+            // The gap between entries before each swatch, so that it wraps
+            // with it: after the last label it ran past the panel's edge,
+            // and widened every plot under the row by as much.
+            let gap = if k == 0 { 0.0 } else { ENTRY_GAP };
+            let (cell, _) = ui.allocate_exact_size(vec2(gap + width, 12.0), Sense::hover());
+            let rect = egui::Rect::from_min_max(cell.min + vec2(gap, 0.0), cell.max);
             let painter = ui.painter();
             let (center, radius) = (rect.center(), 4.5);
             match swatch {
@@ -339,7 +347,6 @@ pub fn legend_row(ui: &mut egui::Ui, entries: &[(Swatch, String)]) {
                 }
             }
             ui.label(text);
-            ui.add_space(8.0);
         }
     });
 }
