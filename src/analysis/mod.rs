@@ -1,22 +1,17 @@
-//! Linear stability of the column: eigenvalues of the quadratic pencil,
-//! classification, tracked root loci and critical loads. Pure f64 (no UI, no clock).
+//! The column's stability: the linear analysis (`linear/`: eigenvalues of
+//! the quadratic pencil, classification, tracked root loci, critical
+//! loads, maps, paradox curves) and the nonlinear one (`nonlinear/`: Hopf
+//! points and limit cycles). Pure f64 (no UI, no clock).
 
-mod critical;
-mod crossing;
-mod cycles;
-mod field;
-mod gauss;
-mod hopf;
-mod hqr;
-mod jet;
-mod locus;
-mod map;
-mod paradox;
-mod peaks;
-mod pencil;
-mod resolution;
-mod roots;
-mod stability;
+mod linear;
+mod nonlinear;
+
+// Every module by its own name, as before the two folders: the files
+// name each other through `crate::analysis::<module>`.
+use linear::{
+    critical, crossing, hqr, locus, map, paradox, peaks, pencil, resolution, roots, stability,
+};
+use nonlinear::{cycles, field, gauss, hopf, jet};
 
 pub use critical::{
     BRACKET_SAMPLES, bracketing_locus, bracketing_locus_reporting, critical_loads,

@@ -209,7 +209,7 @@ mod tests {
             model.column.rods = rods;
             model.column.c1_nms_per_rad = 0.1;
             model.column.c2_nms_per_rad = 0.2;
-            let reduced = super::super::field::Field::new(&model);
+            let reduced = crate::analysis::field::Field::new(&model);
             let v = DVector::from_fn(2 * rods, |i, _| [0.3, -0.2, 0.5, 0.1, 0.4, -0.3][i]);
             let [d1, d2, d3] = directional_derivatives(&model, &v).unwrap();
             let at = |t: f64| reduced.at(&(&v * t));

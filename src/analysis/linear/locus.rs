@@ -1,10 +1,10 @@
 //! Root loci: eigenvalue branches followed continuously along the load axis,
 //! with samples added where branches meet or cross an axis.
 
-use super::pencil::AffinePencil;
-use super::roots::{MAX_DEGREE, aberth, modulus};
-use super::stability::RELATIVE_TOLERANCE;
-use super::{AnalysisError, C64};
+use crate::analysis::pencil::AffinePencil;
+use crate::analysis::roots::{MAX_DEGREE, aberth, modulus};
+use crate::analysis::stability::RELATIVE_TOLERANCE;
+use crate::analysis::{AnalysisError, C64};
 
 /// Neighbouring grid loads must differ by at least this many units of
 /// `f64::EPSILON` relative to the range's end, so that every load is distinct.
@@ -259,7 +259,7 @@ fn permute(perm: &mut [usize], k: usize, visit: &mut impl FnMut(&[usize])) {
 /// that `roots` holds on entry: Aberth from the guess when the
 /// characteristic polynomial is available, the Schur path and an assignment
 /// otherwise. Allocation-free on the polynomial path (the locus's hot loop).
-pub(super) fn eigenvalues_near(
+pub(in crate::analysis) fn eigenvalues_near(
     pencil: &AffinePencil,
     p: f64,
     roots: &mut [C64],

@@ -5,7 +5,7 @@
 //! times faster than a general Schur decomposition, which also builds the
 //! vectors' reflectors and guards every 3-vector norm against overflow.
 
-use super::C64;
+use crate::analysis::C64;
 
 /// Iterations allowed per eigenvalue before giving up (EISPACK's limit).
 const MAX_ITERATIONS_PER_EIGENVALUE: usize = 30;

@@ -5,11 +5,11 @@
 
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use super::AnalysisError;
-use super::critical::first_loss_within;
-use super::crossing::Transition;
-use super::pencil::AffinePencil;
-use super::stability::State;
+use crate::analysis::AnalysisError;
+use crate::analysis::critical::first_loss_within;
+use crate::analysis::crossing::Transition;
+use crate::analysis::pencil::AffinePencil;
+use crate::analysis::stability::State;
 use crate::format::number_text;
 use crate::model::{Axis, Key, Load, Model};
 

@@ -23,7 +23,7 @@
 use nalgebra::allocator::Allocator;
 use nalgebra::{DMatrix, DVector, DefaultAllocator, Dim, Dyn, LU, OMatrix};
 
-use super::field::Field;
+use crate::analysis::field::Field;
 
 /// How much of the flow's derivative (the monodromy) a step carries.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use super::C64;
+use crate::analysis::C64;
 
 /// Tolerance on real and imaginary parts, relative to the spectrum's frequency
 /// scale: well above rounding (about 1e-15 of the scale after balancing),

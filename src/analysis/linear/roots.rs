@@ -2,7 +2,7 @@
 //! Horner's rule, and Aberth-Ehrlich refinement of all roots at once from a
 //! previous estimate. Knows nothing of pencils.
 
-use super::C64;
+use crate::analysis::C64;
 
 /// Largest degree handled by the polynomial path (3 degrees of freedom).
 pub const MAX_DEGREE: usize = 6;

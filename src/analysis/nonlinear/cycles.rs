@@ -35,11 +35,11 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 use nalgebra::{DMatrix, DVector};
 
-use super::field::Field;
-use super::gauss::{Monodromy, Stepper};
-use super::hopf::{HopfPoint, Steps as HopfSteps, hopf_point};
-use super::peaks::Peaks;
-use super::{AffinePencil, AnalysisError, C64, Hopf, HopfKind, critical_loads, is_hopf};
+use crate::analysis::field::Field;
+use crate::analysis::gauss::{Monodromy, Stepper};
+use crate::analysis::hopf::{HopfPoint, Steps as HopfSteps, hopf_point};
+use crate::analysis::peaks::Peaks;
+use crate::analysis::{AffinePencil, AnalysisError, C64, Hopf, HopfKind, critical_loads, is_hopf};
 use crate::format::load_text;
 use crate::model::{Model, StateVec};
 
@@ -786,7 +786,7 @@ fn branch(
 /// command line and the window say it after "flutter onset at p = ...: ").
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum NoBranch {
-    /// The column is undamped (see [`super::NoHopf`]).
+    /// The column is undamped (see [`crate::analysis::NoHopf`]).
     #[error("no damping, a reversible column: no limit cycle to follow")]
     Reversible,
     /// The first Lyapunov coefficient is zero within its accuracy.

@@ -22,7 +22,7 @@
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
-use super::{AffinePencil, AnalysisError, C64};
+use crate::analysis::{AffinePencil, AnalysisError, C64};
 use crate::model::Model;
 
 /// Difference steps: for the Jacobian, the second and the third derivatives.
@@ -147,7 +147,7 @@ pub(crate) fn hopf_point(
     if !dissipative(model) {
         return Ok(Err(NoHopf::Reversible));
     }
-    if derivatives == Derivatives::Automatic && !super::jet::covers(model) {
+    if derivatives == Derivatives::Automatic && !crate::analysis::jet::covers(model) {
         return Err(AnalysisError::NotCovered(
             "the automatic derivatives cover the follower columns with joint springs and dampers, without drag along the rods",
         ));
@@ -156,7 +156,7 @@ pub(crate) fn hopf_point(
     let pencil = AffinePencil::new(&at)?;
     let critical = critical_pair(&pencil, load)?;
     let field = Field {
-        reduced: super::field::Field::new(&at),
+        reduced: crate::analysis::field::Field::new(&at),
         derivatives,
     };
     let n = field.reduced.dimension();
@@ -276,7 +276,7 @@ fn eigenvector(a: &DMatrix<f64>, guess: C64) -> Option<(C64, DVector<C64>)> {
 
 /// The derivatives of the reduced field at rest, by the means asked for.
 struct Field {
-    reduced: super::field::Field,
+    reduced: crate::analysis::field::Field,
     derivatives: Derivatives,
 }
 
@@ -288,7 +288,7 @@ impl Field {
     /// The first, second and third directional derivatives along `v` by
     /// jets (only called for [`Derivatives::Automatic`], on a covered model).
     fn jets(&self, v: &DVector<f64>) -> [DVector<f64>; 3] {
-        super::jet::directional_derivatives(self.reduced.model(), v)
+        crate::analysis::jet::directional_derivatives(self.reduced.model(), v)
             .unwrap_or_else(|| std::array::from_fn(|_| DVector::from_element(v.len(), f64::NAN)))
     }
 
@@ -379,7 +379,7 @@ impl Field {
 /// (a pair crossing the imaginary axis): stable on one side, flutter on
 /// the other.
 #[must_use]
-pub fn is_hopf(from: super::State, to: super::State) -> bool {
-    use super::State::{Flutter, Stable};
+pub fn is_hopf(from: crate::analysis::State, to: crate::analysis::State) -> bool {
+    use crate::analysis::State::{Flutter, Stable};
     matches!((from, to), (Stable, Flutter) | (Flutter, Stable))
 }

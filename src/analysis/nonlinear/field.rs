@@ -195,7 +195,8 @@ mod tests {
         model.column.c2_nms_per_rad = 0.2;
         let field = Field::new(&model);
         let v = DVector::from_column_slice(&[0.3, -0.2, 0.5, 0.1, 0.4, -0.3]);
-        let [exact, ..] = super::super::jet::directional_derivatives(&model, &v).expect("covered");
+        let [exact, ..] =
+            crate::analysis::jet::directional_derivatives(&model, &v).expect("covered");
         let at_rest = DVector::zeros(6);
         let h = 1e-2;
         let central = (field.jacobian(&at_rest, h) * &v - &exact).amax();

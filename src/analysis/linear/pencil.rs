@@ -3,8 +3,8 @@
 
 use nalgebra::{DMatrix, linalg::Schur};
 
-use super::roots::{MAX_DEGREE, Poly, aberth};
-use super::{AnalysisError, C64};
+use crate::analysis::roots::{MAX_DEGREE, Poly, aberth};
+use crate::analysis::{AnalysisError, C64};
 use crate::model::{AsValid, LinearModel, linearize};
 
 /// The eigenvalues of one pencil.
@@ -153,8 +153,8 @@ fn squares_matrix(lin: &LinearModel) -> Option<DMatrix<f64>> {
 /// iteration; faer's Schur decomposition where that does not converge).
 fn eigenvalues_from_squares(mut a: DMatrix<f64>) -> Option<Vec<C64>> {
     balance(&mut a);
-    let squares =
-        super::hqr::eigenvalues(a.nrows(), |i, j| a[(i, j)]).or_else(|| faer_eigenvalues(&a))?;
+    let squares = crate::analysis::hqr::eigenvalues(a.nrows(), |i, j| a[(i, j)])
+        .or_else(|| faer_eigenvalues(&a))?;
     Some(
         squares
             .into_iter()

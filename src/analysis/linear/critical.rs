@@ -1,15 +1,15 @@
 //! Critical loads: every change of stability along the load axis, located to
 //! near machine precision.
 
-use super::AnalysisError;
-use super::C64;
-use super::crossing::{Transition, refine, state_at};
-use super::locus::{
+use crate::analysis::AnalysisError;
+use crate::analysis::C64;
+use crate::analysis::crossing::{Transition, refine, state_at};
+use crate::analysis::locus::{
     Crossings, LARGEST_LOAD, Locus, check_largest_load, load_grid, load_resolution, locus_until,
     max_samples,
 };
-use super::pencil::AffinePencil;
-use super::stability::{State, classify};
+use crate::analysis::pencil::AffinePencil;
+use crate::analysis::stability::{State, classify};
 
 /// Samples of the locus that brackets the transitions before they are refined.
 pub const BRACKET_SAMPLES: usize = 1000;
@@ -77,7 +77,7 @@ const DECADE_SAMPLES: usize = 4000;
 /// Beyond this many times the load that matches the column's stiffness, the
 /// column's own stiffness changes the pencil by less than the
 /// classification's tolerance (1e-10 of the frequency scale, see
-/// [`RELATIVE_TOLERANCE`](super::RELATIVE_TOLERANCE)) and below rounding
+/// [`RELATIVE_TOLERANCE`](crate::analysis::RELATIVE_TOLERANCE)) and below rounding
 /// 1e5 times further: the pencil changes in scale only.
 const ROUNDED_AWAY: f64 = 1e12;
 
@@ -217,7 +217,7 @@ const PAST_FIRST_LOSS: usize = 8;
 ///
 /// # Errors
 /// A bad range or a failed eigenvalue computation.
-pub(super) fn first_loss_within(
+pub(in crate::analysis) fn first_loss_within(
     pencil: &AffinePencil,
     load_max: f64,
 ) -> Result<Option<Transition>, AnalysisError> {

@@ -4,15 +4,15 @@
 
 use serde::Serialize;
 
-use super::AnalysisError;
-use super::C64;
-use super::locus::eigenvalues_near;
-use super::pencil::AffinePencil;
-use super::stability::{Stability, State, classify};
+use crate::analysis::AnalysisError;
+use crate::analysis::C64;
+use crate::analysis::locus::eigenvalues_near;
+use crate::analysis::pencil::AffinePencil;
+use crate::analysis::stability::{Stability, State, classify};
 use crate::format::load_text;
 
 /// Transitions are located to this relative width of the load bracket.
-pub(super) const RELATIVE_LOAD_TOLERANCE: f64 = 1e-14;
+pub(in crate::analysis) const RELATIVE_LOAD_TOLERANCE: f64 = 1e-14;
 
 /// A change of stability at a load.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -64,7 +64,7 @@ pub fn stability_ranges(
     out
 }
 
-pub(super) fn state_at(pencil: &AffinePencil, p: f64) -> Result<State, AnalysisError> {
+pub(in crate::analysis) fn state_at(pencil: &AffinePencil, p: f64) -> Result<State, AnalysisError> {
     stability_at(pencil, p).map(|s| s.state)
 }
 
@@ -253,7 +253,7 @@ fn brent(
 /// Every transition between the bracket's ends ([`bisect_confirmed`]), each
 /// loss (or gain) of stability polished by [`polish_crossing`]. `near_a`:
 /// the moving eigenvalues at a load near `a`.
-pub(super) fn refine(
+pub(in crate::analysis) fn refine(
     pencil: &AffinePencil,
     near_a: &[C64],
     (a, sa): (f64, State),

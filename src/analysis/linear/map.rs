@@ -6,12 +6,12 @@
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
-use super::AnalysisError;
-use super::critical::{bracketing_locus, bracketing_locus_through, critical_loads_along};
-use super::crossing::Transition;
-use super::locus::{load_grid, locus};
-use super::pencil::AffinePencil;
-use super::stability::{State, classify};
+use crate::analysis::AnalysisError;
+use crate::analysis::critical::{bracketing_locus, bracketing_locus_through, critical_loads_along};
+use crate::analysis::crossing::Transition;
+use crate::analysis::locus::{load_grid, locus};
+use crate::analysis::pencil::AffinePencil;
+use crate::analysis::stability::{State, classify};
 use crate::model::{Axis, Model};
 
 /// What to map: the model, the second axis and both grids (evenly spaced,

@@ -2,10 +2,10 @@
 //! resolution against the slowest mode, and the same states from a 100 times
 //! finer classification.
 
-use super::AnalysisError;
-use super::locus::Locus;
-use super::pencil::AffinePencil;
-use super::stability::{RELATIVE_TOLERANCE, State, classify_with};
+use crate::analysis::AnalysisError;
+use crate::analysis::locus::Locus;
+use crate::analysis::pencil::AffinePencil;
+use crate::analysis::stability::{RELATIVE_TOLERANCE, State, classify_with};
 use crate::format::load_text;
 
 /// Beyond this ratio of the fastest to the slowest mode, rounding of the

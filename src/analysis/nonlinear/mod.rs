@@ -1,0 +1,9 @@
+//! The nonlinear analysis: the reduced equations of motion and their
+//! derivatives, the Hopf points' normal form (soft or hard onset), and the
+//! limit cycles continued from them with their Floquet multipliers.
+
+pub(super) mod cycles;
+pub(super) mod field;
+pub(super) mod gauss;
+pub(super) mod hopf;
+pub(super) mod jet;
