@@ -145,93 +145,172 @@ impl Actions {
     }
 }
 
-/// A named action of the user.
+/// A named action of the user, in the order the keys help lists them (the
+/// order of [`COMMANDS`], checked when the program is compiled).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Command {
     PlayPause,
-    Step,
+    LoadUp,
+    LoadDown,
     Kick,
     Reset,
     ResetAll,
-    LoadUp,
-    LoadDown,
     Projector,
     LessonNext,
     LessonBack,
     FullScreen,
+    Step,
 }
+
+/// One row of the commands' table: a command, its button's text (and
+/// while the run goes, where it differs), what it does (tooltips and the
+/// keys help) and the keys that ask for it (none: a button only).
+pub struct CommandSpec {
+    pub command: Command,
+    pub label: &'static str,
+    pub label_running: &'static str,
+    pub tooltip: &'static str,
+    pub keys: &'static [egui::Key],
+}
+
+/// A row whose label is the same whether the run goes or not.
+const fn row(
+    command: Command,
+    label: &'static str,
+    tooltip: &'static str,
+    keys: &'static [egui::Key],
+) -> CommandSpec {
+    CommandSpec {
+        command,
+        label,
+        label_running: label,
+        tooltip,
+        keys,
+    }
+}
+
+/// Every command, one row each, in the keys help's order.
+pub const COMMANDS: [CommandSpec; 11] = {
+    use egui::Key;
+    [
+        CommandSpec {
+            command: Command::PlayPause,
+            label: "play",
+            label_running: "pause",
+            tooltip: "play / pause",
+            keys: &[Key::Space],
+        },
+        row(
+            Command::LoadUp,
+            "load up",
+            "load up by a hundredth of the load bar",
+            &[Key::ArrowRight, Key::ArrowUp],
+        ),
+        row(
+            Command::LoadDown,
+            "load down",
+            "load down by a hundredth of the load bar",
+            &[Key::ArrowLeft, Key::ArrowDown],
+        ),
+        row(
+            Command::Kick,
+            "kick",
+            "kick: every rod turned by 0.03 rad",
+            &[Key::K],
+        ),
+        row(
+            Command::Reset,
+            "reset",
+            "reset: a fresh run from the standard perturbation",
+            &[Key::R],
+        ),
+        row(
+            Command::ResetAll,
+            "reset all",
+            "reset all: the preset's parameters and load, normal speed, a fresh run, the default views; an open lesson is closed",
+            &[],
+        ),
+        row(
+            Command::Projector,
+            "projector mode",
+            "projector mode: high contrast, large text",
+            &[Key::P],
+        ),
+        row(
+            Command::LessonNext,
+            "next",
+            "the lesson's next step (a presenter's remote sends Page Down)",
+            &[Key::PageDown],
+        ),
+        row(
+            Command::LessonBack,
+            "back",
+            "the lesson's previous step (Page Up)",
+            &[Key::PageUp],
+        ),
+        row(
+            Command::FullScreen,
+            "full screen",
+            "full screen: the window fills the screen (again to leave)",
+            &[Key::F11],
+        ),
+        row(
+            Command::Step,
+            "step",
+            "one engine step (1/240 s), then paused",
+            &[],
+        ),
+    ]
+};
+
+// Each row sits at its command's place: `Command::spec` indexes the table.
+const _: () = {
+    let mut i = 0;
+    while i < COMMANDS.len() {
+        assert!(COMMANDS[i].command as usize == i, "COMMANDS out of order");
+        i += 1;
+    }
+};
 
 impl Command {
     /// Every command, in the order the keys help lists them.
-    pub const ALL: [Self; 11] = [
-        Self::PlayPause,
-        Self::LoadUp,
-        Self::LoadDown,
-        Self::Kick,
-        Self::Reset,
-        Self::ResetAll,
-        Self::Projector,
-        Self::LessonNext,
-        Self::LessonBack,
-        Self::FullScreen,
-        Self::Step,
-    ];
+    pub const ALL: [Self; COMMANDS.len()] = {
+        let mut all = [Self::PlayPause; COMMANDS.len()];
+        let mut i = 0;
+        while i < COMMANDS.len() {
+            all[i] = COMMANDS[i].command;
+            i += 1;
+        }
+        all
+    };
+
+    /// Its row of the table.
+    #[must_use]
+    pub fn spec(self) -> &'static CommandSpec {
+        &COMMANDS[self as usize]
+    }
 
     /// The button's text, `running` or not.
     #[must_use]
     pub fn label(self, running: bool) -> &'static str {
-        match self {
-            Self::PlayPause if running => "pause",
-            Self::PlayPause => "play",
-            Self::Step => "step",
-            Self::Kick => "kick",
-            Self::Reset => "reset",
-            Self::ResetAll => "reset all",
-            Self::LoadUp => "load up",
-            Self::LoadDown => "load down",
-            Self::Projector => "projector mode",
-            Self::LessonNext => "next",
-            Self::LessonBack => "back",
-            Self::FullScreen => "full screen",
+        let spec = self.spec();
+        if running {
+            spec.label_running
+        } else {
+            spec.label
         }
     }
 
     /// What it does, for tooltips and the keys help.
     #[must_use]
     pub fn tooltip(self) -> &'static str {
-        match self {
-            Self::PlayPause => "play / pause",
-            Self::Step => "one engine step (1/240 s), then paused",
-            Self::Kick => "kick: every rod turned by 0.03 rad",
-            Self::Reset => "reset: a fresh run from the standard perturbation",
-            Self::ResetAll => {
-                "reset all: the preset's parameters and load, normal speed, a fresh run, the default views; an open lesson is closed"
-            }
-            Self::LoadUp => "load up by a hundredth of the load bar",
-            Self::LoadDown => "load down by a hundredth of the load bar",
-            Self::Projector => "projector mode: high contrast, large text",
-            Self::LessonNext => "the lesson's next step (a presenter's remote sends Page Down)",
-            Self::LessonBack => "the lesson's previous step (Page Up)",
-            Self::FullScreen => "full screen: the window fills the screen (again to leave)",
-        }
+        self.spec().tooltip
     }
 
     /// The keys that ask for it (none: a button only).
     #[must_use]
     pub fn keys(self) -> &'static [egui::Key] {
-        use egui::Key;
-        match self {
-            Self::PlayPause => &[Key::Space],
-            Self::Step | Self::ResetAll => &[],
-            Self::Kick => &[Key::K],
-            Self::Reset => &[Key::R],
-            Self::LoadUp => &[Key::ArrowRight, Key::ArrowUp],
-            Self::LoadDown => &[Key::ArrowLeft, Key::ArrowDown],
-            Self::Projector => &[Key::P],
-            Self::LessonNext => &[Key::PageDown],
-            Self::LessonBack => &[Key::PageUp],
-            Self::FullScreen => &[Key::F11],
-        }
+        self.spec().keys
     }
 
     /// The keys as the keys help names them.

@@ -8,7 +8,7 @@ use clap::builder::TypedValueParser as _;
 
 use anyhow::Result;
 
-use zieglerlab::app::{Panel, Tab, ZieglerApp};
+use zieglerlab::app::{Panel, ZieglerApp};
 
 use super::tiles::TiledRenderer;
 
@@ -138,8 +138,7 @@ pub fn render_frames(
         Panel::Window => Some(app.layout().tab),
         Panel::Scene => None,
     };
-    let background =
-        drawn.filter(|&tab| [Tab::MAP, Tab::PARADOX, Tab::POST_CRITICAL].contains(&tab));
+    let background = drawn.filter(|&tab| tab.spec().background);
     if let Some(tab) = background {
         // A long chain's map takes minutes: say what is being waited for.
         let working = super::spinner(&format!("computing the {} tab", tab.title()));

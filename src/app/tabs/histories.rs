@@ -15,6 +15,7 @@ pub const TAB: TabSpec = TabSpec {
     id: "histories",
     title: "time histories",
     tooltip: "the angles, the energy and the band's power over the run",
+    background: false,
     make: || Box::new(HistoriesTab::default()),
 };
 

@@ -94,6 +94,7 @@ pub const TAB: TabSpec = TabSpec {
     id: "map",
     title: "stability map",
     tooltip: "the stability of every load against a second parameter",
+    background: true,
     make: || Box::new(MapPanel::default()),
 };
 

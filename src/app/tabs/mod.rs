@@ -33,6 +33,9 @@ pub struct TabSpec {
     pub title: &'static str,
     /// What it shows (the tab bar's tooltip).
     pub tooltip: &'static str,
+    /// Whether it computes something of its own off the window's thread (a
+    /// picture waits for it, saying so).
+    pub background: bool,
     /// Its view, as the window starts.
     pub make: fn() -> Box<dyn TabView>,
 }

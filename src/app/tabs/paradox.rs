@@ -38,6 +38,7 @@ pub const TAB: TabSpec = TabSpec {
     id: "paradox",
     title: "paradox",
     tooltip: "the first critical load as the damping (or the roller's mass) vanishes",
+    background: true,
     make: || Box::new(ParadoxPanel::default()),
 };
 

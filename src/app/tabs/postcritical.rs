@@ -27,6 +27,7 @@ pub const TAB: TabSpec = TabSpec {
     id: "post-critical",
     title: "post-critical",
     tooltip: "past the flutter onset: the limit cycles' size against the load, stable or not, and the running column's own swing",
+    background: true,
     make: || Box::new(PostCriticalPanel::default()),
 };
 
