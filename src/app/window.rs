@@ -30,13 +30,30 @@ impl From<Renderer> for eframe::Renderer {
     }
 }
 
+/// The window's icon, the one the desktop entry names.
+const ICON_PNG: &[u8] = include_bytes!("../../assets/zieglerlab.png");
+
+/// `viewport` with the window's icon (the desktop's default where the
+/// picture cannot be read, which a unit test rules out).
+fn with_icon(viewport: egui::ViewportBuilder) -> egui::ViewportBuilder {
+    match eframe::icon_data::from_png_bytes(ICON_PNG) {
+        Ok(icon) => viewport.with_icon(std::sync::Arc::new(icon)),
+        Err(_) => viewport,
+    }
+}
+
 /// The window's options: its title and sizes, drawn by `renderer`.
 fn options(renderer: Renderer, inner_size: [f32; 2]) -> eframe::NativeOptions {
     eframe::NativeOptions {
-        viewport: egui::ViewportBuilder::default()
-            .with_title(super::recorder::WINDOW_TITLE)
-            .with_inner_size(inner_size)
-            .with_min_inner_size(super::SMALLEST_WINDOW_POINTS),
+        viewport: with_icon(
+            egui::ViewportBuilder::default()
+                .with_title(super::recorder::WINDOW_TITLE)
+                // The desktop entry's name (its StartupWMClass): the desktop
+                // groups the window under the entry and shows its icon.
+                .with_app_id(APP_ID)
+                .with_inner_size(inner_size)
+                .with_min_inner_size(super::SMALLEST_WINDOW_POINTS),
+        ),
         renderer: renderer.into(),
         // Dithering adds noise to every pixel's colour to hide banding in
         // gradients; there are none here, and on a CPU renderer it costs
@@ -186,5 +203,19 @@ impl eframe::App for TimedWindow {
     /// A bench run leaves nothing of egui's memory behind.
     fn persist_egui_memory(&self) -> bool {
         false
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The icon built into the program is the square picture the desktop
+    /// entry names.
+    #[test]
+    fn the_window_icon_is_a_square_picture() {
+        let icon = eframe::icon_data::from_png_bytes(ICON_PNG).unwrap();
+        assert_eq!((icon.width, icon.height), (256, 256));
+        assert_eq!(icon.rgba.len(), 4 * 256 * 256);
     }
 }

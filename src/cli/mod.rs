@@ -5,6 +5,7 @@
 mod bench;
 mod bifurcation;
 mod critical;
+mod desktop;
 mod figure;
 mod headless;
 mod lesson;
@@ -20,7 +21,7 @@ mod tiles;
 use std::process::ExitCode;
 
 use anyhow::Result;
-use clap::{Parser, Subcommand, ValueEnum};
+use clap::{CommandFactory, Parser, Subcommand, ValueEnum};
 
 use zieglerlab::model::{Key, Model, ModelError, PresetId, apply_assignments, parse_assignment};
 use zieglerlab::sim::EngineKind;
@@ -235,6 +236,10 @@ enum Command {
     Snapshot(snapshot::Args),
     /// An animated GIF of a run (the app or one panel, drawn headlessly), one frame per 1/fps s of simulated time
     Record(record::Args),
+    /// The shell's completions of every command and option: bash, zsh or fish.
+    Completions(desktop::CompletionsArgs),
+    /// The man page (roff): zieglerlab.1 to standard output, or every page into a folder.
+    Manual(desktop::ManualArgs),
 }
 
 /// Status of a run stopped by Ctrl-C or SIGTERM (128 + SIGINT, as shells
@@ -344,7 +349,12 @@ fn execute(command: &Command) -> Result<()> {
     // What writes its answer to standard output stops when nobody reads it
     // (a map written to a file goes on).
     let to_stdout = match command {
-        Command::Critical(_) | Command::Locus(_) | Command::Simulate(_) | Command::Bench(_) => true,
+        Command::Critical(_)
+        | Command::Locus(_)
+        | Command::Simulate(_)
+        | Command::Bench(_)
+        | Command::Completions(_)
+        | Command::Manual(_) => true,
         Command::Map(args) => args.streams(),
         Command::Bifurcation(args) => args.streams(),
         _ => false,
@@ -365,6 +375,8 @@ fn execute(command: &Command) -> Result<()> {
         Command::Bench(args) => bench::run(args, &mut out),
         Command::Snapshot(args) => snapshot::run(args),
         Command::Record(args) => record::run(args),
+        Command::Completions(args) => desktop::completions(args, &mut Cli::command(), &mut out),
+        Command::Manual(args) => desktop::manual(args, Cli::command(), &mut out),
     }
 }
 

@@ -16,6 +16,7 @@ mod closed_form_loads;
 mod common;
 mod cycles;
 mod damped_ziegler;
+mod desktop;
 mod eigen_solver;
 mod energy_balance;
 mod external_damping;
