@@ -16,9 +16,11 @@ mod load_bar;
 mod locus_view;
 mod notice;
 mod pace;
+mod panel;
 mod panel_picture;
 mod plot_frame;
 mod plots;
+mod record_menu;
 mod recorder;
 mod scene;
 mod settings;
@@ -44,6 +46,7 @@ pub use layout::Layout;
 pub use locus_view::{EdgeMark, Side, ViewRect, deciding_extent, default_view, versus_load_extent};
 pub use notice::{Level, Notice};
 pub use pace::{MAX_FRAME_SECS, MAX_STEPS_PER_FRAME};
+pub use panel::{Panel, SMALLEST_WINDOW_POINTS};
 pub use plot_frame::VIEW_HINT;
 pub use plots::{LOCUS_SHOWN_ID, LocusShown};
 pub use state::{AppState, Settings};
@@ -72,55 +75,6 @@ pub trait View {
     fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme);
 }
 
-/// What a headless picture shows: the whole window, the scene, or one tab.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Panel {
-    Window,
-    Scene,
-    Tab(Tab),
-}
-
-impl std::str::FromStr for Panel {
-    type Err = tabs::UnknownName;
-
-    fn from_str(name: &str) -> Result<Self, tabs::UnknownName> {
-        match name {
-            "window" => Ok(Self::Window),
-            "scene" => Ok(Self::Scene),
-            _ => Tab::named(name)
-                .map(Self::Tab)
-                .map_err(|_| tabs::UnknownName {
-                    what: "panel",
-                    name: name.to_owned(),
-                    known: Self::names().join(", "),
-                }),
-        }
-    }
-}
-
-/// The smallest window, in points: the window cannot be made smaller, and
-/// the sidebar, the scene and the plots all fit in it.
-pub const SMALLEST_WINDOW_POINTS: [f32; 2] = [1024.0, 700.0];
-
-impl Panel {
-    /// Every panel's name: the window, the scene, each tab's.
-    #[must_use]
-    pub fn names() -> Vec<&'static str> {
-        ["window", "scene"].into_iter().chain(Tab::ids()).collect()
-    }
-
-    /// The smallest area, in points, this panel is laid out in without
-    /// labels running into each other: the window's own minimum for the
-    /// whole window, 480x300 for one panel.
-    #[must_use]
-    pub fn smallest_points(self) -> [f32; 2] {
-        match self {
-            Self::Window => SMALLEST_WINDOW_POINTS,
-            Self::Scene | Self::Tab(_) => [480.0, 300.0],
-        }
-    }
-}
-
 /// The app: its state and the views that draw it.
 pub struct ZieglerApp {
     state: AppState,
@@ -131,7 +85,7 @@ pub struct ZieglerApp {
     /// The theme applied to the context (None: not yet).
     applied_projector: Option<bool>,
     /// The record button's choice and its work.
-    record_choice: recorder::RecordChoice,
+    record_choice: record_menu::RecordChoice,
     recorder: recorder::Recorder,
     /// Tables saved to files.
     exports: exports::Exports,
@@ -178,7 +132,7 @@ impl ZieglerApp {
             applied_projector: None,
             view_generation: 0,
             scene: scene::SceneView::default(),
-            record_choice: recorder::RecordChoice::default(),
+            record_choice: record_menu::RecordChoice::default(),
             recorder: recorder::Recorder::default(),
             exports: exports::Exports::default(),
             picture: panel_picture::PanelPicture::default(),
@@ -426,7 +380,7 @@ impl ZieglerApp {
                 let (choice, recorder) = (&mut self.record_choice, &self.recorder);
                 self.sidebar
                     .header_ui(ui, &self.state, &mut self.actions, |ui, actions| {
-                        recorder::record_ui(ui, choice, recorder, actions);
+                        record_menu::record_ui(ui, choice, recorder, actions);
                     });
                 ui.separator();
                 if self.state.settings().projector {
@@ -531,7 +485,7 @@ impl ZieglerApp {
         // load bar up over the scene.
         ui.advance_cursor_after_rect(top);
         load_bar::load_bar_ui(ui, &self.state, &mut self.actions, theme);
-        tab_bar_ui(ui, self.tab, &mut self.actions);
+        tabs::bar_ui(ui, self.tab, &mut self.actions);
         // With the root locus beside the scene, or the tab in its place, the
         // tab is on the screen already: never a second time below, whatever
         // room the estimate above left there.
@@ -586,21 +540,6 @@ impl ZieglerApp {
         });
         self.ask_for_a_frame_if_asked(ui.ctx());
     }
-}
-
-/// The tab bar: a click asks for another tab.
-fn tab_bar_ui(ui: &mut egui::Ui, open: Tab, actions: &mut Actions) {
-    ui.horizontal(|ui| {
-        for tab in Tab::all() {
-            if ui
-                .selectable_label(open == tab, tab.title())
-                .on_hover_text(tab.tooltip())
-                .clicked()
-            {
-                actions.push(Action::Tab(tab));
-            }
-        }
-    });
 }
 
 /// The height the load bar and the tab bar take under the scene, in

@@ -2,9 +2,13 @@
 //! with samples added where branches meet or cross an axis.
 
 use crate::analysis::pencil::AffinePencil;
-use crate::analysis::roots::{MAX_DEGREE, aberth, modulus};
+use crate::analysis::roots::{MAX_DEGREE, modulus};
 use crate::analysis::stability::RELATIVE_TOLERANCE;
 use crate::analysis::{AnalysisError, C64};
+
+pub(in crate::analysis) use super::matching::eigenvalues_near;
+use super::matching::{assign, assignment};
+use super::prefetch::Prefetched;
 
 /// Neighbouring grid loads must differ by at least this many units of
 /// `f64::EPSILON` relative to the range's end, so that every load is distinct.
@@ -191,168 +195,6 @@ pub fn load_grid(min: f64, max: f64, samples: usize) -> Result<Vec<f64>, Analysi
             }
         })
         .collect())
-}
-
-/// Reorders `found` to follow `guess` branch by branch (least total distance;
-/// exhaustive up to 6 eigenvalues, greedy beyond).
-fn assign(found: &[C64], guess: &[C64]) -> Vec<C64> {
-    assignment(found, guess).iter().map(|&k| found[k]).collect()
-}
-
-/// For each eigenvalue of `guess`, the index of the one of `found` that
-/// continues it (see [`assign`]).
-fn assignment(found: &[C64], guess: &[C64]) -> Vec<usize> {
-    let n = found.len();
-    if n <= 6 {
-        let mut best: (f64, Vec<usize>) = (f64::INFINITY, (0..n).collect());
-        let mut perm: Vec<usize> = (0..n).collect();
-        permute(&mut perm, 0, &mut |perm| {
-            let cost: f64 = perm
-                .iter()
-                .zip(guess)
-                .map(|(&k, g)| modulus(found[k] - g))
-                .sum();
-            if cost < best.0 {
-                best = (cost, perm.to_vec());
-            }
-        });
-        return best.1;
-    }
-    // Distances compared by their squares, of the differences over the
-    // largest guess: no square root, and no square small enough to be
-    // subnormal but of eigenvalues equal to rounding.
-    let largest = guess.iter().map(|&g| modulus(g)).fold(0.0, f64::max);
-    let per_scale = if largest > 0.0 && largest.is_finite() {
-        largest.recip()
-    } else {
-        1.0
-    };
-    let mut free: Vec<usize> = (0..n).collect();
-    guess
-        .iter()
-        .map(|&g| {
-            let mut nearest = (0, f64::INFINITY);
-            for (slot, &k) in free.iter().enumerate() {
-                let distance_sqr = ((found[k] - g) * per_scale).norm_sqr();
-                if distance_sqr < nearest.1 {
-                    nearest = (slot, distance_sqr);
-                }
-            }
-            free.swap_remove(nearest.0)
-        })
-        .collect()
-}
-
-fn permute(perm: &mut [usize], k: usize, visit: &mut impl FnMut(&[usize])) {
-    if k == perm.len() {
-        visit(perm);
-        return;
-    }
-    for i in k..perm.len() {
-        perm.swap(k, i);
-        permute(perm, k + 1, visit);
-        perm.swap(k, i);
-    }
-}
-
-/// The moving eigenvalues at load p, attached branch by branch to the guess
-/// that `roots` holds on entry: Aberth from the guess when the
-/// characteristic polynomial is available, the Schur path and an assignment
-/// otherwise. Allocation-free on the polynomial path (the locus's hot loop).
-pub(in crate::analysis) fn eigenvalues_near(
-    pencil: &AffinePencil,
-    p: f64,
-    roots: &mut [C64],
-) -> Result<(), AnalysisError> {
-    let n = roots.len();
-    if n <= MAX_DEGREE
-        && let Some(poly) = pencil.char_poly(p)
-    {
-        // A failed iteration leaves the guess for the Schur path.
-        if aberth(&poly, roots, 60) {
-            return Ok(());
-        }
-    }
-    let spectrum = pencil.spectrum(p)?;
-    let assigned = assign(&spectrum.eigenvalues, roots);
-    roots.copy_from_slice(&assigned);
-    Ok(())
-}
-
-/// Evenly spaced loads whose spectra are computed together, on every core,
-/// ahead of the tracking (per thread): a long chain's eigenvalues come from
-/// the QR iteration, about 50 µs each at 32 rods, and long blocks keep the
-/// threads' start and the wait for the slower one small beside them.
-const PREFETCH_PER_THREAD: usize = 128;
-
-/// The spectra of the evenly spaced loads of a locus whose eigenvalues all
-/// come from the Schur path (more than [`MAX_DEGREE`] of them: no
-/// characteristic polynomial), computed a block at a time on every core.
-/// The tracking assigns them exactly as [`eigenvalues_near`] would, so the
-/// locus is the same to the last bit; an error is returned only when its
-/// load is reached.
-struct Prefetched {
-    threads: usize,
-    /// The grid index of `spectra[0]`.
-    from: usize,
-    spectra: Vec<Result<Vec<C64>, AnalysisError>>,
-}
-
-impl Prefetched {
-    fn new() -> Self {
-        Self {
-            threads: std::thread::available_parallelism().map_or(1, std::num::NonZero::get),
-            from: 0,
-            spectra: Vec::new(),
-        }
-    }
-
-    /// The moving eigenvalues at `grid[index]`, computing the block that
-    /// starts there when it is not held.
-    fn at(
-        &mut self,
-        pencil: &AffinePencil,
-        grid: &[f64],
-        index: usize,
-    ) -> Result<&[C64], AnalysisError> {
-        if !(self.from..self.from + self.spectra.len()).contains(&index) {
-            let end = (index + PREFETCH_PER_THREAD * self.threads).min(grid.len());
-            let loads = &grid[index..end];
-            let spectrum = |p: f64| pencil.spectrum(p).map(|s| s.eigenvalues);
-            self.spectra = if self.threads < 2 || loads.len() < 2 {
-                loads.iter().map(|&p| spectrum(p)).collect()
-            } else {
-                let chunk = loads.len().div_ceil(self.threads);
-                std::thread::scope(|scope| {
-                    let workers: Vec<_> = loads
-                        .chunks(chunk)
-                        .map(|part| {
-                            let worker = scope.spawn(move || {
-                                part.iter().map(|&p| spectrum(p)).collect::<Vec<_>>()
-                            });
-                            (part, worker)
-                        })
-                        .collect();
-                    workers
-                        .into_iter()
-                        .flat_map(|(part, worker)| {
-                            // A worker that failed leaves its loads unanswered.
-                            worker.join().unwrap_or_else(|_| {
-                                part.iter()
-                                    .map(|&load| Err(AnalysisError::NotConverged { load }))
-                                    .collect()
-                            })
-                        })
-                        .collect()
-                })
-            };
-            self.from = index;
-        }
-        match &self.spectra[index - self.from] {
-            Ok(eigenvalues) => Ok(eigenvalues),
-            Err(error) => Err(error.clone()),
-        }
-    }
 }
 
 /// -1, 0 or 1 with a dead band of `tolerance` around zero.

@@ -7,3 +7,4 @@ pub(super) mod field;
 pub(super) mod gauss;
 pub(super) mod hopf;
 pub(super) mod jet;
+mod shooting;

@@ -205,6 +205,21 @@ fn save_buttons(ui: &mut eframe::egui::Ui, table: Option<Table>, actions: &mut A
     }
 }
 
+/// The tab bar: a click asks for another tab.
+pub fn bar_ui(ui: &mut eframe::egui::Ui, open: Tab, actions: &mut Actions) {
+    ui.horizontal(|ui| {
+        for tab in Tab::all() {
+            if ui
+                .selectable_label(open == tab, tab.title())
+                .on_hover_text(tab.tooltip())
+                .clicked()
+            {
+                actions.push(Action::Tab(tab));
+            }
+        }
+    });
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

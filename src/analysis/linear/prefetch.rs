@@ -1,0 +1,81 @@
+//! A long chain's spectra at the locus's evenly spaced loads, computed a
+//! block at a time on every core ahead of the tracking.
+
+use crate::analysis::pencil::AffinePencil;
+use crate::analysis::{AnalysisError, C64};
+
+/// Evenly spaced loads whose spectra are computed together, on every core,
+/// ahead of the tracking (per thread): a long chain's eigenvalues come from
+/// the QR iteration, about 50 µs each at 32 rods, and long blocks keep the
+/// threads' start and the wait for the slower one small beside them.
+const PREFETCH_PER_THREAD: usize = 128;
+
+/// The spectra of the evenly spaced loads of a locus whose eigenvalues all
+/// come from the Schur path (more than [`MAX_DEGREE`](crate::analysis::roots::MAX_DEGREE) of them: no
+/// characteristic polynomial), computed a block at a time on every core.
+/// The tracking assigns them exactly as [`eigenvalues_near`](super::matching::eigenvalues_near) would, so the
+/// locus is the same to the last bit; an error is returned only when its
+/// load is reached.
+pub(in crate::analysis) struct Prefetched {
+    threads: usize,
+    /// The grid index of `spectra[0]`.
+    from: usize,
+    spectra: Vec<Result<Vec<C64>, AnalysisError>>,
+}
+
+impl Prefetched {
+    pub(in crate::analysis) fn new() -> Self {
+        Self {
+            threads: std::thread::available_parallelism().map_or(1, std::num::NonZero::get),
+            from: 0,
+            spectra: Vec::new(),
+        }
+    }
+
+    /// The moving eigenvalues at `grid[index]`, computing the block that
+    /// starts there when it is not held.
+    pub(in crate::analysis) fn at(
+        &mut self,
+        pencil: &AffinePencil,
+        grid: &[f64],
+        index: usize,
+    ) -> Result<&[C64], AnalysisError> {
+        if !(self.from..self.from + self.spectra.len()).contains(&index) {
+            let end = (index + PREFETCH_PER_THREAD * self.threads).min(grid.len());
+            let loads = &grid[index..end];
+            let spectrum = |p: f64| pencil.spectrum(p).map(|s| s.eigenvalues);
+            self.spectra = if self.threads < 2 || loads.len() < 2 {
+                loads.iter().map(|&p| spectrum(p)).collect()
+            } else {
+                let chunk = loads.len().div_ceil(self.threads);
+                std::thread::scope(|scope| {
+                    let workers: Vec<_> = loads
+                        .chunks(chunk)
+                        .map(|part| {
+                            let worker = scope.spawn(move || {
+                                part.iter().map(|&p| spectrum(p)).collect::<Vec<_>>()
+                            });
+                            (part, worker)
+                        })
+                        .collect();
+                    workers
+                        .into_iter()
+                        .flat_map(|(part, worker)| {
+                            // A worker that failed leaves its loads unanswered.
+                            worker.join().unwrap_or_else(|_| {
+                                part.iter()
+                                    .map(|&load| Err(AnalysisError::NotConverged { load }))
+                                    .collect()
+                            })
+                        })
+                        .collect()
+                })
+            };
+            self.from = index;
+        }
+        match &self.spectra[index - self.from] {
+            Ok(eigenvalues) => Ok(eigenvalues),
+            Err(error) => Err(error.clone()),
+        }
+    }
+}

@@ -1,0 +1,425 @@
+//! The shooting problem of one column's limit cycles: the flow over a
+//! period and its monodromy by Gauss-Legendre steps, and Newton's (or
+//! Broyden's) iterations on the periodicity, phase and load (or
+//! arclength) equations of `cycles`.
+
+use nalgebra::{DMatrix, DVector};
+
+use super::cycles::{Cycle, LOAD_SCALE_FLOOR};
+use crate::analysis::C64;
+use crate::analysis::field::Field;
+use crate::analysis::gauss::{Monodromy, Stepper};
+use crate::analysis::hopf::HopfPoint;
+use crate::analysis::peaks::Peaks;
+
+/// Fewest steps per period: with the Gauss-Legendre method's order 4, the
+/// period to about 1e-10 and the amplitudes (read off the cubic between
+/// steps, see `peaks`) to about 1e-9 of themselves.
+const MIN_STEPS: u32 = 800;
+/// The step times the spectral radius of the Jacobian at rest stays below
+/// this. The method is stable at any step (see `gauss`); the bound keeps
+/// the stage equations' Newton iterations, which start from the last
+/// step's stages, in their quick range where a mode is far faster than the
+/// flutter (the roller's spin as its slip slows).
+const FAST_MODE_STEP: f64 = 100.0;
+/// Newton iterations for one cycle.
+const NEWTON_ITERATIONS: usize = 12;
+/// Newton's iterations end when each part of the step is this fraction of
+/// its part of the unknowns (see [`converged`]).
+const NEWTON_TOLERANCE: f64 = 1e-9;
+/// Broyden iterations for one cycle (each is one flow without the
+/// monodromy).
+const BROYDEN_ITERATIONS: usize = 16;
+
+/// How Newton's matrix is updated over the iterations.
+#[derive(Clone, Copy)]
+pub(in crate::analysis) enum Update<'a> {
+    /// Broyden's method: the matrix of the first iteration, corrected by a
+    /// rank-one update from each later iteration's change of the residual
+    /// (each later iteration is then one flow without the monodromy). The
+    /// first iteration's monodromy is the one given (the last cycle's, next
+    /// on the branch), or else the flow's with each step's Jacobian held
+    /// over its stages.
+    Broyden(Option<&'a DMatrix<f64>>),
+    /// Newton's method: the matrix anew at every iteration, with the
+    /// monodromy taken as given.
+    Newton(Monodromy),
+}
+
+/// A converged cycle with its exact monodromy and Newton's iterations.
+pub(in crate::analysis) struct Solved {
+    pub(in crate::analysis) cycle: Cycle,
+    pub(in crate::analysis) monodromy: DMatrix<f64>,
+    pub(in crate::analysis) iterations: usize,
+}
+
+/// The flow over one period from `x0` in a number of steps: the
+/// end point, the largest `|phi_i|` on the way, and (when asked) the monodromy.
+pub(in crate::analysis) struct Orbit {
+    pub(in crate::analysis) end: DVector<f64>,
+    pub(in crate::analysis) amplitude_rad: Vec<f64>,
+    pub(in crate::analysis) monodromy: Option<DMatrix<f64>>,
+    pub(in crate::analysis) closest_slip_m_per_s: Option<f64>,
+}
+
+/// The flow over `period` from `x0` in `steps` steps of the Gauss-Legendre
+/// method, with the monodromy as asked; `None` where a step fails.
+pub(in crate::analysis) fn flow(
+    field: &Field,
+    x0: &DVector<f64>,
+    period: f64,
+    steps: usize,
+    monodromy: Monodromy,
+) -> Option<Orbit> {
+    let d = x0.len();
+    #[expect(clippy::cast_precision_loss, reason = "a step count")]
+    let mut stepper = Stepper::new(field, period / steps as f64);
+    let mut x = x0.clone();
+    let mut y = (monodromy != Monodromy::None).then(|| DMatrix::<f64>::identity(d, d));
+    let rods = field.rods();
+    let h = stepper.step_secs();
+    let (angles, rates) = (0..rods, rods..2 * rods);
+    let mut peaks = Peaks::new(
+        &x0.as_slice()[angles.clone()],
+        &x0.as_slice()[rates.clone()],
+    );
+    let mut closest_slip_m_per_s = field.slip_m_per_s(x0);
+    for _ in 0..steps {
+        stepper.step(&mut x, y.as_mut(), monodromy)?;
+        peaks.push(
+            &x.as_slice()[angles.clone()],
+            &x.as_slice()[rates.clone()],
+            h,
+        );
+        if let (Some(closest), Some(slip)) = (closest_slip_m_per_s.as_mut(), field.slip_m_per_s(&x))
+        {
+            *closest = closest.min(slip);
+        }
+    }
+    Some(Orbit {
+        end: x,
+        amplitude_rad: peaks.largest().to_vec(),
+        monodromy: y,
+        closest_slip_m_per_s,
+    })
+}
+
+/// Steps for one period of `period` of a field whose Jacobian
+/// at rest has spectral radius `fastest_per_s`.
+pub(in crate::analysis) fn steps_for(period: f64, fastest_per_s: f64) -> usize {
+    let needed = (period * fastest_per_s / FAST_MODE_STEP)
+        .ceil()
+        .clamp(f64::from(MIN_STEPS), 1e7);
+    if needed.is_finite() {
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "a positive step count below 1e7"
+        )]
+        let steps = needed as usize;
+        steps
+    } else {
+        MIN_STEPS as usize
+    }
+}
+
+/// The spectral radius of the field's Jacobian at rest, 1/s.
+pub(in crate::analysis) fn fastest_rate(field: &Field) -> f64 {
+    let d = field.dimension();
+    field
+        .jacobian(&DVector::zeros(d), 1e-6)
+        .complex_eigenvalues()
+        .iter()
+        .map(|z| z.norm())
+        .fold(0.0, f64::max)
+}
+
+/// What the third Newton equation holds fixed.
+pub(in crate::analysis) enum Constraint<'a> {
+    /// The load.
+    Load(f64),
+    /// The distance along the branch: `tangent . (u - predicted) = 0`.
+    Arclength {
+        tangent: &'a DVector<f64>,
+        predicted: &'a DVector<f64>,
+    },
+}
+
+/// The shooting problem of one column.
+pub(in crate::analysis) struct Shooting {
+    pub(in crate::analysis) field: Field,
+    pub(in crate::analysis) fastest_per_s: f64,
+}
+
+impl Shooting {
+    /// The cycle through the guess `u = (x0, T, p)` under `constraint`,
+    /// with its exact monodromy and Newton's iterations, or `None` where
+    /// Newton fails: first by Broyden's method (see [`Update::Broyden`]),
+    /// then, where that fails, by Newton's method with the matrix anew at
+    /// every iteration, each step's Jacobian held over its stages, and last
+    /// with the exact monodromy.
+    pub(in crate::analysis) fn solve(
+        &self,
+        guess: &DVector<f64>,
+        constraint: &Constraint,
+    ) -> Option<Solved> {
+        self.newton(guess, constraint, Update::Broyden(None))
+            .or_else(|| self.newton(guess, constraint, Update::Newton(Monodromy::HeldPerStep)))
+            .or_else(|| self.newton(guess, constraint, Update::Newton(Monodromy::Exact)))
+    }
+
+    /// [`Self::solve`] with Newton's matrix updated as `update` says.
+    pub(in crate::analysis) fn newton(
+        &self,
+        guess: &DVector<f64>,
+        constraint: &Constraint,
+        update: Update,
+    ) -> Option<Solved> {
+        let d = self.field.dimension();
+        let reference = guess.rows(0, d).into_owned();
+        let reference_flow = self.field.at_load(guess[d + 1]).at(&reference);
+        let mut u = guess.clone();
+        // The inverse of Newton's matrix, and the last step with the
+        // residual it was taken from (for Broyden's update).
+        let mut inverse: Option<DMatrix<f64>> = None;
+        let mut last: Option<(DVector<f64>, DVector<f64>)> = None;
+        let iterations = match update {
+            Update::Broyden(_) => BROYDEN_ITERATIONS,
+            Update::Newton(_) => NEWTON_ITERATIONS,
+        };
+        for iteration in 1..=iterations {
+            let (x0, period, load) = (u.rows(0, d).into_owned(), u[d], u[d + 1]);
+            if !(period > 0.0 && load >= 0.0 && u.iter().all(|v| v.is_finite())) {
+                return None;
+            }
+            let field = self.field.at_load(load);
+            let taken = match update {
+                Update::Broyden(None) if inverse.is_none() => Monodromy::HeldPerStep,
+                Update::Broyden(_) => Monodromy::None,
+                Update::Newton(monodromy) => monodromy,
+            };
+            let (orbit, steps) = self.orbit(&field, &x0, period, taken)?;
+            let mut residual = DVector::<f64>::zeros(d + 2);
+            residual.rows_mut(0, d).copy_from(&(&orbit.end - &x0));
+            residual[d] = reference_flow.dot(&(&x0 - &reference));
+            residual[d + 1] = match constraint {
+                Constraint::Load(target) => load - target,
+                Constraint::Arclength { tangent, predicted } => tangent.dot(&(&u - *predicted)),
+            };
+            let monodromy = match (update, &inverse) {
+                (Update::Broyden(Some(known)), None) => Some(known),
+                (Update::Broyden(_), Some(_)) => None,
+                _ => Some(orbit.monodromy.as_ref()?),
+            };
+            if let Some(monodromy) = monodromy {
+                let jacobian = self.newton_matrix(
+                    (&x0, period, load),
+                    steps,
+                    (&orbit.end, monodromy),
+                    &reference_flow,
+                    constraint,
+                )?;
+                inverse = Some(jacobian.try_inverse()?);
+            } else if let (Some(h), Some((step, before))) = (inverse.as_mut(), &last) {
+                broyden_update(h, &-step, &(&residual - before));
+            }
+            let step = inverse.as_ref()? * &residual;
+            u -= &step;
+            if converged(&step, &u, d) {
+                let (cycle, monodromy) = self.cycle(&u)?;
+                return Some(Solved {
+                    cycle,
+                    monodromy,
+                    iterations: iteration,
+                });
+            }
+            last = Some((step, residual));
+        }
+        None
+    }
+
+    /// The matrix of Newton's equations at `(x0, period, load)` (see the
+    /// module's notes), from the flow's `end` there and a `monodromy`, and
+    /// the flow's derivative in the load, by differences over `steps` steps.
+    pub(in crate::analysis) fn newton_matrix(
+        &self,
+        (x0, period, load): (&DVector<f64>, f64, f64),
+        steps: usize,
+        (end, monodromy): (&DVector<f64>, &DMatrix<f64>),
+        reference_flow: &DVector<f64>,
+        constraint: &Constraint,
+    ) -> Option<DMatrix<f64>> {
+        let d = x0.len();
+        let field = self.field.at_load(load);
+        let mut jacobian = DMatrix::<f64>::zeros(d + 2, d + 2);
+        jacobian
+            .view_mut((0, 0), (d, d))
+            .copy_from(&(monodromy - DMatrix::identity(d, d)));
+        jacobian.view_mut((0, d), (d, 1)).copy_from(&field.at(end));
+        jacobian
+            .view_mut((d, 0), (1, d))
+            .copy_from(&reference_flow.transpose());
+        match constraint {
+            Constraint::Load(_) => jacobian[(d + 1, d + 1)] = 1.0,
+            Constraint::Arclength { tangent, .. } => {
+                let delta = 1e-6 * load.abs().max(1e-3);
+                let end = |p| {
+                    flow(&self.field.at_load(p), x0, period, steps, Monodromy::None)
+                        .map(|orbit| orbit.end)
+                };
+                let (plus, minus) = (end(load + delta)?, end(load - delta)?);
+                jacobian
+                    .view_mut((0, d + 1), (d, 1))
+                    .copy_from(&((plus - minus) / (2.0 * delta)));
+                jacobian
+                    .view_mut((d + 1, 0), (1, d + 2))
+                    .copy_from(&tangent.transpose());
+            }
+        }
+        Some(jacobian)
+    }
+
+    /// The cycle at the converged unknowns `u`, with its multipliers, and
+    /// its exact monodromy.
+    pub(in crate::analysis) fn cycle(&self, u: &DVector<f64>) -> Option<(Cycle, DMatrix<f64>)> {
+        let d = self.field.dimension();
+        let (x0, period, load) = (u.rows(0, d).into_owned(), u[d], u[d + 1]);
+        let (orbit, _) = self.orbit(&self.field.at_load(load), &x0, period, Monodromy::Exact)?;
+        let monodromy = orbit.monodromy?;
+        let multipliers = sorted_multipliers(&monodromy);
+        let trivial = trivial_index(&multipliers)?;
+        let stable = multipliers
+            .iter()
+            .enumerate()
+            .all(|(i, m)| i == trivial || m.norm() < 1.0);
+        let cycle = Cycle {
+            load,
+            period_secs: period,
+            start: x0,
+            amplitude_rad: orbit.amplitude_rad,
+            multipliers,
+            stable,
+            closest_slip_m_per_s: orbit.closest_slip_m_per_s,
+        };
+        Some((cycle, monodromy))
+    }
+
+    /// The flow over `period` with its monodromy, and the steps it took.
+    /// The roller's slip damping grows as the slip slows (its rate is the
+    /// friction over the spin inertia and the slip speed), so an orbit
+    /// whose slip falls below the band speed is taken again with the steps
+    /// scaled up to match.
+    pub(in crate::analysis) fn orbit(
+        &self,
+        field: &Field,
+        x0: &DVector<f64>,
+        period: f64,
+        monodromy: Monodromy,
+    ) -> Option<(Orbit, usize)> {
+        let steps = steps_for(period, self.fastest_per_s);
+        let orbit = flow(field, x0, period, steps, monodromy)?;
+        let slowed = match (orbit.closest_slip_m_per_s, field.band_speed_m_per_s()) {
+            (Some(slip), Some(band)) if slip > 0.0 && slip < band => band / slip,
+            _ => return Some((orbit, steps)),
+        };
+        let needed = steps_for(period, self.fastest_per_s * slowed);
+        if needed > steps {
+            Some((flow(field, x0, period, needed, monodromy)?, needed))
+        } else {
+            Some((orbit, steps))
+        }
+    }
+
+    /// Whether the roller's contact comes near sticking on `cycle`: its
+    /// slip falls below `fraction` of the band speed.
+    pub(in crate::analysis) fn near_sticking(&self, cycle: &Cycle, fraction: f64) -> bool {
+        match (cycle.closest_slip_m_per_s, self.field.band_speed_m_per_s()) {
+            (Some(slip), Some(band)) => slip < fraction * band,
+            _ => false,
+        }
+    }
+
+    /// The cycle whose largest angle's amplitude is about `amplitude_rad`
+    /// by the normal form of the Hopf point `point`, on the side where
+    /// cycles exist.
+    pub(in crate::analysis) fn near_onset(
+        &self,
+        point: &HopfPoint,
+        amplitude_rad: f64,
+    ) -> Option<Solved> {
+        let hopf = &point.hopf;
+        let per_sqrt = hopf
+            .amplitude_per_sqrt_load_rad
+            .iter()
+            .copied()
+            .fold(0.0, f64::max);
+        let distance = (amplitude_rad / per_sqrt).powi(2);
+        // mu' (p - p_c) / l1 < 0 where the cycle exists.
+        let side = -(hopf.growth_per_load * hopf.first_lyapunov).signum();
+        self.normal_form_cycle(point, hopf.load + side * distance)
+    }
+
+    /// The cycle at `load` from the normal form's as the first guess.
+    pub(in crate::analysis) fn normal_form_cycle(
+        &self,
+        point: &HopfPoint,
+        load: f64,
+    ) -> Option<Solved> {
+        let hopf = &point.hopf;
+        let radius = point.radius_per_sqrt_load * (load - hopf.load).abs().sqrt();
+        let d = self.field.dimension();
+        let guess = DVector::from_fn(d + 2, |i, _| match i {
+            i if i < d => 2.0 * radius * point.eigenvector[i].re,
+            i if i == d => std::f64::consts::TAU / hopf.frequency_rad_per_s,
+            _ => load,
+        });
+        self.solve(&guess, &Constraint::Load(load))
+    }
+}
+
+/// Broyden's ("good") rank-one update of the inverse `h` of Newton's
+/// matrix after a step `s` changed the residual by `y`, by the formula of
+/// Sherman and Morrison: `h += (s - h y) (s^T h) / (s^T h y)`. The updated
+/// matrix maps `y` to `s`, and is unchanged across `s`. Left as it is
+/// where `s^T h y` vanishes.
+pub(in crate::analysis) fn broyden_update(
+    h: &mut DMatrix<f64>,
+    s: &DVector<f64>,
+    y: &DVector<f64>,
+) {
+    let hy = &*h * y;
+    let denominator = s.dot(&hy);
+    if denominator.abs() > f64::MIN_POSITIVE && denominator.is_finite() {
+        let st_h = s.transpose() * &*h;
+        *h += (s - hy) * st_h / denominator;
+    }
+}
+
+/// Whether Newton's `step` at the unknowns `u = (x0, T, p)` (the state's
+/// length `d`) is down to [`NEWTON_TOLERANCE`] of each part's own size: the
+/// state's largest entry, the period, the load (at least
+/// [`LOAD_SCALE_FLOOR`]). Measured by one size for all, a cycle of small
+/// amplitude and long period (a long chain's near its onset) would ask its
+/// period to more digits than the state determines it to.
+pub(in crate::analysis) fn converged(step: &DVector<f64>, u: &DVector<f64>, d: usize) -> bool {
+    let state = u.rows(0, d).amax();
+    step.rows(0, d).amax() <= NEWTON_TOLERANCE * state
+        && step[d].abs() <= NEWTON_TOLERANCE * u[d].abs()
+        && step[d + 1].abs() <= NEWTON_TOLERANCE * u[d + 1].abs().max(LOAD_SCALE_FLOOR)
+}
+
+/// Where the multiplier nearest 1 (the shift along the orbit) stands.
+pub(in crate::analysis) fn trivial_index(multipliers: &[C64]) -> Option<usize> {
+    multipliers
+        .iter()
+        .enumerate()
+        .min_by(|a, b| (a.1 - 1.0).norm().total_cmp(&(b.1 - 1.0).norm()))
+        .map(|(i, _)| i)
+}
+
+/// Eigenvalues of the monodromy, largest modulus first.
+pub(in crate::analysis) fn sorted_multipliers(monodromy: &DMatrix<f64>) -> Vec<C64> {
+    let mut multipliers: Vec<C64> = monodromy.complex_eigenvalues().iter().copied().collect();
+    multipliers.sort_by(|a, b| b.norm().total_cmp(&a.norm()));
+    multipliers
+}
