@@ -17,6 +17,15 @@ pub const PACES: [(&str, f64, &str); 3] = [
     ("Fast", 4.0, "four times real time"),
 ];
 
+/// Time's buttons, in their row's order.
+const TIME_COMMANDS: [Command; 5] = [
+    Command::PlayPause,
+    Command::Step,
+    Command::Kick,
+    Command::Reset,
+    Command::ResetAll,
+];
+
 /// Time's controls. `lesson_foot`: the few a lesson on a projector keeps
 /// in view at the sidebar's foot, on one row (the speeds are set by the
 /// lesson's steps and stay above, and "reset all" ends the lesson).
@@ -26,22 +35,13 @@ pub struct TimeSection {
 
 impl View for TimeSection {
     fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
-        let commands: &[Command] = if self.lesson_foot {
-            &[
-                Command::PlayPause,
-                Command::Step,
-                Command::Kick,
-                Command::Reset,
-            ]
+        // At a lesson's foot, all but the last ("reset all" ends a lesson).
+        let shown = if self.lesson_foot {
+            TIME_COMMANDS.len() - 1
         } else {
-            &[
-                Command::PlayPause,
-                Command::Step,
-                Command::Kick,
-                Command::Reset,
-                Command::ResetAll,
-            ]
+            TIME_COMMANDS.len()
         };
+        let commands = &TIME_COMMANDS[..shown];
         ui.horizontal_wrapped(|ui| {
             for command in commands {
                 command.button(ui, state.running(), actions);
