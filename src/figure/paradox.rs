@@ -51,8 +51,8 @@ where
         .enumerate()
         .map(|(k, (name, _))| (Swatch::Line(series_color(k)), name.clone()))
         .collect();
-    let here_load = data.here.map(|h| h.1);
-    if let Some(name) = curves.reference_label(here_load) {
+    let (highest, reference_within) = curves.fitted_top(data.here.map(|h| h.1));
+    if let Some(name) = curves.reference_label(reference_within) {
         entries.push((Swatch::Dashed(INK), name));
     }
     if let Some((_, p)) = data.here {
@@ -73,7 +73,6 @@ where
     if !(x0.is_finite() && x1 > x0) {
         return Err(FigureError::Empty("the curves have no extent".to_owned()));
     }
-    let (highest, reference_within) = curves.fitted_top(here_load);
     let mut plot = chart(
         &area,
         x0..x1,

@@ -210,11 +210,11 @@ impl Curves {
     }
 
     /// The reference line's name in a legend, with its load, and said to
-    /// lie above the axis when `fitted_top` leaves it out.
+    /// lie above the axis unless `within` (the second answer of
+    /// `fitted_top`).
     #[must_use]
-    pub fn reference_label(&self, here: Option<f64>) -> Option<String> {
+    pub fn reference_label(&self, within: bool) -> Option<String> {
         let (name, p) = self.reference.as_ref()?;
-        let within = self.fitted_top(here).1;
         Some(format!(
             "{name}: p = {}{}",
             crate::format::load_text(*p),
@@ -453,7 +453,7 @@ mod tests {
         // the plot's height, and its name says no more.
         let (top, within) = curves.fitted_top(None);
         assert!(within && top >= undamped, "{top}");
-        assert!(!curves.reference_label(None).unwrap().contains("above"));
+        assert!(!curves.reference_label(within).unwrap().contains("above"));
     }
 
     /// The plain roller's curves stand far below the massless roller's
@@ -475,7 +475,7 @@ mod tests {
         let massless = curves.reference.as_ref().unwrap().1;
         assert!(massless > REFERENCE_REACH * highest, "{massless} {highest}");
         assert_eq!(curves.fitted_top(None), (highest, false));
-        let label = curves.reference_label(None).unwrap();
+        let label = curves.reference_label(false).unwrap();
         assert!(label.ends_with("(above the axis)"), "{label}");
         assert!(
             label.contains(&crate::format::load_text(massless)),

@@ -162,8 +162,7 @@ impl ParadoxPanel {
             .bar_ui(ui, for_picture, |ui| save_buttons(ui, None, actions));
         let refit = self.fit.refit((self.generation, *curves_key));
         let palette = [theme.series[0], theme.series[3], theme.series[4]];
-        let here_load = here.map(|h| h[1]);
-        let (highest, _) = curves.fitted_top(here_load);
+        let (highest, reference_within) = curves.fitted_top(here.map(|h| h[1]));
         // The legend in the curves' order (damping from 0.1 down to
         // vanishing), not sorted by its words (0.01, 0.1, 1e-4).
         let plot = Plot::new("paradox")
@@ -187,7 +186,7 @@ impl ParadoxPanel {
             // The undamped (or massless) load dashed in the overlay's grey:
             // not the white of this model's point.
             if let (Some((_, p)), Some(label)) =
-                (&curves.reference, curves.reference_label(here_load))
+                (&curves.reference, curves.reference_label(reference_within))
             {
                 plot_ui.hline(
                     HLine::new(label, *p)
