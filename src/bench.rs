@@ -146,9 +146,9 @@ pub fn run(frames: usize, window: bool) -> Result<Report> {
     };
     let roller = pencil(PresetId::Roller)?;
     let midpoint = pencil(PresetId::MidpointMasses)?;
-    let frame_ms = frame_times_ms(frames, Tab::LOCUS)?;
-    let frame_ms_map = frame_times_ms(frames, Tab::MAP)?;
-    let frame_ms_paradox = frame_times_ms(frames, Tab::PARADOX)?;
+    let frame_ms = frame_times_ms(frames, Tab::Locus)?;
+    let frame_ms_map = frame_times_ms(frames, Tab::Map)?;
+    let frame_ms_paradox = frame_times_ms(frames, Tab::Paradox)?;
     let frame_ms_chain = chain_frame_times_ms(frames)?;
     let locus_us = locus_us_per_load(&roller)?;
     let numpy_us = numpy_eig_us_per_pencil(&roller)?;
@@ -459,7 +459,7 @@ pub fn chain_frame_times_ms(frames: usize) -> Result<Vec<f64>> {
         ..Settings::default()
     };
     let load_max = model.load_bar_max_p();
-    drag_frame_times_ms(frames, settings, Tab::LOCUS, (Key::Load, 0.0, load_max))
+    drag_frame_times_ms(frames, settings, Tab::Locus, (Key::Load, 0.0, load_max))
 }
 
 /// Frame times of the app from `settings` with `tab` open, with `key`

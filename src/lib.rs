@@ -18,5 +18,6 @@ pub mod format;
 pub mod lesson;
 pub mod model;
 pub mod names;
+pub mod plot;
 pub mod recording;
 pub mod sim;

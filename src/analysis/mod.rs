@@ -9,10 +9,12 @@ mod nonlinear;
 // Every module by its own name, as before the two folders: the files
 // name each other through `crate::analysis::<module>`.
 use linear::{
-    critical, crossing, hqr, locus, map, paradox, peaks, pencil, resolution, roots, stability,
+    along, critical, crossing, hqr, locus, map, paradox, peaks, pencil, resolution, roots,
+    stability,
 };
 use nonlinear::{cycles, field, gauss, hopf, jet};
 
+pub use along::{AlongLoad, Unresolved};
 pub use critical::{
     BRACKET_SAMPLES, bracketing_locus, bracketing_locus_reporting, critical_loads,
     critical_loads_along, plotted_locus,

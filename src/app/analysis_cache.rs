@@ -3,9 +3,8 @@
 //! and the resolution warning, computed once per change of parameters.
 
 use crate::analysis::{
-    AffinePencil, AnalysisError, BRACKET_SAMPLES, Hopf, HopfSteps, Locus, NoHopf, State,
-    Transition, classify, critical_loads_along, first_loss_of_stability, hopf_at, is_hopf, locus,
-    resolution_warning, stability_ranges,
+    AffinePencil, AlongLoad, AnalysisError, BRACKET_SAMPLES, Hopf, HopfSteps, Locus, NoHopf, State,
+    Transition, Unresolved, first_loss_of_stability, hopf_at, is_hopf, locus,
 };
 use crate::model::ValidModel;
 
@@ -34,12 +33,16 @@ impl Analysis {
         let key = model.at_load(0.0)?;
         let pencil = AffinePencil::new(&key)?;
         let load_max = model.load_bar_max_p();
-        let locus = locus(&pencil, 0.0, load_max, LOCUS_SAMPLES)?;
-        let transitions = critical_loads_along(&pencil, &locus)?;
-        let warning = resolution_warning(&pencil, &locus)?;
-        let at_zero = pencil.spectrum(0.0)?;
-        let first = classify(&at_zero.eigenvalues, at_zero.scale_per_s).state;
-        let ranges = stability_ranges(&transitions, first, 0.0, load_max);
+        let AlongLoad {
+            locus,
+            transitions,
+            ranges,
+            warning,
+        } = AlongLoad::new(
+            &pencil,
+            locus(&pencil, 0.0, load_max, LOCUS_SAMPLES)?,
+            Unresolved::Kept,
+        )?;
         let onsets = transitions
             .iter()
             .filter(|t| is_hopf(t.from, t.to) && t.to == State::Flutter)

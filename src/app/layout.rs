@@ -54,7 +54,7 @@ mod tests {
     #[test]
     fn a_layout_reads_back_and_an_old_tab_spelling_keeps_the_rest() {
         let layout = Layout {
-            tab: Tab::MAP,
+            tab: Tab::Map,
             overlay: Some("beck".to_owned()),
             map_axis: Some(("nu".to_owned(), 0.0, 1.0)),
         };
@@ -62,7 +62,7 @@ mod tests {
         assert_eq!(Layout::read(&text), (layout, None));
         let (old, note) = Layout::read("(tab: Map, overlay: Some(\"beck\"))");
         assert_eq!(note, None);
-        assert_eq!(old.tab, Tab::LOCUS);
+        assert_eq!(old.tab, Tab::Locus);
         assert_eq!(old.overlay.as_deref(), Some("beck"));
     }
 }

@@ -13,11 +13,11 @@ mod history;
 mod jobs;
 mod layout;
 mod load_bar;
-mod locus_view;
 mod notice;
 mod pace;
 mod panel;
 mod panel_picture;
+mod plot_draw;
 mod plot_frame;
 mod plots;
 mod record_menu;
@@ -28,8 +28,6 @@ mod settings_text;
 mod sidebar;
 mod state;
 mod store_check;
-mod stored;
-mod stored_model;
 mod tabs;
 mod theme;
 mod welcome;
@@ -41,17 +39,16 @@ use crate::model::PresetId;
 use crate::sim::{SimError, Simulation};
 use action::Actions;
 
+pub use crate::plot::view::{EdgeMark, Side, ViewRect};
 pub use action::{Action, Command};
 pub use layout::Layout;
-pub use locus_view::{EdgeMark, Side, ViewRect, deciding_extent, default_view, versus_load_extent};
 pub use notice::{Level, Notice};
 pub use pace::{MAX_FRAME_SECS, MAX_STEPS_PER_FRAME};
 pub use panel::{Panel, SMALLEST_WINDOW_POINTS};
+pub use plot_draw::{LOCUS_SHOWN_ID, LocusShown};
 pub use plot_frame::VIEW_HINT;
-pub use plots::{LOCUS_SHOWN_ID, LocusShown};
 pub use state::{AppState, Settings};
 pub use tabs::Tab;
-pub use tabs::{largest_rate, rate_strength};
 pub use theme::Theme;
 pub use window::{Renderer, WindowFrames, run, time_window_frames};
 
@@ -441,7 +438,7 @@ impl ZieglerApp {
         // load bar and the eigenvalues together.
         let locus_beside = projector && !plots_fit(scene_share);
         // While a lesson hides the answer, only the time histories show.
-        let tab_hidden = self.state.answer_hidden() && self.tab != Tab::HISTORIES;
+        let tab_hidden = self.state.answer_hidden() && self.tab != Tab::Histories;
         let (top, _) = ui.allocate_exact_size(
             vec2(ui.available_width(), scene_share * height),
             egui::Sense::hover(),
@@ -450,7 +447,7 @@ impl ZieglerApp {
         // locus beside it, or, when another tab is open (a lesson step's
         // paradox curves, say), that tab's plots across the whole row: the
         // class sees what the step talks about.
-        let tab_on_top = locus_beside && self.tab != Tab::LOCUS;
+        let tab_on_top = locus_beside && self.tab != Tab::Locus;
         let (scene_rect, locus_rect) = if locus_beside && !tab_on_top {
             let split = top.left() + 0.55 * top.width();
             let (left, right) = top.split_left_right_at_x(split);

@@ -298,6 +298,10 @@ pub enum Swatch {
     Ring(Color32),
     /// A short line (a curve).
     Line(Color32),
+    /// A short dashed line.
+    Dashed(Color32),
+    /// A tinted box (a range).
+    Fill(Color32),
     /// A colour scale: the colours from one end to the other.
     Scale(Vec<Color32>),
 }
@@ -331,6 +335,22 @@ pub fn legend_row(ui: &mut egui::Ui, entries: &[(Swatch, String)]) {
                         [rect.left_center(), rect.right_center()],
                         Stroke::new(2.0, *color),
                     );
+                }
+                Swatch::Dashed(color) => {
+                    let dash = rect.width() / 5.0;
+                    for k in [0.0, 2.0, 4.0] {
+                        let x = rect.left() + k * dash;
+                        painter.line_segment(
+                            [
+                                egui::pos2(x, rect.center().y),
+                                egui::pos2(x + dash, rect.center().y),
+                            ],
+                            Stroke::new(2.0, *color),
+                        );
+                    }
+                }
+                Swatch::Fill(color) => {
+                    painter.rect_filled(rect.shrink2(vec2(0.0, 3.0)), 0.0, *color);
                 }
                 Swatch::Scale(colors) => {
                     #[expect(clippy::cast_precision_loss, reason = "a few colours")]

@@ -1,10 +1,12 @@
-//! Every colour and stroke of the app in one place; the projector theme
-//! (high contrast, large text, for a lecture hall) is just another value.
+//! The window's themes: the palette's colours as egui draws them, with the
+//! strokes and text size of each; the projector theme (high contrast, large
+//! text, for a lecture hall) is just another value.
 
 use eframe::egui::{self, Color32};
 
 use super::notice::Level;
 use crate::analysis::State;
+use crate::plot::{Palette, Rgb};
 
 /// The palette of one theme.
 #[derive(Clone, Copy, Debug)]
@@ -52,80 +54,52 @@ pub struct Theme {
 
 impl Theme {
     /// The everyday theme, on egui's dark visuals.
-    pub const NORMAL: Self = Self {
-        background: Color32::from_rgb(24, 26, 30),
-        rod: Color32::from_rgb(205, 210, 220),
-        joint: Color32::from_rgb(250, 250, 250),
-        spring: Color32::from_rgb(120, 170, 255),
-        roller: Color32::from_rgb(230, 170, 60),
-        roller_mark: Color32::from_rgb(90, 60, 20),
-        band: Color32::from_rgb(70, 74, 84),
-        band_mark: Color32::from_rgb(120, 126, 140),
-        friction: Color32::from_rgb(255, 90, 90),
-        follower: Color32::from_rgb(90, 220, 140),
-        trail: Color32::from_rgb(150, 110, 255),
-        text: Color32::from_rgb(225, 228, 235),
-        stable: Color32::from_rgb(70, 170, 100),
-        flutter: Color32::from_rgb(230, 150, 40),
-        divergence: Color32::from_rgb(215, 60, 60),
-        axis: Color32::from_rgb(200, 200, 200),
-        now: Color32::WHITE,
-        load_line: Color32::from_rgb(255, 90, 90),
-        measured: Color32::from_rgb(255, 90, 90),
-        overlay: Color32::from_rgb(120, 120, 120),
-        no_data: Color32::from_gray(40),
-        series: [
-            Color32::from_rgb(120, 170, 255),
-            Color32::from_rgb(205, 210, 220),
-            Color32::from_rgb(255, 90, 90),
-            Color32::from_rgb(90, 220, 140),
-            Color32::from_rgb(230, 150, 40),
-            Color32::from_rgb(150, 110, 255),
-        ],
-        error: Color32::from_rgb(215, 60, 60),
-        warning: Color32::from_rgb(230, 150, 40),
-        info: Color32::from_rgb(120, 170, 255),
-        stroke_scale: 1.0,
-        text_size: 14.0,
-    };
+    pub const NORMAL: Self = Self::new(&Palette::NORMAL, 1.0, 14.0);
 
     /// High contrast and large text for a projector.
-    pub const PROJECTOR: Self = Self {
-        background: Color32::BLACK,
-        rod: Color32::WHITE,
-        joint: Color32::WHITE,
-        spring: Color32::from_rgb(80, 180, 255),
-        roller: Color32::from_rgb(255, 200, 0),
-        roller_mark: Color32::BLACK,
-        band: Color32::from_rgb(60, 60, 60),
-        band_mark: Color32::from_rgb(200, 200, 200),
-        friction: Color32::from_rgb(255, 60, 60),
-        follower: Color32::from_rgb(0, 255, 120),
-        trail: Color32::from_rgb(200, 140, 255),
-        text: Color32::WHITE,
-        stable: Color32::from_rgb(0, 200, 80),
-        flutter: Color32::from_rgb(255, 170, 0),
-        divergence: Color32::from_rgb(255, 50, 50),
-        axis: Color32::WHITE,
-        now: Color32::WHITE,
-        load_line: Color32::from_rgb(255, 60, 60),
-        measured: Color32::from_rgb(255, 60, 60),
-        overlay: Color32::from_rgb(120, 120, 120),
-        no_data: Color32::from_gray(40),
-        series: [
-            Color32::from_rgb(80, 180, 255),
-            Color32::WHITE,
-            Color32::from_rgb(255, 60, 60),
-            Color32::from_rgb(0, 255, 120),
-            Color32::from_rgb(255, 170, 0),
-            Color32::from_rgb(200, 140, 255),
-        ],
-        error: Color32::from_rgb(255, 50, 50),
-        warning: Color32::from_rgb(255, 170, 0),
-        info: Color32::from_rgb(80, 180, 255),
-        stroke_scale: 1.8,
-        text_size: 22.0,
-    };
+    pub const PROJECTOR: Self = Self::new(&Palette::PROJECTOR, 1.8, 22.0);
+
+    /// The theme of `palette`'s colours, strokes `stroke_scale` times as
+    /// wide as the everyday ones and body text of `text_size` points.
+    const fn new(palette: &Palette, stroke_scale: f32, text_size: f32) -> Self {
+        let p = palette;
+        Self {
+            background: color(p.background),
+            rod: color(p.rod),
+            joint: color(p.joint),
+            spring: color(p.spring),
+            roller: color(p.roller),
+            roller_mark: color(p.roller_mark),
+            band: color(p.band),
+            band_mark: color(p.band_mark),
+            friction: color(p.friction),
+            follower: color(p.follower),
+            trail: color(p.trail),
+            text: color(p.text),
+            stable: color(p.stable),
+            flutter: color(p.flutter),
+            divergence: color(p.divergence),
+            axis: color(p.axis),
+            now: color(p.now),
+            load_line: color(p.load_line),
+            measured: color(p.measured),
+            overlay: color(p.overlay),
+            no_data: color(p.no_data),
+            error: color(p.error),
+            warning: color(p.warning),
+            info: color(p.info),
+            series: [
+                color(p.series[0]),
+                color(p.series[1]),
+                color(p.series[2]),
+                color(p.series[3]),
+                color(p.series[4]),
+                color(p.series[5]),
+            ],
+            stroke_scale,
+            text_size,
+        }
+    }
 
     /// The colour that stands for a stability state.
     #[must_use]
@@ -165,38 +139,8 @@ impl Theme {
     }
 }
 
-/// A colour for a load between `min` and `max`: from blue (low) through
-/// green to red (high), so a locus plot shows where along the load each
-/// point of a branch lies.
+/// A palette colour as egui draws it.
 #[must_use]
-pub fn load_color(load: f64, min: f64, max: f64) -> Color32 {
-    let t = if max > min {
-        ((load - min) / (max - min)).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    #[expect(clippy::cast_possible_truncation, reason = "t in [0, 1]")]
-    let t = t as f32;
-    let lerp = |a: f32, b: f32, s: f32| a + (b - a) * s;
-    let (r, g, b) = if t < 0.5 {
-        let s = 2.0 * t;
-        (
-            lerp(60.0, 60.0, s),
-            lerp(120.0, 200.0, s),
-            lerp(255.0, 90.0, s),
-        )
-    } else {
-        let s = 2.0 * t - 1.0;
-        (
-            lerp(60.0, 250.0, s),
-            lerp(200.0, 70.0, s),
-            lerp(90.0, 60.0, s),
-        )
-    };
-    #[expect(
-        clippy::cast_possible_truncation,
-        clippy::cast_sign_loss,
-        reason = "channels in [0, 255]"
-    )]
-    Color32::from_rgb(r as u8, g as u8, b as u8)
+pub const fn color(rgb: Rgb) -> Color32 {
+    Color32::from_rgb(rgb.0, rgb.1, rgb.2)
 }

@@ -17,13 +17,15 @@ use crate::format::number_text;
 pub type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 /// What a legend entry shows beside its words.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub enum Swatch {
     Line(RGBColor),
     Dashed(RGBColor),
     /// A circle, filled or open.
     Marker(RGBColor, bool),
     Fill(RGBColor),
+    /// A colour scale, from one end to the other.
+    Scale(Vec<RGBColor>),
 }
 
 /// Ticks on each axis (plotters rounds them to a readable step).
@@ -92,7 +94,7 @@ where
             (x, line, row_lines) = (margin, line + row_lines, 1);
         }
         row_lines = row_lines.max(count);
-        placed.push((x, line, *kind, lines));
+        placed.push((x, line, kind.clone(), lines));
         x += entry_width + spacing;
     }
     let height = if placed.is_empty() {
@@ -107,7 +109,7 @@ where
     );
     for (x, first, kind, lines) in placed {
         let middle = |k: i32| margin + (first + k) * line_height + line_height / 2;
-        draw_swatch(root, kind, (x, middle(0)), swatch, ink)?;
+        draw_swatch(root, &kind, (x, middle(0)), swatch, ink)?;
         for (k, text) in (0..).zip(lines) {
             drawing(root.draw(&Text::new(
                 text,
@@ -171,7 +173,7 @@ fn check_room<DB: DrawingBackend>(
 /// One swatch, `length` wide, its middle left end at `at`.
 fn draw_swatch<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
-    kind: Swatch,
+    kind: &Swatch,
     at: (i32, i32),
     length: i32,
     ink: &Ink,
@@ -184,14 +186,14 @@ where
     match kind {
         Swatch::Line(color) => drawing(root.draw(&PathElement::new(
             vec![(x, y), (x + length, y)],
-            ink.stroke(color, 1.0),
+            ink.stroke(*color, 1.0),
         ))),
         Swatch::Dashed(color) => {
             let dash = length / 5;
             for k in [0, 2, 4] {
                 drawing(root.draw(&PathElement::new(
                     vec![(x + k * dash, y), (x + (k + 1) * dash, y)],
-                    ink.stroke(color, 0.75),
+                    ink.stroke(*color, 0.75),
                 )))?;
             }
             Ok(())
@@ -199,12 +201,25 @@ where
         Swatch::Marker(color, filled) => drawing(root.draw(&Circle::new(
             (x + length / 2, y),
             ink.units(2.2),
-            marker_style(color, filled, ink),
+            marker_style(*color, *filled, ink),
         ))),
         Swatch::Fill(color) => drawing(root.draw(&Rectangle::new(
             [(x, y - half), (x + length, y + half)],
             color.filled(),
         ))),
+        Swatch::Scale(colors) => {
+            let count = i32::try_from(colors.len().max(1)).unwrap_or(1);
+            for (k, color) in (0..).zip(colors) {
+                drawing(root.draw(&Rectangle::new(
+                    [
+                        (x + k * length / count, y - half),
+                        (x + (k + 1) * length / count, y + half),
+                    ],
+                    color.filled(),
+                )))?;
+            }
+            Ok(())
+        }
     }
 }
 

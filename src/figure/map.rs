@@ -9,9 +9,9 @@ use super::layout::{Swatch, XTicks, chart, legend_above, line, panel};
 use super::style::{INK, Ink, state_color, tint};
 use super::{Drawn, FigureError, drawing};
 use crate::analysis::{MapSpec, RowResult, State, map_boundaries};
-use crate::app::{largest_rate, rate_strength};
 use crate::format::number_text;
 use crate::model::Axis;
+use crate::plot::map_scale::{largest_rate, rate_strength};
 
 /// A computed map: what was asked and every row's answer.
 #[derive(Clone, Debug)]

@@ -10,6 +10,7 @@ mod layout;
 mod loci;
 mod map;
 mod paradox;
+mod plots;
 mod style;
 
 use plotters::coord::Shift;

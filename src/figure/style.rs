@@ -6,7 +6,7 @@ use plotters::style::{FontStyle, RGBColor, ShapeStyle, TextStyle};
 
 use super::{FigureError, Format};
 use crate::analysis::State;
-use crate::app::Theme;
+use crate::plot::{Palette, Rgb};
 
 /// Millimetres per inch.
 const MM_PER_INCH: f64 = 25.4;
@@ -176,9 +176,9 @@ pub(super) fn register_fonts() {
     });
 }
 
-/// An app colour as plotters takes it.
-fn rgb(color: eframe::egui::Color32) -> RGBColor {
-    RGBColor(color.r(), color.g(), color.b())
+/// A palette colour as plotters takes it.
+pub(super) const fn rgb(color: Rgb) -> RGBColor {
+    RGBColor(color.0, color.1, color.2)
 }
 
 /// Black: the text, the axes and the main model's curves.
@@ -186,15 +186,13 @@ pub(super) const INK: RGBColor = RGBColor(0, 0, 0);
 
 /// The colour of a state, as in the app.
 pub(super) fn state_color(state: State) -> RGBColor {
-    rgb(Theme::NORMAL.state_color(state))
+    rgb(Palette::NORMAL.state(state))
 }
 
 /// The colours of overlaid models and of further curves, in order: the
 /// app's series colours that read on white.
 pub(super) fn series_color(index: usize) -> RGBColor {
-    let series = Theme::NORMAL.series;
-    // The app's light grey (for a dark background) is left out.
-    let on_white = [series[0], series[2], series[5], series[4], series[3]];
+    let on_white = Palette::NORMAL.series_on_white();
     rgb(on_white[index % on_white.len()])
 }
 

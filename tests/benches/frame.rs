@@ -15,7 +15,7 @@ fn main() {
     } else {
         5
     };
-    let times_ms = frame_times_ms(frames, Tab::LOCUS).expect("the app's defaults run");
+    let times_ms = frame_times_ms(frames, Tab::Locus).expect("the app's defaults run");
     println!(
         "frame at 1280x800, nu dragged every frame, {frames} frames: p50 {:.2} ms, p99 {:.2} ms, max {:.2} ms",
         quantile(&times_ms, 0.5),

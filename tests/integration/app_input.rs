@@ -412,7 +412,7 @@ fn the_words_fit_the_column() {
             ..Settings::default()
         })
         .unwrap();
-        app.show_tab(Tab::HISTORIES);
+        app.show_tab(Tab::Histories);
         // The analysis alone: the map's and paradox's work is not shown.
         app.state_mut().settle_analysis();
         let mut harness = Harness::builder()

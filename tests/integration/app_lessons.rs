@@ -126,7 +126,7 @@ fn every_lesson_step_keeps_the_projector_layout() {
             )));
         let asked = lesson.steps.iter().position(|s| s.predict.is_some());
         let revealed = lesson.steps.iter().position(|s| s.reveal.is_some());
-        let mut tab = zieglerlab::app::Tab::LOCUS;
+        let mut tab = zieglerlab::app::Tab::Locus;
         for step in 0..steps {
             if step > 0 {
                 harness.state_mut().apply(zieglerlab::app::Action::Command(
@@ -495,7 +495,7 @@ fn the_note_under_the_tabs_gives_one_reason() {
         "the predict step hides the answer"
     );
     app.apply(zieglerlab::app::Action::Tab(
-        zieglerlab::app::Tab::HISTORIES,
+        zieglerlab::app::Tab::Histories,
     ));
     let harness = crate::app_input::harness_at(&mut app, [1024.0, 768.0]);
     harness.get_by_label_contains("The time histories tab shows in the column's place");

@@ -68,11 +68,11 @@ fn the_tools_are_in_reach_and_the_keys_help_whole_at_1024x768() {
 #[test]
 fn settings_are_pasted_from_the_clipboard() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
-    app.apply(Action::Tab(Tab::HISTORIES));
+    app.apply(Action::Tab(Tab::Histories));
     paste_from_clipboard(&mut app, Some("preset = ziegler-1952\nload = 1.5\n"));
     assert_eq!(app.state().settings().preset, PresetId::Ziegler1952);
     assert!((app.state().model().load_p() - 1.5).abs() < 1e-12);
-    assert_eq!(app.layout().tab, Tab::HISTORIES, "a paste keeps the tab");
+    assert_eq!(app.layout().tab, Tab::Histories, "a paste keeps the tab");
     paste_from_clipboard(&mut app, Some("hello, world"));
     let said = message_line(&app);
     assert!(said.contains("pasted settings"), "{said}");
@@ -114,7 +114,7 @@ fn in_projector_mode_every_tab_is_shown_once() {
                     "{at}: the tab at {tab_top}, above the tab bar"
                 );
             }
-            if tab == Tab::LOCUS {
+            if tab == Tab::Locus {
                 let beside = harness
                     .query_by_label_contains("The root locus is beside the column")
                     .is_some();
@@ -134,7 +134,7 @@ fn in_projector_mode_every_tab_is_shown_once() {
 #[test]
 fn a_save_without_a_desktop_dialog_takes_a_typed_path() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
-    app.apply(Action::Tab(Tab::HISTORIES));
+    app.apply(Action::Tab(Tab::Histories));
     for _ in 0..60 {
         app.state_mut().advance(1.0 / 60.0);
     }

@@ -23,6 +23,7 @@ mod external_damping;
 mod figures;
 mod hopf;
 mod jacobian;
+mod layers;
 mod lecture_pace;
 mod locus_tracking;
 mod locus_view;

@@ -25,8 +25,8 @@ fn number_after(text: &str, name: &str) -> f64 {
 #[test]
 fn the_cell_under_the_pointer_is_read_out() {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
-    app.apply(Action::Tab(Tab::MAP));
-    app.complete_background_work(Tab::MAP);
+    app.apply(Action::Tab(Tab::Map));
+    app.complete_background_work(Tab::Map);
     let mut harness = crate::app_input::harness(&mut app);
     let hint = harness.get_by_label_contains("point at the map").rect();
     harness.hover_at(egui::pos2(hint.left() + 400.0, hint.bottom() + 120.0));

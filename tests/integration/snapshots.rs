@@ -107,7 +107,7 @@ fn root_locus_panel_of_each_preset() {
         let mut app = app_at(preset_settings(p.id.name()), 1.0, 0);
         let mut harness = Harness::builder()
             .with_size([960.0, 520.0])
-            .build_ui(|ui| app.panel_ui(ui, Panel::Tab(Tab::LOCUS)));
+            .build_ui(|ui| app.panel_ui(ui, Panel::Tab(Tab::Locus)));
         harness.run_steps(4);
         assert!(
             harness.query_by_label_contains("No root locus").is_none(),
@@ -180,7 +180,7 @@ fn a_refused_field_and_a_panel_without_analysis() {
     drop(harness);
     for (name, panel) in [
         ("band_stopped_scene", Panel::Scene),
-        ("band_stopped_locus", Panel::Tab(Tab::LOCUS)),
+        ("band_stopped_locus", Panel::Tab(Tab::Locus)),
     ] {
         let mut stopped = app_at(Settings::default(), 1.0, 0);
         crate::common::enter(&mut stopped, Key::V, 0.0);
@@ -228,7 +228,7 @@ fn the_overlay_has_a_legend_with_its_own_critical_loads() {
     let mut harness = Harness::builder()
         .wgpu()
         .with_size([960.0, 520.0])
-        .build_ui(|ui| app.panel_ui(ui, Panel::Tab(Tab::LOCUS)));
+        .build_ui(|ui| app.panel_ui(ui, Panel::Tab(Tab::Locus)));
     harness.run_steps(4);
     harness.snapshot("locus_roller_with_overlay");
 }

@@ -245,7 +245,7 @@ fn the_window_layout_comes_back_and_a_misfit_is_said() {
     use zieglerlab::app::{Layout, Tab};
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
     let arranged = Layout {
-        tab: Tab::MAP,
+        tab: Tab::Map,
         overlay: Some("ziegler-1952".to_owned()),
         map_axis: Some(("V".to_owned(), 0.05, 0.5)),
     };
@@ -267,12 +267,12 @@ fn the_window_layout_comes_back_and_a_misfit_is_said() {
     };
     let mut other = ZieglerApp::new(column).unwrap();
     other.arrange(&Layout {
-        tab: Tab::PARADOX,
+        tab: Tab::Paradox,
         overlay: Some("no-such-preset".to_owned()),
         map_axis: Some(("nu".to_owned(), 0.01, 1.0)),
     });
     let layout = other.layout();
-    assert_eq!(layout.tab, Tab::PARADOX);
+    assert_eq!(layout.tab, Tab::Paradox);
     assert_eq!(layout.overlay, None);
     assert_eq!(
         layout.map_axis, None,

@@ -2,6 +2,7 @@
 //! at each load, their classification, the tracked root locus, the
 //! critical loads, the stability map and the paradox curves.
 
+pub(super) mod along;
 pub(super) mod critical;
 pub(super) mod crossing;
 pub(super) mod hqr;

@@ -3,7 +3,7 @@
 
 use super::AppState;
 use crate::analysis::{
-    AffinePencil, AnalysisError, Locus, Transition, critical_loads_along, locus,
+    AffinePencil, AlongLoad, AnalysisError, Locus, Transition, Unresolved, locus,
 };
 use crate::app::analysis_cache::LOCUS_SAMPLES;
 use crate::app::jobs::Jobs;
@@ -47,7 +47,9 @@ fn build(id: PresetId, a: f64) -> Result<Overlay, OverlayError> {
     )?;
     let pencil = AffinePencil::new(&valid)?;
     let locus = locus(&pencil, 0.0, model.load_bar_max_p(), LOCUS_SAMPLES)?;
-    let transitions = critical_loads_along(&pencil, &locus)?;
+    let AlongLoad {
+        locus, transitions, ..
+    } = AlongLoad::new(&pencil, locus, Unresolved::Kept)?;
     Ok(Overlay {
         preset: id,
         a,

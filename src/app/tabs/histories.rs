@@ -12,6 +12,7 @@ use crate::app::state::AppState;
 use crate::app::theme::Theme;
 
 pub const TAB: TabSpec = TabSpec {
+    tab: super::Tab::Histories,
     id: "histories",
     title: "time histories",
     tooltip: "the angles, the energy and the band's power over the run",

@@ -5,18 +5,19 @@
 use eframe::egui::{self, vec2};
 
 use super::{TabSpec, TabView, save_buttons};
-use crate::analysis::Locus;
+use crate::analysis::C64;
 use crate::app::View;
 use crate::app::action::{Actions, Table};
-use crate::app::plot_frame::{Fit, Swatch, legend_row};
-use crate::app::plots::{root_locus_ui, versus_load_ui};
+use crate::app::plot_draw::{legend_ui, plot_ui};
+use crate::app::plot_frame::Fit;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
-use crate::app::theme::load_color;
 use crate::format::number_text;
 use crate::model::{Model, PresetId};
+use crate::plot::locus::{Layer, Loci, Present};
 
 pub const TAB: TabSpec = TabSpec {
+    tab: super::Tab::Locus,
     id: "locus",
     title: "root locus",
     tooltip: "the root locus: the column's eigenvalues in the complex plane and against the load. Left of the vertical axis a motion dies away, right of it it grows; the height is the frequency. Flutter starts where a pair crosses the axis",
@@ -57,42 +58,27 @@ impl View for LocusTab {
             save_buttons(ui, Some(Table::Locus), actions);
         });
         let overlay = state.overlay();
-        legend_ui(ui, state, &analysis.locus, theme);
         // The analysis drawn (it may come in a frame after the parameters).
         let refit = self.fit.refit((
             state.view_generation(),
             *analysis.key,
             overlay.map(|o| o.preset),
         ));
-        let load = state.model().load_p();
         let current = state.current_eigenvalues();
+        let name = overlay_name(state);
+        let loci = loci(state, &current, name.as_deref());
+        let Some(loci) = loci else { return };
+        legend_ui(ui, &loci.window_legend(), theme);
         let width = ui.available_width();
         let height = ui.available_height();
         ui.horizontal(|ui| {
             ui.allocate_ui(vec2(0.42 * width, height), |ui| {
-                root_locus_ui(
-                    ui,
-                    &analysis.locus,
-                    overlay,
-                    &current,
-                    state.measured(),
-                    refit,
-                    theme,
-                );
+                plot_ui(ui, &loci.plane(), refit, theme);
             });
             ui.vertical(|ui| {
                 for imaginary in [false, true] {
                     ui.allocate_ui(vec2(ui.available_width(), 0.5 * height - 4.0), |ui| {
-                        versus_load_ui(
-                            ui,
-                            &analysis.locus,
-                            overlay,
-                            &analysis.ranges,
-                            load,
-                            imaginary,
-                            refit,
-                            theme,
-                        );
+                        plot_ui(ui, &loci.versus_load(imaginary), refit, theme);
                     });
                 }
             });
@@ -119,64 +105,49 @@ impl LocusTab {
             number_text(loads.first().copied().unwrap_or(0.0)),
             number_text(loads.last().copied().unwrap_or(0.0))
         ));
-        root_locus_ui(
-            ui,
-            &analysis.locus,
-            overlay,
-            &state.current_eigenvalues(),
-            state.measured(),
-            refit,
-            theme,
-        );
+        let current = state.current_eigenvalues();
+        let name = overlay_name(state);
+        if let Some(loci) = loci(state, &current, name.as_deref()) {
+            plot_ui(ui, &loci.plane(), refit, theme);
+        }
     }
 }
 
-/// The legend of the tab's plots, above them: what the colours, markers
-/// and lines are, and the overlay's own critical loads.
-fn legend_ui(ui: &mut egui::Ui, state: &AppState, locus: &Locus, theme: &Theme) {
-    let (min, max) = (
-        locus.loads.first().copied().unwrap_or(0.0),
-        locus.loads.last().copied().unwrap_or(1.0),
-    );
-    let scale = (0..8)
-        .map(|i| load_color(min + (max - min) * f64::from(i) / 7.0, min, max))
+/// The overlay's name, if one is drawn.
+fn overlay_name(state: &AppState) -> Option<String> {
+    state.overlay().map(|o| o.preset.to_string())
+}
+
+/// The locus plots of `state`'s analysis, the overlay (named `overlay`)
+/// behind it, the present marked; `None` without an analysis.
+fn loci<'a>(state: &'a AppState, current: &'a [C64], overlay: Option<&'a str>) -> Option<Loci<'a>> {
+    let analysis = state.analysis()?;
+    let main = Layer {
+        name: "",
+        locus: &analysis.locus,
+        transitions: &analysis.transitions,
+        ranges: &analysis.ranges,
+        at_transitions: &[],
+    };
+    let others = state
+        .overlay()
+        .zip(overlay)
+        .map(|(o, name)| Layer {
+            name,
+            locus: &o.locus,
+            transitions: &o.transitions,
+            ranges: &[],
+            at_transitions: &[],
+        })
+        .into_iter()
         .collect();
-    let mut entries = vec![
-        (
-            Swatch::Scale(scale),
-            format!(
-                "branch colour: the load, p = {} to {}",
-                number_text(min),
-                number_text(max)
-            ),
-        ),
-        (
-            Swatch::Dot(theme.now),
-            "eigenvalues at the current load".to_owned(),
-        ),
-    ];
-    if state.measured().is_some() {
-        entries.push((
-            Swatch::Ring(theme.measured),
-            "measured from the run".to_owned(),
-        ));
-    }
-    entries.push((Swatch::Line(theme.load_line), "current load".to_owned()));
-    if let Some(overlay) = state.overlay() {
-        let loads = if overlay.transitions.is_empty() {
-            "no change of stability up to the slider's end".to_owned()
-        } else {
-            overlay
-                .transitions
-                .iter()
-                .map(ToString::to_string)
-                .collect::<Vec<_>>()
-                .join(";  ")
-        };
-        entries.push((
-            Swatch::Line(theme.overlay),
-            format!("overlay {}: {loads}", overlay.preset),
-        ));
-    }
-    legend_row(ui, &entries);
+    Some(Loci {
+        main,
+        others,
+        present: Some(Present {
+            load: state.model().load_p(),
+            eigenvalues: current,
+            measured: state.measured(),
+        }),
+    })
 }

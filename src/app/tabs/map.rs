@@ -7,7 +7,7 @@ use std::sync::atomic::AtomicUsize;
 use eframe::egui::{self, Color32, ColorImage, TextureHandle, TextureOptions};
 use egui_plot::{Line, Plot, PlotImage, PlotPoint, PlotPoints, Points};
 
-use super::map_key::{Readout, cell_at, key_ui, largest_rate, rate_strength, readout_ui};
+use super::map_key::{Readout, cell_at, key_ui, readout_ui};
 use super::{TabSpec, TabView, save_buttons};
 use crate::analysis::{
     AnalysisError, MapSpec, RowResult, State, compute_map, default_map_axis,
@@ -21,6 +21,7 @@ use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::number_text;
 use crate::model::{Axis, Model};
+use crate::plot::map_scale::{largest_rate, rate_strength};
 
 /// Cells along the load and along the second parameter.
 pub const MAP_LOADS: usize = 256;
@@ -91,6 +92,7 @@ fn compute_rows(spec: &MapSpec, cancel: &Cancel, send: &(dyn Fn(RowMessage) + Sy
 type MapAxes = (u64, String, (f64, f64), (f64, f64));
 
 pub const TAB: TabSpec = TabSpec {
+    tab: super::Tab::Map,
     id: "map",
     title: "stability map",
     tooltip: "the stability of every load against a second parameter",

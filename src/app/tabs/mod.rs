@@ -7,7 +7,6 @@ mod histories;
 mod locus;
 pub mod map;
 mod map_key;
-pub use map_key::{largest_rate, rate_strength};
 mod paradox;
 mod postcritical;
 
@@ -27,6 +26,8 @@ pub trait TabView: View + Any {
 
 /// What a tab is, for everything that names it.
 pub struct TabSpec {
+    /// The tab this row describes (its place in [`TABS`]).
+    pub tab: Tab,
     /// The name lessons, `--panel` and the stored layout use.
     pub id: &'static str,
     /// The tab bar's name.
@@ -49,9 +50,26 @@ pub const TABS: [TabSpec; 5] = [
     postcritical::TAB,
 ];
 
-/// A tab of [`TABS`], by its place there.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Tab(usize);
+/// A tab of the window: its row in [`TABS`] says everything else.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Tab {
+    /// The root locus (the first tab, shown at launch).
+    #[default]
+    Locus,
+    Histories,
+    Map,
+    Paradox,
+    PostCritical,
+}
+
+// Each row sits at its tab's place: `Tab::spec` indexes the table.
+const _: () = {
+    let mut i = 0;
+    while i < TABS.len() {
+        assert!(TABS[i].tab as usize == i, "TABS out of order");
+        i += 1;
+    }
+};
 
 /// A name that is none of those known (a tab, a panel).
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -63,16 +81,9 @@ pub struct UnknownName {
 }
 
 impl Tab {
-    /// The root locus (the first tab, shown at launch).
-    pub const LOCUS: Self = Self(0);
-    pub const HISTORIES: Self = Self(1);
-    pub const MAP: Self = Self(2);
-    pub const PARADOX: Self = Self(3);
-    pub const POST_CRITICAL: Self = Self(4);
-
     /// Every tab, in the tab bar's order.
     pub fn all() -> impl Iterator<Item = Self> {
-        (0..TABS.len()).map(Self)
+        TABS.iter().map(|spec| spec.tab)
     }
 
     /// The tab named `id`.
@@ -97,7 +108,7 @@ impl Tab {
 
     #[must_use]
     pub fn spec(self) -> &'static TabSpec {
-        &TABS[self.0]
+        &TABS[self as usize]
     }
 
     #[must_use]
@@ -151,7 +162,7 @@ impl Default for Tabs {
 impl Tabs {
     /// The view that draws `tab`.
     pub fn view(&mut self, tab: Tab) -> &mut dyn TabView {
-        self.views[tab.0].as_mut()
+        self.views[tab as usize].as_mut()
     }
 
     /// The view of type `T` (the locus drawn beside the scene, the map's
@@ -228,11 +239,11 @@ mod tests {
     #[test]
     fn the_named_tabs_are_the_registry_s() {
         for (tab, id) in [
-            (Tab::LOCUS, "locus"),
-            (Tab::HISTORIES, "histories"),
-            (Tab::MAP, "map"),
-            (Tab::PARADOX, "paradox"),
-            (Tab::POST_CRITICAL, "post-critical"),
+            (Tab::Locus, "locus"),
+            (Tab::Histories, "histories"),
+            (Tab::Map, "map"),
+            (Tab::Paradox, "paradox"),
+            (Tab::PostCritical, "post-critical"),
         ] {
             assert_eq!(tab.id(), id);
             assert_eq!(Tab::named(id), Ok(tab));
@@ -252,8 +263,8 @@ mod tests {
     /// A tab is written and read by its name.
     #[test]
     fn a_tab_is_written_and_read_by_its_name() {
-        assert_eq!(ron::to_string(&Tab::MAP).unwrap(), "\"map\"");
-        assert_eq!(ron::from_str::<Tab>("\"map\""), Ok(Tab::MAP));
+        assert_eq!(ron::to_string(&Tab::Map).unwrap(), "\"map\"");
+        assert_eq!(ron::from_str::<Tab>("\"map\""), Ok(Tab::Map));
         assert!(ron::from_str::<Tab>("\"plots\"").is_err());
     }
 }

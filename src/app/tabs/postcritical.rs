@@ -24,6 +24,7 @@ use crate::format::load_text;
 use crate::model::Model;
 
 pub const TAB: TabSpec = TabSpec {
+    tab: super::Tab::PostCritical,
     id: "post-critical",
     title: "post-critical",
     tooltip: "past the flutter onset: the limit cycles' size against the load, stable or not, and the running column's own swing",

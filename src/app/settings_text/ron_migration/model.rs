@@ -8,7 +8,8 @@ use ron::value::RawValue;
 use serde::Deserialize;
 use serde::de::{MapAccess, Visitor};
 
-use crate::model::{Assignment, Key, Load, Model, SpinInertia, ValidModel, apply_assignments};
+use super::super::entries::{Entry, Setter, Write, apply};
+use crate::model::{Key, Load, Model, SpinInertia};
 
 /// The fields of a RON struct (the settings, or a part of the model), each
 /// as unparsed RON, by name.
@@ -52,9 +53,6 @@ pub(super) fn field<T: for<'de> Deserialize<'de>>(
         }
     }
 }
-
-/// Writes one number of a model.
-type Setter = fn(&mut Model, f64);
 
 /// Every number of a column, by its name in the stored text (the count of
 /// rods is read as `--set rods` reads it, see [`read_model`]).
@@ -101,22 +99,6 @@ fn with_roller(model: &mut Model, set: impl FnOnce(&mut crate::model::Roller)) {
     if let Load::Roller(roller) = &mut model.load {
         set(roller);
     }
-}
-
-/// One stored number: where it goes, what it is called, its value.
-pub(super) struct Entry {
-    pub(super) name: String,
-    pub(super) set: Write,
-    pub(super) value: f64,
-}
-
-/// How a stored number is written: into its field, or as the key of
-/// `--set` (checked as the command line checks it: `rods = 2.5: must be a
-/// whole number from 2 to 64`).
-#[derive(Clone, Copy)]
-pub(super) enum Write {
-    Field(Setter),
-    Key(Key),
 }
 
 /// Moves each known number of `fields` into `entries` (named `prefix.name`),
@@ -251,38 +233,4 @@ fn read_load(raw: &RawValue, base: &Model, entries: &mut Vec<Entry>, ignored: &m
         ];
         numbers(load, "model.load", &force, entries, ignored);
     }
-}
-
-/// Applies the entries in order, each kept when the model stays valid and
-/// within the analysis's range; a refused one is tried again once the others
-/// are in (a centre of mass may need its rod's new length).
-pub(super) fn apply(mut model: Model, entries: Vec<Entry>, ignored: &mut Vec<String>) -> Model {
-    let mut pending = entries;
-    for last_pass in [false, true] {
-        let mut refused = Vec::new();
-        for entry in pending {
-            let mut candidate = model;
-            // Validation covers the analysis's range too (`beyond_analysis`).
-            let written = match entry.set {
-                Write::Field(set) => {
-                    set(&mut candidate, entry.value);
-                    ValidModel::new(candidate)
-                }
-                Write::Key(key) => apply_assignments(
-                    &mut candidate,
-                    &[Assignment {
-                        key,
-                        value: entry.value,
-                    }],
-                ),
-            };
-            match written.map_err(|e| e.to_string()) {
-                Ok(_) => model = candidate,
-                Err(why) if last_pass => ignored.push(format!("{} ({why})", entry.name)),
-                Err(_) => refused.push(entry),
-            }
-        }
-        pending = refused;
-    }
-    model
 }

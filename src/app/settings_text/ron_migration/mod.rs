@@ -1,12 +1,15 @@
 //! Settings in the earlier stored format (RON: the settings struct with the
 //! whole model's fields), read once as a migration, field by field and the
 //! model number by number: what can be read is kept, what cannot is named
-//! with the reason. They are saved again as `name = value` text.
+//! with the reason. They are saved again as `name = value` text. A child
+//! module of its own, to delete once no such file is left.
 
-use super::settings::Settings;
-use super::settings_text::{Read, SettingsError, take_speed};
-use super::stored_model::{Fields, field, read_model};
+mod model;
+
+use super::{Read, SettingsError, take_speed};
+use crate::app::settings::Settings;
 use crate::model::PresetId;
+use model::{Fields, field, read_model};
 
 /// Reads settings in the earlier format (RON), keeping every field that
 /// reads and makes sense, and naming the others.

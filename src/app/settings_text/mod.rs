@@ -3,14 +3,17 @@
 //! one bad line costs that line only. Text in the earlier format (RON, the
 //! whole model's fields) is still read, once, as a migration.
 
+mod entries;
+mod ron_migration;
+
 use std::fmt::Write as _;
 
 use super::settings::Settings;
-use super::stored::read_ron;
-use super::stored_model::{Entry, Write, apply};
 use crate::format::clipped;
 use crate::model::{Key, Model, PresetId};
 use crate::sim::{EngineKind, SPEED_RANGE};
+use entries::{Entry, Write, apply};
+use ron_migration::read_ron;
 
 /// Settings read from text, and what was left at its default and why.
 #[derive(Debug)]

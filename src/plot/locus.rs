@@ -1,0 +1,572 @@
+//! The root locus plots described once: the branches in the complex plane,
+//! and Re and Im of every eigenvalue against the load (the paper's Figs 3
+//! and 8), for the window (the present marked, the branches coloured by
+//! load) and for a printed figure (the critical loads marked, other models
+//! overlaid in series colours).
+
+use super::load_color;
+use super::spec::{
+    Entry, FarLeft, Ink, Mark, Medium, OffView, Plot, Size, Swatch, Ticks, View, Weight,
+};
+use super::view::{deciding_extent, versus_load_extent};
+use crate::analysis::{C64, Locus, State, Transition};
+use crate::format::{load_text, number_text};
+
+/// One model's locus and what was found on it.
+#[derive(Clone, Copy, Debug)]
+pub struct Layer<'a> {
+    pub name: &'a str,
+    pub locus: &'a Locus,
+    pub transitions: &'a [Transition],
+    /// The stability ranges `(from, to, state)` over the locus's loads.
+    pub ranges: &'a [(f64, f64, State)],
+    /// The moving eigenvalues at each transition's load (paper only).
+    pub at_transitions: &'a [Vec<C64>],
+}
+
+/// The window's present: the load and the eigenvalues there.
+#[derive(Clone, Copy, Debug)]
+pub struct Present<'a> {
+    pub load: f64,
+    pub eigenvalues: &'a [C64],
+    /// The eigenvalues measured from the run, once measured.
+    pub measured: Option<&'a [C64]>,
+}
+
+/// What the locus plots show: the main model, the models behind it (the
+/// window's one overlay, a figure's several), and for the window the present.
+#[derive(Clone, Debug)]
+pub struct Loci<'a> {
+    pub main: Layer<'a>,
+    pub others: Vec<Layer<'a>>,
+    /// `Some` in the window, `None` on paper.
+    pub present: Option<Present<'a>>,
+}
+
+/// The axes' words.
+const RE: &str = "Re λ (1/s)";
+const IM: &str = "Im λ (rad/s)";
+const LOAD: &str = "p = P l/k";
+
+/// Branch segments are drawn in this many colour bands along the load.
+const COLOR_BANDS: usize = 24;
+
+/// Evenly spaced samples the window draws at most (a plot is a few hundred
+/// pixels wide); the refinement's samples are all drawn.
+const DRAWN_GRID_SAMPLES: usize = 300;
+
+/// Evenly spaced samples of all branches together the window draws at
+/// most: a long chain's many branches get fewer samples each (64 rods: 78),
+/// so a frame stays within its time.
+const DRAWN_GRID_POINTS: usize = 10_000;
+
+/// The most critical loads a figure's legend names; the rest are counted
+/// in one entry (`critical` lists them all).
+const MOST_LEGEND_LOADS: usize = 8;
+
+impl Loci<'_> {
+    fn medium(&self) -> Medium {
+        if self.present.is_some() {
+            Medium::Window
+        } else {
+            Medium::Paper
+        }
+    }
+
+    /// The models in drawing order, each with its ink: the others behind,
+    /// the main model in front.
+    fn layers(&self) -> impl Iterator<Item = (&Layer<'_>, Ink)> {
+        let window = self.present.is_some();
+        self.others
+            .iter()
+            .enumerate()
+            .map(move |(k, other)| (other, if window { Ink::Overlay } else { Ink::Series(k) }))
+            .chain(std::iter::once((&self.main, Ink::Main)))
+    }
+
+    /// The load range of the main model's locus.
+    fn load_range(&self) -> (f64, f64) {
+        let loads = &self.main.locus.loads;
+        (
+            loads.first().copied().unwrap_or(0.0),
+            loads.last().copied().unwrap_or(1.0),
+        )
+    }
+
+    /// The root locus in the complex plane, at equal scales, holding the
+    /// eigenvalues that decide stability of every model drawn. In the
+    /// window: the main model's branches coloured by load, the current
+    /// eigenvalues (marked on the edge when off the view) and the measured
+    /// ones. On paper: open rings at the range's first load, the main
+    /// model's eigenvalues at each critical load filled in the colour of
+    /// the state entered.
+    #[must_use]
+    pub fn plane(&self) -> Plot {
+        let extent = self
+            .layers()
+            .map(|(layer, _)| deciding_extent(layer.locus))
+            .fold((0.0, 0.0), |(re, im): (f64, f64), (r, i)| {
+                (re.max(r), im.max(i))
+            });
+        let marks = match self.present {
+            Some(present) => self.window_plane_marks(present),
+            None => self.paper_plane_marks(),
+        };
+        let far_left = self
+            .layers()
+            .map(|(layer, _)| {
+                let furthest = layer
+                    .locus
+                    .moving_branches()
+                    .iter()
+                    .flatten()
+                    .map(|z| z.re)
+                    .fold(0.0, f64::min);
+                FarLeft {
+                    x: furthest,
+                    note: format!(
+                        "{}: eigenvalues down to Re λ = {} 1/s (fast decaying modes) lie left of the view, which holds those that decide stability",
+                        layer.name,
+                        number_text(furthest)
+                    ),
+                }
+            })
+            .collect();
+        Plot {
+            id: "root locus",
+            x_label: RE.to_owned(),
+            y_label: IM.to_owned(),
+            x_ticks: Ticks::Plain,
+            view: View::Equal { extent },
+            marks,
+            far_left,
+        }
+    }
+
+    /// The plane's marks in the window: the axis, the overlay's branches,
+    /// the main model's coloured by load, the present and the measured.
+    fn window_plane_marks(&self, present: Present<'_>) -> Vec<Mark> {
+        let mut marks = Vec::new();
+        marks.push(Mark::Vertical {
+            x: 0.0,
+            name: String::new(),
+            ink: Ink::Axis,
+            weight: Weight::Regular,
+            dashed: false,
+        });
+        for other in &self.others {
+            for branch in &other.locus.branches {
+                marks.push(Mark::Line {
+                    points: branch.iter().map(|z| [z.re, z.im]).collect(),
+                    ink: Ink::Overlay,
+                    weight: Weight::Fine,
+                    dashed: false,
+                });
+            }
+        }
+        marks.extend(self.banded_branches());
+        marks.push(Mark::Markers {
+            points: present.eigenvalues.iter().map(|z| [z.re, z.im]).collect(),
+            ink: Ink::Now,
+            size: Size::Regular,
+            filled: true,
+            off_view: OffView::EdgeMarked,
+        });
+        if let Some(measured) = present.measured {
+            marks.push(Mark::Markers {
+                points: measured.iter().map(|z| [z.re, z.im]).collect(),
+                ink: Ink::Measured,
+                size: Size::Large,
+                filled: false,
+                off_view: OffView::Hidden,
+            });
+        }
+        marks
+    }
+
+    /// The plane's marks on paper: the axis dashed, every model's moving
+    /// branches, the first load's rings and the critical loads' eigenvalues.
+    fn paper_plane_marks(&self) -> Vec<Mark> {
+        let mut marks = Vec::new();
+        marks.push(Mark::Vertical {
+            x: 0.0,
+            name: String::new(),
+            ink: Ink::Axis,
+            weight: Weight::Fine,
+            dashed: true,
+        });
+        for (layer, ink) in self.layers() {
+            for branch in layer.locus.moving_branches() {
+                marks.push(Mark::Line {
+                    points: branch.iter().map(|z| [z.re, z.im]).collect(),
+                    ink: ink.clone(),
+                    weight: Weight::Fine,
+                    dashed: false,
+                });
+            }
+        }
+        marks.push(Mark::Markers {
+            points: points(&self.main.locus.moving_at(0)),
+            ink: Ink::Main,
+            size: Size::Regular,
+            filled: false,
+            off_view: OffView::Hidden,
+        });
+        for (t, eigenvalues) in self.main.transitions.iter().zip(self.main.at_transitions) {
+            marks.push(Mark::Markers {
+                points: points(eigenvalues),
+                ink: Ink::State(t.to),
+                size: Size::Regular,
+                filled: true,
+                off_view: OffView::Hidden,
+            });
+        }
+        marks
+    }
+
+    /// The main model's branches as the window draws them: at most
+    /// [`DRAWN_GRID_SAMPLES`] samples each ([`drawn_samples`]), in
+    /// [`COLOR_BANDS`] pieces coloured by the load along them.
+    fn banded_branches(&self) -> Vec<Mark> {
+        let locus = self.main.locus;
+        let (min, max) = self.load_range();
+        let shown = drawn_samples(locus);
+        let n = shown.len();
+        let mut marks = Vec::new();
+        for branch in &locus.branches {
+            for band in 0..COLOR_BANDS {
+                let (k0, k1) = (
+                    band * (n - 1) / COLOR_BANDS,
+                    ((band + 1) * (n - 1) / COLOR_BANDS).min(n - 1),
+                );
+                if k1 <= k0 {
+                    continue;
+                }
+                let (i0, i1) = (shown[k0], shown[k1]);
+                let mid = 0.5 * (locus.loads[i0] + locus.loads[i1]);
+                marks.push(Mark::Line {
+                    points: shown[k0..=k1]
+                        .iter()
+                        .map(|&i| [branch[i].re, branch[i].im])
+                        .collect(),
+                    ink: Ink::Rgb(load_color(mid, min, max)),
+                    weight: Weight::Regular,
+                    dashed: false,
+                });
+            }
+        }
+        marks
+    }
+
+    /// Re λ or (`imaginary`) Im λ ≥ 0 of every branch against the load: the
+    /// main model's stability ranges tinted in their states' colours, the
+    /// others behind it; in the window the current load as a line, on paper
+    /// the main model's critical loads dashed. The Re plot holds the real
+    /// part of the eigenvalue furthest right at every load, of every model
+    /// drawn. Of Im the upper half only: the lower is its mirror image
+    /// (conjugate pairs), and a chain's 32 branches in both halves were a
+    /// blur.
+    #[must_use]
+    pub fn versus_load(&self, imaginary: bool) -> Plot {
+        let extent = versus_load_extent(self.layers().map(|(layer, _)| layer.locus), imaginary);
+        let (p0, p1) = self.load_range();
+        let window = self.medium() == Medium::Window;
+        let lowest = match (imaginary, window) {
+            (false, _) => -1.1 * extent,
+            (true, true) => -0.05 * extent,
+            (true, false) => 0.0,
+        };
+        let mut marks: Vec<Mark> = self
+            .main
+            .ranges
+            .iter()
+            .map(|&(from, to, state)| Mark::Range { from, to, state })
+            .collect();
+        if !window {
+            marks.extend(self.main.transitions.iter().map(|t| Mark::Vertical {
+                x: t.load,
+                name: String::new(),
+                ink: Ink::State(t.to),
+                weight: Weight::Fine,
+                dashed: true,
+            }));
+        }
+        for (layer, ink) in self.layers() {
+            let locus = layer.locus;
+            let part = |z: C64| if imaginary { z.im } else { z.re };
+            if window {
+                let samples = drawn_samples(locus);
+                for branch in &locus.branches {
+                    if imaginary && branch.iter().all(|z| z.im < 0.0) {
+                        continue;
+                    }
+                    marks.push(Mark::Line {
+                        points: samples
+                            .iter()
+                            .map(|&i| [locus.loads[i], part(branch[i])])
+                            .collect(),
+                        ink: ink.clone(),
+                        weight: Weight::Fine,
+                        dashed: false,
+                    });
+                }
+            } else {
+                for branch in locus.moving_branches() {
+                    marks.push(Mark::Line {
+                        points: locus
+                            .loads
+                            .iter()
+                            .zip(branch)
+                            .map(|(&p, &z)| [p, part(z)])
+                            .collect(),
+                        ink: ink.clone(),
+                        weight: Weight::Fine,
+                        dashed: false,
+                    });
+                }
+            }
+        }
+        if let Some(present) = self.present {
+            marks.push(Mark::Vertical {
+                x: present.load,
+                name: "load".to_owned(),
+                ink: Ink::LoadLine,
+                weight: Weight::Regular,
+                dashed: false,
+            });
+        }
+        let label = if imaginary { IM } else { RE };
+        Plot {
+            id: label,
+            x_label: LOAD.to_owned(),
+            y_label: label.to_owned(),
+            x_ticks: Ticks::Plain,
+            view: View::Ranges {
+                x: (p0, p1),
+                y: (lowest, 1.1 * extent),
+            },
+            marks,
+            far_left: Vec::new(),
+        }
+    }
+
+    /// The legend of the window's locus tab: what the colours, markers and
+    /// lines are, and the overlay's own critical loads.
+    #[must_use]
+    pub fn window_legend(&self) -> Vec<Entry> {
+        let (min, max) = self.load_range();
+        let scale = (0..8)
+            .map(|i| Ink::Rgb(load_color(min + (max - min) * f64::from(i) / 7.0, min, max)))
+            .collect();
+        let mut entries = vec![
+            Entry::new(
+                Swatch::Scale(scale),
+                format!(
+                    "branch colour: the load, p = {} to {}",
+                    number_text(min),
+                    number_text(max)
+                ),
+            ),
+            Entry::new(
+                Swatch::Marker(Ink::Now, true),
+                "eigenvalues at the current load",
+            ),
+        ];
+        if self.present.is_some_and(|p| p.measured.is_some()) {
+            entries.push(Entry::new(
+                Swatch::Marker(Ink::Measured, false),
+                "measured from the run",
+            ));
+        }
+        entries.push(Entry::new(Swatch::Line(Ink::LoadLine), "current load"));
+        for other in &self.others {
+            let loads = if other.transitions.is_empty() {
+                "no change of stability up to the slider's end".to_owned()
+            } else {
+                other
+                    .transitions
+                    .iter()
+                    .map(ToString::to_string)
+                    .collect::<Vec<_>>()
+                    .join(";  ")
+            };
+            entries.push(Entry::new(
+                Swatch::Line(Ink::Overlay),
+                format!("overlay {}: {loads}", other.name),
+            ));
+        }
+        entries
+    }
+
+    /// The legend of a figure of the plane (`plane`) or of Re and Im
+    /// against the load: each model's curve, the plane's open rings, the
+    /// main model's critical loads (at most [`MOST_LEGEND_LOADS`], the rest
+    /// counted) and, against the load, the states its ranges are tinted in.
+    #[must_use]
+    pub fn paper_legend(&self, plane: bool) -> Vec<Entry> {
+        let mark = |ink: Ink| {
+            if plane {
+                Swatch::Marker(ink, true)
+            } else {
+                Swatch::Dashed(ink)
+            }
+        };
+        let mut entries = vec![Entry::new(Swatch::Line(Ink::Main), self.main.name)];
+        entries.extend(
+            self.others
+                .iter()
+                .enumerate()
+                .map(|(k, other)| Entry::new(Swatch::Line(Ink::Series(k)), other.name)),
+        );
+        if plane {
+            entries.push(Entry::new(
+                Swatch::Marker(Ink::Main, false),
+                format!("p = {}", number_text(self.load_range().0)),
+            ));
+        }
+        let transitions = self.main.transitions;
+        entries.extend(transitions.iter().take(MOST_LEGEND_LOADS).map(|t| {
+            Entry::new(
+                mark(Ink::State(t.to)),
+                format!(
+                    "p = {}: {} to {}",
+                    load_text(t.load),
+                    t.from.name(),
+                    t.to.name()
+                ),
+            )
+        }));
+        let more = transitions.len().saturating_sub(MOST_LEGEND_LOADS);
+        if more > 0 {
+            entries.push(Entry::new(
+                mark(Ink::Main),
+                format!("{more} more critical loads (zieglerlab critical lists them)"),
+            ));
+        }
+        if !plane {
+            for state in [State::Stable, State::Flutter, State::Divergence] {
+                if self.main.ranges.iter().any(|r| r.2 == state) {
+                    entries.push(Entry::new(Swatch::Fill(state), state.name()));
+                }
+            }
+        }
+        entries
+    }
+}
+
+/// Eigenvalues as points of the plane.
+fn points(eigenvalues: &[C64]) -> Vec<[f64; 2]> {
+    eigenvalues.iter().map(|z| [z.re, z.im]).collect()
+}
+
+/// The indices of the locus samples the window draws: every k-th evenly
+/// spaced one, so that at most [`DRAWN_GRID_SAMPLES`] are (and at most
+/// [`DRAWN_GRID_POINTS`] over all branches), every sample the refinement
+/// added (branch points, axis crossings) and the last.
+fn drawn_samples(locus: &Locus) -> Vec<usize> {
+    let grid = locus.on_grid.iter().filter(|&&g| g).count();
+    let most = DRAWN_GRID_SAMPLES.min(DRAWN_GRID_POINTS / locus.branches.len().max(1));
+    let stride = grid.div_ceil(most.max(2)).max(1);
+    let last = locus.loads.len().saturating_sub(1);
+    let mut grid_index = 0;
+    (0..locus.loads.len())
+        .filter(|&i| {
+            if !locus.on_grid[i] {
+                return true;
+            }
+            grid_index += 1;
+            (grid_index - 1) % stride == 0 || i == last
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::analysis::{AffinePencil, AlongLoad, Unresolved, plotted_locus};
+    use crate::model::PresetId;
+
+    /// The tinted ranges of a plot, in order.
+    fn ranges(plot: &Plot) -> Vec<(f64, f64, State)> {
+        plot.marks
+            .iter()
+            .filter_map(|mark| match mark {
+                Mark::Range { from, to, state } => Some((*from, *to, *state)),
+                _ => None,
+            })
+            .collect()
+    }
+
+    /// Ziegler's column (equal masses and springs, undamped) flutters at
+    /// p = 7/2 - sqrt 2 and diverges at 7/2 + sqrt 2. The window and a figure
+    /// of its locus hold the same eigenvalues in view, tint the same ranges,
+    /// bounded by those loads; the figure dashes a line at each, the window
+    /// draws the current load instead.
+    #[test]
+    fn the_window_and_a_figure_describe_the_same_locus() {
+        let model = PresetId::Ziegler1952.model();
+        let pencil = AffinePencil::new(&model).unwrap();
+        let locus = plotted_locus(&pencil, 0.0, model.load_bar_max_p()).unwrap();
+        let along = AlongLoad::new(&pencil, locus, Unresolved::Dropped).unwrap();
+        let layer = Layer {
+            name: "ziegler-1952",
+            locus: &along.locus,
+            transitions: &along.transitions,
+            ranges: &along.ranges,
+            at_transitions: &[],
+        };
+        let now = pencil.spectrum(1.0).unwrap().eigenvalues;
+        let paper = Loci {
+            main: layer,
+            others: Vec::new(),
+            present: None,
+        };
+        let window = Loci {
+            present: Some(Present {
+                load: 1.0,
+                eigenvalues: &now,
+                measured: None,
+            }),
+            ..paper.clone()
+        };
+        assert_eq!(paper.plane().view, window.plane().view);
+        let onsets = [
+            (3.5 - 2f64.sqrt(), State::Flutter),
+            (3.5 + 2f64.sqrt(), State::Divergence),
+        ];
+        for imaginary in [false, true] {
+            let (on_paper, on_screen) =
+                (paper.versus_load(imaginary), window.versus_load(imaginary));
+            let tinted = ranges(&on_paper);
+            assert_eq!(tinted, ranges(&on_screen));
+            assert_eq!(tinted.len(), 3);
+            for ((load, state), pair) in onsets.iter().zip(tinted.windows(2)) {
+                assert!((pair[0].1 - load).abs() < 1e-9 && pair[1].0 == pair[0].1);
+                assert_eq!(pair[1].2, *state);
+                assert!(on_paper.marks.iter().any(|mark| matches!(
+                    mark,
+                    Mark::Vertical { x, ink: Ink::State(s), dashed: true, .. }
+                        if (x - load).abs() < 1e-9 && s == state
+                )));
+            }
+            let current = |plot: &Plot| {
+                plot.marks.iter().any(|mark| {
+                    matches!(mark, Mark::Vertical { ink: Ink::LoadLine, x, .. } if *x == 1.0)
+                })
+            };
+            assert!(current(&on_screen) && !current(&on_paper));
+            let (View::Ranges { x: px, y: py }, View::Ranges { x: wx, y: wy }) =
+                (on_paper.view, on_screen.view)
+            else {
+                panic!("plots against the load have ranges");
+            };
+            assert_eq!((px, py.1), (wx, wy.1));
+        }
+        // The plane's view holds the eigenvalues at the flutter onset.
+        let View::Equal { extent } = window.plane().view else {
+            panic!("the plane has equal scales");
+        };
+        let at_onset = pencil.spectrum(onsets[0].0).unwrap().eigenvalues;
+        assert!(at_onset.iter().all(|z| z.im.abs() <= extent.1 + 1e-12));
+    }
+}

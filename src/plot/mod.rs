@@ -1,0 +1,11 @@
+//! What the plots show, below both the window and the figures: each plot
+//! described once as data ([`spec::Plot`]), the colours by meaning and the
+//! arithmetic of where a plot looks (pure: no drawing).
+
+pub mod locus;
+pub mod map_scale;
+pub mod palette;
+pub mod spec;
+pub mod view;
+
+pub use palette::{Palette, Rgb, load_color};
