@@ -6,6 +6,7 @@ use egui_plot::{LineStyle, MarkerShape, Plot as EguiPlot, PlotPoint, Points, Spa
 
 use super::plot_frame::{Swatch as RowSwatch, axes, curve, legend_row, refit_if, view_settled};
 use super::theme::{Theme, color};
+use crate::analysis::{C64, State};
 use crate::plot::spec::{Entry, Ink, Mark, OffView, Plot, Size, Swatch, View, Weight};
 use crate::plot::view::{EdgeMark, Side, ViewRect, default_view, edge_marks};
 
@@ -59,7 +60,7 @@ fn radius(size: Size, theme: &Theme) -> f32 {
 }
 
 /// The tint of a state's range.
-fn range_tint(state: crate::analysis::State, theme: &Theme) -> Color32 {
+fn range_tint(state: State, theme: &Theme) -> Color32 {
     theme.state_color(state).gamma_multiply(0.18)
 }
 
@@ -144,8 +145,7 @@ pub fn plot_ui(ui: &mut egui::Ui, plot: &Plot, refit: bool, theme: &Theme) {
                             .filled(*filled),
                     );
                     if *off_view == OffView::EdgeMarked {
-                        edge_marked
-                            .extend(points.iter().map(|p| crate::analysis::C64::new(p[0], p[1])));
+                        edge_marked.extend(points.iter().map(|p| C64::new(p[0], p[1])));
                     }
                 }
                 Mark::Vertical {

@@ -60,18 +60,29 @@ pub fn manual(args: &ManualArgs, command: clap::Command, out: &mut impl Write) -
     if !dir.is_dir() {
         anyhow::bail!("--dir {}: not a folder", dir.display());
     }
-    let names: Vec<String> = std::iter::once(command.get_name().to_owned())
-        .chain(
-            command
-                .get_subcommands()
-                .filter(|sub| sub.get_name() != "help")
-                .map(|sub| format!("{}-{}", command.get_name(), sub.get_name())),
-        )
-        .collect();
-    clap_mangen::generate_to(command, dir)
-        .with_context(|| format!("writing the man pages into {}", dir.display()))?;
-    for name in names {
-        writeln!(out, "{}", dir.join(format!("{name}.1")).display())?;
+    // clap_mangen names the pages: they are written into a fresh folder
+    // inside `dir` and moved out of it, so the names said are the files
+    // written, whatever its naming.
+    let written_in = |error: std::io::Error| {
+        anyhow::Error::new(error).context(format!("writing the man pages into {}", dir.display()))
+    };
+    let staging = tempfile::Builder::new()
+        .prefix(".zieglerlab-manual")
+        .tempdir_in(dir)
+        .map_err(written_in)?;
+    clap_mangen::generate_to(command, staging.path()).map_err(written_in)?;
+    let mut pages = std::fs::read_dir(staging.path())
+        .and_then(|entries| {
+            entries
+                .map(|entry| entry.map(|e| e.file_name()))
+                .collect::<Result<Vec<_>, _>>()
+        })
+        .map_err(written_in)?;
+    pages.sort();
+    for page in pages {
+        let target = dir.join(&page);
+        std::fs::rename(staging.path().join(&page), &target).map_err(written_in)?;
+        writeln!(out, "{}", target.display())?;
     }
     Ok(())
 }

@@ -157,7 +157,7 @@ impl Loci<'_> {
         for other in &self.others {
             for branch in &other.locus.branches {
                 marks.push(Mark::Line {
-                    points: branch.iter().map(|z| [z.re, z.im]).collect(),
+                    points: points(branch),
                     ink: Ink::Overlay,
                     weight: Weight::Fine,
                     dashed: false,
@@ -166,7 +166,7 @@ impl Loci<'_> {
         }
         marks.extend(self.banded_branches());
         marks.push(Mark::Markers {
-            points: present.eigenvalues.iter().map(|z| [z.re, z.im]).collect(),
+            points: points(present.eigenvalues),
             ink: Ink::Now,
             size: Size::Regular,
             filled: true,
@@ -174,7 +174,7 @@ impl Loci<'_> {
         });
         if let Some(measured) = present.measured {
             marks.push(Mark::Markers {
-                points: measured.iter().map(|z| [z.re, z.im]).collect(),
+                points: points(measured),
                 ink: Ink::Measured,
                 size: Size::Large,
                 filled: false,
@@ -198,7 +198,7 @@ impl Loci<'_> {
         for (layer, ink) in self.layers() {
             for branch in layer.locus.moving_branches() {
                 marks.push(Mark::Line {
-                    points: branch.iter().map(|z| [z.re, z.im]).collect(),
+                    points: points(branch),
                     ink: ink.clone(),
                     weight: Weight::Fine,
                     dashed: false,

@@ -93,6 +93,15 @@ fn the_man_pages_cover_every_subcommand() {
         assert!(text.contains(&format!(".TH {name} 1")), "{name}");
         assert!(written.contains(path.to_str().unwrap()), "{written}");
     }
+    // Each file said is a page in the folder, and nothing else is left there.
+    let mut held: Vec<String> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|entry| entry.unwrap().path().to_str().unwrap().to_owned())
+        .collect();
+    held.sort();
+    let mut said: Vec<&str> = written.lines().collect();
+    said.sort_unstable();
+    assert_eq!(held, said);
     let missing = run(&["manual", "--dir", "/nonexistent-folder"]);
     assert_eq!(missing.status.code(), Some(2));
 }
