@@ -1,13 +1,20 @@
 //! Draws a plot's description ([`crate::plot::spec`]) in the window with
 //! `egui_plot`, in the theme's colours: the window's one renderer of plots.
 
+use std::sync::Arc;
+
 use eframe::egui::{self, Color32};
-use egui_plot::{LineStyle, MarkerShape, Plot as EguiPlot, PlotPoint, Points, Span, Text, VLine};
+use egui_plot::{
+    HLine, LineStyle, MarkerShape, Plot as EguiPlot, PlotImage, PlotPoint, PlotResponse, Points,
+    Span, Text, VLine, log_grid_spacer,
+};
 
 use super::plot_frame::{Swatch as RowSwatch, axes, curve, legend_row, refit_if, view_settled};
 use super::theme::{Theme, color};
 use crate::analysis::{C64, State};
-use crate::plot::spec::{Entry, Ink, Mark, OffView, Plot, Size, Swatch, View, Weight};
+use crate::format::number_text;
+use crate::plot::map::CellGrid;
+use crate::plot::spec::{Entry, Ink, Mark, OffView, Plot, Size, Swatch, Ticks, View, Weight};
 use crate::plot::view::{EdgeMark, Side, ViewRect, default_view, edge_marks};
 
 /// How far inside the view an edge mark is drawn, as a fraction of its size.
@@ -29,14 +36,16 @@ pub struct LocusShown {
 fn ink_color(ink: &Ink, theme: &Theme) -> Color32 {
     match ink {
         Ink::Main => theme.text,
-        Ink::Series(k) => theme.series[k % theme.series.len()],
-        Ink::Overlay => theme.overlay,
+        Ink::Series(k) => theme.curves[k % theme.curves.len()],
+        Ink::Overlay | Ink::Reference => theme.overlay,
         Ink::State(state) => theme.state_color(*state),
         Ink::Now => theme.now,
         Ink::Measured => theme.measured,
         Ink::LoadLine => theme.load_line,
         Ink::Axis => theme.axis,
         Ink::Rgb(rgb) => color(*rgb),
+        Ink::Cell(state, strength) => cell_color(*state, *strength, theme),
+        Ink::NoData => theme.no_data,
     }
 }
 
@@ -46,6 +55,7 @@ fn width(weight: Weight, theme: &Theme) -> f32 {
         * match weight {
             Weight::Fine => 1.5,
             Weight::Regular => 2.0,
+            Weight::Layered(k) => [3.5, 2.2, 1.2][k.min(2)],
         }
 }
 
@@ -85,8 +95,14 @@ pub fn legend_ui(ui: &mut egui::Ui, entries: &[Entry], theme: &Theme) {
     legend_row(ui, &rows);
 }
 
-/// `plot` in the space `ui` offers, its view refitted with `refit`.
-pub fn plot_ui(ui: &mut egui::Ui, plot: &Plot, refit: bool, theme: &Theme) {
+/// `plot` in the space `ui` offers, its view refitted with `refit`. The
+/// plot's response comes back with where the pointer is on it.
+pub fn plot_ui(
+    ui: &mut egui::Ui,
+    plot: &Plot,
+    refit: bool,
+    theme: &Theme,
+) -> PlotResponse<Option<PlotPoint>> {
     let mut egui_plot = EguiPlot::new(plot.id);
     match plot.view {
         View::Ranges { x, y } => {
@@ -107,71 +123,25 @@ pub fn plot_ui(ui: &mut egui::Ui, plot: &Plot, refit: bool, theme: &Theme) {
                 .default_y_bounds(-half_height, half_height);
         }
     }
-    let egui_plot = refit_if(
-        axes(egui_plot, plot.x_label.as_str(), plot.y_label.as_str()),
-        refit,
-    );
+    let mut egui_plot = axes(egui_plot, plot.x_label.as_str(), plot.y_label.as_str());
+    if plot.x_ticks == Ticks::Decades {
+        // Decades on the log axis, not 1-2-5 steps of the exponent.
+        egui_plot = egui_plot
+            .x_grid_spacer(log_grid_spacer(10))
+            .x_axis_formatter(|mark, _| number_text(10f64.powf(mark.value)));
+    }
+    let egui_plot = refit_if(egui_plot, refit);
     egui_plot.show(ui, |plot_ui| {
         let settled = view_settled(plot_ui, refit);
         let mut edge_marked = Vec::new();
         for mark in &plot.marks {
-            match mark {
-                Mark::Line {
-                    points,
-                    ink,
-                    weight,
-                    dashed,
-                } => {
-                    let line = curve(plot_ui, settled, points.iter().copied())
-                        .color(ink_color(ink, theme))
-                        .width(width(*weight, theme));
-                    plot_ui.line(if *dashed {
-                        line.style(LineStyle::dashed_loose())
-                    } else {
-                        line
-                    });
-                }
-                Mark::Markers {
-                    points,
-                    ink,
-                    size,
-                    filled,
-                    off_view,
-                } => {
-                    plot_ui.points(
-                        Points::new("", points.clone())
-                            .radius(radius(*size, theme))
-                            .color(ink_color(ink, theme))
-                            .filled(*filled),
-                    );
-                    if *off_view == OffView::EdgeMarked {
-                        edge_marked.extend(points.iter().map(|p| C64::new(p[0], p[1])));
-                    }
-                }
-                Mark::Vertical {
-                    x,
-                    name,
-                    ink,
-                    weight,
-                    dashed,
-                } => {
-                    let line = VLine::new(name.as_str(), *x)
-                        .color(ink_color(ink, theme))
-                        .width(width(*weight, theme));
-                    plot_ui.vline(if *dashed {
-                        line.style(LineStyle::dashed_loose())
-                    } else {
-                        line
-                    });
-                }
-                Mark::Range { from, to, state } => {
-                    plot_ui
-                        .span(Span::new(state.name(), *from..=*to).fill(range_tint(*state, theme)));
-                }
+            if let Some(points) = mark_ui(plot_ui, plot.id, mark, settled, theme) {
+                edge_marked.extend(points.iter().map(|p| C64::new(p[0], p[1])));
             }
         }
+        let pointer = plot_ui.pointer_coordinate();
         if edge_marked.is_empty() {
-            return;
+            return pointer;
         }
         let bounds = plot_ui.plot_bounds();
         let view = ViewRect {
@@ -183,7 +153,154 @@ pub fn plot_ui(ui: &mut egui::Ui, plot: &Plot, refit: bool, theme: &Theme) {
         plot_ui.ctx().data_mut(|data| {
             data.insert_temp(egui::Id::unique(LOCUS_SHOWN_ID), LocusShown { view, marks });
         });
-    });
+        pointer
+    })
+}
+
+/// Draws one mark; the points of markers to mark on the view's edge when
+/// off it come back.
+fn mark_ui<'a>(
+    plot_ui: &mut egui_plot::PlotUi<'_>,
+    plot_id: &str,
+    mark: &'a Mark,
+    settled: bool,
+    theme: &Theme,
+) -> Option<&'a [[f64; 2]]> {
+    match mark {
+        Mark::Line {
+            points,
+            ink,
+            weight,
+            dashed,
+        } => {
+            let line = curve(plot_ui, settled, points.iter().copied())
+                .color(ink_color(ink, theme))
+                .width(width(*weight, theme));
+            plot_ui.line(if *dashed {
+                line.style(LineStyle::dashed_loose())
+            } else {
+                line
+            });
+        }
+        Mark::Markers {
+            points,
+            ink,
+            size,
+            filled,
+            off_view,
+        } => {
+            plot_ui.points(
+                Points::new("", points.clone())
+                    .radius(radius(*size, theme))
+                    .color(ink_color(ink, theme))
+                    .filled(*filled),
+            );
+            if *off_view == OffView::EdgeMarked {
+                return Some(points);
+            }
+        }
+        Mark::Vertical {
+            x,
+            name,
+            ink,
+            weight,
+            dashed,
+        } => {
+            let line = VLine::new(name.as_str(), *x)
+                .color(ink_color(ink, theme))
+                .width(width(*weight, theme));
+            plot_ui.vline(if *dashed {
+                line.style(LineStyle::dashed_loose())
+            } else {
+                line
+            });
+        }
+        Mark::Horizontal {
+            y,
+            ink,
+            weight,
+            dashed,
+        } => {
+            let line = HLine::new("", *y)
+                .color(ink_color(ink, theme))
+                .width(width(*weight, theme));
+            plot_ui.hline(if *dashed {
+                line.style(LineStyle::dashed_loose())
+            } else {
+                line
+            });
+        }
+        Mark::Cells { x, y, grid } => cells_ui(plot_ui, plot_id, (*x, *y), grid, theme),
+        Mark::Range { from, to, state } => {
+            plot_ui.span(Span::new(state.name(), *from..=*to).fill(range_tint(*state, theme)));
+        }
+    }
+    None
+}
+
+/// A map cell's colour: its state's, dimmer the slower it grows or decays.
+fn cell_color(state: State, strength: f64, theme: &Theme) -> Color32 {
+    #[expect(clippy::cast_possible_truncation, reason = "a fraction in [0, 1]")]
+    theme
+        .state_color(state)
+        .gamma_multiply(0.3 + 0.7 * strength as f32)
+}
+
+/// A grid's texture as last made, for the theme it was made in.
+#[derive(Clone)]
+struct CellTexture {
+    grid: Arc<CellGrid>,
+    theme: Theme,
+    texture: egui::TextureHandle,
+}
+
+/// `grid` as an image over `x` by `y`, one pixel per cell; the texture is
+/// made again only when the grid or the theme changed.
+fn cells_ui(
+    plot_ui: &mut egui_plot::PlotUi<'_>,
+    plot_id: &str,
+    (x, y): ((f64, f64), (f64, f64)),
+    grid: &Arc<CellGrid>,
+    theme: &Theme,
+) {
+    let ctx = plot_ui.ctx().clone();
+    let key = egui::Id::unique((plot_id, "cells"));
+    let cached = ctx
+        .data(|data| data.get_temp::<CellTexture>(key))
+        .filter(|c| (Arc::ptr_eq(&c.grid, grid) || c.grid == *grid) && c.theme == *theme);
+    let texture = if let Some(cached) = cached {
+        cached.texture
+    } else {
+        let mut image = egui::ColorImage::filled([grid.columns, grid.rows], theme.no_data);
+        for (k, cell) in grid.cells.iter().enumerate() {
+            // The image's first row is the top: the grid's last.
+            let (j, i) = (k / grid.columns.max(1), k % grid.columns.max(1));
+            if let Some((state, strength)) = cell {
+                image.pixels[(grid.rows - 1 - j) * grid.columns + i] =
+                    cell_color(*state, *strength, theme);
+            }
+        }
+        let texture = ctx.load_texture(plot_id, image, egui::TextureOptions::NEAREST);
+        ctx.data_mut(|data| {
+            data.insert_temp(
+                key,
+                CellTexture {
+                    grid: Arc::clone(grid),
+                    theme: *theme,
+                    texture: texture.clone(),
+                },
+            );
+        });
+        texture
+    };
+    #[expect(clippy::cast_possible_truncation, reason = "plot sizes")]
+    let size = [(x.1 - x.0) as f32, (y.1 - y.0) as f32];
+    plot_ui.image(PlotImage::new(
+        "map",
+        texture.id(),
+        PlotPoint::new(0.5 * (x.0 + x.1), 0.5 * (y.0 + y.1)),
+        size,
+    ));
 }
 
 /// Each marker outside the view as an arrow on the edge towards it, with

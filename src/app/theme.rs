@@ -9,7 +9,7 @@ use crate::analysis::State;
 use crate::plot::{Palette, Rgb};
 
 /// The palette of one theme.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Theme {
     pub background: Color32,
     pub rod: Color32,
@@ -40,6 +40,8 @@ pub struct Theme {
     pub no_data: Color32,
     /// Curves that are neither states nor the scene's objects, in order.
     pub series: [Color32; 6],
+    /// The k-th curve of a plot (a damping level, an overlaid model).
+    pub curves: [Color32; 5],
     /// Notices: something refused or failed.
     pub error: Color32,
     /// Notices and cautions: done, but not quite as asked, or not resolved.
@@ -95,6 +97,13 @@ impl Theme {
                 color(p.series[3]),
                 color(p.series[4]),
                 color(p.series[5]),
+            ],
+            curves: [
+                color(p.curves[0]),
+                color(p.curves[1]),
+                color(p.curves[2]),
+                color(p.curves[3]),
+                color(p.curves[4]),
             ],
             stroke_scale,
             text_size,

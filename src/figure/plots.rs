@@ -5,26 +5,30 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::layout::{
-    Swatch as PageSwatch, XTicks, chart, dashed, legend_above, line, marker_style, panel, plot_size,
+    Chart, Swatch as PageSwatch, XTicks, chart, dashed, legend_above, line, marker_style, panel,
+    plot_size,
 };
 use super::style::{INK, Ink as PageInk, rgb, series_color, state_color, tint};
 use super::{Drawn, FigureError, drawing};
 use crate::analysis::State;
 use crate::plot::Palette;
+use crate::plot::map::CellGrid;
 use crate::plot::spec::{Entry, Ink, Mark, Plot, Size, Swatch, Ticks, View, Weight};
 use crate::plot::view::default_view;
 
 /// `ink` on white paper.
 fn ink_color(ink: &Ink) -> RGBColor {
     match ink {
-        Ink::Main | Ink::Now => INK,
+        Ink::Main | Ink::Now | Ink::Reference => INK,
         Ink::Series(k) => series_color(*k),
         Ink::Overlay => series_color(0),
         Ink::State(state) => state_color(*state),
-        Ink::Measured => rgb(Palette::NORMAL.measured),
-        Ink::LoadLine => rgb(Palette::NORMAL.load_line),
-        Ink::Axis => tint(INK, 0.5),
+        Ink::Measured => rgb(Palette::PAPER.measured),
+        Ink::LoadLine => rgb(Palette::PAPER.load_line),
+        Ink::Axis => rgb(Palette::PAPER.axis),
         Ink::Rgb(color) => rgb(*color),
+        Ink::Cell(state, strength) => cell_color(*state, *strength),
+        Ink::NoData => rgb(Palette::PAPER.no_data),
     }
 }
 
@@ -33,6 +37,7 @@ fn width_pt(weight: Weight) -> f64 {
     match weight {
         Weight::Fine => 0.8,
         Weight::Regular => 1.0,
+        Weight::Layered(k) => [1.6, 1.0, 0.6][k.min(2)],
     }
 }
 
@@ -43,6 +48,16 @@ fn radius_pt(size: Size) -> f64 {
         Size::Regular => 2.2,
         Size::Large => 2.4,
     }
+}
+
+/// Levels of strength a map cell's colour takes on paper (a run of equal
+/// cells is one rectangle, so an SVG of a fine map stays small).
+const CELL_LEVELS: f64 = 8.0;
+
+/// A map cell's colour: its state's, paler the slower it grows or decays.
+fn cell_color(state: State, strength: f64) -> RGBColor {
+    let level = (strength * CELL_LEVELS).round() / CELL_LEVELS;
+    tint(state_color(state), 0.3 + 0.7 * level)
 }
 
 /// The pale tint of a stability range.
@@ -141,15 +156,7 @@ where
                 dashed: is_dashed,
             } => {
                 let points: Vec<(f64, f64)> = points.iter().map(|p| (p[0], p[1])).collect();
-                if *is_dashed {
-                    dashed(&mut chart, &points, ink_color(color), ink)?;
-                } else {
-                    line(
-                        &mut chart,
-                        &points,
-                        ink.stroke(ink_color(color), width_pt(*weight)),
-                    )?;
-                }
+                stroked(&mut chart, &points, (color, *weight, *is_dashed), ink)?;
             }
             Mark::Markers {
                 points,
@@ -179,16 +186,18 @@ where
                 ..
             } => {
                 let points = [(*at, y.0), (*at, y.1)];
-                if *is_dashed {
-                    dashed(&mut chart, &points, ink_color(color), ink)?;
-                } else {
-                    line(
-                        &mut chart,
-                        &points,
-                        ink.stroke(ink_color(color), width_pt(*weight)),
-                    )?;
-                }
+                stroked(&mut chart, &points, (color, *weight, *is_dashed), ink)?;
             }
+            Mark::Horizontal {
+                y: at,
+                ink: color,
+                weight,
+                dashed: is_dashed,
+            } => {
+                let points = [(x.0, *at), (x.1, *at)];
+                stroked(&mut chart, &points, (color, *weight, *is_dashed), ink)?;
+            }
+            Mark::Cells { x, y, grid } => cells(&mut chart, (*x, *y), grid)?,
             Mark::Range { from, to, state } => {
                 drawing(chart.draw_series(std::iter::once(Rectangle::new(
                     [(*from, y.0), (*to, y.1)],
@@ -204,5 +213,66 @@ where
             .map(|far| far.note.clone()),
     );
     drawn.panels.push(panel(&chart));
+    Ok(())
+}
+
+/// The polyline `points` in `color` at `weight`, solid or `dashed`.
+fn stroked<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    points: &[(f64, f64)],
+    (color, weight, is_dashed): (&Ink, Weight, bool),
+    ink: &PageInk,
+) -> Result<(), FigureError>
+where
+    DB::ErrorType: 'static,
+{
+    if is_dashed {
+        dashed(chart, points, ink_color(color), ink)
+    } else {
+        line(
+            chart,
+            points,
+            ink.stroke(ink_color(color), width_pt(weight)),
+        )
+    }
+}
+
+/// `grid`'s cells over `x` by `y`, each row's runs of one colour as one
+/// rectangle; cells without analysis left white.
+fn cells<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    (x, y): ((f64, f64), (f64, f64)),
+    grid: &CellGrid,
+) -> Result<(), FigureError>
+where
+    DB::ErrorType: 'static,
+{
+    let columns = grid.columns.max(1);
+    #[expect(clippy::cast_precision_loss, reason = "cell counts")]
+    let (width, height) = (
+        (x.1 - x.0) / columns as f64,
+        (y.1 - y.0) / grid.rows.max(1) as f64,
+    );
+    for (j, row) in (0u32..).zip(grid.cells.chunks(columns)) {
+        let colors: Vec<Option<RGBColor>> = row
+            .iter()
+            .map(|cell| cell.map(|(state, strength)| cell_color(state, strength)))
+            .collect();
+        let bottom = y.0 + f64::from(j) * height;
+        let mut start = 0;
+        for i in 1..=colors.len() {
+            if i == colors.len() || colors[i] != colors[start] {
+                if let Some(color) = colors[start] {
+                    #[expect(clippy::cast_precision_loss, reason = "cell counts")]
+                    let (a, b) = (x.0 + start as f64 * width, x.0 + i as f64 * width);
+                    drawing(chart.draw_series(std::iter::once(Rectangle::new(
+                        [(a, bottom), (b, bottom + height)],
+                        color.filled(),
+                    ))))?;
+                }
+                start = i;
+            }
+        }
+    }
     Ok(())
 }

@@ -1,6 +1,6 @@
 //! The page a figure is drawn on (its size in millimetres, its font size in
 //! points, a PNG's dots per inch), the strokes and fonts in the page's units,
-//! and the app's colours on white paper.
+//! and the palette's paper colours.
 
 use plotters::style::{FontStyle, RGBColor, ShapeStyle, TextStyle};
 
@@ -181,19 +181,18 @@ pub(super) const fn rgb(color: Rgb) -> RGBColor {
     RGBColor(color.0, color.1, color.2)
 }
 
-/// Black: the text, the axes and the main model's curves.
-pub(super) const INK: RGBColor = RGBColor(0, 0, 0);
+/// The paper's ink: the text, the axes and the main model's curves.
+pub(super) const INK: RGBColor = rgb(Palette::PAPER.text);
 
-/// The colour of a state, as in the app.
+/// The colour of a state on paper.
 pub(super) fn state_color(state: State) -> RGBColor {
-    rgb(Palette::NORMAL.state(state))
+    rgb(Palette::PAPER.state(state))
 }
 
-/// The colours of overlaid models and of further curves, in order: the
-/// app's series colours that read on white.
+/// The colour of the k-th curve (an overlaid model, a damping level) on paper.
 pub(super) fn series_color(index: usize) -> RGBColor {
-    let on_white = Palette::NORMAL.series_on_white();
-    rgb(on_white[index % on_white.len()])
+    let curves = Palette::PAPER.curves;
+    rgb(curves[index % curves.len()])
 }
 
 /// `color` as a pale tint: mixed with white, `strength` in [0, 1] of it.

@@ -2,9 +2,11 @@
 //! described once as data ([`spec::Plot`]), the colours by meaning and the
 //! arithmetic of where a plot looks (pure: no drawing).
 
+pub mod bifurcation;
 pub mod locus;
-pub mod map_scale;
+pub mod map;
 pub mod palette;
+pub mod paradox;
 pub mod spec;
 pub mod view;
 

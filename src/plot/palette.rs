@@ -50,6 +50,9 @@ pub struct Palette {
     pub no_data: Rgb,
     /// Curves that are neither states nor the scene's objects, in order.
     pub series: [Rgb; 6],
+    /// The k-th curve of a plot (a damping level, an overlaid model), in
+    /// colours that read on this theme's background.
+    pub curves: [Rgb; 5],
     /// Notices: something refused or failed.
     pub error: Rgb,
     /// Notices and cautions: done, but not quite as asked, or not resolved.
@@ -90,6 +93,13 @@ impl Palette {
             Rgb(230, 150, 40),
             Rgb(150, 110, 255),
         ],
+        curves: [
+            Rgb(120, 170, 255),
+            Rgb(90, 220, 140),
+            Rgb(230, 150, 40),
+            Rgb(150, 110, 255),
+            Rgb(255, 90, 90),
+        ],
         error: Rgb(215, 60, 60),
         warning: Rgb(230, 150, 40),
         info: Rgb(120, 170, 255),
@@ -126,9 +136,34 @@ impl Palette {
             Rgb(255, 170, 0),
             Rgb(200, 140, 255),
         ],
+        curves: [
+            Rgb(80, 180, 255),
+            Rgb(0, 255, 120),
+            Rgb(255, 170, 0),
+            Rgb(200, 140, 255),
+            Rgb(255, 60, 60),
+        ],
         error: Rgb(255, 50, 50),
         warning: Rgb(255, 170, 0),
         info: Rgb(80, 180, 255),
+    };
+
+    /// A printed figure: black ink on white paper, the everyday theme's
+    /// states, and curves that read on white (its light grey left out).
+    pub const PAPER: Self = Self {
+        background: Rgb::WHITE,
+        text: Rgb::BLACK,
+        axis: Rgb::gray(128),
+        now: Rgb::BLACK,
+        no_data: Rgb::gray(200),
+        curves: [
+            Rgb(120, 170, 255),
+            Rgb(255, 90, 90),
+            Rgb(150, 110, 255),
+            Rgb(230, 150, 40),
+            Rgb(90, 220, 140),
+        ],
+        ..Self::NORMAL
     };
 
     /// The colour that stands for a stability state.
@@ -139,14 +174,6 @@ impl Palette {
             State::Flutter => self.flutter,
             State::Divergence => self.divergence,
         }
-    }
-
-    /// The series colours that read on white paper, in order (the light
-    /// grey meant for a dark background left out).
-    #[must_use]
-    pub const fn series_on_white(&self) -> [Rgb; 5] {
-        let s = self.series;
-        [s[0], s[2], s[5], s[4], s[3]]
     }
 }
 

@@ -3,7 +3,10 @@
 //! [`Plot`] with `egui_plot` and the figures with plotters; neither decides
 //! what is shown.
 
+use std::sync::Arc;
+
 use super::Rgb;
+use super::map::CellGrid;
 use crate::analysis::State;
 
 /// Who looks at the plot: someone at the window, with the column moving
@@ -33,6 +36,13 @@ pub enum Ink {
     LoadLine,
     /// An axis drawn across the plot (Re λ = 0).
     Axis,
+    /// A value drawn for comparison (the undamped load).
+    Reference,
+    /// A stability map's cell of a state, its colour's strength in [0, 1]
+    /// (the faster it grows or decays, the stronger).
+    Cell(State, f64),
+    /// Where there is no analysis.
+    NoData,
     /// A colour of its own (a scale along the load).
     Rgb(Rgb),
 }
@@ -42,6 +52,9 @@ pub enum Ink {
 pub enum Weight {
     Fine,
     Regular,
+    /// The k-th of curves drawn over each other, each narrower than the
+    /// one before, so that curves that coincide all show.
+    Layered(usize),
 }
 
 /// How large a marker is.
@@ -86,6 +99,19 @@ pub enum Mark {
         ink: Ink,
         weight: Weight,
         dashed: bool,
+    },
+    /// A horizontal line across the plot at `y`.
+    Horizontal {
+        y: f64,
+        ink: Ink,
+        weight: Weight,
+        dashed: bool,
+    },
+    /// A grid of cells covering `x` by `y`, the first row at the bottom.
+    Cells {
+        x: (f64, f64),
+        y: (f64, f64),
+        grid: Arc<CellGrid>,
     },
     /// A range of x tinted across the plot in the colour of a state.
     Range { from: f64, to: f64, state: State },

@@ -2,26 +2,25 @@
 //! off the UI thread on every core (coarse first), drawn as coloured cells
 //! with the boundaries as curves; a click sets both parameters.
 
+use std::sync::Arc;
 use std::sync::atomic::AtomicUsize;
 
-use eframe::egui::{self, Color32, ColorImage, TextureHandle, TextureOptions};
-use egui_plot::{Line, Plot, PlotImage, PlotPoint, PlotPoints, Points};
+use eframe::egui;
+use egui_plot::{PlotPoint, PlotResponse};
 
-use super::map_key::{Readout, cell_at, key_ui, readout_ui};
+use super::map_readout::{Readout, cell_at, readout_ui};
 use super::{TabSpec, TabView, save_buttons};
-use crate::analysis::{
-    AnalysisError, MapSpec, RowResult, State, compute_map, default_map_axis,
-    map_boundaries as boundaries,
-};
+use crate::analysis::{AnalysisError, MapSpec, RowResult, compute_map, default_map_axis};
 use crate::app::View;
 use crate::app::action::{Action, Actions};
 use crate::app::jobs::{Cancel, Jobs};
-use crate::app::plot_frame::{Fit, SingleClick, axes, refit_if};
+use crate::app::plot_draw::{legend_ui, plot_ui};
+use crate::app::plot_frame::{Fit, SingleClick};
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::number_text;
 use crate::model::{Axis, Model};
-use crate::plot::map_scale::{largest_rate, rate_strength};
+use crate::plot::map::{CellGrid, StabilityMap};
 
 /// Cells along the load and along the second parameter.
 pub const MAP_LOADS: usize = 256;
@@ -31,8 +30,10 @@ pub const MAP_VALUES: usize = 256;
 struct Shown {
     spec: MapSpec,
     rows: Vec<Option<RowResult>>,
-    texture: Option<TextureHandle>,
-    /// Rows arrived since the texture was made.
+    /// The cells as last made (kept from the map before while its axes
+    /// are the same, until this one's rows arrive).
+    grid: Option<Arc<CellGrid>>,
+    /// Rows arrived since the grid was made.
     stale: bool,
     /// Why the map could not start, if it could not.
     error: Option<MapError>,
@@ -43,7 +44,7 @@ impl Shown {
         Self {
             rows: vec![None; spec.values],
             spec,
-            texture: None,
+            grid: None,
             stale: true,
             error,
         }
@@ -184,7 +185,7 @@ impl MapPanel {
             .shown
             .take()
             .filter(|old| same_axes(&old.spec))
-            .and_then(|old| old.texture);
+            .and_then(|old| old.grid);
         let grids = spec.load_grid().and_then(|_| spec.value_grid());
         let started = grids.map_err(MapError::Grid).and_then(|_| {
             self.jobs
@@ -193,7 +194,7 @@ impl MapPanel {
         });
         let mut shown = Shown::new(spec, started.err());
         if kept.is_some() {
-            shown.texture = kept;
+            shown.grid = kept;
             shown.stale = false;
         }
         self.shown = Some(shown);
@@ -284,35 +285,32 @@ impl MapPanel {
                 format!("grey rows have no analysis: {reason}"),
             );
         }
-        if job.stale || job.texture.is_none() {
-            let image = map_image(&job.rows, job.spec.loads, theme);
-            match &mut job.texture {
-                Some(texture) => texture.set(image, TextureOptions::NEAREST),
-                None => {
-                    job.texture = Some(ui.ctx().load_texture(
-                        "stability map",
-                        image,
-                        TextureOptions::NEAREST,
-                    ));
-                }
-            }
+        if job.stale || job.grid.is_none() {
+            job.grid = Some(Arc::new(CellGrid::new(&job.spec, &job.rows)));
             job.stale = false;
         }
-        let texture = job.texture.as_ref()?;
+        let grid = Arc::clone(job.grid.as_ref()?);
         self.fit
             .bar_ui(ui, for_picture, |ui| save_buttons(ui, None, actions));
-        key_ui(ui, theme);
-        if !for_picture {
-            readout_ui(ui, self.hovered.as_ref(), job.spec.axis.name(), theme);
-        }
         let spec = &job.spec;
+        let map = StabilityMap {
+            spec,
+            rows: &job.rows,
+            grid,
+            now: Some([model.load_p(), spec.axis.get(model)]),
+        };
+        legend_ui(ui, &map.legend(), theme);
+        if !for_picture {
+            readout_ui(ui, self.hovered.as_ref(), spec.axis.name(), theme);
+        }
         let refit = self.fit.refit((
             self.generation,
             spec.axis.name().to_owned(),
             spec.axis_range,
             spec.load_range,
         ));
-        let (click, double, pointer) = map_plot_ui(ui, job, texture, model, refit, theme);
+        let response = plot_ui(ui, &map.plot(), refit, theme);
+        let (click, double, pointer) = clicked(&response, spec);
         let hovered = pointer.and_then(|point| cell_at(spec, &job.rows, point.x, point.y));
         if hovered != self.hovered {
             // Shown above the map from the next frame: ask for it now.
@@ -407,91 +405,15 @@ fn range_field(value: &mut f64, speed: f64) -> egui::DragValue<'_> {
         .custom_formatter(|v, _| number_text(v))
 }
 
-/// The colour of a cell: its state, brighter the faster it grows or decays
-/// (square root of the rate over the map's largest).
-fn cell_color(state: State, growth_per_s: f64, scale_per_s: f64, theme: &Theme) -> Color32 {
-    let base = theme.state_color(state);
-    let strength = rate_strength(growth_per_s, scale_per_s);
-    #[expect(clippy::cast_possible_truncation, reason = "a fraction in [0, 1]")]
-    base.gamma_multiply(0.3 + 0.7 * strength as f32)
-}
-
-/// The map as an image, one pixel per cell, the first row at the bottom;
-/// rows not computed yet take the nearest computed row's colours, rows
-/// without analysis are grey.
-#[must_use]
-pub fn map_image(rows: &[Option<RowResult>], loads: usize, theme: &Theme) -> ColorImage {
-    let scale = largest_rate(rows.iter().flatten().flatten());
-    let height = rows.len();
-    let mut image = ColorImage::filled([loads, height], theme.no_data);
-    let nearest = |j: usize| {
-        (0..height)
-            .flat_map(|d| [j.checked_sub(d), Some(j + d)])
-            .flatten()
-            .find_map(|k| rows.get(k).and_then(Option::as_ref))
-    };
-    for j in 0..height {
-        let Some(Ok(row)) = nearest(j) else {
-            continue;
-        };
-        let y = height - 1 - j;
-        for (i, cell) in row.cells.iter().enumerate().take(loads) {
-            image.pixels[y * loads + i] = cell_color(cell.state, cell.growth_per_s, scale, theme);
-        }
-    }
-    image
-}
-
-/// The map with its boundaries and the current point. Returns a click's
-/// pick this frame, whether the frame completed a double-click, and where
-/// the pointer is on the map.
-fn map_plot_ui(
-    ui: &mut egui::Ui,
-    job: &Shown,
-    texture: &TextureHandle,
-    model: &Model,
-    refit: bool,
-    theme: &Theme,
+/// What the person did on the map's plot (its `response`): a click's pick
+/// this frame, whether the frame completed a double-click, and where the
+/// pointer is on the map.
+fn clicked(
+    response: &PlotResponse<Option<PlotPoint>>,
+    spec: &MapSpec,
 ) -> (Option<Pick>, bool, Option<PlotPoint>) {
-    let spec = &job.spec;
     let (p0, p1) = spec.load_range;
     let (y0, y1) = spec.axis_range;
-    #[expect(clippy::cast_precision_loss, reason = "cell counts")]
-    let (cell_x, cell_y) = (
-        (p1 - p0) / (spec.loads.max(2) - 1) as f64,
-        (y1 - y0) / (spec.values.max(2) - 1) as f64,
-    );
-    let axis_name = spec.axis.name();
-    let plot = Plot::new("stability map")
-        .default_x_bounds(p0 - 0.5 * cell_x, p1 + 0.5 * cell_x)
-        .default_y_bounds(y0 - 0.5 * cell_y, y1 + 0.5 * cell_y);
-    let response = refit_if(axes(plot, "p = P l/k", axis_name), refit).show(ui, |plot_ui| {
-        #[expect(clippy::cast_possible_truncation, reason = "plot sizes")]
-        let size = [(p1 - p0 + cell_x) as f32, (y1 - y0 + cell_y) as f32];
-        plot_ui.image(PlotImage::new(
-            "map",
-            texture.id(),
-            PlotPoint::new(0.5 * (p0 + p1), 0.5 * (y0 + y1)),
-            size,
-        ));
-        for curve in boundaries(&job.rows) {
-            if curve.len() > 1 {
-                plot_ui.line(
-                    Line::new("boundary", PlotPoints::from(curve))
-                        .color(theme.text)
-                        .width(1.5 * theme.stroke_scale),
-                );
-            }
-        }
-        let here = [model.load_p(), spec.axis.get(model)];
-        plot_ui.points(
-            Points::new("now", vec![here])
-                .radius(5.0 * theme.stroke_scale)
-                .color(theme.now)
-                .filled(true),
-        );
-        plot_ui.pointer_coordinate()
-    });
     let (clicked, double) = (
         response.response.clicked(),
         response.response.double_clicked(),

@@ -6,7 +6,7 @@
 mod histories;
 mod locus;
 pub mod map;
-mod map_key;
+mod map_readout;
 mod paradox;
 mod postcritical;
 

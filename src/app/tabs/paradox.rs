@@ -5,21 +5,19 @@
 //! thread.
 
 use eframe::egui;
-use egui_plot::{Corner, HLine, Legend, Line, Plot, PlotPoints, Points, log_grid_spacer};
 
 use super::{TabSpec, TabView, save_buttons};
 use crate::analysis::{Curves, DampingKind, own_point, paradox_curves};
 use crate::app::View;
 use crate::app::action::Actions;
 use crate::app::jobs::Jobs;
-use crate::app::plot_frame::{Fit, axes, refit_if};
+use crate::app::plot_draw::{legend_ui, plot_ui};
+use crate::app::plot_frame::Fit;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::number_text;
 use crate::model::{Axis, Key, Load, Model};
-
-/// The plot's height over its highest point: room for the legend above the data.
-const HEADROOM: f64 = 1.5;
+use crate::plot::paradox::Paradox;
 
 impl Default for ParadoxPanel {
     fn default() -> Self {
@@ -162,65 +160,16 @@ impl ParadoxPanel {
         self.fit
             .bar_ui(ui, for_picture, |ui| save_buttons(ui, None, actions));
         let refit = self.fit.refit((self.generation, *curves_key));
-        let palette = [theme.series[0], theme.series[3], theme.series[4]];
-        let (highest, reference_within) = curves.fitted_top(here.map(|h| h[1]));
-        // The legend in the curves' order (damping from 0.1 down to
-        // vanishing), not sorted by its words (0.01, 0.1, 1e-4).
-        let plot = Plot::new("paradox")
-            .legend(
-                Legend::default()
-                    .position(Corner::LeftTop)
-                    .follow_insertion_order(true),
-            )
-            // The height fitted to the curves, not left to the items'
-            // bounds: a reference line far above them would set it.
-            .default_y_bounds(0.0, HEADROOM * highest.max(1e-9));
-        let plot = axes(
-            plot,
-            format!("{} (log scale)", curves.x_label),
-            "first critical load p",
-        )
-        // Decades on the log axis, not 1-2-5 steps of the exponent.
-        .x_grid_spacer(log_grid_spacer(10))
-        .x_axis_formatter(|mark, _| number_text(10f64.powf(mark.value)));
-        refit_if(plot, refit).show(ui, |plot_ui| {
-            // The undamped (or massless) load dashed in the overlay's grey:
-            // not the white of this model's point.
-            if let (Some((_, p)), Some(label)) =
-                (&curves.reference, curves.reference_label(reference_within))
-            {
-                plot_ui.hline(
-                    HLine::new(label, *p)
-                        .color(theme.overlay)
-                        .style(egui_plot::LineStyle::dashed_loose())
-                        .width(1.5 * theme.stroke_scale),
-                );
+        let paradox = Paradox { curves, here };
+        legend_ui(ui, &paradox.legend(), theme);
+        match paradox.plot() {
+            Some(plot) => {
+                plot_ui(ui, &plot, refit, theme);
             }
-            // Each curve narrower than the one before, drawn over it, so
-            // that curves that coincide (0.01 and 1e-4 as the damping
-            // vanishes) all show.
-            let widths = [3.5, 2.2, 1.2];
-            for (((label, points), color), width) in curves
-                .lines
-                .iter()
-                .zip(palette.iter().cycle())
-                .zip(widths.iter().chain(std::iter::repeat(&1.2)))
-            {
-                plot_ui.line(
-                    Line::new(label.clone(), PlotPoints::from(points.clone()))
-                        .color(*color)
-                        .width(width * theme.stroke_scale),
-                );
+            None => {
+                ui.colored_label(theme.warning, "the curves have no extent along the ratio");
             }
-            if let Some(point) = here {
-                plot_ui.points(
-                    Points::new("this model", vec![point])
-                        .radius(5.0 * theme.stroke_scale)
-                        .color(theme.now)
-                        .filled(true),
-                );
-            }
-        });
+        }
     }
 }
 

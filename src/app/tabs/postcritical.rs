@@ -9,7 +9,6 @@
 use std::sync::atomic::AtomicBool;
 
 use eframe::egui;
-use egui_plot::{Corner, Legend, Line, LineStyle, Plot, PlotPoints, Points, VLine};
 
 use super::{TabSpec, TabView, save_buttons};
 use crate::analysis::{Branch, Onset, State, cycle_branches};
@@ -17,11 +16,13 @@ use crate::app::View;
 use crate::app::action::Actions;
 use crate::app::history::{HISTORY_SECS, History};
 use crate::app::jobs::Jobs;
-use crate::app::plot_frame::{Fit, axes, refit_if};
+use crate::app::plot_draw::{legend_ui, plot_ui};
+use crate::app::plot_frame::Fit;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::load_text;
 use crate::model::Model;
+use crate::plot::bifurcation::{self, Present};
 
 pub const TAB: TabSpec = TabSpec {
     tab: super::Tab::PostCritical,
@@ -139,34 +140,24 @@ impl View for PostCriticalPanel {
             .filter_map(|o| o.branch.as_ref().ok())
             .collect();
         let swing = live_swing(state.history(), &branches, load);
-        // Amplitudes are >= 0: the axis starts at zero and reaches the
-        // largest cycle (or a tenth of a radian where there is none).
-        let highest = branches
-            .iter()
-            .flat_map(|b| {
-                b.cycles
-                    .iter()
-                    .map(crate::analysis::Cycle::largest_amplitude_rad)
-            })
-            .chain(swing)
-            .fold(0.1, f64::max);
-        let plot = Plot::new("post-critical")
-            .legend(Legend::default().position(Corner::LeftTop))
-            .include_x(0.0)
-            .include_y(0.0)
-            .include_y(1.1 * highest);
+        let equilibrium = equilibrium(state, key.1);
         // Fitted to the cycles, not to the straight column's whole range:
         // the roller's branch (p = 0.0238 to 0.0441) was a sliver at the
-        // left of a 0 to 8 axis, half under the legend.
-        let plot = match cycles_reach(&branches, key.1) {
-            Some(end) => plot.default_x_bounds(0.0, end),
-            None => plot.include_x(load),
+        // left of a 0 to 8 axis.
+        let reach = cycles_reach(&branches, key.1).unwrap_or(key.1.max(load));
+        let diagram = bifurcation::Diagram {
+            load_range: (0.0, reach),
+            equilibrium: &equilibrium,
+            branches,
+            sweep: &[],
+            present: Some(Present {
+                load,
+                seen_at: state.ramp().and_then(|ramp| ramp.seen_at_p),
+                swing_rad: swing,
+            }),
         };
-        let plot = axes(plot, "p = P l/k", "largest |phi_i| over a cycle (rad)");
-        let key_load_max = key.1;
-        refit_if(plot, refit).show(ui, |plot_ui| {
-            draw(plot_ui, state, key_load_max, &branches, swing, theme);
-        });
+        legend_ui(ui, &diagram.legend(), theme);
+        plot_ui(ui, &diagram.plot(), refit, theme);
     }
 }
 
@@ -181,77 +172,6 @@ fn cycles_reach(branches: &[&Branch], load_max: f64) -> Option<f64> {
         .reduce(f64::max)?;
     let end = (1.25 * furthest).min(load_max);
     (end > 0.0).then_some(end)
-}
-
-/// The diagram's lines and points: the straight column, the cycles, the
-/// onsets, the load, the ramp's seen onset and the live dot.
-fn draw(
-    plot_ui: &mut egui_plot::PlotUi<'_>,
-    state: &AppState,
-    load_max: f64,
-    branches: &[&Branch],
-    swing: Option<f64>,
-    theme: &Theme,
-) {
-    let load = state.model().load_p();
-    for (from, to, stable) in equilibrium(state, load_max) {
-        let line = Line::new(
-            "straight column",
-            PlotPoints::from(vec![[from, 0.0], [to, 0.0]]),
-        )
-        .color(theme.text)
-        .width(2.0 * theme.stroke_scale);
-        plot_ui.line(if stable {
-            line
-        } else {
-            line.style(LineStyle::dashed_loose())
-        });
-    }
-    for branch in branches {
-        for (points, stable) in branch.runs() {
-            let (name, style) = if stable {
-                ("stable cycle", LineStyle::Solid)
-            } else {
-                ("unstable cycle", LineStyle::dashed_loose())
-            };
-            plot_ui.line(
-                Line::new(name, PlotPoints::from(points))
-                    .color(theme.flutter)
-                    .style(style)
-                    .width(2.0 * theme.stroke_scale),
-            );
-        }
-    }
-    let hopf: Vec<[f64; 2]> = branches.iter().map(|b| [b.hopf().load, 0.0]).collect();
-    if !hopf.is_empty() {
-        plot_ui.points(
-            Points::new("flutter onset (Hopf point)", hopf)
-                .radius(4.0 * theme.stroke_scale)
-                .color(theme.flutter)
-                .filled(false),
-        );
-    }
-    plot_ui.vline(
-        VLine::new("load", load)
-            .color(theme.load_line)
-            .width(1.5 * theme.stroke_scale),
-    );
-    if let Some(seen) = state.ramp().and_then(|ramp| ramp.seen_at_p) {
-        plot_ui.vline(
-            VLine::new("seen during the ramp", seen)
-                .color(theme.measured)
-                .style(LineStyle::dashed_dense())
-                .width(1.5 * theme.stroke_scale),
-        );
-    }
-    if let Some(swing) = swing {
-        plot_ui.points(
-            Points::new("this run's largest angle, last period", vec![[load, swing]])
-                .radius(5.0 * theme.stroke_scale)
-                .color(theme.now)
-                .filled(true),
-        );
-    }
 }
 
 /// The straight column's stretches over `[0, load_max]`, stable or not,

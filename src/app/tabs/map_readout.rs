@@ -1,10 +1,9 @@
-//! What the stability map's colours mean (its key), and the values of the
-//! cell under the pointer (its readout).
+//! The values of the stability map's cell under the pointer (its readout),
+//! and where that cell is.
 
 use eframe::egui;
 
 use crate::analysis::{MapSpec, RowResult, State};
-use crate::app::plot_frame::{Swatch, legend_row};
 use crate::app::theme::Theme;
 use crate::format::{number_text, rate_text};
 
@@ -52,33 +51,6 @@ pub fn cell_at(
         state: cell.state,
         growth_per_s: cell.growth_per_s,
     })
-}
-
-/// The key: a swatch per state, what the brightness says, the boundaries
-/// and the current point.
-pub fn key_ui(ui: &mut egui::Ui, theme: &Theme) {
-    let mut entries: Vec<(Swatch, String)> = [State::Stable, State::Flutter, State::Divergence]
-        .into_iter()
-        .map(|state| {
-            (
-                Swatch::Dot(theme.state_color(state)),
-                state.name().to_owned(),
-            )
-        })
-        .collect();
-    entries.extend([
-        (Swatch::Dot(theme.no_data), "no analysis".to_owned()),
-        (
-            Swatch::Scale(vec![
-                theme.state_color(State::Flutter).gamma_multiply(0.3),
-                theme.state_color(State::Flutter),
-            ]),
-            "brighter: faster growth or decay".to_owned(),
-        ),
-        (Swatch::Line(theme.text), "critical loads".to_owned()),
-        (Swatch::Dot(theme.now), "now".to_owned()),
-    ]);
-    legend_row(ui, &entries);
 }
 
 /// One line in a fixed place: the cell under the pointer, or how to read one.

@@ -1,0 +1,193 @@
+//! The bifurcation diagram described once: the straight column along the
+//! load axis (solid where stable, dashed where not), the largest angle over
+//! each limit cycle against the load (stable solid, unstable dashed, in the
+//! flutter colour), the flutter onsets as rings; on paper a sweep's runs
+//! (dots up, rings down), in the window the current load, the onset a ramp
+//! saw and the running column's swing.
+
+use super::spec::{Entry, Ink, Mark, OffView, Plot, Size, Swatch, Ticks, View, Weight};
+use crate::analysis::{Branch, State};
+
+/// The window's present on the diagram.
+#[derive(Clone, Copy, Debug)]
+pub struct Present {
+    pub load: f64,
+    /// The load at which a ramp saw the column start to swing.
+    pub seen_at: Option<f64>,
+    /// The running column's largest angle over its last period.
+    pub swing_rad: Option<f64>,
+}
+
+/// What the diagram shows.
+#[derive(Clone, Debug)]
+pub struct Diagram<'a> {
+    /// The loads the view spans.
+    pub load_range: (f64, f64),
+    /// The straight column's stretches `(from, to, stable)`.
+    pub equilibrium: &'a [(f64, f64, bool)],
+    pub branches: Vec<&'a Branch>,
+    /// A sweep's steps `(load, largest angle, upward)` (paper).
+    pub sweep: &'a [(f64, f64, bool)],
+    /// `Some` in the window.
+    pub present: Option<Present>,
+}
+
+impl Diagram<'_> {
+    /// The cycles as runs of equal stability.
+    fn runs(&self) -> Vec<(Vec<[f64; 2]>, bool)> {
+        self.branches.iter().flat_map(|b| b.runs()).collect()
+    }
+
+    /// The diagram: amplitudes up to a tenth above the largest
+    /// (cycle, sweep or swing; a tenth of a radian where there is none).
+    #[must_use]
+    pub fn plot(&self) -> Plot {
+        let runs = self.runs();
+        let highest = runs
+            .iter()
+            .flat_map(|(points, _)| points.iter().map(|p| p[1]))
+            .chain(self.sweep.iter().map(|s| s.1))
+            .chain(self.present.and_then(|p| p.swing_rad))
+            .fold(0.1, f64::max);
+        let mut marks: Vec<Mark> = self
+            .equilibrium
+            .iter()
+            .map(|&(from, to, stable)| Mark::Line {
+                points: vec![[from, 0.0], [to, 0.0]],
+                ink: Ink::Main,
+                weight: Weight::Regular,
+                dashed: !stable,
+            })
+            .collect();
+        marks.extend(runs.into_iter().map(|(points, stable)| Mark::Line {
+            points,
+            ink: Ink::State(State::Flutter),
+            weight: Weight::Regular,
+            dashed: !stable,
+        }));
+        if !self.branches.is_empty() {
+            marks.push(Mark::Markers {
+                points: self.branches.iter().map(|b| [b.hopf().load, 0.0]).collect(),
+                ink: Ink::State(State::Flutter),
+                size: Size::Regular,
+                filled: false,
+                off_view: OffView::Hidden,
+            });
+        }
+        for upward in [true, false] {
+            let points: Vec<[f64; 2]> = self
+                .sweep
+                .iter()
+                .filter(|s| s.2 == upward)
+                .map(|s| [s.0, s.1])
+                .collect();
+            if !points.is_empty() {
+                marks.push(Mark::Markers {
+                    points,
+                    ink: Ink::Main,
+                    size: if upward { Size::Small } else { Size::Large },
+                    filled: upward,
+                    off_view: OffView::Hidden,
+                });
+            }
+        }
+        if let Some(present) = self.present {
+            marks.push(Mark::Vertical {
+                x: present.load,
+                name: "load".to_owned(),
+                ink: Ink::LoadLine,
+                weight: Weight::Fine,
+                dashed: false,
+            });
+            if let Some(seen) = present.seen_at {
+                marks.push(Mark::Vertical {
+                    x: seen,
+                    name: "seen during the ramp".to_owned(),
+                    ink: Ink::Measured,
+                    weight: Weight::Fine,
+                    dashed: true,
+                });
+            }
+            if let Some(swing) = present.swing_rad {
+                marks.push(Mark::Markers {
+                    points: vec![[present.load, swing]],
+                    ink: Ink::Now,
+                    size: Size::Regular,
+                    filled: true,
+                    off_view: OffView::Hidden,
+                });
+            }
+        }
+        Plot {
+            id: "post-critical",
+            x_label: "load p = P l/k".to_owned(),
+            y_label: "largest |φ_i| over a cycle (rad)".to_owned(),
+            x_ticks: Ticks::Plain,
+            // A little below zero: the straight column's line along the
+            // load axis clear of the plot's edge.
+            view: View::Ranges {
+                x: self.load_range,
+                y: (-0.03 * 1.1 * highest, 1.1 * highest),
+            },
+            marks,
+            far_left: Vec::new(),
+        }
+    }
+
+    /// The legend: what each line and marker drawn is.
+    #[must_use]
+    pub fn legend(&self) -> Vec<Entry> {
+        let flutter = Ink::State(State::Flutter);
+        let runs = self.runs();
+        let any = |stable: bool| runs.iter().any(|(_, s)| *s == stable);
+        let mut entries = vec![Entry::new(
+            Swatch::Line(Ink::Main),
+            "straight column, stable",
+        )];
+        if self.equilibrium.iter().any(|(_, _, stable)| !stable) {
+            entries.push(Entry::new(
+                Swatch::Dashed(Ink::Main),
+                "straight column, unstable",
+            ));
+        }
+        if any(true) {
+            entries.push(Entry::new(
+                Swatch::Line(flutter.clone()),
+                "stable limit cycle",
+            ));
+        }
+        if any(false) {
+            entries.push(Entry::new(
+                Swatch::Dashed(flutter.clone()),
+                "unstable limit cycle",
+            ));
+        }
+        if !self.branches.is_empty() {
+            entries.push(Entry::new(
+                Swatch::Marker(flutter, false),
+                "flutter onset (Hopf point)",
+            ));
+        }
+        for (upward, words) in [(true, "sweep up (a run)"), (false, "sweep down (a run)")] {
+            if self.sweep.iter().any(|s| s.2 == upward) {
+                entries.push(Entry::new(Swatch::Marker(Ink::Main, upward), words));
+            }
+        }
+        if let Some(present) = self.present {
+            entries.push(Entry::new(Swatch::Line(Ink::LoadLine), "current load"));
+            if present.seen_at.is_some() {
+                entries.push(Entry::new(
+                    Swatch::Dashed(Ink::Measured),
+                    "seen during the ramp",
+                ));
+            }
+            if present.swing_rad.is_some() {
+                entries.push(Entry::new(
+                    Swatch::Marker(Ink::Now, true),
+                    "this run's largest angle, last period",
+                ));
+            }
+        }
+        entries
+    }
+}
