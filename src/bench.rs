@@ -197,7 +197,7 @@ pub fn roller_map_spec() -> MapSpec {
 /// [`roller_map_spec`] on every core.
 fn map_ms() -> Result<f64> {
     let spec = roller_map_spec();
-    let threads = std::thread::available_parallelism().map_or(2, std::num::NonZero::get);
+    let threads = crate::machine_threads();
     let secs = median_secs(3, || {
         let (cancel, done) = (AtomicBool::new(false), AtomicUsize::new(0));
         compute_map(&spec, threads, &cancel, &done, &|_, row| {
@@ -334,7 +334,7 @@ fn run_numpy(script: &str, input: &[u8]) -> Result<Option<String>> {
 }
 
 fn pencil(id: PresetId) -> Result<AffinePencil> {
-    Ok(AffinePencil::new(&id.model())?)
+    Ok(AffinePencil::new(&id.model())?.with_threads(crate::machine_threads()))
 }
 
 /// The median wall time of `repeats` calls of `f`, in s.
@@ -407,7 +407,7 @@ fn chain32() -> Result<Chain> {
         }],
     )?;
     Ok(Chain {
-        pencil: AffinePencil::new(&chain)?,
+        pencil: AffinePencil::new(&chain)?.with_threads(crate::machine_threads()),
         load_max: chain.analysis_max_p(),
     })
 }

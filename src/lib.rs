@@ -21,3 +21,10 @@ pub mod names;
 pub mod plot;
 pub mod recording;
 pub mod sim;
+
+/// The threads the machine runs at once (two when it cannot tell): what
+/// the window and the command line give the analysis's long computations.
+#[must_use]
+pub fn machine_threads() -> usize {
+    std::thread::available_parallelism().map_or(2, std::num::NonZero::get)
+}

@@ -31,7 +31,7 @@ pub struct Analysis {
 impl Analysis {
     pub(super) fn new(model: &ValidModel) -> Result<Self, AnalysisError> {
         let key = model.at_load(0.0)?;
-        let pencil = AffinePencil::new(&key)?;
+        let pencil = AffinePencil::new(&key)?.with_threads(crate::machine_threads());
         let load_max = model.load_bar_max_p();
         let AlongLoad {
             locus,

@@ -122,7 +122,7 @@ pub fn run(args: &Args) -> Result<()> {
         );
     }
     let (lo, hi) = (args.x.min, args.x.max);
-    let pencil = AffinePencil::new(&model)?;
+    let pencil = AffinePencil::new(&model)?.with_threads(zieglerlab::machine_threads());
     let mut rows = equilibrium_rows(&pencil, &loads, model.column.rods)?;
     let working = spinner("limit cycles: shooting and continuation");
     let branches = cycle_branches(&model, lo, hi, &AtomicBool::new(false))?;

@@ -40,7 +40,7 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
             Shown(load_max)
         );
     }
-    let pencil = AffinePencil::new(&model)?;
+    let pencil = AffinePencil::new(&model)?.with_threads(zieglerlab::machine_threads());
     // A wide range on a long chain takes minutes: progress on a terminal.
     let progress = progress_bar(0, "loads bracketed");
     let bracket = bracketing_locus_reporting(&pencil, load_min, load_max, &mut |done, total| {

@@ -34,7 +34,7 @@ pub struct Args {
 
 pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     let (name, model) = args.model.build()?;
-    let pencil = AffinePencil::new(&model)?;
+    let pencil = AffinePencil::new(&model)?.with_threads(zieglerlab::machine_threads());
     // The rows go out as each load is final, so a long chain's locus shows
     // at once and a reader that has gone (`| head`) stops the work; the
     // header with the first load, so that a refused range writes nothing.

@@ -238,7 +238,7 @@ pub fn complete_rows<'a>(rows: &'a [Option<RowResult>], y_text: &str) -> Result<
 pub fn compute_rows(spec: &MapSpec) -> Result<Vec<Option<RowResult>>> {
     let rows: std::sync::Mutex<Vec<Option<RowResult>>> =
         std::sync::Mutex::new(vec![None; spec.values]);
-    let threads = std::thread::available_parallelism().map_or(2, std::num::NonZero::get);
+    let threads = zieglerlab::machine_threads();
     let (cancel, done) = (AtomicBool::new(false), AtomicUsize::new(0));
     let progress = progress_bar(spec.values as u64, "map rows");
     compute_map(spec, threads, &cancel, &done, &|j, row| {

@@ -42,7 +42,7 @@ pub fn analyse(
     load_min: f64,
     load_max: f64,
 ) -> Result<Analysed, AnalysisError> {
-    let pencil = AffinePencil::new(model)?;
+    let pencil = AffinePencil::new(model)?.with_threads(crate::machine_threads());
     // Where rounding decides the states, the changes it makes are noise
     // (thousands of them, for a roller of mass nu = 1e-50): none is drawn
     // as if it were found, and no range is tinted.

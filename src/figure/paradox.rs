@@ -26,8 +26,9 @@ impl ParadoxData {
     /// ratio and band speed), and the model's own first critical load.
     #[must_use]
     pub fn new(model: &Model, kind: DampingKind) -> Self {
-        let curves = paradox_curves(model, kind, &AtomicBool::new(false));
-        let here = own_point(model, kind, None).map(|[x, p]| (x, p));
+        let threads = crate::machine_threads();
+        let curves = paradox_curves(model, kind, threads, &AtomicBool::new(false));
+        let here = own_point(model, kind, None, threads).map(|[x, p]| (x, p));
         Self { curves, here }
     }
 }

@@ -16,7 +16,9 @@ use zieglerlab::model::preset;
 const LOADS: usize = 1000;
 
 fn pencil(name: &str) -> AffinePencil {
-    AffinePencil::new(&preset(name).unwrap().model()).unwrap()
+    AffinePencil::new(&preset(name).unwrap().model())
+        .unwrap()
+        .with_threads(zieglerlab::machine_threads())
 }
 
 fn benches(c: &mut Criterion) {

@@ -16,7 +16,7 @@ use zieglerlab::bench::roller_map_spec;
 
 fn benches(c: &mut Criterion) {
     let spec = roller_map_spec();
-    let threads = std::thread::available_parallelism().map_or(2, std::num::NonZero::get);
+    let threads = zieglerlab::machine_threads();
     let mut group = c.benchmark_group("map");
     group.sample_size(10);
     group.bench_function("roller 256x256 nu against load, all cores", |b| {

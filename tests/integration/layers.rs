@@ -1,6 +1,6 @@
 //! The layers of ARCHITECTURE.md as the source files keep them: the
 //! physics, the analysis and the plots' descriptions name no UI, engine,
-//! drawing crate or clock; the figures name nothing of the window; rapier2d
+//! drawing crate, clock or core count; the figures name nothing of the window; rapier2d
 //! is named in one file.
 
 use std::path::{Path, PathBuf};
@@ -46,8 +46,9 @@ fn naming(layer: &str, forbidden: &[&str]) -> Vec<String> {
 }
 
 /// What the pure layers may not name: the window, the engine, a drawing
-/// crate, the layers above, the clock.
-const IMPURE: [&str; 11] = [
+/// crate, the layers above, the clock, the machine's core count (its
+/// callers give the threads).
+const IMPURE: [&str; 12] = [
     "egui",
     "eframe",
     "rapier2d",
@@ -59,6 +60,7 @@ const IMPURE: [&str; 11] = [
     "Instant",
     "SystemTime",
     "crate::lesson",
+    "available_parallelism",
 ];
 
 #[test]

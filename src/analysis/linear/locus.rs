@@ -336,7 +336,7 @@ fn track(
     let mut earlier: Option<(f64, Vec<C64>)> = None;
     let mut step = grid.get(1).map_or(0.0, |g| g - grid[0]);
     let (mut guess, mut next) = (Vec::new(), Vec::new());
-    let mut prefetched = (current.len() > MAX_DEGREE).then(Prefetched::new);
+    let mut prefetched = (current.len() > MAX_DEGREE).then(|| Prefetched::new(pencil.threads()));
     for (index, &target) in grid.iter().enumerate().skip(1) {
         while p < target {
             let next_p = loop {
@@ -477,10 +477,10 @@ mod tests {
     use super::*;
     use crate::model::PresetId;
 
-    /// A chain's evenly spaced loads, computed ahead on every core, hold
+    /// A chain's evenly spaced loads, computed ahead on three threads, hold
     /// exactly the eigenvalues of the Schur path at their loads (the
-    /// tracking only orders them), and the locus is continuous: each branch
-    /// follows its nearest continuation.
+    /// tracking only orders them), and the locus is the one computed on
+    /// one thread, to the last bit.
     #[test]
     fn a_chain_s_prefetched_loads_are_the_schur_path_s_eigenvalues() {
         let mut model = PresetId::UniformRods.model();
@@ -492,10 +492,13 @@ mod tests {
             }],
         )
         .unwrap();
-        let pencil = AffinePencil::new(&model).unwrap();
+        let pencil = AffinePencil::new(&model).unwrap().with_threads(3);
         assert!(2 * pencil.dof() > MAX_DEGREE, "the Schur path");
         let load_max = model.analysis_max_p();
         let whole = locus(&pencil, 0.0, load_max, 101).unwrap();
+        let alone = locus(&pencil.clone().with_threads(1), 0.0, load_max, 101).unwrap();
+        assert_eq!(whole.loads, alone.loads);
+        assert_eq!(whole.branches, alone.branches);
         let key = |z: &C64| (z.re.to_bits(), z.im.to_bits());
         for i in (0..whole.loads.len()).filter(|&i| whole.on_grid[i]) {
             let mut tracked: Vec<_> = whole.moving_at(i).iter().map(key).collect();

@@ -19,7 +19,16 @@ use crate::model::{Axis, Key, Load, Model};
 /// # Errors
 /// A model the linear analysis refuses.
 pub fn first_instability(model: &Model, load_max: f64) -> Result<Option<f64>, AnalysisError> {
-    let pencil = AffinePencil::new(model)?;
+    first_instability_on(model, load_max, 1)
+}
+
+/// [`first_instability`], a long chain's spectra computed on `threads`.
+fn first_instability_on(
+    model: &Model,
+    load_max: f64,
+    threads: usize,
+) -> Result<Option<f64>, AnalysisError> {
+    let pencil = AffinePencil::new(model)?.with_threads(threads);
     Ok(first_loss_within(&pencil, load_max)?.map(|t| t.load))
 }
 
@@ -44,9 +53,13 @@ pub fn flutter_load_damped(
     level: f64,
     load_max: f64,
 ) -> Result<Option<f64>, AnalysisError> {
+    first_instability(&damped(model, ratio, level)?, load_max)
+}
+
+/// `model` with joint dampers `g1 = ratio level`, `g2 = level`.
+fn damped(model: &Model, ratio: f64, level: f64) -> Result<Model, AnalysisError> {
     let damped = Axis::DampingLevel.apply(model, level)?;
-    let damped = Axis::DamperRatio.apply(&damped, ratio)?;
-    first_instability(&damped, load_max)
+    Ok(Axis::DamperRatio.apply(&damped, ratio)?)
 }
 
 /// [`first_instability`] with equal joint dampers `g1 = g2 = level`
@@ -63,6 +76,12 @@ pub fn flutter_load_external(
     level: f64,
     load_max: f64,
 ) -> Result<Option<f64>, AnalysisError> {
+    first_instability(&externally_damped(model, ratio, level)?, load_max)
+}
+
+/// `model` with equal joint dampers `g1 = g2 = level` and the external
+/// drag `c_ext l^3 = ratio c2`.
+fn externally_damped(model: &Model, ratio: f64, level: f64) -> Result<Model, AnalysisError> {
     if !(ratio.is_finite() && ratio >= 0.0) {
         return Err(crate::model::ModelError::invalid(
             "c_ext l^3/c",
@@ -78,7 +97,7 @@ pub fn flutter_load_external(
     damped.column.drag_ns_per_m2 =
         ratio * damped.column.c2_nms_per_rad / damped.reference_length_m().powi(3);
     damped.validate()?;
-    first_instability(&damped, load_max)
+    Ok(damped)
 }
 
 /// Points per curve.
@@ -140,14 +159,20 @@ pub fn swept_ratio(model: &Model, kind: DampingKind) -> f64 {
 
 /// The model's own point on the explorer's plot: log10 of its swept ratio
 /// and its first critical load (`known`, when the caller has found it
-/// already), or `None` when it has no such ratio or never loses stability.
+/// already; else found with a long chain's spectra on `threads`), or
+/// `None` when it has no such ratio or never loses stability.
 #[must_use]
-pub fn own_point(model: &Model, kind: DampingKind, known: Option<f64>) -> Option<[f64; 2]> {
+pub fn own_point(
+    model: &Model,
+    kind: DampingKind,
+    known: Option<f64>,
+    threads: usize,
+) -> Option<[f64; 2]> {
     let x = swept_ratio(model, kind);
     (x > 0.0 && x.is_finite())
         .then(|| {
             known.or_else(|| {
-                first_instability(model, model.analysis_max_p())
+                first_instability_on(model, model.analysis_max_p(), threads)
                     .ok()
                     .flatten()
             })
@@ -271,15 +296,17 @@ fn empty_reason(failures: impl IntoIterator<Item = Option<String>>, load_max: f6
 }
 
 /// The explorer's curves for `model` (its load and the swept parameters are
-/// set by the curves themselves). Once `cancel` is set the curves end early:
-/// a cancelled result is for no one.
+/// set by the curves themselves), a long chain's spectra computed on
+/// `threads`. Once `cancel` is set the curves end early: a cancelled result
+/// is for no one.
 #[must_use]
-pub fn curves(model: &Model, kind: DampingKind, cancel: &AtomicBool) -> Curves {
+pub fn curves(model: &Model, kind: DampingKind, threads: usize, cancel: &AtomicBool) -> Curves {
     // The first loss of stability is sought over the column's own range, as
     // `critical` does by default (a chain of 16 rods searched over two rods' range, 64
     // times its own, took ten minutes per picture).
     let load_max = model.analysis_max_p();
-    let first = |m: &Model| first_instability(m, load_max).ok().flatten();
+    let first_on = |m: &Model| first_instability_on(m, load_max, threads);
+    let first = |m: &Model| first_on(m).ok().flatten();
     match model.load {
         Load::Follower { eta: 0.0, .. } => Curves {
             note: Some(
@@ -297,9 +324,9 @@ pub fn curves(model: &Model, kind: DampingKind, cancel: &AtomicBool) -> Curves {
                 .iter()
                 .map(|&level| {
                     let (points, failure) = curve(RATIO_DECADES, cancel, |ratio| match kind {
-                        DampingKind::Joints => flutter_load_damped(model, ratio, level, load_max),
+                        DampingKind::Joints => first_on(&damped(model, ratio, level)?),
                         DampingKind::External => {
-                            flutter_load_external(model, ratio, level, load_max)
+                            first_on(&externally_damped(model, ratio, level)?)
                         }
                     });
                     (
@@ -332,7 +359,7 @@ pub fn curves(model: &Model, kind: DampingKind, cancel: &AtomicBool) -> Curves {
                         let m = Axis::Key(Key::Nu)
                             .apply(&m, nu)
                             .map_err(|e| e.to_string())?;
-                        first_instability(&m, load_max).map_err(|e| e.to_string())
+                        first_on(&m).map_err(|e| e.to_string())
                     });
                     ((format!("V = {} m/s", number_text(speed)), points), failure)
                 })
@@ -392,6 +419,7 @@ mod tests {
         let curves = curves(
             &PresetId::Roller.model(),
             DampingKind::Joints,
+            1,
             &AtomicBool::new(false),
         );
         assert_eq!(curves.lines.len(), 1, "{:?}", curves.lines);
@@ -412,6 +440,7 @@ mod tests {
         let curves = curves(
             &roller_with(Key::V, 0.0),
             DampingKind::Joints,
+            1,
             &AtomicBool::new(false),
         );
         let note = curves.note.unwrap();
@@ -434,6 +463,7 @@ mod tests {
         let curves = curves(
             &PresetId::Ziegler1952.model(),
             DampingKind::External,
+            1,
             &AtomicBool::new(false),
         );
         let (_, vanishing) = curves.lines.last().unwrap();
@@ -465,6 +495,7 @@ mod tests {
         let curves = curves(
             &PresetId::Roller.model(),
             DampingKind::Joints,
+            1,
             &AtomicBool::new(false),
         );
         let highest = curves

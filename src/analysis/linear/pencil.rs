@@ -246,6 +246,9 @@ pub struct AffinePencil {
     /// without a Cholesky solve per load.
     squares: Option<[DMatrix<f64>; 2]>,
     natural_load_max: f64,
+    /// Threads a long chain's locus may compute its spectra on (the
+    /// caller's choice: [`Self::with_threads`]; one by default).
+    threads: usize,
 }
 
 impl AffinePencil {
@@ -288,6 +291,7 @@ impl AffinePencil {
             cyclic: always_cyclic,
             characteristic,
             natural_load_max: model.analysis_max_p(),
+            threads: 1,
         })
     }
 
@@ -400,6 +404,20 @@ impl AffinePencil {
         } else {
             f64::INFINITY
         }
+    }
+
+    /// This pencil, its loci computing a long chain's spectra on `threads`
+    /// threads (at least one).
+    #[must_use]
+    pub fn with_threads(mut self, threads: usize) -> Self {
+        self.threads = threads.max(1);
+        self
+    }
+
+    /// The threads a locus of this pencil computes its spectra on.
+    #[must_use]
+    pub fn threads(&self) -> usize {
+        self.threads
     }
 
     /// The upper end of the column's own load range (see `Model::analysis_max_p`).

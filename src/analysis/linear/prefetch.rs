@@ -1,10 +1,10 @@
 //! A long chain's spectra at the locus's evenly spaced loads, computed a
-//! block at a time on every core ahead of the tracking.
+//! block at a time on the threads its pencil allows, ahead of the tracking.
 
 use crate::analysis::pencil::AffinePencil;
 use crate::analysis::{AnalysisError, C64};
 
-/// Evenly spaced loads whose spectra are computed together, on every core,
+/// Evenly spaced loads whose spectra are computed together, on the pencil's threads,
 /// ahead of the tracking (per thread): a long chain's eigenvalues come from
 /// the QR iteration, about 50 µs each at 32 rods, and long blocks keep the
 /// threads' start and the wait for the slower one small beside them.
@@ -12,7 +12,7 @@ const PREFETCH_PER_THREAD: usize = 128;
 
 /// The spectra of the evenly spaced loads of a locus whose eigenvalues all
 /// come from the Schur path (more than [`MAX_DEGREE`](crate::analysis::roots::MAX_DEGREE) of them: no
-/// characteristic polynomial), computed a block at a time on every core.
+/// characteristic polynomial), computed a block at a time on the pencil's threads.
 /// The tracking assigns them exactly as [`eigenvalues_near`](super::matching::eigenvalues_near) would, so the
 /// locus is the same to the last bit; an error is returned only when its
 /// load is reached.
@@ -24,9 +24,10 @@ pub(in crate::analysis) struct Prefetched {
 }
 
 impl Prefetched {
-    pub(in crate::analysis) fn new() -> Self {
+    /// Spectra computed on `threads` threads.
+    pub(in crate::analysis) fn new(threads: usize) -> Self {
         Self {
-            threads: std::thread::available_parallelism().map_or(1, std::num::NonZero::get),
+            threads,
             from: 0,
             spectra: Vec::new(),
         }

@@ -45,7 +45,7 @@ fn build(id: PresetId, a: f64) -> Result<Overlay, OverlayError> {
             value: a,
         }],
     )?;
-    let pencil = AffinePencil::new(&valid)?;
+    let pencil = AffinePencil::new(&valid)?.with_threads(crate::machine_threads());
     let locus = locus(&pencil, 0.0, model.load_bar_max_p(), LOCUS_SAMPLES)?;
     let AlongLoad {
         locus, transitions, ..

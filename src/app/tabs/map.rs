@@ -77,9 +77,7 @@ type RowMessage = Result<(usize, RowResult), AnalysisError>;
 /// Computes the rows of `spec`, each sent as it is done. One core is left
 /// to the window, so the frame rate holds while the map is computed.
 fn compute_rows(spec: &MapSpec, cancel: &Cancel, send: &(dyn Fn(RowMessage) + Sync)) {
-    let threads = std::thread::available_parallelism()
-        .map_or(1, |n| n.get().saturating_sub(1))
-        .max(1);
+    let threads = crate::machine_threads().saturating_sub(1).max(1);
     let done = AtomicUsize::new(0);
     // A cancelled map stops between rows: what it did not compute is for no one.
     let on_row = |j, row| send(Ok((j, row)));

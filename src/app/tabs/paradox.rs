@@ -85,7 +85,12 @@ impl ParadoxPanel {
         }
         let kind = self.kind;
         let started = self.jobs.request(key, move |(model, _), cancel, send| {
-            send(paradox_curves(model, kind, cancel.flag()));
+            send(paradox_curves(
+                model,
+                kind,
+                crate::machine_threads(),
+                cancel.flag(),
+            ));
         });
         if let Err(error) = started {
             self.curves = Some((
@@ -122,7 +127,7 @@ impl ParadoxPanel {
         {
             return *point;
         }
-        let point = own_point(&key, self.kind, known);
+        let point = own_point(&key, self.kind, known, crate::machine_threads());
         self.current = Some(((key, self.kind), point));
         point
     }
@@ -289,6 +294,7 @@ mod tests {
         let curves = paradox_curves(
             &model,
             DampingKind::Joints,
+            1,
             &std::sync::atomic::AtomicBool::new(false),
         );
         roller_caption(&curves)
