@@ -12,6 +12,7 @@ mod grab;
 mod history;
 mod jobs;
 mod layout;
+mod legend;
 mod load_bar;
 mod notice;
 mod pace;

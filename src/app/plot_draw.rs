@@ -9,7 +9,8 @@ use egui_plot::{
     Span, Text, VLine, log_grid_spacer,
 };
 
-use super::plot_frame::{Swatch as RowSwatch, axes, curve, legend_row, refit_if, view_settled};
+use super::legend::{Swatch as RowSwatch, legend_row};
+use super::plot_frame::{axes, curve, refit_if, view_settled};
 use super::theme::{Theme, color};
 use crate::analysis::{C64, State};
 use crate::format::number_text;

@@ -2,7 +2,7 @@
 //! at any size, and the view control of a tab (a "fit" button, how to zoom
 //! and pan, and a refit when what the plots show changes).
 
-use eframe::egui::{self, Color32, Sense, Stroke, WidgetText, vec2};
+use eframe::egui::{self, WidgetText};
 use egui_plot::{
     AxisHints, GridInput, GridMark, Line, Plot, PlotBounds, PlotPoint, PlotPoints, PlotUi,
 };
@@ -287,90 +287,6 @@ pub fn axes(
         ])
 }
 
-/// The space between two entries of a legend row, in points.
-const ENTRY_GAP: f32 = 8.0;
-
-/// How a legend entry is drawn.
-pub enum Swatch {
-    /// A filled dot (a marker).
-    Dot(Color32),
-    /// A ring (an open marker).
-    Ring(Color32),
-    /// A short line (a curve).
-    Line(Color32),
-    /// A short dashed line.
-    Dashed(Color32),
-    /// A tinted box (a range).
-    Fill(Color32),
-    /// A colour scale: the colours from one end to the other.
-    Scale(Vec<Color32>),
-}
-
-/// A legend as a row of text above the plots, so that it never covers data.
-pub fn legend_row(ui: &mut egui::Ui, entries: &[(Swatch, String)]) {
-    ui.horizontal_wrapped(|ui| {
-        for (k, (swatch, text)) in entries.iter().enumerate() {
-            let width = if matches!(swatch, Swatch::Scale(_)) {
-                48.0
-            } else {
-                16.0
-            };
-            // The gap between entries before each swatch, so that it wraps
-            // with it: after the last label it ran past the panel's edge,
-            // and widened every plot under the row by as much.
-            let gap = if k == 0 { 0.0 } else { ENTRY_GAP };
-            let (cell, _) = ui.allocate_exact_size(vec2(gap + width, 12.0), Sense::hover());
-            let rect = egui::Rect::from_min_max(cell.min + vec2(gap, 0.0), cell.max);
-            let painter = ui.painter();
-            let (center, radius) = (rect.center(), 4.5);
-            match swatch {
-                Swatch::Dot(color) => {
-                    painter.circle_filled(center, radius, *color);
-                }
-                Swatch::Ring(color) => {
-                    painter.circle_stroke(center, radius, Stroke::new(1.5, *color));
-                }
-                Swatch::Line(color) => {
-                    painter.line_segment(
-                        [rect.left_center(), rect.right_center()],
-                        Stroke::new(2.0, *color),
-                    );
-                }
-                Swatch::Dashed(color) => {
-                    let dash = rect.width() / 5.0;
-                    for k in [0.0, 2.0, 4.0] {
-                        let x = rect.left() + k * dash;
-                        painter.line_segment(
-                            [
-                                egui::pos2(x, rect.center().y),
-                                egui::pos2(x + dash, rect.center().y),
-                            ],
-                            Stroke::new(2.0, *color),
-                        );
-                    }
-                }
-                Swatch::Fill(color) => {
-                    painter.rect_filled(rect.shrink2(vec2(0.0, 3.0)), 0.0, *color);
-                }
-                Swatch::Scale(colors) => {
-                    #[expect(clippy::cast_precision_loss, reason = "a few colours")]
-                    let step = rect.width() / colors.len().max(1) as f32;
-                    for (i, color) in colors.iter().enumerate() {
-                        #[expect(clippy::cast_precision_loss, reason = "a few colours")]
-                        let x = rect.left() + step * i as f32;
-                        let cell = egui::Rect::from_min_size(
-                            egui::pos2(x, rect.top() + 3.0),
-                            vec2(step + 0.5, rect.height() - 6.0),
-                        );
-                        painter.rect_filled(cell, 0.0, *color);
-                    }
-                }
-            }
-            ui.label(text);
-        }
-    });
-}
-
 /// When a tab's plots go back to their default view: when the button is
 /// pressed, and when what they show (`T`: the parameters, the axes) changes.
 pub struct Fit<T> {
@@ -469,6 +385,7 @@ impl<T> SingleClick<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use eframe::egui::vec2;
 
     #[test]
     fn a_click_acts_after_the_double_click_window_and_a_double_click_never() {

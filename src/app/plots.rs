@@ -5,7 +5,8 @@ use eframe::egui::{self, vec2};
 use egui_plot::{Line, Plot, PlotPoints};
 
 use super::history::History;
-use super::plot_frame::{Swatch, axes, legend_row, refit_if};
+use super::legend::{Swatch, legend_row};
+use super::plot_frame::{axes, refit_if};
 use super::theme::Theme;
 
 /// The run's recent past: the angles and delta against time, the energies,

@@ -1,7 +1,7 @@
 //! The layers of ARCHITECTURE.md as the source files keep them: the
 //! physics, the analysis and the plots' descriptions name no UI, engine,
-//! drawing crate, clock or core count; the figures name nothing of the window; rapier2d
-//! is named in one file.
+//! drawing crate, clock or core count; the figures name nothing of the
+//! window; rapier2d is named in one file; no file is over 600 lines.
 
 use std::path::{Path, PathBuf};
 
@@ -86,4 +86,21 @@ fn rapier2d_is_named_in_one_file() {
         .map(|(path, _)| path)
         .collect();
     assert_eq!(naming, [root.join("sim").join("rapier.rs")]);
+}
+
+/// ARCHITECTURE.md's rule: no source file over 600 lines.
+#[test]
+fn no_source_file_is_over_600_lines() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let long: Vec<String> = sources(&root)
+        .into_iter()
+        .filter_map(|(path, _)| {
+            let lines = std::fs::read_to_string(&path)
+                .expect("a source")
+                .lines()
+                .count();
+            (lines > 600).then(|| format!("{}: {lines} lines", path.display()))
+        })
+        .collect();
+    assert!(long.is_empty(), "{long:#?}");
 }

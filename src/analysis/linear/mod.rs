@@ -3,6 +3,7 @@
 //! critical loads, the stability map and the paradox curves.
 
 pub(super) mod along;
+mod characteristic;
 pub(super) mod critical;
 pub(super) mod crossing;
 pub(super) mod hqr;
