@@ -10,6 +10,11 @@ use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
+mod descriptor;
+
+use descriptor::open_descriptor;
+pub use descriptor::{descriptor_refusal, named_descriptor};
+
 /// The temporary files being written now, for [`remove_unfinished`].
 static UNFINISHED: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
 
@@ -161,16 +166,86 @@ pub fn write_atomically(
             .map_err(|e| error(&e))?;
         return write_stream(file, write).map_err(|e| error(&e));
     }
+    // A file the user may not write is not replaced (the shell's `>`
+    // refuses it too), though its folder would take the rename.
+    if let Some(why) = protected(out) {
+        return Err(error(&why));
+    }
     // A temporary file is private (0600); the result gets the permissions
     // of the file it replaces, or those of a new file (0644 on Unix).
     let permissions = std::fs::metadata(out)
         .map(|m| m.permissions())
         .ok()
         .or_else(new_file_permissions);
-    let (file, _listed) =
-        written_temporary(folder_of(out), permissions, write).map_err(|e| error(&e))?;
-    file.persist(out).map_err(|e| error(&e.error))?;
+    match tempfile::NamedTempFile::new_in(folder_of(out)) {
+        Ok(file) => {
+            let (file, _listed) =
+                written_temporary(file, permissions, write).map_err(|e| error(&e))?;
+            file.persist(out).map_err(|e| error(&e.error))?;
+        }
+        // A folder that takes no new file, around a file that may be
+        // written: written in place, as the shell's `>` would.
+        Err(_) if std::fs::metadata(out).is_ok_and(|m| m.is_file()) => {
+            write_in_place(out, write).map_err(|e| error(&e))?;
+        }
+        Err(e) => return Err(error(&e)),
+    }
     Ok(())
+}
+
+/// Why the existing file `out` may not be written, if it may not: opened
+/// for writing (neither truncated nor changed) as the shell's `>` would
+/// open it, refused by its mode or owner.
+#[must_use]
+pub fn protected(out: &Path) -> Option<String> {
+    if !std::fs::metadata(out).is_ok_and(|m| m.is_file()) {
+        return None;
+    }
+    match std::fs::File::options().write(true).open(out) {
+        Err(e) if e.kind() == std::io::ErrorKind::PermissionDenied => Some(format!(
+            "the file exists and may not be written ({e}); it is left as it was"
+        )),
+        _ => None,
+    }
+}
+
+/// `write` into the existing file `out` where it stands (its folder takes
+/// no temporary file), never half-written by a failed write: the whole
+/// output is made in memory first, the room for it is reserved on the disk
+/// (a full disk refuses here, the file untouched), then it is written over
+/// the old bytes and the file cut to its length. Only a kill within that
+/// last write can cut it short.
+fn write_in_place(
+    out: &Path,
+    write: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> std::io::Result<()>,
+) -> std::io::Result<()> {
+    use std::io::Read as _;
+    let mut memory = tempfile::tempfile()?;
+    {
+        let mut buffered = std::io::BufWriter::new(&mut memory);
+        write(&mut buffered)?;
+        buffered.flush()?;
+    }
+    let mut bytes = Vec::new();
+    std::io::Seek::rewind(&mut memory)?;
+    memory.read_to_end(&mut bytes)?;
+    let mut file = std::fs::File::options().write(true).open(out)?;
+    let length = u64::try_from(bytes.len()).unwrap_or(u64::MAX);
+    if length > 0 {
+        rustix::fs::fallocate(&file, rustix::fs::FallocateFlags::KEEP_SIZE, 0, length).or_else(
+            |e| {
+                // A file system without fallocate: nothing reserved.
+                if e == rustix::io::Errno::OPNOTSUPP {
+                    Ok(())
+                } else {
+                    Err(std::io::Error::from(e))
+                }
+            },
+        )?;
+    }
+    file.write_all(&bytes)?;
+    file.set_len(length)?;
+    file.sync_all()
 }
 
 /// `write` straight into `file` (a device, a pipe or the shell's stream:
@@ -182,81 +257,6 @@ fn write_stream(
     let mut buffered = std::io::BufWriter::new(&mut file);
     write(&mut buffered)?;
     buffered.flush()
-}
-
-/// Most links followed from a path to the stream it names.
-const MOST_LINKS: usize = 40;
-
-/// The descriptor of this process that `path` names, if it names one:
-/// `/dev/stdout`, `/dev/stderr`, `/dev/fd/N`, `/proc/self/fd/N` or
-/// `/proc/<this process>/fd/N`, as typed or through symbolic links to them.
-/// Such a path is a stream the shell opened, not a file to replace.
-#[must_use]
-pub fn named_descriptor(path: &Path) -> Option<u32> {
-    let own = format!("/proc/{}/fd/", std::process::id());
-    let in_name = |path: &Path| -> Option<u32> {
-        let text = path.to_str()?;
-        match text {
-            "/dev/stdin" => Some(0),
-            "/dev/stdout" => Some(1),
-            "/dev/stderr" => Some(2),
-            _ => ["/dev/fd/", "/proc/self/fd/", own.as_str()]
-                .iter()
-                .find_map(|prefix| text.strip_prefix(prefix)?.parse().ok()),
-        }
-    };
-    let mut current = path.to_owned();
-    for _ in 0..MOST_LINKS {
-        if let Some(descriptor) = in_name(&current) {
-            return Some(descriptor);
-        }
-        // Only this hop's own link: the links of the folders above it
-        // (`/dev/fd` itself) would take the path past its name.
-        let next = std::fs::read_link(&current).ok()?;
-        current = if next.is_absolute() {
-            next
-        } else {
-            folder_of(&current).join(next)
-        };
-    }
-    None
-}
-
-/// Descriptor `descriptor` of this process opened for writing where it
-/// stands: standard output and error shared (their offset and append mode
-/// are the shell's); another one reopened through `/proc/self/fd` with its
-/// append mode, or at its offset, as `/proc/self/fdinfo` gives them.
-fn open_descriptor(descriptor: u32) -> std::io::Result<std::fs::File> {
-    use std::io::Seek as _;
-    use std::os::fd::AsFd as _;
-    /// `O_APPEND` in the octal flags of `/proc/self/fdinfo`.
-    const APPEND_FLAG: u32 = 0o2000;
-    match descriptor {
-        1 => return Ok(std::io::stdout().as_fd().try_clone_to_owned()?.into()),
-        2 => return Ok(std::io::stderr().as_fd().try_clone_to_owned()?.into()),
-        _ => {}
-    }
-    let info = std::fs::read_to_string(format!("/proc/self/fdinfo/{descriptor}"))?;
-    let field = |name: &str| {
-        info.lines()
-            .find_map(|line| line.strip_prefix(name))
-            .map(str::trim)
-    };
-    let append = field("flags:")
-        .and_then(|flags| u32::from_str_radix(flags, 8).ok())
-        .is_some_and(|flags| flags & APPEND_FLAG != 0);
-    let path = format!("/proc/self/fd/{descriptor}");
-    let mut file = std::fs::File::options()
-        .write(true)
-        .append(append)
-        .open(&path)?;
-    if !append
-        && file.metadata()?.is_file()
-        && let Some(offset) = field("pos:").and_then(|pos| pos.parse::<u64>().ok())
-    {
-        file.seek(std::io::SeekFrom::Start(offset))?;
-    }
-    Ok(file)
 }
 
 /// `image` as a PNG file at `out`, written as [`write_atomically`] does.
@@ -296,11 +296,10 @@ pub fn link_target(path: &Path) -> std::io::Result<Option<std::path::PathBuf>> {
 /// A temporary file in `folder` holding what `write` wrote, flushed, given
 /// `permissions` and synced: ready to be renamed into place.
 fn written_temporary(
-    folder: &Path,
+    mut file: tempfile::NamedTempFile,
     permissions: Option<std::fs::Permissions>,
     write: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> std::io::Result<()>,
 ) -> std::io::Result<(tempfile::NamedTempFile, Unfinished)> {
-    let mut file = tempfile::NamedTempFile::new_in(folder)?;
     let listed = Unfinished::new(file.path());
     {
         let mut buffered = std::io::BufWriter::new(file.as_file_mut());
@@ -343,8 +342,9 @@ pub fn write_new(
         path: name(1).display().to_string(),
         why: e.to_string(),
     };
-    let (mut file, _listed) =
-        written_temporary(folder, new_file_permissions(), write).map_err(|e| error(&e))?;
+    let (mut file, _listed) = tempfile::NamedTempFile::new_in(folder)
+        .and_then(|file| written_temporary(file, new_file_permissions(), write))
+        .map_err(|e| error(&e))?;
     for k in 1..=MAX_NAME_TRIES {
         let path = name(k);
         match file.persist_noclobber(&path) {

@@ -14,6 +14,7 @@ mod map;
 mod output;
 mod presets;
 mod record;
+mod signals;
 mod simulate;
 mod snapshot;
 mod tiles;
@@ -242,19 +243,16 @@ enum Command {
     Manual(desktop::ManualArgs),
 }
 
-/// Status of a run stopped by Ctrl-C or SIGTERM (128 + SIGINT, as shells
-/// report it).
+/// Status of a run stopped by Ctrl-C, SIGTERM, SIGHUP or SIGQUIT (128 +
+/// SIGINT, as shells report Ctrl-C).
 const STOPPED: i32 = 130;
 
 /// Runs the command line; status 0 on success, 2 with one line on any error.
 pub fn run() -> ExitCode {
-    // Ctrl-C, SIGTERM or a closed terminal stops at once, and a file being
-    // written is not left half-made beside its output. Without the handler
-    // (none could be set) the system's default still stops the process.
-    let _ = ctrlc::set_handler(|| {
-        zieglerlab::files::remove_unfinished();
-        std::process::exit(STOPPED);
-    });
+    // Ctrl-C, SIGTERM, SIGQUIT or a closed terminal stops at once, and a
+    // file being written is not left half-made beside its output; a signal
+    // ignored at start (`nohup`, a background job) stays ignored.
+    signals::stop_on_signals(STOPPED);
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(error) => {

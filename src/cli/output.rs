@@ -5,9 +5,12 @@ use std::path::Path;
 
 use anyhow::Result;
 
-/// Refuses an output path before any work is done: its folder must exist
-/// and take a new file (the output is written there first and renamed into
-/// place), and a picture must be named `*.png` (the only format written).
+/// Refuses an output path before any work is done, for every command: its
+/// folder must exist and take a new file (the output is written there
+/// first and renamed into place) unless the file exists and may be written
+/// in place; an existing file must be writable (as the shell's `>` asks);
+/// a stream of this process must be open for writing; a path ending in
+/// `/` names a folder; a picture must be named `*.png`.
 pub fn check_output(out: &Path, png: bool) -> Result<()> {
     let shown = out.display();
     if png
@@ -19,8 +22,15 @@ pub fn check_output(out: &Path, png: bool) -> Result<()> {
     }
     // A stream the shell opened (/dev/stdout, /dev/fd/3) is written where
     // it stands: there is no folder to check.
-    if zieglerlab::files::named_descriptor(out).is_some() {
+    if let Some(descriptor) = zieglerlab::files::named_descriptor(out) {
+        if let Some(why) = zieglerlab::files::descriptor_refusal(descriptor) {
+            anyhow::bail!("out = {shown}: {why}");
+        }
         return Ok(());
+    }
+    // `clip.gif/` names a folder: refused now, not after the work.
+    if out.as_os_str().to_string_lossy().ends_with('/') && !out.is_dir() {
+        anyhow::bail!("out = {shown}: ends in `/`, so it names a folder; name a file");
     }
     // A link is written through: the file it names is what is checked.
     let target = zieglerlab::files::link_target(out)
@@ -36,10 +46,14 @@ pub fn check_output(out: &Path, png: bool) -> Result<()> {
     if out.is_dir() {
         anyhow::bail!("out = {shown}: is a folder, not a file");
     }
-    // A device or a pipe (/dev/stdout) is written directly; anything else
+    if let Some(why) = zieglerlab::files::protected(out) {
+        anyhow::bail!("out = {shown}: {why}");
+    }
+    // A device or a pipe (/dev/stdout) is written directly, and an existing
+    // file where it stands if its folder takes no new one; anything else
     // goes through a temporary file in the folder: try one now, so that a
     // folder that takes no files (read-only, /proc) is found before the work.
-    let direct = std::fs::metadata(out).is_ok_and(|m| !m.is_file());
+    let direct = std::fs::metadata(out).is_ok();
     if !direct && let Err(why) = tempfile::NamedTempFile::new_in(folder) {
         // The kind alone: the temporary file's own name means nothing here.
         anyhow::bail!(

@@ -20,6 +20,7 @@ mod cli_extremes;
 mod cli_maps;
 mod files_and_text;
 mod lesson_files;
+mod outputs;
 
 use cli_bounds::CLI_BOUNDS;
 use cli_cases::CLI;
