@@ -189,6 +189,80 @@ const fn row(
     }
 }
 
+/// What has the keyboard's focus, as far as the shortcuts care.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Focus {
+    /// Nothing: every key is a shortcut.
+    Nothing,
+    /// A text field: it takes every key while it is edited.
+    Text,
+    /// A slider (the load bar, a parameter's, the prediction's): it takes
+    /// left and right for its own steps.
+    Slider,
+    /// A button, checkbox, radio button or tab: space and Enter press it,
+    /// as on every desktop.
+    Control,
+}
+
+impl Focus {
+    /// The focus in `ctx` now.
+    #[must_use]
+    pub fn of(ctx: &egui::Context) -> Self {
+        let Some(id) = ctx.memory(egui::Memory::focused) else {
+            return Self::Nothing;
+        };
+        if ctx.text_edit_focused() {
+            Self::Text
+        } else if ctx
+            .read_response(id)
+            .is_some_and(|response| response.sense.senses_drag())
+        {
+            Self::Slider
+        } else {
+            Self::Control
+        }
+    }
+
+    /// Whether the focused control uses `key` itself (so it is no shortcut).
+    #[must_use]
+    pub fn takes(self, key: egui::Key) -> bool {
+        use egui::Key;
+        match self {
+            Self::Nothing => false,
+            Self::Text => true,
+            Self::Slider => matches!(key, Key::ArrowLeft | Key::ArrowRight),
+            Self::Control => matches!(key, Key::Space | Key::Enter),
+        }
+    }
+}
+
+/// The keys of the focus, after the commands' in the keys help: only a
+/// text field being edited holds the shortcuts back.
+pub const FOCUS_KEYS: [(&str, &str); 7] = [
+    ("tab", "the next control (shift+tab: the previous one)"),
+    (
+        "space, enter",
+        "with a button, checkbox, choice or tab focused: press it (space plays only with nothing focused)",
+    ),
+    (
+        "left, right",
+        "with a slider focused (the load bar, the prediction): move it by a hundredth; shift: a tenth",
+    ),
+    (
+        "home, end",
+        "with the load bar or the prediction focused: its ends",
+    ),
+    (
+        "left, right",
+        "with the column focused (tab to it): turn it by 0.02 rad either way, shift: 0.1 rad (the keyboard's drag)",
+    ),
+    ("esc", "let go of the focus (a text field: undo the typing)"),
+    (
+        "the others",
+        "page down, page up, K, R, P and up/down work whatever is focused, but a text field being edited",
+    ),
+];
+
 /// Every command, one row each, in the keys help's order.
 pub const COMMANDS: [CommandSpec; 11] = {
     use egui::Key;
@@ -349,19 +423,36 @@ impl Command {
         }
     }
 
-    /// The commands whose keys were pressed this frame, unless a text field
-    /// has the keyboard.
+    /// The commands whose keys were pressed this frame. Only a text field
+    /// being edited holds every key back; a focused control keeps the keys
+    /// it uses itself (see [`Focus::takes`]) and lets the others through, so
+    /// Page Down from a presenter's remote always moves the lesson on.
     #[must_use]
     pub fn pressed(ctx: &egui::Context) -> Vec<Self> {
-        if ctx.egui_wants_keyboard_input() {
+        let focus = Focus::of(ctx);
+        if focus == Focus::Text {
             return Vec::new();
         }
-        ctx.input(|input| {
+        let commands: Vec<Self> = ctx.input(|input| {
             Self::ALL
                 .into_iter()
-                .filter(|command| command.keys().iter().any(|&key| input.key_pressed(key)))
+                .filter(|command| {
+                    command
+                        .keys()
+                        .iter()
+                        .any(|&key| input.key_pressed(key) && !focus.takes(key))
+                })
                 .collect()
-        })
+        });
+        // An arrow that moves the load does not also move the focus to the
+        // next control (egui's arrow navigation); Tab still does.
+        let arrows_taken = commands
+            .iter()
+            .any(|c| matches!(c, Self::LoadUp | Self::LoadDown));
+        if arrows_taken && !ctx.input(|input| input.key_pressed(egui::Key::Tab)) {
+            ctx.memory_mut(|memory| memory.move_focus(egui::FocusDirection::None));
+        }
+        commands
     }
 
     /// The keys help: one row per command that has keys.
@@ -374,6 +465,12 @@ impl Command {
             ui.horizontal(|ui| {
                 ui.monospace(format!("{keys:>11}"));
                 ui.label(command.tooltip());
+            });
+        }
+        for (keys, what) in FOCUS_KEYS {
+            ui.horizontal(|ui| {
+                ui.monospace(format!("{keys:>11}"));
+                ui.label(what);
             });
         }
     }

@@ -7,8 +7,10 @@ use eframe::egui::{self, Align2, FontId, Rect, Sense, Stroke, pos2, vec2};
 use super::action::{Action, Actions};
 use super::state::AppState;
 use super::theme::Theme;
+use crate::analysis::State;
 use crate::format::{load_text, number_text};
 use crate::model::Key;
+use crate::plot::pattern;
 
 /// The load at horizontal position `x` of a bar spanning `left..right`
 /// (the slider's range, ends included).
@@ -30,6 +32,27 @@ fn round_step(step: f64) -> f64 {
         .map(|m| m * decade)
         .find(|&s| s <= step * (1.0 + 1e-9))
         .unwrap_or(decade)
+}
+
+/// The step of the bar's scale: the nearest round step (1, 2 or 5 times a
+/// power of ten) to an eighth of the bar, or the next larger round step
+/// that makes at most `fits` labels.
+fn scale_step(load_max: f64, fits: f64) -> f64 {
+    let mut step = round_step(load_max / 8.0);
+    for _ in 0..12 {
+        if (load_max / step * (1.0 - 1e-9)).floor() + 1.0 <= fits.max(2.0) {
+            break;
+        }
+        let decade = 10f64.powf(step.log10().floor());
+        let mantissa = (step / decade).round();
+        step = decade
+            * match mantissa {
+                m if m < 2.0 => 2.0,
+                m if m < 5.0 => 5.0,
+                _ => 10.0,
+            };
+    }
+    step
 }
 
 /// The horizontal position of `load` on a bar spanning `left..right`.
@@ -67,9 +90,14 @@ pub fn load_bar_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, t
         let size = vec2(ui.available_width(), bar_height + 2.0 * text_height);
         let (rect, response) = ui.allocate_exact_size(size, Sense::click_and_drag());
         let response = response
-            .on_hover_text("the load p = P l/k: click or drag here, or use the arrow keys")
+            .on_hover_text(
+                "the load p = P l/k: click or drag here, or use the arrow keys \
+                 (with the bar focused: left and right, shift for ten steps, home and end)",
+            )
             .labelled_by(label.id);
         response.widget_info(|| egui::WidgetInfo::slider(true, p, "load slider"));
+        describe(ui, &response, state);
+        keys_ui(ui, &response, state, actions);
         let bar = Rect::from_min_max(
             pos2(rect.left() + 8.0, rect.top() + text_height),
             pos2(rect.right() - 8.0, rect.top() + text_height + bar_height),
@@ -96,7 +124,7 @@ pub fn load_bar_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, t
                 for &(start, end, range) in &analysis.ranges {
                     let r =
                         Rect::from_min_max(pos2(x(start), bar.top()), pos2(x(end), bar.bottom()));
-                    painter.rect_filled(r, 0.0, theme.state_color(range));
+                    range_ui(&painter, r, range, &font, theme);
                 }
                 // Each critical load's value above its tick, kept inside the
                 // bar's ends, and left out where it would cover the last one.
@@ -130,22 +158,215 @@ pub fn load_bar_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, t
                 painter.rect_filled(bar, 0.0, theme.no_data);
             }
         }
-        // The scale under the bar, at about eight round loads.
-        let step = round_step(load_max / 8.0);
-        for load in (0..).map_while(|i: u32| {
-            let load = f64::from(i) * step;
-            (load <= load_max * (1.0 + 1e-9)).then_some(load)
-        }) {
-            painter.text(
-                pos2(x(load), bar.bottom() + 2.0),
-                Align2::CENTER_TOP,
-                number_text(load),
-                font.clone(),
-                theme.axis,
+        scale_ui(&painter, bar, load_max, &font, theme);
+        marks_ui(&painter, bar, state, theme);
+        // The focus ring: the keys move this bar now.
+        if response.has_focus() {
+            painter.rect_stroke(
+                rect.shrink(1.5 * theme.stroke_scale),
+                4.0,
+                Stroke::new(2.0 * theme.stroke_scale, theme.text),
+                egui::StrokeKind::Inside,
             );
         }
-        marks_ui(&painter, bar, state, theme);
     });
+}
+
+/// The scale under the bar, at about eight round loads, fewer where their
+/// numbers would touch (a chain's bar of 0 to 0.125 in large type).
+fn scale_ui(painter: &egui::Painter, bar: Rect, load_max: f64, font: &FontId, theme: &Theme) {
+    let widest = painter
+        .layout_no_wrap(
+            number_text(load_max * 0.987_654_3),
+            font.clone(),
+            theme.axis,
+        )
+        .size()
+        .x;
+    let fits = f64::from(bar.width() / (widest + 0.6 * theme.text_size)).floor();
+    let step = scale_step(load_max, fits);
+    for load in (0..).map_while(|i: u32| {
+        let load = f64::from(i) * step;
+        (load <= load_max * (1.0 + 1e-9)).then_some(load)
+    }) {
+        painter.text(
+            pos2(
+                x_of_load(load, (bar.left(), bar.right()), load_max),
+                bar.bottom() + 2.0,
+            ),
+            Align2::CENTER_TOP,
+            number_text(load),
+            font.clone(),
+            theme.axis,
+        );
+    }
+}
+
+/// The bar as a screen reader reads it: a slider from 0 to the bar's end
+/// in steps of a hundredth, its value said with the state at the load and
+/// that state's range (not while a lesson hides the answer); the keys'
+/// actions (increment, decrement, set value) move it as the arrows do.
+fn describe(ui: &egui::Ui, response: &egui::Response, state: &AppState) {
+    let load_max = state.load_max();
+    let text = load_bar_description(state);
+    ui.ctx().accesskit_node_builder(response.id, |node| {
+        use egui::accesskit::Action as A;
+        node.set_min_numeric_value(0.0);
+        node.set_max_numeric_value(load_max);
+        node.set_numeric_value_step(0.01 * load_max);
+        node.set_value(text);
+        for action in [A::Increment, A::Decrement, A::SetValue] {
+            node.add_action(action);
+        }
+    });
+}
+
+/// The load and what the column does there, in words: "load p = 2.5 of 0
+/// to 8: flutter, from p = 2.0900 to 4.2641".
+#[must_use]
+pub fn load_bar_description(state: &AppState) -> String {
+    let p = state.model().load_p();
+    let load_max = state.load_max();
+    let load = format!(
+        "load p = {} of 0 to {}",
+        bar_load_text(p, load_max),
+        number_text(load_max)
+    );
+    if state.answer_hidden() {
+        return format!("{load}: the state is hidden until the lesson reveals it");
+    }
+    let Some(analysis) = state.analysis() else {
+        return format!("{load}: analysing");
+    };
+    let here = analysis
+        .ranges
+        .iter()
+        .find(|&&(start, end, _)| start <= p && p <= end);
+    match here {
+        Some(&(start, end, range)) => format!(
+            "{load}: {}, from p = {} to {}",
+            range.name(),
+            load_text(start),
+            load_text(end)
+        ),
+        None => format!("{load}: beyond the analysed range"),
+    }
+}
+
+/// The focused bar's keys: left and right by a hundredth of the bar (a
+/// tenth with shift), home and end to its ends. The arrows stay with the
+/// bar (egui would move the focus on). A screen reader's increment and decrement move it by the same hundredth,
+/// its "set value" to the value asked (within the bar).
+fn keys_ui(ui: &egui::Ui, response: &egui::Response, state: &AppState, actions: &mut Actions) {
+    use egui::accesskit::{Action as A, ActionData};
+    let p = state.model().load_p();
+    let load_max = state.load_max();
+    let keyed = if response.has_focus() {
+        keyed_load(ui, response.id, p, load_max)
+    } else {
+        None
+    };
+    let id = response.id;
+    let asked = ui.input(|input| {
+        let count = |action| {
+            f64::from(u32::try_from(input.num_accesskit_action_requests(id, action)).unwrap_or(0))
+        };
+        let steps = count(A::Increment) - count(A::Decrement);
+        let set = input.events.iter().find_map(|event| match event {
+            egui::Event::AccessKitActionRequest(request)
+                if request.action == A::SetValue && request.target_node == id.accesskit_id() =>
+            {
+                match request.data {
+                    Some(ActionData::NumericValue(value)) if value.is_finite() => {
+                        Some(value.clamp(0.0, load_max))
+                    }
+                    _ => None,
+                }
+            }
+            _ => None,
+        });
+        set.or_else(|| {
+            (steps != 0.0).then(|| (p + 0.01 * steps * load_max).clamp(0.0, load_max.max(p)))
+        })
+    });
+    if let Some(load) = keyed.or(asked).filter(|&load| load != p) {
+        actions.push(Action::Enter {
+            key: Key::Load,
+            value: load,
+        });
+    }
+}
+
+/// A load slider's keys while the widget `id` has the focus, from `load`
+/// on a bar of 0 to `load_max`: left and right a hundredth of the bar (a
+/// tenth with shift), home and end its ends; the new load if it moves. The
+/// arrows stay with the widget (egui would move the focus on). The load
+/// bar and a lesson's prediction slider both step so.
+pub fn keyed_load(ui: &egui::Ui, id: egui::Id, load: f64, load_max: f64) -> Option<f64> {
+    use egui::Key as K;
+    ui.memory_mut(|memory| {
+        memory.set_focus_lock_filter(
+            id,
+            egui::EventFilter {
+                horizontal_arrows: true,
+                ..Default::default()
+            },
+        );
+    });
+    let target = ui.input(|input| {
+        let fraction = if input.modifiers.shift { 0.1 } else { 0.01 };
+        let presses = |key| f64::from(u32::try_from(input.num_presses(key)).unwrap_or(u32::MAX));
+        let steps = presses(K::ArrowRight) - presses(K::ArrowLeft);
+        if input.key_pressed(K::Home) {
+            Some(0.0)
+        } else if input.key_pressed(K::End) {
+            Some(load_max)
+        } else if steps != 0.0 {
+            // Beyond the bar (a typed load) the keys lead back into it.
+            Some((load + steps * fraction * load_max).clamp(0.0, load_max.max(load)))
+        } else {
+            None
+        }
+    });
+    target.filter(|&target| target != load)
+}
+
+/// A stability range of the bar: its colour, its stripes if it has them,
+/// and its name where it fits, so that the bar reads without colour.
+fn range_ui(painter: &egui::Painter, r: Rect, state: State, font: &FontId, theme: &Theme) {
+    let fill = theme.state_color(state);
+    painter.rect_filled(r, 0.0, fill);
+    if pattern::striped(state) {
+        let spacing = 10.0 * theme.stroke_scale;
+        // The pattern's y is up: the screen's, negated.
+        let stripes = pattern::stripes(
+            (f64::from(r.left()), f64::from(r.right())),
+            (-f64::from(r.bottom()), -f64::from(r.top())),
+            f64::from(spacing),
+        );
+        #[expect(clippy::cast_possible_truncation, reason = "pixels")]
+        for stripe in stripes {
+            let points = stripe
+                .iter()
+                .map(|p| pos2(p[0] as f32, -p[1] as f32))
+                .collect();
+            painter.add(egui::Shape::convex_polygon(
+                points,
+                theme.background,
+                Stroke::NONE,
+            ));
+        }
+    }
+    let galley = painter.layout_no_wrap(state.name().to_owned(), font.clone(), theme.background);
+    if galley.size().x + 12.0 <= r.width() && galley.size().y <= r.height() {
+        let at = r.center() - 0.5 * galley.size();
+        painter.rect_filled(
+            Rect::from_min_size(at, galley.size()).expand2(vec2(4.0, 0.0)),
+            2.0,
+            fill,
+        );
+        painter.galley(at, galley, theme.background);
+    }
 }
 
 /// What is marked on the bar: a ramp's onsets (the theory's, the seen one),
@@ -222,6 +443,17 @@ mod tests {
         assert_eq!(bar_load_text(7.8125e-4, 0.125), number_text(0.001));
         assert_eq!(bar_load_text(1e-5, 0.125), crate::format::load_text(1e-5));
         assert_eq!(bar_load_text(0.0, 8.0), number_text(0.0));
+    }
+
+    #[test]
+    fn the_scale_makes_no_more_labels_than_fit() {
+        assert_eq!(scale_step(8.0, 20.0), 1.0);
+        assert_eq!(scale_step(0.125, 20.0), 0.01);
+        // 13 labels of 0.01 do not fit in 6: 0.02 makes 7, 0.05 makes 3.
+        assert_eq!(scale_step(0.125, 6.0), 0.05);
+        assert_eq!(scale_step(0.125, 7.0), 0.02);
+        assert_eq!(scale_step(0.125, 8.0), 0.02);
+        assert_eq!(scale_step(8.0, 3.0), 5.0);
     }
 
     #[test]

@@ -24,6 +24,8 @@ mod plots;
 mod record_menu;
 mod recorder;
 mod scene;
+mod scene_access;
+mod scene_words;
 mod settings;
 mod settings_text;
 mod sidebar;

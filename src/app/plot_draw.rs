@@ -14,7 +14,9 @@ use super::plot_frame::{axes, curve, refit_if, view_settled};
 use super::theme::{Theme, color};
 use crate::analysis::{C64, State};
 use crate::format::number_text;
+use crate::plot::describe::describe;
 use crate::plot::map::CellGrid;
+use crate::plot::pattern;
 use crate::plot::spec::{Entry, Ink, Mark, OffView, Plot, Size, Swatch, Ticks, View, Weight};
 use crate::plot::view::{EdgeMark, Side, ViewRect, default_view, edge_marks};
 
@@ -44,7 +46,7 @@ fn ink_color(ink: &Ink, theme: &Theme) -> Color32 {
         Ink::Measured => theme.measured,
         Ink::LoadLine => theme.load_line,
         Ink::Axis => theme.axis,
-        Ink::Rgb(rgb) => color(*rgb),
+        Ink::Along(t) => color(theme.palette.along(*t)),
         Ink::Cell(state, strength) => cell_color(*state, *strength, theme),
         Ink::NoData => theme.no_data,
     }
@@ -132,7 +134,7 @@ pub fn plot_ui(
             .x_axis_formatter(|mark, _| number_text(10f64.powf(mark.value)));
     }
     let egui_plot = refit_if(egui_plot, refit);
-    egui_plot.show(ui, |plot_ui| {
+    let shown = egui_plot.show(ui, |plot_ui| {
         let settled = view_settled(plot_ui, refit);
         let mut edge_marked = Vec::new();
         for mark in &plot.marks {
@@ -155,7 +157,16 @@ pub fn plot_ui(
             data.insert_temp(egui::Id::unique(LOCUS_SHOWN_ID), LocusShown { view, marks });
         });
         pointer
-    })
+    });
+    // A screen reader's name and description of the plot.
+    let name = format!("plot: {} against {}", plot.y_label, plot.x_label);
+    shown
+        .response
+        .widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &name));
+    ui.ctx().accesskit_node_builder(shown.response.id, |node| {
+        node.set_description(describe(plot));
+    });
+    shown
 }
 
 /// Draws one mark; the points of markers to mark on the view's edge when
@@ -247,6 +258,39 @@ fn cell_color(state: State, strength: f64, theme: &Theme) -> Color32 {
         .gamma_multiply(0.3 + 0.7 * strength as f32)
 }
 
+/// `grid` as an image, each cell a square of pixels (so a map of 128 cells
+/// a side is 1024 pixels), striped where the pattern says: the image's
+/// first row is the top, the grid's last.
+fn cell_image(grid: &CellGrid, theme: &Theme) -> egui::ColorImage {
+    let columns = grid.columns.max(1);
+    let scale = (1024 / columns.max(grid.rows).max(1)).clamp(1, 8);
+    let (width, height) = (columns * scale, grid.rows * scale);
+    let mut image = egui::ColorImage::filled([width, height], theme.no_data);
+    // The pattern in fractions of the map's extent, as on paper.
+    let spacing = 1.0 / pattern::MAP_STRIPES_PER_VIEW;
+    #[expect(clippy::cast_precision_loss, reason = "pixel counts")]
+    let fraction = |pixel: usize, of: usize| (pixel as f64 + 0.5) / of as f64;
+    for (k, cell) in grid.cells.iter().enumerate() {
+        let (j, i) = (k / columns, k % columns);
+        let Some((state, strength)) = *cell else {
+            continue;
+        };
+        let fill = cell_color(state, strength, theme);
+        for row in (grid.rows - 1 - j) * scale..(grid.rows - j) * scale {
+            for column in i * scale..(i + 1) * scale {
+                let on = pattern::striped(state)
+                    && pattern::on_stripe(
+                        fraction(column, width),
+                        fraction(height - 1 - row, height),
+                        spacing,
+                    );
+                image.pixels[row * width + column] = if on { theme.background } else { fill };
+            }
+        }
+    }
+    image
+}
+
 /// A grid's texture as last made, for the theme it was made in.
 #[derive(Clone)]
 struct CellTexture {
@@ -272,16 +316,8 @@ fn cells_ui(
     let texture = if let Some(cached) = cached {
         cached.texture
     } else {
-        let mut image = egui::ColorImage::filled([grid.columns, grid.rows], theme.no_data);
-        for (k, cell) in grid.cells.iter().enumerate() {
-            // The image's first row is the top: the grid's last.
-            let (j, i) = (k / grid.columns.max(1), k % grid.columns.max(1));
-            if let Some((state, strength)) = cell {
-                image.pixels[(grid.rows - 1 - j) * grid.columns + i] =
-                    cell_color(*state, *strength, theme);
-            }
-        }
-        let texture = ctx.load_texture(plot_id, image, egui::TextureOptions::NEAREST);
+        let image = cell_image(grid, theme);
+        let texture = ctx.load_texture(plot_id, image, egui::TextureOptions::LINEAR);
         ctx.data_mut(|data| {
             data.insert_temp(
                 key,

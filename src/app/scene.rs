@@ -13,6 +13,7 @@ use eframe::egui::{
 use super::action::{Action, Actions};
 use super::camera::{Camera, FOLLOW_SECS, WorldBox, target};
 use super::grab::{GRAB_RADIUS, grab_angles};
+use super::scene_access;
 use super::state::{AppState, TRAIL_SECS};
 use super::theme::Theme;
 use crate::model::Model;
@@ -104,6 +105,8 @@ pub fn scene_ui(
     // No tooltip: the mouse rests over the scene in a lecture, and a
     // tooltip would cover the load bar. The corner says it instead.
     let drag = ui.interact(rect, ui.scope_id().with("drag the column"), Sense::drag());
+    scene_access::keys_ui(ui, &drag, actions, theme);
+    scene_access::describe_ui(ui, drag.id, state);
     if let Some(badge) = delta_badge {
         ui.interact(badge, ui.scope_id().with("delta"), Sense::hover())
             .on_hover_text(DELTA_TIP);

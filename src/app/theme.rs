@@ -11,6 +11,8 @@ use crate::plot::{Palette, Rgb};
 /// The palette of one theme.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Theme {
+    /// The colours as plain RGB, for what is computed from them (a ramp).
+    pub palette: &'static Palette,
     pub background: Color32,
     pub rod: Color32,
     pub joint: Color32,
@@ -63,9 +65,10 @@ impl Theme {
 
     /// The theme of `palette`'s colours, strokes `stroke_scale` times as
     /// wide as the everyday ones and body text of `text_size` points.
-    const fn new(palette: &Palette, stroke_scale: f32, text_size: f32) -> Self {
+    const fn new(palette: &'static Palette, stroke_scale: f32, text_size: f32) -> Self {
         let p = palette;
         Self {
+            palette,
             background: color(p.background),
             rod: color(p.rod),
             joint: color(p.joint),

@@ -11,10 +11,10 @@ use super::layout::{
 use super::style::{INK, Ink as PageInk, rgb, series_color, state_color, tint};
 use super::{Drawn, FigureError, drawing};
 use crate::analysis::State;
-use crate::plot::Palette;
 use crate::plot::map::CellGrid;
 use crate::plot::spec::{Entry, Ink, Mark, Plot, Size, Swatch, Ticks, View, Weight};
 use crate::plot::view::default_view;
+use crate::plot::{Palette, pattern};
 
 /// `ink` on white paper.
 fn ink_color(ink: &Ink) -> RGBColor {
@@ -26,7 +26,7 @@ fn ink_color(ink: &Ink) -> RGBColor {
         Ink::Measured => rgb(Palette::PAPER.measured),
         Ink::LoadLine => rgb(Palette::PAPER.load_line),
         Ink::Axis => rgb(Palette::PAPER.axis),
-        Ink::Rgb(color) => rgb(*color),
+        Ink::Along(t) => rgb(Palette::PAPER.along(*t)),
         Ink::Cell(state, strength) => cell_color(*state, *strength),
         Ink::NoData => rgb(Palette::PAPER.no_data),
     }
@@ -273,6 +273,56 @@ where
                 start = i;
             }
         }
+        stripes(chart, (x, y), grid, j)?;
+    }
+    Ok(())
+}
+
+/// The stripes of row `j`'s striped runs of cells, in white (the paper),
+/// on the same pattern as the window's map: periods of a 48th of the map's
+/// extent.
+fn stripes<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    (x, y): ((f64, f64), (f64, f64)),
+    grid: &CellGrid,
+    j: u32,
+) -> Result<(), FigureError>
+where
+    DB::ErrorType: 'static,
+{
+    let columns = grid.columns.max(1);
+    let row_start = usize::try_from(j)
+        .unwrap_or(usize::MAX)
+        .saturating_mul(columns);
+    let Some(row) = grid.cells.get(row_start..row_start + columns) else {
+        return Ok(());
+    };
+    let striped = |i: usize| row[i].is_some_and(|(state, _)| pattern::striped(state));
+    #[expect(clippy::cast_precision_loss, reason = "cell counts")]
+    let (columns_f, rows_f) = (columns as f64, grid.rows.max(1) as f64);
+    let v = (f64::from(j) / rows_f, f64::from(j + 1) / rows_f);
+    let mut i = 0;
+    while i < columns {
+        if !striped(i) {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while i < columns && striped(i) {
+            i += 1;
+        }
+        #[expect(clippy::cast_precision_loss, reason = "cell counts")]
+        let u = (start as f64 / columns_f, i as f64 / columns_f);
+        let polygons = pattern::stripes(u, v, 1.0 / pattern::MAP_STRIPES_PER_VIEW);
+        drawing(chart.draw_series(polygons.into_iter().map(|polygon| {
+            Polygon::new(
+                polygon
+                    .into_iter()
+                    .map(|[pu, pv]| (x.0 + pu * (x.1 - x.0), y.0 + pv * (y.1 - y.0)))
+                    .collect::<Vec<_>>(),
+                rgb(Palette::PAPER.background).filled(),
+            )
+        })))?;
     }
     Ok(())
 }

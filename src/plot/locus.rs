@@ -4,7 +4,6 @@
 //! load) and for a printed figure (the critical loads marked, other models
 //! overlaid in series colours).
 
-use super::load_color;
 use super::spec::{
     Entry, FarLeft, Ink, Mark, Medium, OffView, Plot, Size, Swatch, Ticks, View, Weight,
 };
@@ -249,7 +248,7 @@ impl Loci<'_> {
                         .iter()
                         .map(|&i| [branch[i].re, branch[i].im])
                         .collect(),
-                    ink: Ink::Rgb(load_color(mid, min, max)),
+                    ink: Ink::Along(fraction(mid, min, max)),
                     weight: Weight::Regular,
                     dashed: false,
                 });
@@ -355,9 +354,7 @@ impl Loci<'_> {
     #[must_use]
     pub fn window_legend(&self) -> Vec<Entry> {
         let (min, max) = self.load_range();
-        let scale = (0..8)
-            .map(|i| Ink::Rgb(load_color(min + (max - min) * f64::from(i) / 7.0, min, max)))
-            .collect();
+        let scale = (0..8).map(|i| Ink::Along(f64::from(i) / 7.0)).collect();
         let mut entries = vec![
             Entry::new(
                 Swatch::Scale(scale),
@@ -478,6 +475,15 @@ fn drawn_samples(locus: &Locus) -> Vec<usize> {
             (grid_index - 1) % stride == 0 || i == last
         })
         .collect()
+}
+
+/// How far `load` lies from `min` to `max`, in [0, 1].
+fn fraction(load: f64, min: f64, max: f64) -> f64 {
+    if max > min {
+        ((load - min) / (max - min)).clamp(0.0, 1.0)
+    } else {
+        0.0
+    }
 }
 
 #[cfg(test)]

@@ -3,11 +3,14 @@
 //! arithmetic of where a plot looks (pure: no drawing).
 
 pub mod bifurcation;
+pub mod describe;
 pub mod locus;
 pub mod map;
 pub mod palette;
 pub mod paradox;
+pub mod pattern;
 pub mod spec;
 pub mod view;
+pub mod vision;
 
-pub use palette::{Palette, Rgb, load_color};
+pub use palette::{Palette, Rgb};

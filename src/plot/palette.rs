@@ -53,6 +53,9 @@ pub struct Palette {
     /// The k-th curve of a plot (a damping level, an overlaid model), in
     /// colours that read on this theme's background.
     pub curves: [Rgb; 5],
+    /// A ramp along a range (the load along a branch of the locus), its
+    /// lightness rising for every colour vision; see [`Palette::along`].
+    pub along: &'static [Rgb],
     /// Notices: something refused or failed.
     pub error: Rgb,
     /// Notices and cautions: done, but not quite as asked, or not resolved.
@@ -60,6 +63,36 @@ pub struct Palette {
     /// Notices: done as asked.
     pub info: Rgb,
 }
+
+/// Okabe and Ito's colours for every colour vision (2008), and two of
+/// their kin measured for the same purpose (see the tests).
+mod ink {
+    use super::Rgb;
+    pub const SKY_BLUE: Rgb = Rgb(86, 180, 233);
+    pub const YELLOW: Rgb = Rgb(240, 228, 66);
+    pub const VERMILLION: Rgb = Rgb(213, 94, 0);
+    pub const ORANGE: Rgb = Rgb(230, 159, 0);
+    pub const BLUE: Rgb = Rgb(0, 114, 178);
+    pub const REDDISH_PURPLE: Rgb = Rgb(204, 121, 167);
+    pub const VIOLET: Rgb = Rgb(110, 80, 255);
+    pub const PALE_GREEN: Rgb = Rgb(150, 230, 150);
+    pub const CRIMSON: Rgb = Rgb(165, 0, 38);
+    pub const NAVY: Rgb = Rgb(30, 40, 120);
+}
+
+/// viridis (van der Walt and Smith, public domain) at 0, 1/8, ..., 1: a
+/// ramp whose lightness rises steadily for every colour vision.
+const VIRIDIS: [Rgb; 9] = [
+    Rgb(68, 1, 84),
+    Rgb(72, 36, 117),
+    Rgb(59, 82, 139),
+    Rgb(44, 114, 142),
+    Rgb(33, 145, 140),
+    Rgb(40, 174, 128),
+    Rgb(94, 201, 98),
+    Rgb(173, 220, 48),
+    Rgb(253, 231, 37),
+];
 
 impl Palette {
     /// The everyday theme, on a dark background.
@@ -72,37 +105,38 @@ impl Palette {
         roller_mark: Rgb(90, 60, 20),
         band: Rgb(70, 74, 84),
         band_mark: Rgb(120, 126, 140),
-        friction: Rgb(255, 90, 90),
-        follower: Rgb(90, 220, 140),
+        friction: Rgb(240, 110, 40),
+        follower: Rgb(110, 200, 255),
         trail: Rgb(150, 110, 255),
         text: Rgb(225, 228, 235),
-        stable: Rgb(70, 170, 100),
-        flutter: Rgb(230, 150, 40),
-        divergence: Rgb(215, 60, 60),
+        stable: ink::SKY_BLUE,
+        flutter: ink::YELLOW,
+        divergence: ink::VERMILLION,
         axis: Rgb(200, 200, 200),
         now: Rgb::WHITE,
-        load_line: Rgb(255, 90, 90),
-        measured: Rgb(255, 90, 90),
+        load_line: ink::REDDISH_PURPLE,
+        measured: ink::VIOLET,
         overlay: Rgb(120, 120, 120),
         no_data: Rgb::gray(40),
         series: [
-            Rgb(120, 170, 255),
+            ink::SKY_BLUE,
             Rgb(205, 210, 220),
-            Rgb(255, 90, 90),
-            Rgb(90, 220, 140),
-            Rgb(230, 150, 40),
-            Rgb(150, 110, 255),
+            ink::VERMILLION,
+            ink::PALE_GREEN,
+            ink::YELLOW,
+            ink::VIOLET,
         ],
         curves: [
-            Rgb(120, 170, 255),
-            Rgb(90, 220, 140),
-            Rgb(230, 150, 40),
-            Rgb(150, 110, 255),
-            Rgb(255, 90, 90),
+            ink::SKY_BLUE,
+            ink::YELLOW,
+            ink::VERMILLION,
+            ink::VIOLET,
+            ink::PALE_GREEN,
         ],
-        error: Rgb(215, 60, 60),
-        warning: Rgb(230, 150, 40),
-        info: Rgb(120, 170, 255),
+        along: &ALONG_ON_DARK,
+        error: Rgb(240, 90, 60),
+        warning: ink::YELLOW,
+        info: ink::SKY_BLUE,
     };
 
     /// High contrast for a projector, on black.
@@ -115,54 +149,41 @@ impl Palette {
         roller_mark: Rgb::BLACK,
         band: Rgb(60, 60, 60),
         band_mark: Rgb(200, 200, 200),
-        friction: Rgb(255, 60, 60),
-        follower: Rgb(0, 255, 120),
+        friction: Rgb(255, 110, 30),
+        follower: Rgb(110, 200, 255),
         trail: Rgb(200, 140, 255),
         text: Rgb::WHITE,
-        stable: Rgb(0, 200, 80),
-        flutter: Rgb(255, 170, 0),
-        divergence: Rgb(255, 50, 50),
         axis: Rgb::WHITE,
-        now: Rgb::WHITE,
-        load_line: Rgb(255, 60, 60),
-        measured: Rgb(255, 60, 60),
-        overlay: Rgb(120, 120, 120),
-        no_data: Rgb::gray(40),
         series: [
-            Rgb(80, 180, 255),
+            ink::SKY_BLUE,
             Rgb::WHITE,
-            Rgb(255, 60, 60),
-            Rgb(0, 255, 120),
-            Rgb(255, 170, 0),
-            Rgb(200, 140, 255),
+            ink::VERMILLION,
+            ink::PALE_GREEN,
+            ink::YELLOW,
+            ink::VIOLET,
         ],
-        curves: [
-            Rgb(80, 180, 255),
-            Rgb(0, 255, 120),
-            Rgb(255, 170, 0),
-            Rgb(200, 140, 255),
-            Rgb(255, 60, 60),
-        ],
-        error: Rgb(255, 50, 50),
-        warning: Rgb(255, 170, 0),
-        info: Rgb(80, 180, 255),
+        ..Self::NORMAL
     };
 
-    /// A printed figure: black ink on white paper, the everyday theme's
-    /// states, and curves that read on white (its light grey left out).
+    /// A printed figure: black ink on white paper, states and curves that
+    /// read on white.
     pub const PAPER: Self = Self {
         background: Rgb::WHITE,
         text: Rgb::BLACK,
         axis: Rgb::gray(128),
         now: Rgb::BLACK,
         no_data: Rgb::gray(200),
+        stable: ink::BLUE,
+        flutter: ink::ORANGE,
+        divergence: ink::CRIMSON,
         curves: [
-            Rgb(120, 170, 255),
-            Rgb(255, 90, 90),
-            Rgb(150, 110, 255),
-            Rgb(230, 150, 40),
-            Rgb(90, 220, 140),
+            ink::SKY_BLUE,
+            ink::ORANGE,
+            ink::VIOLET,
+            ink::CRIMSON,
+            ink::NAVY,
         ],
+        along: &ALONG_ON_PAPER,
         ..Self::NORMAL
     };
 
@@ -175,40 +196,54 @@ impl Palette {
             State::Divergence => self.divergence,
         }
     }
+
+    /// The colour a fraction `t` in [0, 1] of the way along the ramp (a
+    /// branch's load from the smallest to the largest drawn).
+    #[must_use]
+    pub fn along(&self, t: f64) -> Rgb {
+        let ramp = self.along;
+        let last = ramp.len().saturating_sub(1);
+        #[expect(clippy::cast_precision_loss, reason = "a handful of colours")]
+        let x = if t.is_finite() {
+            t.clamp(0.0, 1.0)
+        } else {
+            0.0
+        } * last as f64;
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "x in [0, last]"
+        )]
+        let i = (x.floor() as usize).min(last.saturating_sub(1));
+        let (Some(a), Some(b)) = (ramp.get(i), ramp.get(i + 1).or(ramp.get(i))) else {
+            return self.text;
+        };
+        #[expect(clippy::cast_precision_loss, reason = "a handful of colours")]
+        let s = x - i as f64;
+        let mix = |p: u8, q: u8| {
+            #[expect(
+                clippy::cast_possible_truncation,
+                clippy::cast_sign_loss,
+                reason = "between two bytes"
+            )]
+            let c = (f64::from(p) + (f64::from(q) - f64::from(p)) * s).round() as u8;
+            c
+        };
+        Rgb(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+    }
 }
 
-/// A colour for a load between `min` and `max`: from blue (low) through
-/// green to red (high), so a locus plot shows where along the load each
-/// point of a branch lies.
-#[must_use]
-pub fn load_color(load: f64, min: f64, max: f64) -> Rgb {
-    let t = if max > min {
-        ((load - min) / (max - min)).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    #[expect(clippy::cast_possible_truncation, reason = "t in [0, 1]")]
-    let t = t as f32;
-    let lerp = |a: f32, b: f32, s: f32| a + (b - a) * s;
-    let (r, g, b) = if t < 0.5 {
-        let s = 2.0 * t;
-        (
-            lerp(60.0, 60.0, s),
-            lerp(120.0, 200.0, s),
-            lerp(255.0, 90.0, s),
-        )
-    } else {
-        let s = 2.0 * t - 1.0;
-        (
-            lerp(60.0, 250.0, s),
-            lerp(200.0, 70.0, s),
-            lerp(90.0, 60.0, s),
-        )
-    };
-    #[expect(
-        clippy::cast_possible_truncation,
-        clippy::cast_sign_loss,
-        reason = "channels in [0, 255]"
-    )]
-    Rgb(r as u8, g as u8, b as u8)
-}
+/// viridis from a quarter of its way on: its darkest purples are lost on
+/// a dark background.
+const ALONG_ON_DARK: [Rgb; 7] = [
+    VIRIDIS[2], VIRIDIS[3], VIRIDIS[4], VIRIDIS[5], VIRIDIS[6], VIRIDIS[7], VIRIDIS[8],
+];
+
+/// viridis up to three quarters of its way: its yellows are lost on
+/// white.
+const ALONG_ON_PAPER: [Rgb; 7] = [
+    VIRIDIS[0], VIRIDIS[1], VIRIDIS[2], VIRIDIS[3], VIRIDIS[4], VIRIDIS[5], VIRIDIS[6],
+];
+
+#[cfg(test)]
+mod tests;

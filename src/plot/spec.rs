@@ -5,7 +5,6 @@
 
 use std::sync::Arc;
 
-use super::Rgb;
 use super::map::CellGrid;
 use crate::analysis::State;
 
@@ -43,8 +42,9 @@ pub enum Ink {
     Cell(State, f64),
     /// Where there is no analysis.
     NoData,
-    /// A colour of its own (a scale along the load).
-    Rgb(Rgb),
+    /// A fraction in [0, 1] of the way along a range (a branch's load
+    /// from the smallest drawn to the largest), on the palette's ramp.
+    Along(f64),
 }
 
 /// How heavy a line is.

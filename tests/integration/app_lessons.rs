@@ -12,7 +12,7 @@ use crate::app_input::{harness, type_into};
 
 /// The default app's window at 1280x900, with its keys read each frame as
 /// the real window reads them.
-fn keyed_harness() -> Harness<'static, ZieglerApp> {
+pub(crate) fn keyed_harness() -> Harness<'static, ZieglerApp> {
     Harness::builder()
         .with_size([1280.0, 900.0])
         .build_ui_state(
@@ -509,4 +509,137 @@ fn the_note_under_the_tabs_gives_one_reason() {
             .query_by_label_contains("The plots are hidden")
             .is_none()
     );
+}
+
+/// Presses Tab until the focused node is one `wanted` picks, a frame after
+/// each press (as xdotool types); fails naming `at` if none comes within a
+/// round of the whole window.
+fn tab_to(
+    harness: &mut Harness<'static, ZieglerApp>,
+    wanted: impl Fn(&egui::accesskit::Role, &str) -> bool,
+    at: &str,
+) {
+    for _ in 0..300 {
+        harness.key_press(egui::Key::Tab);
+        harness.run_steps(2);
+        let found = harness
+            .query_by(|node| {
+                node.is_focused() && wanted(&node.role(), &node.label().unwrap_or_default())
+            })
+            .is_some();
+        if found {
+            return;
+        }
+    }
+    panic!("{at}: Tab never reached the control");
+}
+
+/// Every built-in lesson run start to end by keyboard alone, no pointer
+/// event: Tab to the prediction slider or the choice, the arrows or space
+/// to answer, and Page Down at once after (a focused control once held back
+/// every shortcut until Escape).
+#[test]
+fn every_lesson_runs_by_keyboard_alone() {
+    use egui::accesskit::Role;
+    use zieglerlab::lesson::Predict;
+    for &(name, text) in &zieglerlab::lesson::BUILT_IN {
+        let lesson = zieglerlab::lesson::Lesson::read(text, &zieglerlab::app::Tab::ids()).unwrap();
+        let mut harness = keyed_harness();
+        harness.run_steps(2);
+        harness
+            .state_mut()
+            .apply(zieglerlab::app::Action::LessonOpen(Box::new(
+                lesson.clone(),
+            )));
+        harness.run_steps(2);
+        let run = |h: &Harness<'_, ZieglerApp>| h.state().state().lesson().unwrap().clone();
+        for (k, step) in lesson.steps.iter().enumerate() {
+            let at = format!("{name} step {}", k + 1);
+            assert_eq!(run(&harness).step, k, "{at}");
+            match &step.predict {
+                Some(Predict::Load(_)) => {
+                    tab_to(
+                        &mut harness,
+                        |role, label| *role == Role::Slider && label == "predicted load",
+                        &at,
+                    );
+                    let load_max = harness.state().state().load_max();
+                    // Three coarse steps and one fine one back: 0.29 of the bar.
+                    for _ in 0..3 {
+                        harness.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::ArrowRight);
+                        harness.run_steps(2);
+                    }
+                    harness.key_press(egui::Key::ArrowLeft);
+                    harness.run_steps(2);
+                    let predicted = run(&harness).predicted_load.expect("a prediction");
+                    assert!(
+                        (predicted - 0.29 * load_max).abs() < 1e-9 * load_max,
+                        "{at}: {predicted} on a bar to {load_max}"
+                    );
+                }
+                Some(Predict::Choice { answers, .. }) => {
+                    let last = answers.last().unwrap().clone();
+                    tab_to(
+                        &mut harness,
+                        |role, label| *role == Role::RadioButton && label == last,
+                        &at,
+                    );
+                    harness.key_press(egui::Key::Space);
+                    harness.run_steps(2);
+                    assert_eq!(run(&harness).chosen, Some(answers.len() - 1), "{at}");
+                }
+                None => {
+                    // Any control focused, used or not, lets Page Down by.
+                    tab_to(&mut harness, |role, _| *role == Role::Button, &at);
+                }
+            }
+            if k + 1 < lesson.steps.len() {
+                harness.key_press(egui::Key::PageDown);
+                harness.run_steps(2);
+                assert_eq!(run(&harness).step, k + 1, "{at}: Page Down after a control");
+            }
+        }
+    }
+}
+
+/// The load bar takes the focus and its keys: right and left by a hundredth
+/// of the bar, shift for a tenth, home and end; up and down move the load
+/// whatever is focused; space plays with the bar focused and presses a
+/// focused button instead of playing.
+#[test]
+fn the_load_bar_is_a_control_of_the_keyboard() {
+    use egui::accesskit::Role;
+    let mut harness = keyed_harness();
+    harness.run_steps(2);
+    tab_to(
+        &mut harness,
+        |role, label| *role == Role::Slider && label == "load slider",
+        "the load bar",
+    );
+    let load = |h: &Harness<'_, ZieglerApp>| h.state().settings().model.load_p();
+    let load_max = harness.state().state().load_max();
+    harness.key_press(egui::Key::Home);
+    harness.run_steps(2);
+    assert_eq!(load(&harness), 0.0);
+    harness.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::ArrowRight);
+    harness.run_steps(2);
+    harness.key_press(egui::Key::ArrowRight);
+    harness.run_steps(2);
+    assert!((load(&harness) - 0.11 * load_max).abs() < 1e-9 * load_max);
+    // Still focused: the arrows did not move the focus on.
+    assert!(
+        harness
+            .get_by_role_and_label(Role::Slider, "load slider")
+            .is_focused()
+    );
+    harness.key_press(egui::Key::ArrowUp);
+    harness.run_steps(2);
+    assert!((load(&harness) - 0.12 * load_max).abs() < 1e-9 * load_max);
+    harness.key_press(egui::Key::End);
+    harness.run_steps(2);
+    assert_eq!(load(&harness), load_max);
+    let running = harness.state().state().running();
+    harness.key_press(egui::Key::Space);
+    harness.run_steps(2);
+    assert_ne!(harness.state().state().running(), running, "space plays");
 }

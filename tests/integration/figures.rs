@@ -11,6 +11,7 @@ use zieglerlab::figure::{
     Analysed, Content, Format, MapData, Page, ParadoxData, Rendered, analyse, render,
 };
 use zieglerlab::model::Axis;
+use zieglerlab::plot::{Palette, Rgb};
 
 /// The pixels of a PNG figure.
 fn pixels(rendered: &Rendered) -> image::RgbImage {
@@ -26,15 +27,41 @@ fn pixel_at(image: &image::RgbImage, (x, y): (f64, f64)) -> [u8; 3] {
     image.get_pixel(x, y).0
 }
 
-/// Whether `color` has the hue of `state` in the app's colours (green,
-/// orange, red), pale or deep.
-fn has_hue_of(color: [u8; 3], state: State) -> bool {
-    let [r, g, b] = color.map(i32::from);
-    match state {
-        State::Stable => g > r + 10 && g > b + 10,
-        State::Flutter => r > g + 10 && g > b + 10,
-        State::Divergence => r > g + 20 && (g - b).abs() < 25,
+/// The state whose paper colour, laid over white at some strength (a
+/// range's pale tint up to a deep cell or line), is nearest to `color`, and
+/// that strength; none when no state's colour is near.
+fn state_of(color: [u8; 3]) -> Option<(State, f64)> {
+    let paper = Palette::PAPER;
+    let mut best: Option<(f64, State, f64)> = None;
+    for state in [State::Stable, State::Flutter, State::Divergence] {
+        let Rgb(r, g, b) = paper.state(state);
+        for k in 5..=100 {
+            let strength = f64::from(k) / 100.0;
+            let mix = |c: u8| 255.0 + (f64::from(c) - 255.0) * strength;
+            let distance = [mix(r), mix(g), mix(b)]
+                .iter()
+                .zip(color)
+                .map(|(m, c)| (m - f64::from(c)).powi(2))
+                .sum::<f64>()
+                .sqrt();
+            if best.is_none_or(|(d, _, _)| distance < d) {
+                best = Some((distance, state, strength));
+            }
+        }
     }
+    best.filter(|(d, _, _)| *d < 30.0)
+        .map(|(_, state, strength)| (state, strength))
+}
+
+/// Whether `color` is `state`'s paper colour, pale or deep.
+fn has_hue_of(color: [u8; 3], state: State) -> bool {
+    state_of(color).is_some_and(|(s, _)| s == state)
+}
+
+/// Whether `color` is `state`'s paper colour at more than half strength (a
+/// line, not a range's tint).
+fn is_deep(color: [u8; 3], state: State) -> bool {
+    state_of(color).is_some_and(|(s, strength)| s == state && strength > 0.5)
 }
 
 /// The analysis of a preset over the load bar's range.
@@ -76,7 +103,7 @@ fn re_im_figure_marks_the_critical_loads_where_critical_finds_them() {
                     pixel_at(&image, panel.page_point(t.load, y))
                 })
                 .collect();
-            let dashes = column.iter().filter(|c| has_hue_of(**c, t.to)).count();
+            let dashes = column.iter().filter(|c| is_deep(**c, t.to)).count();
             assert!(dashes > 5, "{t:?}: {dashes} of 39 in its colour");
         }
         // The ranges are tinted: stable before the onset, flutter after.
@@ -131,7 +158,7 @@ fn locus_figure_puts_the_flutter_onset_on_the_imaginary_axis_at_its_frequency() 
     let panel = &rendered.panels[0];
     for im in [omega, -omega] {
         let marker = pixel_at(&image, panel.page_point(0.0, im));
-        assert!(has_hue_of(marker, State::Flutter), "{marker:?} at {im}i");
+        assert!(is_deep(marker, State::Flutter), "{marker:?} at {im}i");
     }
     // Equal scales: a unit of Re and of Im are as long on the page.
     let (x_per, y_per) = (
@@ -179,7 +206,14 @@ fn map_figure_draws_each_cell_in_its_state_and_the_boundaries_on_the_critical_lo
             if row.transitions.iter().any(|t| (t.load - p).abs() < 0.2) {
                 continue;
             }
-            let color = pixel_at(&image, panel.page_point(p, row.value));
+            // The deepest pixel about the cell's centre: a striped cell's
+            // stripes are white.
+            let (x, y) = panel.page_point(p, row.value);
+            let color = (-2..=2)
+                .flat_map(|dx| (-2..=2).map(move |dy| (x + f64::from(dx), y + f64::from(dy))))
+                .map(|at| pixel_at(&image, at))
+                .min_by_key(|c| c.iter().map(|&v| u32::from(v)).sum::<u32>())
+                .unwrap();
             assert!(
                 has_hue_of(color, cell.state),
                 "{:?} at p = {p}, g2 = {}: {color:?}",

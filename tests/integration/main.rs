@@ -1,6 +1,7 @@
 //! The integration tests, one module per topic, in one crate (one link of
 //! the app, wgpu and rapier instead of one per topic).
 
+mod accessibility;
 mod app_input;
 mod app_layout;
 mod app_lessons;

@@ -184,8 +184,18 @@ fn step_ui(
                 })
                 .inner
                 .accessible_name("predicted load")
-                .on_hover_text("where you expect it; the load bar marks it");
-            if response.changed() {
+                .on_hover_text(
+                    "where you expect it; the load bar marks it (keys as on the load bar: \
+                     left, right, shift for ten steps, home, end)",
+                );
+            // The keys step as the load bar's do, not by egui's point.
+            let keyed = if response.has_focus() {
+                let from = run.predicted_load.unwrap_or(0.0);
+                crate::app::load_bar::keyed_load(ui, response.id, from, state.load_max())
+            } else {
+                None
+            };
+            if let Some(load) = keyed.or_else(|| response.changed().then_some(load)) {
                 actions.push(Action::LessonPredict(load));
             }
         }

@@ -173,13 +173,18 @@ pub fn status_line_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions
             {
                 actions.push(Action::DismissNotice);
             }
-            ui.add(
-                egui::Label::new(
-                    egui::RichText::new(notice.text).color(theme.notice_color(notice.level)),
+            let line = ui
+                .add(
+                    egui::Label::new(
+                        egui::RichText::new(notice.text).color(theme.notice_color(notice.level)),
+                    )
+                    .truncate(),
                 )
-                .truncate(),
-            )
-            .on_hover_text("the latest message (the whole text)");
+                .on_hover_text("the latest message (the whole text)");
+            // A live region: a screen reader says each new message.
+            ui.ctx().accesskit_node_builder(line.id, |node| {
+                node.set_live(egui::accesskit::Live::Polite);
+            });
         } else if let Some(hint) = state.hint() {
             if ui
                 .small_button("got it")

@@ -1,0 +1,150 @@
+//! The window as a screen reader reads it (the AccessKit tree that egui
+//! builds and kittest exposes): every control named, the load bar's range,
+//! value and the state at the load, the scene's words following the
+//! column from stable to flutter, the plots described, the messages in a
+//! live region.
+
+use eframe::egui::accesskit::Role;
+use egui_kittest::Harness;
+use egui_kittest::kittest::{NodeT as _, Queryable as _};
+use zieglerlab::app::{Action, ZieglerApp};
+use zieglerlab::model::Key;
+
+/// The default window, its keys read as the real window reads them, its
+/// first frames run.
+fn app_harness() -> Harness<'static, ZieglerApp> {
+    let mut harness = crate::app_lessons::keyed_harness();
+    harness.run_steps(3);
+    harness
+}
+
+/// The roles a person acts on.
+const INTERACTIVE: [Role; 8] = [
+    Role::Button,
+    Role::CheckBox,
+    Role::RadioButton,
+    Role::Slider,
+    Role::TextInput,
+    Role::ComboBox,
+    Role::SpinButton,
+    Role::Tab,
+];
+
+#[test]
+fn every_control_has_a_name() {
+    let harness = app_harness();
+    let mut seen = 0;
+    for node in harness.query_all_by(|node| INTERACTIVE.contains(&node.role())) {
+        let node = node.accesskit_node();
+        let name = node.label().unwrap_or_default();
+        assert!(
+            !name.trim().is_empty(),
+            "a {:?} without a name at {:?}",
+            node.role(),
+            node.bounding_box()
+        );
+        seen += 1;
+    }
+    assert!(seen > 20, "only {seen} controls found");
+    // The scene and the plots are named images with a description.
+    let scene = harness.get_by_role_and_label(Role::Image, "the column");
+    assert!(
+        !scene
+            .accesskit_node()
+            .description()
+            .unwrap_or_default()
+            .is_empty()
+    );
+    let plots: Vec<_> = harness
+        .query_all_by(|node| {
+            node.role() == Role::Image && node.label().is_some_and(|l| l.starts_with("plot: "))
+        })
+        .collect();
+    assert!(!plots.is_empty());
+    for plot in plots {
+        let words = plot.accesskit_node().description().unwrap_or_default();
+        assert!(words.contains(" against "), "{words}");
+    }
+}
+
+/// The load bar says its range (0 to the bar's end, not ±1.8e308), its
+/// value, and the state at the load with that state's range, as the
+/// command line's critical loads give them.
+#[test]
+fn the_load_bar_reports_its_range_value_and_state() {
+    let mut harness = app_harness();
+    harness.state_mut().apply(Action::Enter {
+        key: Key::Load,
+        value: 2.5,
+    });
+    harness.run_steps(3);
+    let load_max = harness.state().state().load_max();
+    let bar = harness.get_by_role_and_label(Role::Slider, "load slider");
+    let node = bar.accesskit_node();
+    assert_eq!(node.min_numeric_value(), Some(0.0));
+    assert_eq!(node.max_numeric_value(), Some(load_max));
+    assert_eq!(node.numeric_value(), Some(2.5));
+    let words = node.value().unwrap_or_default();
+    // The roller's flutter from p = 0.0238 to 4.2641 (`critical`'s loads).
+    let analysis = harness.state().state().analysis().unwrap();
+    let flutter = analysis
+        .ranges
+        .iter()
+        .find(|r| r.0 <= 2.5 && 2.5 <= r.1)
+        .copied()
+        .unwrap();
+    assert_eq!(flutter.2, zieglerlab::analysis::State::Flutter);
+    let expected = format!(
+        "load p = 2.5 of 0 to 8: flutter, from p = {} to {}",
+        zieglerlab::format::load_text(flutter.0),
+        zieglerlab::format::load_text(flutter.1)
+    );
+    assert_eq!(words, expected);
+    // A screen reader's increment moves it by a hundredth of the bar.
+    bar.increment_accesskit();
+    harness.run_steps(2);
+    let p = harness.state().settings().model.load_p();
+    assert!((p - (2.5 + 0.01 * load_max)).abs() < 1e-12, "{p}");
+}
+
+/// The scene's words follow the column: stable below the onset of
+/// flutter, fluttering above, with the doubling time the growth rate
+/// gives (ln 2 / Re λ).
+#[test]
+fn the_scene_says_stable_then_flutter_across_the_onset() {
+    let mut harness = app_harness();
+    let words = |h: &Harness<'_, ZieglerApp>| {
+        h.get_by_role_and_label(Role::Image, "the column")
+            .accesskit_node()
+            .description()
+            .unwrap_or_default()
+    };
+    for (load, expected) in [
+        (0.01, "stable: a kick dies away"),
+        (1.0, "the column flutters"),
+    ] {
+        harness.state_mut().apply(Action::Enter {
+            key: Key::Load,
+            value: load,
+        });
+        // Past the half second the words are kept for.
+        harness.run_steps(40);
+        let said = words(&harness);
+        assert!(said.starts_with(expected), "p = {load}: {said}");
+    }
+    let rate =
+        harness.state().state().current_spectrum().map(|s| {
+            zieglerlab::analysis::classify(&s.eigenvalues, s.scale_per_s).growth_rate_per_s()
+        });
+    let doubling = 2f64.ln() / rate.unwrap();
+    let said = words(&harness);
+    let digits = 1.0 - doubling.log10().floor();
+    let rounded = (doubling * 10f64.powf(digits)).round() / 10f64.powf(digits);
+    assert!(
+        said.contains(&format!(
+            "doubling every {} s",
+            zieglerlab::format::number_text(rounded)
+        )),
+        "{said} (doubling in {doubling} s)"
+    );
+}
