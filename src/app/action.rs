@@ -189,6 +189,42 @@ const fn row(
     }
 }
 
+/// The tabs Ctrl+Tab (1) and Ctrl+Shift+Tab (-1) move by this frame, but
+/// while a text field is edited (0).
+#[must_use]
+pub fn tab_steps(ctx: &egui::Context) -> isize {
+    if ctx.text_edit_focused() {
+        return 0;
+    }
+    ctx.input(|input| match input.modifiers {
+        m if m.ctrl && input.key_pressed(egui::Key::Tab) => {
+            if m.shift {
+                -1
+            } else {
+                1
+            }
+        }
+        _ => 0,
+    })
+}
+
+/// Scrolls the control that has just taken the focus into view, called
+/// first in a scroll area's contents (egui does not: Tab reached controls
+/// scrolled out of a projector's sidebar). Its rect is the last frame's,
+/// at the offset the area still has.
+pub fn scroll_to_new_focus(ui: &egui::Ui) {
+    let ctx = ui.ctx();
+    let key = ui.scope_id().with("the focus scrolled to");
+    let focused = ctx.memory(egui::Memory::focused);
+    let last: Option<egui::Id> = ctx.data(|data| data.get_temp(key)).flatten();
+    if focused != last {
+        if let Some(rect) = focused.and_then(|id| ctx.read_response(id)).map(|r| r.rect) {
+            ui.scroll_to_rect(rect, None);
+        }
+        ctx.data_mut(|data| data.insert_temp(key, focused));
+    }
+}
+
 /// What has the keyboard's focus, as far as the shortcuts care.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Focus {
@@ -202,6 +238,8 @@ pub enum Focus {
     /// A button, checkbox, radio button or tab: space and Enter press it,
     /// as on every desktop.
     Control,
+    /// A plot: the arrows pan it, + and - zoom it, Enter picks its centre.
+    Plot,
 }
 
 impl Focus {
@@ -213,6 +251,8 @@ impl Focus {
         };
         if ctx.text_edit_focused() {
             Self::Text
+        } else if super::plot_keys::is_plot(ctx, id) {
+            Self::Plot
         } else if ctx
             .read_response(id)
             .is_some_and(|response| response.sense.senses_drag())
@@ -232,13 +272,17 @@ impl Focus {
             Self::Text => true,
             Self::Slider => matches!(key, Key::ArrowLeft | Key::ArrowRight),
             Self::Control => matches!(key, Key::Space | Key::Enter),
+            Self::Plot => matches!(
+                key,
+                Key::ArrowLeft | Key::ArrowRight | Key::ArrowUp | Key::ArrowDown | Key::Enter
+            ),
         }
     }
 }
 
 /// The keys of the focus, after the commands' in the keys help: only a
 /// text field being edited holds the shortcuts back.
-pub const FOCUS_KEYS: [(&str, &str); 7] = [
+pub const FOCUS_KEYS: [(&str, &str); 9] = [
     ("tab", "the next control (shift+tab: the previous one)"),
     (
         "space, enter",
@@ -251,6 +295,14 @@ pub const FOCUS_KEYS: [(&str, &str); 7] = [
     (
         "home, end",
         "with the load bar or the prediction focused: its ends",
+    ),
+    (
+        "arrows, +, -",
+        "with a plot focused (tab to it): pan by a tenth, zoom about the centre; enter: a map takes the cell under the cross",
+    ),
+    (
+        "ctrl+tab",
+        "the next tab (ctrl+shift+tab: the previous one)",
     ),
     (
         "left, right",

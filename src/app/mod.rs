@@ -18,8 +18,10 @@ mod notice;
 mod pace;
 mod panel;
 mod panel_picture;
+mod panels;
 mod plot_draw;
 mod plot_frame;
+mod plot_keys;
 mod plots;
 mod record_menu;
 mod recorder;
@@ -35,6 +37,7 @@ mod tabs;
 mod theme;
 mod welcome;
 mod window;
+mod zoom;
 
 use eframe::egui::{self, RichText, vec2};
 
@@ -321,6 +324,10 @@ impl ZieglerApp {
         for command in Command::pressed(ctx) {
             self.apply(command.into());
         }
+        let steps = action::tab_steps(ctx);
+        if steps != 0 {
+            self.apply(Action::Tab(self.tab.cycled(steps)));
+        }
     }
 
     /// `frame` without its fill where the window has already cleared to the
@@ -337,6 +344,9 @@ impl ZieglerApp {
     /// The whole window's contents. Reads the state; the simulation advances
     /// only in [`ZieglerApp::advance`], so a picture depends on the state alone.
     pub fn contents_ui(&mut self, ui: &mut egui::Ui) {
+        if let Some(notice) = zoom::hold(ui.ctx()) {
+            self.state.say(notice);
+        }
         self.apply_pending(ui.ctx());
         let theme = self.applied_theme(ui.ctx());
         if let Some(notice) = self.picture.frame_start(ui.ctx()) {
@@ -365,47 +375,7 @@ impl ZieglerApp {
         if let Some(notice) = self.exports.frame(ui.ctx(), &self.state) {
             self.state.say(notice);
         }
-        let style = ui.style().clone();
-        egui::Panel::bottom("status line")
-            .frame(self.panel_frame(egui::Frame::side_top_panel(&style)))
-            .exact_size(1.6 * theme.text_size + 8.0)
-            .show(ui, |ui| {
-                sidebar::status_line_ui(ui, &self.state, &mut self.actions, &theme);
-            });
-        egui::Panel::left("controls")
-            .frame(self.panel_frame(egui::Frame::side_top_panel(&style)))
-            .resizable(false)
-            .exact_size(320.0)
-            .show(ui, |ui| {
-                let (choice, recorder) = (&mut self.record_choice, &self.recorder);
-                self.sidebar
-                    .header_ui(ui, &self.state, &mut self.actions, |ui, actions| {
-                        record_menu::record_ui(ui, choice, recorder, actions);
-                    });
-                ui.separator();
-                if self.state.settings().projector {
-                    egui::Panel::bottom("sidebar foot")
-                        .frame(egui::Frame::NONE)
-                        .resizable(false)
-                        .show_separator_line(false)
-                        .show(ui, |ui| {
-                            sidebar::foot_ui(ui, &self.state, &mut self.actions, &theme);
-                        });
-                }
-                // Each lesson step's text read from its top.
-                let step = self
-                    .state
-                    .lesson()
-                    .map(|run| (run.lesson.title.clone(), run.step));
-                egui::ScrollArea::vertical()
-                    .id_salt(("sidebar", step))
-                    .show(ui, |ui| {
-                        self.sidebar.ui(ui, &self.state, &mut self.actions, &theme);
-                    });
-            });
-        egui::CentralPanel::default()
-            .frame(self.panel_frame(egui::Frame::central_panel(&style)))
-            .show(ui, |ui| self.central_ui(ui, &theme));
+        self.window_ui(ui, &theme);
         welcome::welcome_ui(ui.ctx(), &self.state, &mut self.actions, &theme);
         self.picture.frame_end(ui.ctx(), self.tab_rect);
         self.ask_for_a_frame_if_asked(ui.ctx());

@@ -11,6 +11,7 @@ use egui_plot::{
 
 use super::legend::{Swatch as RowSwatch, legend_row};
 use super::plot_frame::{axes, curve, refit_if, view_settled};
+use super::plot_keys;
 use super::theme::{Theme, color};
 use crate::analysis::{C64, State};
 use crate::format::number_text;
@@ -135,6 +136,7 @@ pub fn plot_ui(
     }
     let egui_plot = refit_if(egui_plot, refit);
     let shown = egui_plot.show(ui, |plot_ui| {
+        let keyed = plot_keys::keys_ui(plot_ui, theme);
         let settled = view_settled(plot_ui, refit);
         let mut edge_marked = Vec::new();
         for mark in &plot.marks {
@@ -142,7 +144,8 @@ pub fn plot_ui(
                 edge_marked.extend(points.iter().map(|p| C64::new(p[0], p[1])));
             }
         }
-        let pointer = plot_ui.pointer_coordinate();
+        // Enter on a focused plot picks its centre, where the pointer is not.
+        let pointer = keyed.or_else(|| plot_ui.pointer_coordinate());
         if edge_marked.is_empty() {
             return pointer;
         }
@@ -158,6 +161,14 @@ pub fn plot_ui(
         });
         pointer
     });
+    if shown.response.has_focus() {
+        ui.painter().rect_stroke(
+            shown.response.rect,
+            2.0,
+            egui::Stroke::new(2.0 * theme.stroke_scale, theme.text),
+            egui::StrokeKind::Outside,
+        );
+    }
     // A screen reader's name and description of the plot.
     let name = format!("plot: {} against {}", plot.y_label, plot.x_label);
     shown

@@ -148,3 +148,48 @@ fn the_scene_says_stable_then_flutter_across_the_onset() {
         "{said} (doubling in {doubling} s)"
     );
 }
+
+/// A zoom past 200% or below 75% (Ctrl+Plus held, or a stored one) is
+/// brought back into range, and the message line says so.
+#[test]
+fn the_zoom_stays_from_75_to_200_percent() {
+    let mut harness = app_harness();
+    for (asked, held, said) in [(3.0, 2.0, "zoom 300%"), (0.5, 0.75, "zoom 50%")] {
+        harness.ctx.set_zoom_factor(asked);
+        harness.run_steps(2);
+        assert_eq!(harness.ctx.zoom_factor(), held);
+        let line = crate::common::message_line(harness.state());
+        assert!(
+            line.contains(said) && line.contains("outside 75% to 200%"),
+            "{line}"
+        );
+    }
+}
+
+/// At 200% on a 1280x800 screen the window shows 640x400 points: the
+/// layout stays the smallest window's (1024x700), scrolled, so the
+/// scene, the load bar and the card keep their sizes and the plots their
+/// ticks, where they were squeezed and cut.
+#[test]
+fn a_window_zoomed_past_its_size_scrolls_its_layout() {
+    let rects = |size: [f32; 2]| {
+        let mut harness = Harness::builder().with_size(size).build_ui_state(
+            |ui, app: &mut ZieglerApp| app.contents_ui(ui),
+            ZieglerApp::new(zieglerlab::app::Settings::default()).unwrap(),
+        );
+        harness.run_steps(3);
+        ["the column", "load slider"].map(|name| {
+            harness
+                .get_by(|node| node.label().as_deref() == Some(name))
+                .rect()
+        })
+    };
+    let zoomed = rects([640.0, 400.0]);
+    let smallest = rects(zieglerlab::app::SMALLEST_WINDOW_POINTS);
+    for (zoomed, smallest) in zoomed.iter().zip(&smallest) {
+        assert!(
+            (zoomed.size() - smallest.size()).length() < 1.0,
+            "{zoomed:?} against {smallest:?}"
+        );
+    }
+}

@@ -5,7 +5,7 @@
 use crate::common::message_line;
 use eframe::egui;
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable as _;
+use egui_kittest::kittest::{NodeT as _, Queryable as _};
 use zieglerlab::app::{Settings, ZieglerApp};
 
 use crate::app_input::{harness, type_into};
@@ -13,15 +13,30 @@ use crate::app_input::{harness, type_into};
 /// The default app's window at 1280x900, with its keys read each frame as
 /// the real window reads them.
 pub(crate) fn keyed_harness() -> Harness<'static, ZieglerApp> {
-    Harness::builder()
-        .with_size([1280.0, 900.0])
-        .build_ui_state(
-            |ui, app: &mut ZieglerApp| {
-                app.take_keys(ui.ctx());
-                app.contents_ui(ui);
-            },
-            ZieglerApp::new(Settings::default()).unwrap(),
-        )
+    keyed_harness_with([1280.0, 900.0], Settings::default())
+}
+
+/// The window of `settings` at `size`, its keys read as in
+/// [`keyed_harness`].
+fn keyed_harness_with(size: [f32; 2], settings: Settings) -> Harness<'static, ZieglerApp> {
+    Harness::builder().with_size(size).build_ui_state(
+        |ui, app: &mut ZieglerApp| {
+            app.take_keys(ui.ctx());
+            app.contents_ui(ui);
+        },
+        ZieglerApp::new(settings).unwrap(),
+    )
+}
+
+/// The 1024x768 projector's window.
+fn projector_harness() -> Harness<'static, ZieglerApp> {
+    keyed_harness_with(
+        [1024.0, 768.0],
+        Settings {
+            projector: true,
+            ..Settings::default()
+        },
+    )
 }
 
 /// A presenter's remote sends Page Down and Page Up: they move through the
@@ -111,14 +126,7 @@ fn every_lesson_step_keeps_the_projector_layout() {
             preset: zieglerlab::model::PresetId::Roller,
             model: zieglerlab::model::PresetId::Roller.model(),
         };
-        let app = ZieglerApp::new(Settings {
-            projector: true,
-            ..Settings::default()
-        })
-        .unwrap();
-        let mut harness = Harness::builder()
-            .with_size([1024.0, 768.0])
-            .build_ui_state(|ui, app: &mut ZieglerApp| app.contents_ui(ui), app);
+        let mut harness = projector_harness();
         harness
             .state_mut()
             .apply(zieglerlab::app::Action::LessonOpen(Box::new(
@@ -642,4 +650,98 @@ fn the_load_bar_is_a_control_of_the_keyboard() {
     harness.key_press(egui::Key::Space);
     harness.run_steps(2);
     assert_ne!(harness.state().state().running(), running, "space plays");
+}
+
+/// Ctrl+Tab and Ctrl+Shift+Tab go round the tabs, whatever is focused
+/// but a text field.
+#[test]
+fn ctrl_tab_goes_round_the_tabs() {
+    use zieglerlab::app::Tab;
+    let mut harness = keyed_harness();
+    harness.run();
+    let tab = |h: &Harness<'_, ZieglerApp>| h.state().layout().tab;
+    assert_eq!(tab(&harness), Tab::Locus);
+    harness.key_press_modifiers(egui::Modifiers::CTRL, egui::Key::Tab);
+    harness.run_steps(2);
+    assert_eq!(tab(&harness), Tab::Histories);
+    let back = egui::Modifiers::CTRL | egui::Modifiers::SHIFT;
+    for _ in 0..2 {
+        harness.key_press_modifiers(back, egui::Key::Tab);
+        harness.run_steps(2);
+    }
+    assert_eq!(tab(&harness), Tab::PostCritical, "round the first tab");
+}
+
+/// The stability map by keys alone: Tab to it, Enter takes the point under
+/// the cross at the view's centre, an arrow pans the view by a tenth of
+/// its width, so the next Enter takes a load that much larger.
+#[test]
+fn a_map_cell_is_picked_by_keys() {
+    use egui::accesskit::Role;
+    let mut harness = keyed_harness();
+    harness
+        .state_mut()
+        .apply(zieglerlab::app::Action::Tab(zieglerlab::app::Tab::Map));
+    harness.run_steps(3);
+    tab_to(
+        &mut harness,
+        |role, label| {
+            *role == Role::Image && label.starts_with("plot: ") && label.contains("against p")
+        },
+        "the map",
+    );
+    let load = |h: &Harness<'_, ZieglerApp>| h.state().settings().model.load_p();
+    // Enter, then frames past egui's double-click wait (the map waits to
+    // tell a click from a double click, which fits the view).
+    let pick = |h: &mut Harness<'static, ZieglerApp>| {
+        h.key_press(egui::Key::Enter);
+        h.run_steps(40);
+    };
+    pick(&mut harness);
+    let first = load(&harness);
+    harness.key_press(egui::Key::ArrowRight);
+    harness.run_steps(2);
+    pick(&mut harness);
+    let second = load(&harness);
+    // The map's load axis runs 0 to 8 (a little margin around it).
+    let moved = second - first;
+    assert!((0.78..1.0).contains(&moved), "{first} -> {second}");
+}
+
+/// In a 1024x768 projector lesson, every control Tab reaches is on the
+/// screen when it has the focus (twelve presses in a row once landed on
+/// controls scrolled out of the sidebar's view).
+#[test]
+fn tab_keeps_the_focused_control_in_view() {
+    let (_, text) = zieglerlab::lesson::BUILT_IN[0];
+    let lesson = zieglerlab::lesson::Lesson::read(text, &zieglerlab::app::Tab::ids()).unwrap();
+    let mut harness = projector_harness();
+    harness
+        .state_mut()
+        .apply(zieglerlab::app::Action::LessonOpen(Box::new(lesson)));
+    harness.run_steps(3);
+    let screen = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(1024.0, 768.0));
+    let mut seen = Vec::new();
+    for press in 0..40 {
+        harness.key_press(egui::Key::Tab);
+        // Frames for the scroll's animation.
+        harness.run_steps(20);
+        #[expect(
+            clippy::redundant_closure_for_method_calls,
+            reason = "the method alone is not general enough over the node's lifetime"
+        )]
+        let Some(node) = harness.query_by(|node| node.is_focused()) else {
+            continue;
+        };
+        let rect = node.rect();
+        let name = format!("{:?}", node.accesskit_node().label());
+        assert!(
+            screen.expand(1.0).contains_rect(rect),
+            "press {}: {name} at {rect:?}",
+            press + 1
+        );
+        seen.push(name);
+    }
+    seen.dedup();
+    assert!(seen.len() > 15, "Tab reached only {seen:?}");
 }

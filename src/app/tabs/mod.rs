@@ -86,6 +86,15 @@ impl Tab {
         TABS.iter().map(|spec| spec.tab)
     }
 
+    /// The tab `steps` places on in the tab bar's order, round the ends
+    /// (Ctrl+Tab: 1, Ctrl+Shift+Tab: -1).
+    #[must_use]
+    pub fn cycled(self, steps: isize) -> Self {
+        let count = TABS.len().cast_signed();
+        let at = (self as usize).cast_signed() + steps;
+        TABS[at.rem_euclid(count).cast_unsigned()].tab
+    }
+
     /// The tab named `id`.
     ///
     /// # Errors
