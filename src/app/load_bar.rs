@@ -338,10 +338,14 @@ fn range_ui(painter: &egui::Painter, r: Rect, state: State, font: &FontId, theme
     painter.rect_filled(r, 0.0, fill);
     if pattern::striped(state) {
         let spacing = 10.0 * theme.stroke_scale;
+        // The stripes stop a fifth of the bar above its foot: the range's
+        // colour runs unbroken along the foot, to be read and measured
+        // there (under the names, which break the rows they cross).
+        let foot = r.bottom() - 0.2 * r.height();
         // The pattern's y is up: the screen's, negated.
         let stripes = pattern::stripes(
             (f64::from(r.left()), f64::from(r.right())),
-            (-f64::from(r.bottom()), -f64::from(r.top())),
+            (-f64::from(foot), -f64::from(r.top())),
             f64::from(spacing),
         );
         #[expect(clippy::cast_possible_truncation, reason = "pixels")]
