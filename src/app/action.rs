@@ -218,8 +218,15 @@ pub fn scroll_to_new_focus(ui: &egui::Ui) {
     let focused = ctx.memory(egui::Memory::focused);
     let last: Option<egui::Id> = ctx.data(|data| data.get_temp(key)).flatten();
     if focused != last {
-        if let Some(rect) = focused.and_then(|id| ctx.read_response(id)).map(|r| r.rect) {
-            ui.scroll_to_rect(rect, None);
+        // Only a control this area hides: one clipped (scrolled out of
+        // view) and across its width. A control below the area (the
+        // projector's sidebar foot) is in view already.
+        let hidden = focused
+            .and_then(|id| ctx.read_response(id))
+            .filter(|r| r.interact_rect != r.rect)
+            .filter(|r| ui.max_rect().x_range().contains(r.rect.center().x));
+        if let Some(response) = hidden {
+            ui.scroll_to_rect(response.rect, None);
         }
         ctx.data_mut(|data| data.insert_temp(key, focused));
     }
@@ -285,6 +292,10 @@ impl Focus {
 pub const FOCUS_KEYS: [(&str, &str); 9] = [
     ("tab", "the next control (shift+tab: the previous one)"),
     (
+        "ctrl+tab",
+        "the next tab (ctrl+shift+tab: the previous one)",
+    ),
+    (
         "space, enter",
         "with a button, checkbox, choice or tab focused: press it (space plays only with nothing focused)",
     ),
@@ -293,20 +304,16 @@ pub const FOCUS_KEYS: [(&str, &str); 9] = [
         "with a slider focused (the load bar, the prediction): move it by a hundredth; shift: a tenth",
     ),
     (
+        "left, right",
+        "with the column focused (tab to it): turn it by 0.02 rad either way, shift: 0.1 rad (the keyboard's drag)",
+    ),
+    (
         "home, end",
         "with the load bar or the prediction focused: its ends",
     ),
     (
         "arrows, +, -",
         "with a plot focused (tab to it): pan by a tenth, zoom about the centre; enter: a map takes the cell under the cross",
-    ),
-    (
-        "ctrl+tab",
-        "the next tab (ctrl+shift+tab: the previous one)",
-    ),
-    (
-        "left, right",
-        "with the column focused (tab to it): turn it by 0.02 rad either way, shift: 0.1 rad (the keyboard's drag)",
     ),
     ("esc", "let go of the focus (a text field: undo the typing)"),
     (
@@ -507,22 +514,29 @@ impl Command {
         commands
     }
 
-    /// The keys help: one row per command that has keys.
+    /// The keys help: one row per command that has keys, then the keys of
+    /// the focus; the words wrap within the window (a projector's large
+    /// text ran them past its edge).
     pub fn keys_help_ui(ui: &mut egui::Ui) {
-        for command in Self::ALL {
-            let keys = command.key_names();
-            if keys.is_empty() {
-                continue;
-            }
-            ui.horizontal(|ui| {
-                ui.monospace(format!("{keys:>11}"));
-                ui.label(command.tooltip());
-            });
-        }
-        for (keys, what) in FOCUS_KEYS {
-            ui.horizontal(|ui| {
-                ui.monospace(format!("{keys:>11}"));
-                ui.label(what);
+        let width = (ui.ctx().content_rect().width() - 40.0).clamp(300.0, 760.0);
+        ui.set_max_width(width);
+        let rows = Self::ALL
+            .into_iter()
+            .filter(|command| !command.keys().is_empty())
+            .map(|command| (command.key_names(), command.tooltip()))
+            .chain(
+                FOCUS_KEYS
+                    .iter()
+                    .map(|&(keys, what)| (keys.to_owned(), what)),
+            );
+        let keys_width = 9.0 * ui.text_style_height(&egui::TextStyle::Monospace);
+        for (keys, what) in rows {
+            ui.horizontal_top(|ui| {
+                ui.add_sized(
+                    [keys_width, ui.text_style_height(&egui::TextStyle::Body)],
+                    egui::Label::new(egui::RichText::new(keys).monospace()),
+                );
+                ui.add(egui::Label::new(what).wrap());
             });
         }
     }

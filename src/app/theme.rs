@@ -138,6 +138,11 @@ impl Theme {
         let mut visuals = egui::Visuals::dark();
         visuals.panel_fill = self.background;
         visuals.override_text_color = Some(self.text);
+        // The focus ring (egui draws a focused control as a pressed one):
+        // in the text's colour and as wide as the theme's strokes, so it
+        // shows on a projector too.
+        visuals.widgets.active.bg_stroke = egui::Stroke::new(2.0 * self.stroke_scale, self.text);
+        visuals.selection.stroke.width = 2.0 * self.stroke_scale;
         ctx.set_visuals(visuals);
         ctx.global_style_mut(|style| {
             for (text_style, font) in &mut style.text_styles {
