@@ -1,26 +1,40 @@
 //! Tables saved from the window: the run's recent past and the root locus,
 //! in the command line's columns, to a file chosen in the desktop's dialog
-//! and written whole or not at all.
+//! and written whole or not at all, off the window's thread (a slow disk or
+//! a stalled mount never freezes the window).
 
 use std::io::Write as _;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use eframe::egui;
 
 use super::action::Table;
 use super::file_dialog::{Closed, FileDialog, NOT_SAVED};
+use super::jobs::Jobs;
 use super::notice::Notice;
 use super::state::AppState;
 use crate::export::{history_csv, locus_csv};
 
-/// A table asked for, and the dialog that chooses its file.
-#[derive(Default)]
+/// A table asked for, the dialog that chooses its file, and its writing.
 pub struct Exports {
     dialog: FileDialog,
     /// Asked for, the dialog not opened yet (it needs the frame's context).
     asked: Option<Table>,
     /// The table the open dialog is for.
     open_for: Option<Table>,
+    /// The files being written, each saying how it went.
+    writes: Jobs<PathBuf, Notice>,
+}
+
+impl Default for Exports {
+    fn default() -> Self {
+        Self {
+            dialog: FileDialog::default(),
+            asked: None,
+            open_for: None,
+            writes: Jobs::new("save table"),
+        }
+    }
 }
 
 impl Exports {
@@ -40,12 +54,44 @@ impl Exports {
             self.open_for = Some(table);
         }
         self.dialog.typed_path_ui(ctx, "the table (CSV)");
+        if let Some((_, written)) = self.writes.drain().last() {
+            return Some(written);
+        }
         let closed = self.dialog.answer()?;
         let table = self.open_for.take()?;
-        Some(match closed {
-            Closed::Chosen(path) => save(table, state, &path),
-            Closed::NoneChosen => Notice::info(NOT_SAVED),
-        })
+        match closed {
+            Closed::Chosen(path) => self.save(table, state, path, ctx),
+            Closed::NoneChosen => Some(Notice::info(NOT_SAVED)),
+        }
+    }
+
+    /// Writes `table` to `path` on a thread of its own; what is said at once
+    /// if it cannot start.
+    fn save(
+        &mut self,
+        table: Table,
+        state: &AppState,
+        path: PathBuf,
+        ctx: &egui::Context,
+    ) -> Option<Notice> {
+        let text = match table_csv(table, state) {
+            Ok(text) => text,
+            Err(why) => return Some(Notice::error(format!("not saved: {why}"))),
+        };
+        let ctx = ctx.clone();
+        let started = self.writes.request(path, move |path, _, send| {
+            send(write(&text, path));
+            ctx.request_repaint();
+        });
+        started
+            .err()
+            .map(|error| Notice::error(format!("not saved: no thread to write with ({error})")))
+    }
+
+    /// Waits for the file being written (tests).
+    #[cfg(test)]
+    fn wait(&mut self) {
+        self.writes.wait();
     }
 }
 
@@ -66,12 +112,8 @@ pub fn table_csv(table: Table, state: &AppState) -> Result<String, &'static str>
     }
 }
 
-/// Writes `table` to `path`, and says how it went.
-fn save(table: Table, state: &AppState, path: &Path) -> Notice {
-    let text = match table_csv(table, state) {
-        Ok(text) => text,
-        Err(why) => return Notice::error(format!("not saved: {why}")),
-    };
+/// Writes `text` to `path`, and says how it went.
+fn write(text: &str, path: &Path) -> Notice {
     match crate::files::write_atomically(path, |w| w.write_all(text.as_bytes())) {
         Ok(()) => Notice::info(format!(
             "saved {} lines to {}",
@@ -97,9 +139,12 @@ mod tests {
         let path = folder.path().join("locus.csv");
         let mut exports = Exports {
             dialog: FileDialog::answered(Some(path.clone())),
-            asked: None,
             open_for: Some(Table::Locus),
+            ..Exports::default()
         };
+        // Written off the window's thread: said in a later frame.
+        assert!(exports.frame(&egui::Context::default(), &state).is_none());
+        exports.wait();
         let told = exports.frame(&egui::Context::default(), &state).unwrap();
         assert!(told.text.starts_with("saved "), "{}", told.text);
         let text = std::fs::read_to_string(&path).unwrap();

@@ -37,6 +37,8 @@ pub struct FileDialog {
     typing: Option<String>,
     /// The typed path's answer, once given.
     typed: Option<Closed>,
+    /// An existing file the typed path names, asked whether to replace it.
+    replacing: Option<PathBuf>,
 }
 
 impl FileDialog {
@@ -137,30 +139,46 @@ impl FileDialog {
                     .accessible_name("save as path");
                 let entered = edit.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
                 let file = PathBuf::from(path.trim());
-                let folder = crate::files::folder_of(&file);
-                let named = file.file_name().is_some() && !path.trim().is_empty();
-                let why_not = if !named {
-                    Some("type a file's path")
-                } else if !folder.is_dir() {
-                    Some("its folder does not exist")
+                let why_not = refusal(&file, path);
+                if let Some(why) = &why_not {
+                    ui.weak(why.as_str());
+                }
+                // An existing file: asked once before it is replaced, as the
+                // desktop's dialog and `record` ask.
+                let exists = std::fs::metadata(&file).is_ok_and(|m| m.is_file());
+                let asked = self.replacing.as_ref() == Some(&file);
+                if asked {
+                    ui.label(format!(
+                        "{} exists: replace it? (save again to replace)",
+                        file.display()
+                    ));
                 } else {
-                    None
-                };
-                if let Some(why) = why_not {
-                    ui.weak(why);
+                    self.replacing = None;
                 }
                 ui.horizontal(|ui| {
-                    let save = ui.add_enabled(why_not.is_none(), egui::Button::new("save"));
+                    let label = if asked { "replace" } else { "save" };
+                    let save = ui.add_enabled(why_not.is_none(), egui::Button::new(label));
                     if save.clicked() || (entered && why_not.is_none()) {
-                        answer = Some(Closed::Chosen(file.clone()));
+                        if exists && !asked {
+                            self.replacing = Some(file.clone());
+                        } else {
+                            answer = Some(Closed::Chosen(file.clone()));
+                        }
                     }
                     if ui.button("cancel").clicked() {
                         answer = Some(Closed::NoneChosen);
                     }
                 });
+                // Enter on a path that is refused, or asked about, keeps
+                // the keys in the field: typing on must not reach the
+                // window's shortcuts ("r" would reset the run to be saved).
+                if entered && answer.is_none() {
+                    edit.request_focus();
+                }
             });
         if let Some(answer) = answer {
             self.typing = None;
+            self.replacing = None;
             self.typed = Some(answer);
             ctx.request_repaint();
         }
@@ -177,6 +195,25 @@ impl FileDialog {
             answer: Some(answer),
             ..Self::default()
         }
+    }
+}
+
+/// Why the typed `file` (typed as `text`) cannot be saved to, if it cannot:
+/// no name, no folder, a folder, a pipe or a device (a FIFO froze the
+/// window for good), or a file the user may not write.
+fn refusal(file: &Path, text: &str) -> Option<String> {
+    if text.trim().is_empty() || file.file_name().is_none() {
+        return Some("type a file's path".to_owned());
+    }
+    if !crate::files::folder_of(file).is_dir() {
+        return Some("its folder does not exist".to_owned());
+    }
+    match std::fs::metadata(file) {
+        Ok(m) if m.is_dir() => Some("it is a folder: type a file's name in it".to_owned()),
+        Ok(m) if !m.is_file() => {
+            Some("it is a pipe or a device, not a file: type a file's path".to_owned())
+        }
+        _ => crate::files::protected(file),
     }
 }
 

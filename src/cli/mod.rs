@@ -243,6 +243,28 @@ enum Command {
     Manual(desktop::ManualArgs),
 }
 
+/// An option that takes negative numbers (`--time-limit -1` is refused by
+/// name) followed by another option instead of its value: clap takes the
+/// option as the value and complains of the word after it (`--time-limit
+/// --set load=1` said "unexpected argument 'load=1'"). The message names
+/// the option that lacks its value.
+fn value_taken_by_an_option(args: &[String]) -> Option<String> {
+    let command = Cli::command();
+    let takes_hyphens = |name: &str| {
+        std::iter::once(&command)
+            .chain(command.get_subcommands())
+            .flat_map(clap::Command::get_arguments)
+            .any(|arg| arg.is_allow_hyphen_values_set() && arg.get_long() == Some(name))
+    };
+    args.windows(2).find_map(|pair| {
+        let name = pair[0].strip_prefix("--")?;
+        let next = pair[1].strip_prefix("--")?;
+        (takes_hyphens(name) && next.chars().next().is_some_and(char::is_alphabetic)).then(|| {
+            format!("error: --{name} needs a value, but the next word is the option --{next}")
+        })
+    })
+}
+
 /// Status of a run stopped by Ctrl-C, SIGTERM, SIGHUP or SIGQUIT (128 +
 /// SIGINT, as shells report Ctrl-C).
 const STOPPED: i32 = 130;
@@ -272,7 +294,10 @@ pub fn run() -> ExitCode {
                 .take_while(|line| !line.trim().is_empty())
                 .map(str::trim)
                 .collect();
-            let first = if first.is_empty() {
+            let args: Vec<String> = std::env::args().skip(1).collect();
+            let first = if let Some(missing) = value_taken_by_an_option(&args) {
+                missing
+            } else if first.is_empty() {
                 "error: bad arguments".to_owned()
             } else {
                 first.join(" ")

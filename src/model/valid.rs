@@ -36,6 +36,21 @@ impl ValidModel {
             ));
         }
         let model = self.0.at_load(p);
+        // A roller's load is its friction mu R: a mu so small that R =
+        // P / mu overflows is what the user typed, so it is named.
+        if let Some(roller) = model.roller()
+            && p > 0.0
+            && !(1.0 / roller.mu).is_finite()
+        {
+            return Err(ModelError::invalid(
+                Key::Mu,
+                roller.mu,
+                &format!(
+                    "too small: the load p = {} would need the normal force R = P / mu beyond every number",
+                    crate::format::Shown(p)
+                ),
+            ));
+        }
         if let Some((what, value)) = model.beyond_analysis() {
             return Err(ModelError::invalid(
                 what,

@@ -127,47 +127,135 @@ fn in_projector_mode_every_tab_is_shown_once() {
 }
 
 /// On a desktop with no file dialog (no portal, no zenity: this machine),
+/// The app on its time histories after a second of the run, for a save.
+fn app_with_a_run() -> ZieglerApp {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.apply(Action::Tab(Tab::Histories));
+    for _ in 0..60 {
+        app.state_mut().advance(1.0 / 60.0);
+    }
+    app
+}
+
+/// Clicks "save CSV..." and waits for the window to type the path in (no
+/// desktop dialog opens here); the path it proposes.
+fn open_typed_save(harness: &mut egui_kittest::Harness<'_>) -> String {
+    harness.get_by_label("save CSV...").click();
+    for _ in 0..100 {
+        harness.step();
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        if let Some(node) = harness.query_by_label("save as path") {
+            return node.value().unwrap_or_default();
+        }
+    }
+    panic!("no window to type the path in");
+}
+
+/// Selects the typed path's text and types `path` in its place.
+fn type_path(harness: &mut egui_kittest::Harness<'_>, path: &str) {
+    harness.get_by_label("save as path").click();
+    harness.run_steps(2);
+    harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    harness.run_steps(2);
+    harness.get_by_label("save as path").type_text(path);
+    harness.run_steps(2);
+}
+
+/// Frames until the message line says something starting with `start`
+/// (the file is written off the window's thread).
+fn until_said(harness: &mut egui_kittest::Harness<'_>, start: &str) {
+    for _ in 0..200 {
+        harness.step();
+        if harness.query_by_label_contains(start).is_some() {
+            return;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+    panic!("never said {start:?}");
+}
+
 /// "save CSV..." opens a window to type the path in, the folder and a
 /// suggested name filled in; a typed path gets the table, and "cancel"
 /// saves nothing and says so. (It said only that no file was chosen, and
 /// there was no way to save.)
 #[test]
 fn a_save_without_a_desktop_dialog_takes_a_typed_path() {
-    let mut app = ZieglerApp::new(Settings::default()).unwrap();
-    app.apply(Action::Tab(Tab::Histories));
-    for _ in 0..60 {
-        app.state_mut().advance(1.0 / 60.0);
-    }
+    let mut app = app_with_a_run();
     let folder = tempfile::tempdir().unwrap();
     let out = folder.path().join("run.csv");
     {
         let mut harness = harness_at(&mut app, [1280.0, 800.0]);
-        harness.get_by_label("save CSV...").click();
-        let mut typed = None;
-        for _ in 0..100 {
-            harness.step();
-            std::thread::sleep(std::time::Duration::from_millis(20));
-            if let Some(node) = harness.query_by_label("save as path") {
-                typed = node.value();
-                break;
-            }
-        }
-        let typed = typed.expect("a window to type the path in");
+        let typed = open_typed_save(&mut harness);
         assert!(typed.ends_with("zieglerlab-history.csv"), "{typed}");
-        let field = harness.get_by_label("save as path");
-        field.click();
-        harness.run_steps(2);
-        harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
-        harness.run_steps(2);
-        harness
-            .get_by_label("save as path")
-            .type_text(out.to_str().unwrap());
-        harness.run_steps(2);
+        type_path(&mut harness, out.to_str().unwrap());
         harness.get_by_label("save").click();
-        harness.run_steps(4);
+        until_said(&mut harness, "saved ");
     }
     let text = std::fs::read_to_string(&out).expect("the table written to the typed path");
     assert!(text.starts_with("t,phi1,phi2"), "{text}");
-    let said = message_line(&app);
-    assert!(said.starts_with("saved "), "{said}");
+}
+
+/// The typed save asks before it replaces a file, refuses a FIFO (writing
+/// to one froze the window for good) and a missing folder, and keeps the
+/// keys in its field after Enter on a refused path: an "r" typed on goes
+/// into the path, not to the window (it reset the run about to be saved).
+#[cfg(unix)]
+#[test]
+fn the_typed_save_asks_before_replacing_and_refuses_a_fifo() {
+    let mut app = app_with_a_run();
+    let folder = tempfile::tempdir().unwrap();
+    let kept = folder.path().join("kept.csv");
+    std::fs::write(&kept, "the user's table\n").unwrap();
+    let fifo = folder.path().join("fifo");
+    assert!(
+        std::process::Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .expect("mkfifo (coreutils) runs")
+            .success()
+    );
+    {
+        let mut harness = harness_at(&mut app, [1280.0, 800.0]);
+        open_typed_save(&mut harness);
+        type_path(&mut harness, fifo.to_str().unwrap());
+        assert!(
+            harness
+                .query_by_label_contains("a pipe or a device")
+                .is_some()
+        );
+        // Enter on a missing folder: refused, the field keeps the keys.
+        type_path(&mut harness, "/no-such-folder/x.csv");
+        assert!(
+            harness
+                .query_by_label_contains("its folder does not exist")
+                .is_some()
+        );
+        harness.key_press(egui::Key::Enter);
+        harness.run_steps(2);
+        harness.get_by_label("save as path").type_text("r");
+        harness.run_steps(2);
+        let field = harness.get_by_label("save as path");
+        assert!(field.is_focused(), "the field lost the keys");
+        assert_eq!(field.value().as_deref(), Some("/no-such-folder/x.csvr"));
+        // An existing file: asked, not replaced; a second save replaces it.
+        type_path(&mut harness, kept.to_str().unwrap());
+        harness.get_by_label("save").click();
+        harness.run_steps(3);
+        assert!(
+            harness
+                .query_by_label_contains("exists: replace it?")
+                .is_some()
+        );
+        assert_eq!(
+            std::fs::read_to_string(&kept).unwrap(),
+            "the user's table\n"
+        );
+        harness.get_by_label("replace").click();
+        until_said(&mut harness, "saved ");
+    }
+    assert!(
+        std::fs::read_to_string(&kept)
+            .unwrap()
+            .starts_with("t,phi1,phi2")
+    );
 }

@@ -199,4 +199,34 @@ pub const CLI_BOUNDS: &[Cli] = &[
         &["presets", "--time-limit", "0"],
         "--time-limit 0: must be 1 to 604800 seconds",
     ),
+    // An option that takes negative numbers, followed by another option
+    // instead of its value: named (it said "unexpected argument 'load=1'").
+    refused(
+        &[
+            "critical",
+            "--preset",
+            "roller",
+            "--time-limit",
+            "--set",
+            "load=1",
+        ],
+        "error: --time-limit needs a value, but the next word is the option --set",
+    ),
+    refused(
+        &[
+            "simulate",
+            "--preset",
+            "roller",
+            "--duration",
+            "--set",
+            "load=1",
+        ],
+        "error: --duration needs a value, but the next word is the option --set",
+    ),
+    // A mu so small that R = P / mu overflows: mu is named with its value
+    // (it said "the load P = inf").
+    refused(
+        &["critical", "--preset", "roller", "--set", "mu=1e-320"],
+        "error: mu = 1e-320: too small",
+    ),
 ];
