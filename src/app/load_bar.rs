@@ -4,7 +4,7 @@
 
 use eframe::egui::{self, Align2, FontId, Rect, Sense, Stroke, pos2, vec2};
 
-use super::action::{Action, Actions};
+use super::action::{Action, Actions, keep_arrows, net_presses};
 use super::state::AppState;
 use super::theme::Theme;
 use crate::analysis::State;
@@ -304,19 +304,10 @@ fn keys_ui(ui: &egui::Ui, response: &egui::Response, state: &AppState, actions: 
 /// bar and a lesson's prediction slider both step so.
 pub fn keyed_load(ui: &egui::Ui, id: egui::Id, load: f64, load_max: f64) -> Option<f64> {
     use egui::Key as K;
-    ui.memory_mut(|memory| {
-        memory.set_focus_lock_filter(
-            id,
-            egui::EventFilter {
-                horizontal_arrows: true,
-                ..Default::default()
-            },
-        );
-    });
+    keep_arrows(ui.ctx(), id, false);
     let target = ui.input(|input| {
         let fraction = if input.modifiers.shift { 0.1 } else { 0.01 };
-        let presses = |key| f64::from(u32::try_from(input.num_presses(key)).unwrap_or(u32::MAX));
-        let steps = presses(K::ArrowRight) - presses(K::ArrowLeft);
+        let steps = net_presses(input, K::ArrowRight, K::ArrowLeft);
         if input.key_pressed(K::Home) {
             Some(0.0)
         } else if input.key_pressed(K::End) {

@@ -5,6 +5,7 @@
 use eframe::egui::{self, Stroke};
 use egui_plot::{HLine, LineStyle, PlotPoint, PlotUi, VLine};
 
+use super::action::{keep_arrows, net_presses};
 use super::theme::Theme;
 
 /// The share of the view one arrow press pans by.
@@ -34,16 +35,7 @@ pub fn keys_ui(plot_ui: &mut PlotUi<'_>, theme: &Theme) -> Option<PlotPoint> {
     if !response.has_focus() {
         return None;
     }
-    ctx.memory_mut(|memory| {
-        memory.set_focus_lock_filter(
-            response.id,
-            egui::EventFilter {
-                horizontal_arrows: true,
-                vertical_arrows: true,
-                ..Default::default()
-            },
-        );
-    });
+    keep_arrows(&ctx, response.id, true);
     let bounds = plot_ui.plot_bounds();
     let (width, height) = (bounds.width(), bounds.height());
     let centre = PlotPoint::new(
@@ -52,10 +44,9 @@ pub fn keys_ui(plot_ui: &mut PlotUi<'_>, theme: &Theme) -> Option<PlotPoint> {
     );
     let (pan, zoom, picked) = ctx.input(|input| {
         use egui::Key as K;
-        let presses = |key| f64::from(u32::try_from(input.num_presses(key)).unwrap_or(0));
         let pan = (
-            PAN_SHARE * width * (presses(K::ArrowRight) - presses(K::ArrowLeft)),
-            PAN_SHARE * height * (presses(K::ArrowUp) - presses(K::ArrowDown)),
+            PAN_SHARE * width * net_presses(input, K::ArrowRight, K::ArrowLeft),
+            PAN_SHARE * height * net_presses(input, K::ArrowUp, K::ArrowDown),
         );
         let zoom_in = input.key_pressed(K::Plus) || input.key_pressed(K::Equals);
         let zoom_out = input.key_pressed(K::Minus);

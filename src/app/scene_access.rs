@@ -4,7 +4,7 @@
 
 use eframe::egui::{self, Stroke};
 
-use super::action::{Action, Actions};
+use super::action::{Action, Actions, keep_arrows, net_presses};
 use super::scene_words;
 use super::state::AppState;
 use super::theme::Theme;
@@ -23,23 +23,14 @@ pub fn keys_ui(ui: &egui::Ui, drag: &egui::Response, actions: &mut Actions, them
     if !drag.has_focus() {
         return;
     }
-    ui.memory_mut(|memory| {
-        memory.set_focus_lock_filter(
-            drag.id,
-            egui::EventFilter {
-                horizontal_arrows: true,
-                ..Default::default()
-            },
-        );
-    });
+    keep_arrows(ui.ctx(), drag.id, false);
     let turn_rad = ui.input(|input| {
         let step = if input.modifiers.shift {
             TURN_COARSE_RAD
         } else {
             TURN_RAD
         };
-        let presses = |key| f64::from(u32::try_from(input.num_presses(key)).unwrap_or(0));
-        step * (presses(egui::Key::ArrowLeft) - presses(egui::Key::ArrowRight))
+        step * net_presses(input, egui::Key::ArrowLeft, egui::Key::ArrowRight)
     });
     if turn_rad != 0.0 {
         actions.push(Action::KickBy {
