@@ -4,7 +4,7 @@
 
 use eframe::egui::{self, Align2, FontId, Rect, Sense, Stroke, pos2, vec2};
 
-use super::action::{Action, Actions, keep_arrows, net_presses};
+use super::action::{Action, Actions, Command, keep_arrows, net_presses};
 use super::state::AppState;
 use super::theme::Theme;
 use crate::analysis::State;
@@ -165,7 +165,7 @@ pub fn load_bar_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, t
             painter.rect_stroke(
                 rect.shrink(1.5 * theme.stroke_scale),
                 4.0,
-                Stroke::new(2.0 * theme.stroke_scale, theme.text),
+                theme.focus_stroke(),
                 egui::StrokeKind::Inside,
             );
         }
@@ -254,9 +254,9 @@ pub fn load_bar_description(state: &AppState) -> String {
 }
 
 /// The focused bar's keys: left and right by a hundredth of the bar (a
-/// tenth with shift), home and end to its ends. The arrows stay with the
-/// bar (egui would move the focus on). A screen reader's increment and decrement move it by the same hundredth,
-/// its "set value" to the value asked (within the bar).
+/// tenth with shift), home and end to its ends. A screen reader's increment
+/// and decrement are the load keys' commands (the state's step of a
+/// hundredth), its "set value" the value asked (within the bar).
 fn keys_ui(ui: &egui::Ui, response: &egui::Response, state: &AppState, actions: &mut Actions) {
     use egui::accesskit::{Action as A, ActionData};
     let p = state.model().load_p();
@@ -267,11 +267,7 @@ fn keys_ui(ui: &egui::Ui, response: &egui::Response, state: &AppState, actions: 
         None
     };
     let id = response.id;
-    let asked = ui.input(|input| {
-        let count = |action| {
-            f64::from(u32::try_from(input.num_accesskit_action_requests(id, action)).unwrap_or(0))
-        };
-        let steps = count(A::Increment) - count(A::Decrement);
+    let (ups, downs, set) = ui.input(|input| {
         let set = input.events.iter().find_map(|event| match event {
             egui::Event::AccessKitActionRequest(request)
                 if request.action == A::SetValue && request.target_node == id.accesskit_id() =>
@@ -285,15 +281,22 @@ fn keys_ui(ui: &egui::Ui, response: &egui::Response, state: &AppState, actions: 
             }
             _ => None,
         });
-        set.or_else(|| {
-            (steps != 0.0).then(|| (p + 0.01 * steps * load_max).clamp(0.0, load_max.max(p)))
-        })
+        (
+            input.num_accesskit_action_requests(id, A::Increment),
+            input.num_accesskit_action_requests(id, A::Decrement),
+            set,
+        )
     });
-    if let Some(load) = keyed.or(asked).filter(|&load| load != p) {
+    if let Some(load) = keyed.or(set).filter(|&load| load != p) {
         actions.push(Action::Enter {
             key: Key::Load,
             value: load,
         });
+    }
+    let steps = std::iter::repeat_n(Command::LoadUp, ups)
+        .chain(std::iter::repeat_n(Command::LoadDown, downs));
+    for command in steps {
+        actions.push(Action::Command(command));
     }
 }
 

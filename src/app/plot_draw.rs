@@ -165,7 +165,7 @@ pub fn plot_ui(
         ui.painter().rect_stroke(
             shown.response.rect,
             2.0,
-            egui::Stroke::new(2.0 * theme.stroke_scale, theme.text),
+            theme.focus_stroke(),
             egui::StrokeKind::Outside,
         );
     }

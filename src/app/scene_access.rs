@@ -2,7 +2,7 @@
 //! (what the column does), and the keys that turn the column while it has
 //! the focus (the keyboard's drag).
 
-use eframe::egui::{self, Stroke};
+use eframe::egui;
 
 use super::action::{Action, Actions, keep_arrows, net_presses};
 use super::scene_words;
@@ -40,7 +40,7 @@ pub fn keys_ui(ui: &egui::Ui, drag: &egui::Response, actions: &mut Actions, them
     ui.painter().rect_stroke(
         drag.rect.shrink(1.5 * theme.stroke_scale),
         4.0,
-        Stroke::new(2.0 * theme.stroke_scale, theme.text),
+        theme.focus_stroke(),
         egui::StrokeKind::Inside,
     );
 }

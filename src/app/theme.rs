@@ -133,15 +133,21 @@ impl Theme {
         }
     }
 
+    /// The ring round the control that has the keys: in the text's colour
+    /// and twice as wide as the theme's strokes, so it shows on a
+    /// projector too (egui's own controls and ours alike).
+    #[must_use]
+    pub fn focus_stroke(&self) -> egui::Stroke {
+        egui::Stroke::new(2.0 * self.stroke_scale, self.text)
+    }
+
     /// Applies the theme's visuals and text size to the context.
     pub fn apply(&self, ctx: &egui::Context) {
         let mut visuals = egui::Visuals::dark();
         visuals.panel_fill = self.background;
         visuals.override_text_color = Some(self.text);
-        // The focus ring (egui draws a focused control as a pressed one):
-        // in the text's colour and as wide as the theme's strokes, so it
-        // shows on a projector too.
-        visuals.widgets.active.bg_stroke = egui::Stroke::new(2.0 * self.stroke_scale, self.text);
+        // egui draws a focused control as a pressed one: its ring is ours.
+        visuals.widgets.active.bg_stroke = self.focus_stroke();
         visuals.selection.stroke.width = 2.0 * self.stroke_scale;
         ctx.set_visuals(visuals);
         ctx.global_style_mut(|style| {
