@@ -257,16 +257,26 @@ fn mark_ui<'a>(
         Mark::Range { from, to, state } => {
             plot_ui.span(Span::new(state.name(), *from..=*to).fill(range_tint(*state, theme)));
         }
+        Mark::Label { at, text } => {
+            // Spaces pad the plate on both sides of the word.
+            let word = egui::RichText::new(format!(" {text} "))
+                .size(theme.text_size)
+                .color(theme.text)
+                .background_color(theme.background.gamma_multiply(0.85));
+            plot_ui.text(
+                Text::new("", PlotPoint::new(at[0], at[1]), word)
+                    .id(("label", text))
+                    .allow_hover(false),
+            );
+        }
     }
     None
 }
 
-/// A map cell's colour: its state's, dimmer the slower it grows or decays.
+/// A map cell's colour: its state's, fainter the slower it grows or
+/// decays (the palette's mix with the background).
 fn cell_color(state: State, strength: f64, theme: &Theme) -> Color32 {
-    #[expect(clippy::cast_possible_truncation, reason = "a fraction in [0, 1]")]
-    theme
-        .state_color(state)
-        .gamma_multiply(0.3 + 0.7 * strength as f32)
+    color(theme.palette.cell(state, strength))
 }
 
 /// `grid` as an image, each cell a square of pixels (so a map of 128 cells

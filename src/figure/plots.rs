@@ -57,7 +57,7 @@ const CELL_LEVELS: f64 = 8.0;
 /// A map cell's colour: its state's, paler the slower it grows or decays.
 fn cell_color(state: State, strength: f64) -> RGBColor {
     let level = (strength * CELL_LEVELS).round() / CELL_LEVELS;
-    tint(state_color(state), 0.3 + 0.7 * level)
+    rgb(Palette::PAPER.cell(state, level))
 }
 
 /// The pale tint of a stability range.
@@ -204,6 +204,7 @@ where
                     range_tint(*state).filled(),
                 ))))?;
             }
+            Mark::Label { at, text } => label(&mut chart, *at, text, ink)?,
         }
     }
     drawn.notes.extend(
@@ -213,6 +214,41 @@ where
             .map(|far| far.note.clone()),
     );
     drawn.panels.push(panel(&chart));
+    Ok(())
+}
+
+/// `text` centred at `at` on a plate of the paper, half an em wider than
+/// the word each side.
+fn label<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    at: [f64; 2],
+    text: &str,
+    ink: &PageInk,
+) -> Result<(), FigureError>
+where
+    DB::ErrorType: 'static,
+{
+    let style = ink.text(1.0);
+    let em_px = style.font.get_size() / super::glyphs::SIZE_PER_EM;
+    let (width, height) = super::glyphs::text_size(&super::glyphs::font()?, em_px, text);
+    #[expect(clippy::cast_possible_truncation, reason = "lengths on a page")]
+    let (half_width, half_height) = (
+        (0.5 * width + 0.5 * em_px).round() as i32,
+        (0.5 * height + 0.15 * em_px).round() as i32,
+    );
+    let centred = style
+        .color(&INK)
+        .pos(plotters::style::text_anchor::Pos::new(
+            plotters::style::text_anchor::HPos::Center,
+            plotters::style::text_anchor::VPos::Center,
+        ));
+    let word = EmptyElement::at((at[0], at[1]))
+        + Rectangle::new(
+            [(-half_width, -half_height), (half_width, half_height)],
+            rgb(Palette::PAPER.background).mix(0.85).filled(),
+        )
+        + Text::new(text.to_owned(), (0, 0), centred);
+    drawing(chart.draw_series(std::iter::once(word)))?;
     Ok(())
 }
 

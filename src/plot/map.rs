@@ -5,6 +5,7 @@
 
 use std::sync::Arc;
 
+use super::map_words;
 use super::spec::{Entry, Ink, Mark, OffView, Plot, Size, Swatch, Ticks, View, Weight};
 use crate::analysis::{MapSpec, Row, RowResult, State, map_boundaries};
 use crate::format::number_text;
@@ -152,6 +153,14 @@ impl StabilityMap<'_> {
                     dashed: false,
                 }),
         );
+        marks.extend(
+            map_words::state_words(&self.grid, x, y)
+                .into_iter()
+                .map(|(at, state)| Mark::Label {
+                    at,
+                    text: state.name().to_owned(),
+                }),
+        );
         if let Some(now) = self.now {
             marks.push(Mark::Markers {
                 points: vec![now],
@@ -264,9 +273,26 @@ mod tests {
             grid: Arc::new(grid),
             now: None,
         };
-        let View::Ranges { x, y } = map.plot().view else {
+        let plot = map.plot();
+        let View::Ranges { x, y } = plot.view else {
             panic!("a map has ranges");
         };
         assert_eq!((x, y), ((-0.125, 8.125), (-0.05, 0.25)));
+        // Each state named once, inside its own range of loads.
+        let words: Vec<(f64, &str)> = plot
+            .marks
+            .iter()
+            .filter_map(|mark| match mark {
+                Mark::Label { at, text } => Some((at[0], text.as_str())),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(
+            words.iter().map(|w| w.1).collect::<Vec<_>>(),
+            ["stable", "flutter", "divergence"]
+        );
+        assert!(words[0].0 < flutter, "{words:?}");
+        assert!((flutter..divergence).contains(&words[1].0), "{words:?}");
+        assert!(words[2].0 > divergence, "{words:?}");
     }
 }

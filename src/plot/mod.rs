@@ -6,6 +6,7 @@ pub mod bifurcation;
 pub mod describe;
 pub mod locus;
 pub mod map;
+pub mod map_words;
 pub mod palette;
 pub mod paradox;
 pub mod pattern;

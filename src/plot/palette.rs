@@ -187,6 +187,31 @@ impl Palette {
         ..Self::NORMAL
     };
 
+    /// A stability map's cell: its state's colour mixed with the
+    /// background, `strength` in [0, 1] from [`Self::FAINTEST_CELL`] of
+    /// the colour to all of it (the faintest cells of two states stay as
+    /// far apart as the tests ask of the states).
+    #[must_use]
+    pub fn cell(&self, state: State, strength: f64) -> Rgb {
+        let share = Self::FAINTEST_CELL + (1.0 - Self::FAINTEST_CELL) * strength.clamp(0.0, 1.0);
+        let (colour, under) = (self.state(state), self.background);
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "a mix of two bytes"
+        )]
+        let mix =
+            |c: u8, b: u8| (f64::from(b) + (f64::from(c) - f64::from(b)) * share).round() as u8;
+        Rgb(
+            mix(colour.0, under.0),
+            mix(colour.1, under.1),
+            mix(colour.2, under.2),
+        )
+    }
+
+    /// The share of its state's colour in the faintest map cell.
+    pub const FAINTEST_CELL: f64 = 0.55;
+
     /// The colour that stands for a stability state.
     #[must_use]
     pub const fn state(&self, state: State) -> Rgb {

@@ -115,6 +115,9 @@ pub enum Mark {
     },
     /// A range of x tinted across the plot in the colour of a state.
     Range { from: f64, to: f64, state: State },
+    /// A word written on the plot, centred at `at`, on a plate of the
+    /// background so that it reads over cells and lines.
+    Label { at: [f64; 2], text: String },
 }
 
 /// How a plot's default view is set.

@@ -2,6 +2,7 @@
 //! the present and the curves stay apart, the ramp's lightness rises.
 
 use super::Palette;
+use crate::analysis::State;
 use crate::plot::Rgb;
 use crate::plot::vision::{Vision, difference, ucs};
 
@@ -45,6 +46,24 @@ fn the_states_stay_apart_for_every_colour_vision() {
         assert!(d >= 20.0, "{name}: states {d:.1} apart ({at})");
         let (d, at) = smallest(&[("background", p.background)], &states);
         assert!(d >= 20.0, "{name}: a state on the background {d:.1} ({at})");
+    }
+}
+
+/// The map's cells, from the faintest (the slowest growth or decay) to
+/// the strongest: the three states at each strength 20 apart for every
+/// colour vision, in both themes and on paper.
+#[test]
+fn the_map_s_faintest_cells_stay_apart() {
+    for (name, p) in PALETTES {
+        for strength in [0.0, 0.25, 0.5, 1.0] {
+            let cells = [
+                ("stable", p.cell(State::Stable, strength)),
+                ("flutter", p.cell(State::Flutter, strength)),
+                ("divergence", p.cell(State::Divergence, strength)),
+            ];
+            let (d, at) = smallest(&cells, &[]);
+            assert!(d >= 20.0, "{name}, strength {strength}: {d:.1} ({at})");
+        }
     }
 }
 
