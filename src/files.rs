@@ -11,9 +11,11 @@ use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
 mod descriptor;
+mod stream;
 
 use descriptor::open_descriptor;
 pub use descriptor::{descriptor_refusal, named_descriptor};
+pub use stream::{Reached, WholeLines, stop_streams, stopped_words};
 
 /// The temporary files being written now, for [`remove_unfinished`].
 static UNFINISHED: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
@@ -46,13 +48,47 @@ pub fn remove_unfinished() {
     remove_unfinished_where(|_| true);
 }
 
-/// Removes the listed temporary files whose path `chosen` picks.
+/// Removes the listed temporary files (and folders) whose path `chosen`
+/// picks.
 fn remove_unfinished_where(chosen: impl Fn(&Path) -> bool) {
     if let Ok(paths) = UNFINISHED.lock() {
         for path in paths.iter().filter(|p| chosen(p)) {
             // Already renamed or removed: nothing left to do.
-            let _ = std::fs::remove_file(path);
+            if std::fs::symlink_metadata(path).is_ok_and(|m| m.is_dir()) {
+                let _ = std::fs::remove_dir_all(path);
+            } else {
+                let _ = std::fs::remove_file(path);
+            }
         }
+    }
+}
+
+/// A temporary folder made in `folder` (named `.{prefix}XXXXXX`), removed
+/// when the value is dropped and by [`remove_unfinished`] when a signal or
+/// the time limit stops the process first.
+pub struct StagingFolder {
+    folder: tempfile::TempDir,
+    _listed: Unfinished,
+}
+
+impl StagingFolder {
+    /// A new staging folder in `folder`.
+    ///
+    /// # Errors
+    /// The folder takes no new folder.
+    pub fn new_in(folder: &Path, prefix: &str) -> std::io::Result<Self> {
+        let made = tempfile::Builder::new().prefix(prefix).tempdir_in(folder)?;
+        let listed = Unfinished::new(made.path());
+        Ok(Self {
+            folder: made,
+            _listed: listed,
+        })
+    }
+
+    /// Where it is.
+    #[must_use]
+    pub fn path(&self) -> &Path {
+        self.folder.path()
     }
 }
 
@@ -140,7 +176,7 @@ pub fn folder_of(out: &Path) -> &Path {
 /// The folder, the temporary file, `write` or the rename failing.
 pub fn write_atomically(
     out: &Path,
-    write: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> std::io::Result<()>,
+    write: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>,
 ) -> Result<(), WriteError> {
     let error = |e: &dyn std::fmt::Display| WriteError {
         path: out.display().to_string(),
@@ -152,7 +188,7 @@ pub fn write_atomically(
     // behind it would destroy what it held.
     if let Some(descriptor) = named_descriptor(out) {
         let file = open_descriptor(descriptor).map_err(|e| error(&e))?;
-        return write_stream(file, write).map_err(|e| error(&e));
+        return write_stream(file, &out.display().to_string(), write).map_err(|e| error(&e));
     }
     // A symbolic link is written through: the file it names is replaced,
     // the link stays (renaming over the link would replace the link).
@@ -164,7 +200,7 @@ pub fn write_atomically(
             .write(true)
             .open(out)
             .map_err(|e| error(&e))?;
-        return write_stream(file, write).map_err(|e| error(&e));
+        return write_stream(file, &out.display().to_string(), write).map_err(|e| error(&e));
     }
     // A file the user may not write is not replaced (the shell's `>`
     // refuses it too), though its folder would take the rename.
@@ -217,7 +253,7 @@ pub fn protected(out: &Path) -> Option<String> {
 /// last write can cut it short.
 fn write_in_place(
     out: &Path,
-    write: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> std::io::Result<()>,
+    write: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>,
 ) -> std::io::Result<()> {
     use std::io::Read as _;
     let mut memory = tempfile::tempfile()?;
@@ -249,14 +285,26 @@ fn write_in_place(
 }
 
 /// `write` straight into `file` (a device, a pipe or the shell's stream:
-/// nothing to write beside and rename), flushed.
+/// nothing to write beside and rename), named `name`: whole lines at a
+/// time ([`WholeLines`]), the rest at the end.
 fn write_stream(
-    mut file: std::fs::File,
-    write: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> std::io::Result<()>,
+    file: std::fs::File,
+    name: &str,
+    write: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>,
 ) -> std::io::Result<()> {
-    let mut buffered = std::io::BufWriter::new(&mut file);
-    write(&mut buffered)?;
-    buffered.flush()
+    let at_once = std::io::IsTerminal::is_terminal(&file);
+    let mut lines = WholeLines::new(file, name, at_once);
+    write(&mut lines)?;
+    lines.flush()
+}
+
+/// Standard output, passed on whole lines at a time ([`WholeLines`]):
+/// each line as it comes on a terminal, in batches elsewhere.
+#[must_use]
+pub fn standard_output() -> WholeLines<std::io::StdoutLock<'static>> {
+    let stdout = std::io::stdout();
+    let at_once = std::io::IsTerminal::is_terminal(&stdout);
+    WholeLines::new(stdout.lock(), "standard output", at_once)
 }
 
 /// `image` as a PNG file at `out`, written as [`write_atomically`] does.
@@ -298,7 +346,7 @@ pub fn link_target(path: &Path) -> std::io::Result<Option<std::path::PathBuf>> {
 fn written_temporary(
     mut file: tempfile::NamedTempFile,
     permissions: Option<std::fs::Permissions>,
-    write: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> std::io::Result<()>,
+    write: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>,
 ) -> std::io::Result<(tempfile::NamedTempFile, Unfinished)> {
     let listed = Unfinished::new(file.path());
     {
@@ -328,7 +376,7 @@ pub fn write_new(
     folder: &Path,
     stem: &str,
     extension: &str,
-    write: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> std::io::Result<()>,
+    write: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>,
 ) -> Result<std::path::PathBuf, WriteError> {
     let name = |k: u32| {
         let suffix = if k == 1 {
@@ -400,6 +448,23 @@ mod tests {
     /// A link is written through: the file it names gets the text, the
     /// link stays a link.
     #[cfg(unix)]
+    /// A staging folder and what it holds are gone after a stop (as the
+    /// signal handlers and the time limit call it) and after a drop.
+    #[test]
+    fn a_stopped_staging_folder_is_removed() {
+        let dir = tempfile::tempdir().unwrap();
+        let staging = StagingFolder::new_in(dir.path(), ".test-staging").unwrap();
+        std::fs::write(staging.path().join("page.1"), "made").unwrap();
+        let path = staging.path().to_owned();
+        remove_unfinished_where(|p| p == path);
+        assert!(!path.exists());
+        let again = StagingFolder::new_in(dir.path(), ".test-staging").unwrap();
+        let path = again.path().to_owned();
+        drop(again);
+        assert!(!path.exists());
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+    }
+
     #[test]
     fn a_link_is_written_through() {
         let folder = tempfile::tempdir().unwrap();

@@ -3,7 +3,6 @@
 //! and written whole or not at all, off the window's thread (a slow disk or
 //! a stalled mount never freezes the window).
 
-use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
 use eframe::egui;

@@ -155,9 +155,12 @@ pub fn run(args: &Args) -> Result<()> {
             Format::Csv | Format::Png => write_csv(out, &rows, model.column.rods),
         }
     };
-    match &args.out {
-        Some(path) => write_atomically(path, |file| write(file))?,
-        None => write(&mut std::io::stdout().lock())?,
+    if let Some(path) = &args.out {
+        write_atomically(path, |file| write(file))?;
+    } else {
+        let mut out = zieglerlab::files::standard_output();
+        write(&mut out)?;
+        out.flush()?;
     }
     Ok(())
 }

@@ -61,27 +61,51 @@ pub fn manual(args: &ManualArgs, command: clap::Command, out: &mut impl Write) -
         anyhow::bail!("--dir {}: not a folder", dir.display());
     }
     // clap_mangen names the pages: they are written into a fresh folder
-    // inside `dir` and moved out of it, so the names said are the files
-    // written, whatever its naming.
-    let written_in = |error: std::io::Error| {
-        anyhow::Error::new(error).context(format!("writing the man pages into {}", dir.display()))
+    // inside `dir` (removed however the command ends) and moved out of it,
+    // so the names said are the files written, whatever its naming.
+    let in_dir = |what: &str, error: &dyn std::fmt::Display| {
+        anyhow::anyhow!("--dir {}: {what}: {error}", dir.display())
     };
-    let staging = tempfile::Builder::new()
-        .prefix(".zieglerlab-manual")
-        .tempdir_in(dir)
-        .map_err(written_in)?;
-    clap_mangen::generate_to(command, staging.path()).map_err(written_in)?;
+    let staging = zieglerlab::files::StagingFolder::new_in(dir, ".zieglerlab-manual")
+        .map_err(|e| in_dir("takes no new folder", &e))?;
+    clap_mangen::generate_to(command, staging.path())
+        .map_err(|e| in_dir("the pages could not be made", &e))?;
     let mut pages = std::fs::read_dir(staging.path())
         .and_then(|entries| {
             entries
                 .map(|entry| entry.map(|e| e.file_name()))
                 .collect::<Result<Vec<_>, _>>()
         })
-        .map_err(written_in)?;
+        .map_err(|e| in_dir("the pages could not be made", &e))?;
     pages.sort();
-    for page in pages {
-        let target = dir.join(&page);
-        std::fs::rename(staging.path().join(&page), &target).map_err(written_in)?;
+    // Every page in the way is found before any is moved, so a refusal
+    // leaves the folder as it was.
+    for page in &pages {
+        let target = dir.join(page);
+        let shown = page.to_string_lossy();
+        if std::fs::symlink_metadata(&target).is_ok_and(|m| m.is_dir()) {
+            anyhow::bail!(
+                "--dir {}: {shown} is a folder, in the way of that page; no page was written",
+                dir.display()
+            );
+        }
+        if let Some(why) = zieglerlab::files::protected(&target) {
+            anyhow::bail!(
+                "--dir {}: {shown}: {why}; no page was written",
+                dir.display()
+            );
+        }
+    }
+    for (done, page) in pages.iter().enumerate() {
+        let target = dir.join(page);
+        if let Err(error) = std::fs::rename(staging.path().join(page), &target) {
+            let what = format!(
+                "{} could not be written ({done} of {} pages were written before it, the rest were not)",
+                page.to_string_lossy(),
+                pages.len()
+            );
+            return Err(in_dir(&what, &error));
+        }
         writeln!(out, "{}", target.display())?;
     }
     Ok(())

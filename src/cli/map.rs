@@ -1,7 +1,6 @@
 //! `zieglerlab map`: the state and growth rate of every cell of a grid over
 //! the load and a second parameter, as CSV or a PNG picture.
 
-use std::io::Write as _;
 use std::str::FromStr;
 use std::sync::atomic::{AtomicBool, AtomicUsize};
 

@@ -62,6 +62,10 @@ const MOST_TIME_LIMIT_SECS: f64 = 604_800.0;
 /// Status of a command stopped by its time limit (as `timeout` reports it).
 const TIMED_OUT: i32 = 124;
 
+/// How long a stopping command waits for a write to a stream to finish,
+/// so that the stream ends on a whole line.
+const STREAM_WAIT: std::time::Duration = std::time::Duration::from_secs(2);
+
 /// Stops the process after `limit_secs`, watched on a thread of its own:
 /// the file being written is removed and one line says why, so no input
 /// keeps a command (or a script waiting on it) running without end.
@@ -69,13 +73,15 @@ fn stop_after(limit_secs: f64) {
     let watch = move || {
         std::thread::sleep(std::time::Duration::from_secs_f64(limit_secs));
         zieglerlab::files::remove_unfinished();
+        let streams = zieglerlab::files::stop_streams(STREAM_WAIT);
         // A progress bar may hold the terminal's line: start a new one.
         if std::io::IsTerminal::is_terminal(&std::io::stderr()) {
             eprintln!();
         }
         eprintln!(
-            "error: stopped after {} s, the time limit of a command (--time-limit SECS allows more); no file was left half-written",
-            zieglerlab::format::number_text(limit_secs)
+            "error: stopped after {} s, the time limit of a command (--time-limit SECS allows more); no file was left half-written{}",
+            zieglerlab::format::number_text(limit_secs),
+            zieglerlab::files::stopped_words(streams.as_ref())
         );
         std::process::exit(TIMED_OUT);
     };
@@ -385,8 +391,8 @@ fn execute(command: &Command) -> Result<()> {
     if to_stdout {
         output::stop_when_the_reader_goes();
     }
-    let mut out = std::io::stdout().lock();
-    match command {
+    let mut out = zieglerlab::files::standard_output();
+    let done = match command {
         Command::Presets(args) => presets::run(args, &mut out),
         Command::Lesson(args) => lesson::run(args, &mut out),
         Command::Critical(args) => critical::run(args, &mut out),
@@ -400,7 +406,9 @@ fn execute(command: &Command) -> Result<()> {
         Command::Record(args) => record::run(args),
         Command::Completions(args) => desktop::completions(args, &mut Cli::command(), &mut out),
         Command::Manual(args) => desktop::manual(args, Cli::command(), &mut out),
-    }
+    };
+    // The end of the output, a part of a line included, once it is whole.
+    done.and_then(|()| Ok(std::io::Write::flush(&mut out)?))
 }
 
 /// A progress bar of `len` steps on stderr, drawn only when stderr is a

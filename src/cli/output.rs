@@ -73,7 +73,7 @@ use zieglerlab::files::folder_of;
 /// The file cannot be written.
 pub fn write_atomically(
     out: &Path,
-    write: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> std::io::Result<()>,
+    write: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>,
 ) -> Result<()> {
     Ok(zieglerlab::files::write_atomically(out, write)?)
 }

@@ -2,8 +2,6 @@
 //! drawn by the same headless renderer as `snapshot`, one frame per 1/fps s
 //! of simulated time: the same arguments give the same bytes.
 
-use std::io::Write;
-
 use anyhow::Result;
 use zieglerlab::format::Shown;
 

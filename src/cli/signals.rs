@@ -44,6 +44,9 @@ pub fn stop_on_signals(status: i32) {
         .spawn(move || {
             if signals.forever().next().is_some() {
                 zieglerlab::files::remove_unfinished();
+                // A stream ends on a whole line (a blocked write is not
+                // waited for long: the user asked to stop).
+                let _ = zieglerlab::files::stop_streams(std::time::Duration::from_millis(500));
                 std::process::exit(status);
             }
         });

@@ -105,3 +105,31 @@ fn the_man_pages_cover_every_subcommand() {
     let missing = run(&["manual", "--dir", "/nonexistent-folder"]);
     assert_eq!(missing.status.code(), Some(2));
 }
+
+/// A page in the way (a folder named as a page) is found before any page
+/// is moved: the error names the folder typed and the page, the folder
+/// holds what it held, and no staging folder is left.
+#[test]
+fn a_page_in_the_way_leaves_the_folder_as_it_was() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::create_dir(dir.path().join("zieglerlab-map.1")).unwrap();
+    std::fs::write(dir.path().join("zieglerlab.1"), "an older page").unwrap();
+    let dir_text = dir.path().to_str().unwrap();
+    let output = run(&["manual", "--dir", dir_text]);
+    assert_eq!(output.status.code(), Some(2));
+    let said = String::from_utf8(output.stderr).unwrap();
+    assert!(
+        said.contains(&format!("--dir {dir_text}: zieglerlab-map.1 is a folder"))
+            && said.contains("no page was written"),
+        "{said}"
+    );
+    assert!(!said.contains(".zieglerlab-manual"), "{said}");
+    let mut held: Vec<String> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|entry| entry.unwrap().file_name().into_string().unwrap())
+        .collect();
+    held.sort();
+    assert_eq!(held, ["zieglerlab-map.1", "zieglerlab.1"]);
+    let old = std::fs::read_to_string(dir.path().join("zieglerlab.1")).unwrap();
+    assert_eq!(old, "an older page");
+}

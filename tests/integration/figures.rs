@@ -11,6 +11,8 @@ use zieglerlab::figure::{
     Analysed, Content, Format, MapData, Page, ParadoxData, Rendered, analyse, render,
 };
 use zieglerlab::model::Axis;
+use zieglerlab::plot::map::CellGrid;
+use zieglerlab::plot::map_words::state_words;
 use zieglerlab::plot::{Palette, Rgb};
 
 /// The pixels of a PNG figure.
@@ -199,11 +201,25 @@ fn map_figure_draws_each_cell_in_its_state_and_the_boundaries_on_the_critical_lo
     let image = pixels(&rendered);
     let panel = &rendered.panels[0];
     let loads = spec.load_grid().unwrap();
+    // The states' names are written over the cells: cells within the
+    // largest box a name may take (two fifths of the map's width by a
+    // sixth of its height) are not read.
+    let grid = CellGrid::new(&spec, &data.rows);
+    let (x, y) = (panel.x_range, panel.y_range);
+    let words = state_words(&grid, x, y);
+    let under_a_word = |p: f64, value: f64| {
+        words.iter().any(|(at, _)| {
+            (p - at[0]).abs() < 0.2 * (x.1 - x.0) && (value - at[1]).abs() < 0.08 * (y.1 - y.0)
+        })
+    };
+    assert_eq!(words.len(), 3, "each state named: {words:?}");
     let mut seen = Vec::new();
     for row in data.rows.iter().flatten().flatten() {
         for (cell, &p) in row.cells.iter().zip(&loads) {
-            // Away from a boundary (it is drawn over the cells).
-            if row.transitions.iter().any(|t| (t.load - p).abs() < 0.2) {
+            // Away from a boundary (it is drawn over the cells) and a name.
+            if row.transitions.iter().any(|t| (t.load - p).abs() < 0.2)
+                || under_a_word(p, row.value)
+            {
                 continue;
             }
             // The deepest pixel about the cell's centre: a striped cell's

@@ -207,3 +207,34 @@ fn nohup_and_a_background_job_keep_running() {
         assert_eq!(std::fs::read_dir(folder.path()).expect("listed").count(), 0);
     }
 }
+
+/// A run streaming rows into a redirected standard output, stopped by its
+/// time limit: the rows written so far stay, end on a whole line, and the
+/// status line counts exactly the lines and bytes the file holds.
+#[test]
+fn a_stopped_stream_ends_on_a_whole_line_and_says_how_much() {
+    let folder = tempfile::tempdir().expect("a folder");
+    let rows = folder.path().join("rows.csv");
+    let (status, said) = shell(&format!(
+        "{BIN} simulate --preset beck --duration 1000000 --dt 0.1 --time-limit 1 > {}",
+        rows.display()
+    ));
+    assert_eq!(status, Some(124), "{said}");
+    let text = std::fs::read_to_string(&rows).expect("the rows");
+    assert!(text.starts_with("t,") && text.ends_with('\n'), "{said}");
+    let lines = text.lines().count();
+    assert!(lines > 1, "{said}");
+    let counted = format!(
+        "standard output had got {lines} lines ({} bytes) before the stop, ending on a whole line",
+        text.len()
+    );
+    assert!(said.contains(&counted), "{said} (the file: {counted})");
+    // Nothing reached a stream: the line says only that no file was left.
+    let folder = tempfile::tempdir().expect("a folder");
+    let (status, said) = shell(&format!(
+        "{BIN} critical --preset beck --set rods=32 --load-max 1e150 --time-limit 1 > {}",
+        folder.path().join("none.csv").display()
+    ));
+    assert_eq!(status, Some(124), "{said}");
+    assert!(said.ends_with("no file was left half-written\n"), "{said}");
+}
