@@ -54,6 +54,53 @@ pub fn rate_text(rate: f64) -> String {
     }
 }
 
+/// A measured value and its uncertainty as a measurement is written: the
+/// uncertainty to two significant digits, the value to the same decimal
+/// place, signed if `signed` (`+0.00042 ± 0.00030`, `0.9205 ± 0.0013`);
+/// past six decimals a small value shares its uncertainty's exponent
+/// (`(-1.33 ± 0.46)e-7`), and a larger one stops at the sixth
+/// (`2.196425 ± <0.000001`).
+#[must_use]
+pub fn measured_text(value: f64, uncertainty: f64, signed: bool) -> String {
+    const MOST_DECIMALS: i32 = 6;
+    let fixed = |x: f64, decimals: usize, signed: bool| {
+        if signed {
+            format!("{x:+.decimals$}")
+        } else {
+            format!("{x:.decimals$}")
+        }
+    };
+    // Two significant digits of the uncertainty: its decimal places.
+    #[expect(clippy::cast_possible_truncation, reason = "a small exponent")]
+    let places = |u: f64| (1 - u.log10().floor() as i32).max(0);
+    if !(uncertainty.is_finite() && uncertainty > 0.0 && value.is_finite()) {
+        return format!("{} ± ?", fixed(value, 6, signed));
+    }
+    let decimals = places(uncertainty);
+    if decimals <= MOST_DECIMALS {
+        let d = decimals.unsigned_abs() as usize;
+        return format!(
+            "{} ± {}",
+            fixed(value, d, signed),
+            fixed(uncertainty, d, false)
+        );
+    }
+    if value.abs() >= 1e-3 {
+        return format!("{} ± <0.000001", fixed(value, 6, signed));
+    }
+    #[expect(clippy::cast_possible_truncation, reason = "a small exponent")]
+    let exponent = value.abs().max(uncertainty).log10().floor() as i32;
+    let scale = 10f64.powi(-exponent);
+    let d = places(uncertainty * scale)
+        .min(MOST_DECIMALS)
+        .unsigned_abs() as usize;
+    format!(
+        "({} ± {})e{exponent}",
+        fixed(value * scale, d, signed),
+        fixed(uncertainty * scale, d, false)
+    )
+}
+
 /// A percentage: two decimals, or three significant digits when small.
 #[must_use]
 pub fn percent_text(percent: f64) -> String {
@@ -203,6 +250,25 @@ impl std::fmt::Display for Exact {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A measurement's digits stop where its uncertainty's second digit
+    /// does.
+    #[test]
+    fn a_measurement_is_written_to_its_uncertainty() {
+        assert_eq!(
+            measured_text(0.000_423, 0.000_301, true),
+            "+0.00042 ± 0.00030"
+        );
+        assert_eq!(measured_text(-0.0021, 0.0004, true), "-0.00210 ± 0.00040");
+        assert_eq!(measured_text(0.920_512, 0.001_3, false), "0.9205 ± 0.0013");
+        assert_eq!(measured_text(12.34, 25.0, false), "12 ± 25");
+        assert_eq!(measured_text(-1.33e-7, 4.6e-8, true), "(-1.33 ± 0.46)e-7");
+        assert_eq!(
+            measured_text(2.196_424_868, 2.6e-8, false),
+            "2.196425 ± <0.000001"
+        );
+        assert_eq!(measured_text(0.5, f64::NAN, false), "0.500000 ± ?");
+    }
 
     #[test]
     fn long_words_are_clipped_with_their_length() {

@@ -66,14 +66,9 @@ impl History {
     /// exponentials to fit (two per oscillating mode).
     #[must_use]
     pub fn measured(&self, order: usize) -> Option<Vec<C64>> {
-        let window: Vec<&Observables> = self
-            .samples
-            .iter()
-            .filter(|o| o.t_secs >= self.measure_from_secs)
-            .collect();
+        let window = self.window();
         let (first, last) = (window.first()?, window.last()?);
-        let window_secs = last.t_secs - first.t_secs;
-        if window_secs < MIN_WINDOW_SECS {
+        if last.t_secs - first.t_secs < MIN_WINDOW_SECS {
             return None;
         }
         let amplitude = window
@@ -83,19 +78,81 @@ impl History {
         if !(amplitude < LINEAR_AMPLITUDE_RAD && amplitude > 0.0) {
             return None;
         }
-        let every = window.len().div_ceil(MEASURE_SAMPLES).max(1);
-        let picked: Vec<&Observables> = window.into_iter().step_by(every).collect();
-        let dt_secs = picked.get(1)?.t_secs - picked.first()?.t_secs;
-        let phi1: Vec<f64> = picked.iter().map(|o| o.phi1_rad).collect();
-        let phi2: Vec<f64> = picked.iter().map(|o| o.phi2_rad).collect();
-        // A swing slower than the window is not measured from it: less
-        // than one period fits a made-up frequency and growth (the
-        // 42 s mode of ziegler-1952 at p = 1 came out as +0.006 ± 0.171i
-        // from 25 s).
-        let measured: Vec<C64> = identify(&[&phi1, &phi2], dt_secs, order)?
-            .into_iter()
-            .filter(|z| z.im == 0.0 || std::f64::consts::TAU / z.im.abs() <= window_secs)
-            .collect();
-        (!measured.is_empty()).then_some(measured)
+        fit(&window, order)
     }
+
+    /// How uncertain each of `measured` (the fit over the whole window) is:
+    /// the fits over the window's first and its last [`PART_OF_WINDOW`]
+    /// each give the nearest eigenvalue, and the larger distance of the
+    /// two, in the real and the imaginary part, is the uncertainty. `None`
+    /// for an eigenvalue a part cannot fit (a swing slower than the part).
+    #[must_use]
+    pub fn uncertainty(&self, order: usize, measured: &[C64]) -> Vec<Option<C64>> {
+        let window = self.window();
+        let parts = window.first().zip(window.last()).map(|(first, last)| {
+            let part_secs = PART_OF_WINDOW * (last.t_secs - first.t_secs);
+            let early: Vec<&Observables> = window
+                .iter()
+                .copied()
+                .filter(|o| o.t_secs <= first.t_secs + part_secs)
+                .collect();
+            let late: Vec<&Observables> = window
+                .iter()
+                .copied()
+                .filter(|o| o.t_secs >= last.t_secs - part_secs)
+                .collect();
+            [fit(&early, order), fit(&late, order)]
+        });
+        measured
+            .iter()
+            .map(|&z| {
+                let parts = parts.as_ref()?;
+                let mut worst = C64::new(0.0, 0.0);
+                for part in parts {
+                    let nearest = part
+                        .as_deref()?
+                        .iter()
+                        .map(|&w| C64::new(w.re, w.im.abs() * z.im.signum()))
+                        .filter(|w| (w.im == 0.0) == (z.im == 0.0))
+                        .min_by(|a, b| (a - z).norm().total_cmp(&(b - z).norm()))?;
+                    worst.re = worst.re.max((nearest.re - z.re).abs());
+                    worst.im = worst.im.max((nearest.im - z.im).abs());
+                }
+                Some(worst)
+            })
+            .collect()
+    }
+
+    /// The samples the measurement may use: those since the last change.
+    fn window(&self) -> Vec<&Observables> {
+        self.samples
+            .iter()
+            .filter(|o| o.t_secs >= self.measure_from_secs)
+            .collect()
+    }
+}
+
+/// The share of the window that each of the two fits of
+/// [`History::uncertainty`] takes: the first and the last three quarters.
+const PART_OF_WINDOW: f64 = 0.75;
+
+/// The eigenvalues fitted to `window` (at most [`MEASURE_SAMPLES`] of it),
+/// each oscillating one only if the window holds a whole period of it.
+fn fit(window: &[&Observables], order: usize) -> Option<Vec<C64>> {
+    let (first, last) = (window.first()?, window.last()?);
+    let window_secs = last.t_secs - first.t_secs;
+    let every = window.len().div_ceil(MEASURE_SAMPLES).max(1);
+    let picked: Vec<&Observables> = window.iter().copied().step_by(every).collect();
+    let dt_secs = picked.get(1)?.t_secs - picked.first()?.t_secs;
+    let phi1: Vec<f64> = picked.iter().map(|o| o.phi1_rad).collect();
+    let phi2: Vec<f64> = picked.iter().map(|o| o.phi2_rad).collect();
+    // A swing slower than the window is not measured from it: less
+    // than one period fits a made-up frequency and growth (the
+    // 42 s mode of ziegler-1952 at p = 1 came out as +0.006 ± 0.171i
+    // from 25 s).
+    let measured: Vec<C64> = identify(&[&phi1, &phi2], dt_secs, order)?
+        .into_iter()
+        .filter(|z| z.im == 0.0 || std::f64::consts::TAU / z.im.abs() <= window_secs)
+        .collect();
+    (!measured.is_empty()).then_some(measured)
 }

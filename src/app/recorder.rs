@@ -80,7 +80,7 @@ impl Recorded {
         let per_sec = self.frames as f64 / self.secs.max(1e-9);
         let slow = if per_sec < f64::from(RECORD_FPS) / 2.0 {
             format!(
-                "; the machine drew only {} frames a second of the {RECORD_FPS} asked for, so the GIF plays in the right time but jerkily: a smaller window (or projector mode off) records more",
+                "; it caught only {} frames a second of the {RECORD_FPS} a second the GIF is made of (the capture rate: the machine was too busy to take more), so the GIF plays in the right time but jerkily: a smaller window (or projector mode off) records more",
                 crate::format::number_text((per_sec * 10.0).round() / 10.0)
             )
         } else {
@@ -501,7 +501,7 @@ mod tests {
         };
         let busy = recorded(19).text();
         assert!(
-            busy.starts_with("recording saved to /tmp/clip.gif: 19 frames in 10 s; the machine drew only 1.9 frames a second of the 10 asked for"),
+            busy.starts_with("recording saved to /tmp/clip.gif: 19 frames in 10 s; it caught only 1.9 frames a second of the 10 a second the GIF is made of (the capture rate"),
             "{busy}"
         );
         assert!(busy.contains("a smaller window"), "{busy}");

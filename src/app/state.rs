@@ -97,6 +97,9 @@ pub struct AppState {
     /// The column's eigenvalues measured from the run, refreshed about once a
     /// simulated second.
     measured: Option<Vec<C64>>,
+    /// Each measured eigenvalue's uncertainty (real and imaginary parts),
+    /// where the run tells it ([`crate::app::history::History::uncertainty`]).
+    measured_uncertainty: Vec<Option<C64>>,
     measured_at_secs: f64,
     /// A second model's locus drawn behind the current one (Fig. 8).
     overlay: Option<Overlay>,
@@ -168,6 +171,7 @@ impl AppState {
             refused: Vec::new(),
             history: History::default(),
             measured: None,
+            measured_uncertainty: Vec::new(),
             measured_at_secs: f64::NEG_INFINITY,
             overlay: None,
             overlay_wanted: None,
@@ -216,6 +220,13 @@ impl AppState {
     #[must_use]
     pub fn measured(&self) -> Option<&[C64]> {
         self.measured.as_deref()
+    }
+
+    /// The uncertainty of the `k`-th of [`Self::measured`] (in its real and
+    /// imaginary parts), where the run tells it.
+    #[must_use]
+    pub fn measured_uncertainty(&self, k: usize) -> Option<C64> {
+        self.measured_uncertainty.get(k).copied().flatten()
     }
 
     #[must_use]

@@ -175,6 +175,19 @@ impl ModelArgs {
         Ok((self.preset, model))
     }
 
+    /// [`Self::build`] for a picture of the window: rods set with no load
+    /// start the load where the preset's stands on its bar, as rods typed
+    /// in the window do ([`Model::load_in_place_of`]).
+    fn build_for_the_window(&self) -> Result<(PresetId, Model)> {
+        let (preset, model) = self.build()?;
+        let loaded = self.sets_any(&[Key::Load, Key::P, Key::NormalForce]);
+        if self.sets_any(&[Key::Rods]).is_none() || loaded.is_some() {
+            return Ok((preset, model));
+        }
+        let load = model.load_in_place_of(&preset.model());
+        Ok((preset, model.at_load(load)))
+    }
+
     /// [`Self::build`] at the start of `ramp`, if there is one: the ramp
     /// sets the load, so a `--set` of the load beside it (as `load`, the
     /// force `P` or the roller's normal force `R`) is refused: it would be
@@ -479,5 +492,28 @@ mod tests {
             unknown.contains("ZIEGLERLAB_RENDERER=vulkan") && unknown.contains("glow or wgpu"),
             "{unknown}"
         );
+    }
+
+    /// A snapshot's or a recording's chain (`--set rods=16`) starts inside
+    /// its own bar at the place of the preset's load; a load given with it
+    /// (as `load` or the force `P`) is kept; commands other than the
+    /// window's pictures keep the preset's load.
+    #[test]
+    fn a_chain_in_a_picture_starts_inside_its_bar() {
+        let args = |set: &[&str]| ModelArgs {
+            preset: PresetId::Tabletop,
+            set: set.iter().map(|s| (*s).to_owned()).collect(),
+        };
+        let preset = PresetId::Tabletop.model();
+        let (_, chain) = args(&["rods=16"]).build_for_the_window().unwrap();
+        assert!((chain.load_p() - preset.load_p() / 64.0).abs() < 1e-15);
+        let (_, given) = args(&["rods=16", "load=0.1"])
+            .build_for_the_window()
+            .unwrap();
+        assert!((given.load_p() - 0.1).abs() < 1e-15);
+        let (_, two) = args(&["c2=0.1"]).build_for_the_window().unwrap();
+        assert_eq!(two.load_p(), preset.load_p());
+        let (_, simulated) = args(&["rods=16"]).build().unwrap();
+        assert_eq!(simulated.load_p(), preset.load_p());
     }
 }

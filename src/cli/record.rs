@@ -69,7 +69,10 @@ pub fn run(args: &Args) -> Result<()> {
             args.fps
         );
     }
-    let (name, model) = args.model.build_ramped(args.ramp.as_ref())?;
+    let (name, model) = match &args.ramp {
+        Some(ramp) => args.model.build_ramped(Some(ramp))?,
+        None => args.model.build_for_the_window()?,
+    };
     let mut app = ZieglerApp::new(Settings {
         preset: name,
         model,

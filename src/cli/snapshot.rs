@@ -73,7 +73,7 @@ fn open_at_step(app: &mut ZieglerApp, lesson: Lesson, step: Option<i64>) -> Resu
 pub fn run(args: &Args) -> Result<()> {
     check_output(&args.out, true)?;
     args.look.check(args.size)?;
-    let (name, model) = args.model.build()?;
+    let (name, model) = args.model.build_for_the_window()?;
     let time = args.time;
     if !(time.is_finite() && (0.0..=1.0e5).contains(&time)) {
         anyhow::bail!(

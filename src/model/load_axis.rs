@@ -34,6 +34,15 @@ impl Model {
         LOAD_BAR_MAX_P * self.column.load_range_scale()
     }
 
+    /// The load that stands where `before`'s load stands on its bar, on
+    /// this model's bar: for a model whose rods were changed with no load
+    /// given, so that a chain starts inside its own bar (`--set rods=16` on
+    /// a preset at p = 1 starts at p = 1/64), as rods typed in the window do.
+    #[must_use]
+    pub fn load_in_place_of(&self, before: &Self) -> f64 {
+        before.load_p() * self.load_bar_max_p() / before.load_bar_max_p()
+    }
+
     /// The top of the load range the analysis searches by default (the
     /// critical loads, the paradox curves, the bench): [`ANALYSIS_MAX_P`]
     /// for two rods, the same range of `P L^2 / EI` for a chain.

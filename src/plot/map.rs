@@ -205,10 +205,44 @@ impl StabilityMap<'_> {
             ),
         ));
         entries.push(Entry::new(Swatch::Line(Ink::Main), "critical loads"));
-        if self.now.is_some() {
-            entries.push(Entry::new(Swatch::Marker(Ink::Now, true), "now"));
+        if let Some(now) = self.now {
+            entries.push(Entry::new(
+                Swatch::Marker(Ink::Now, true),
+                self.now_words(now),
+            ));
         }
         entries
+    }
+
+    /// The present's entry in the key: "now", or why its dot is not on the
+    /// map (the column lies off the map's axes).
+    fn now_words(&self, [load, value]: [f64; 2]) -> String {
+        let ((p0, p1), (y0, y1)) = (self.spec.load_range, self.spec.axis_range);
+        let beyond = |x: f64, (lo, hi): (f64, f64)| {
+            if x < lo {
+                Some(format!("below {}", number_text(lo)))
+            } else if x > hi {
+                Some(format!("above {}", number_text(hi)))
+            } else {
+                None
+            }
+        };
+        let axis = self.spec.axis.name();
+        if !value.is_finite() {
+            return format!("now: not on the map ({axis} has no value for this column)");
+        }
+        let off: Vec<String> = [
+            beyond(load, (p0, p1)).map(|why| format!("p = {} is {why}", number_text(load))),
+            beyond(value, (y0, y1)).map(|why| format!("{axis} = {} is {why}", number_text(value))),
+        ]
+        .into_iter()
+        .flatten()
+        .collect();
+        if off.is_empty() {
+            "now".to_owned()
+        } else {
+            format!("now: off the map ({})", off.join(", "))
+        }
     }
 }
 
@@ -278,6 +312,18 @@ mod tests {
             panic!("a map has ranges");
         };
         assert_eq!((x, y), ((-0.125, 8.125), (-0.05, 0.25)));
+        // The present off the map's axis is said, not silently missing.
+        let off = StabilityMap {
+            now: Some([1.0, 0.3]),
+            ..map.clone()
+        };
+        let said = off.legend().last().unwrap().text.clone();
+        assert_eq!(said, "now: off the map (damping = 0.3 is above 0.2)");
+        let on = StabilityMap {
+            now: Some([1.0, 0.1]),
+            ..map.clone()
+        };
+        assert_eq!(on.legend().last().unwrap().text, "now");
         // Each state named once, inside its own range of loads.
         let words: Vec<(f64, &str)> = plot
             .marks

@@ -259,3 +259,27 @@ fn the_typed_save_asks_before_replacing_and_refuses_a_fifo() {
             .starts_with("t,phi1,phi2")
     );
 }
+
+/// A long paste (300 lines) stays in a box that scrolls: the menu's
+/// button under the box stays inside a 1024x768 window (the box grew past
+/// the window's foot and took the button with it).
+#[test]
+fn a_long_paste_scrolls_inside_the_share_menu() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    let mut long = String::new();
+    for k in 1..=300 {
+        std::fmt::Write::write_fmt(&mut long, format_args!("# pasted line {k}\n")).unwrap();
+    }
+    let screen = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(1024.0, 768.0));
+    let mut harness = harness_at(&mut app, [1024.0, 768.0]);
+    harness.get_by_label("share").click();
+    harness.run();
+    harness.get_by_label("paste from clipboard").click();
+    harness.step();
+    harness.event(egui::Event::Paste(long));
+    harness.run_steps(4);
+    let take = harness.get_by_label("take the text above").rect();
+    assert!(screen.contains_rect(take), "the button at {take:?}");
+    let copy = harness.get_by_label("copy settings").rect();
+    assert!(screen.contains_rect(copy), "the menu's top at {copy:?}");
+}

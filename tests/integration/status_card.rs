@@ -33,7 +33,7 @@ fn the_card_measures_the_mode_it_describes() {
     let slower = card.im.abs() < 5.0;
     let mode = if slower { "mode 1 of 2" } else { "mode 2 of 2" };
     let frequency_line = harness
-        .get_by_label_contains("frequency ")
+        .get_by_label_contains("(period ")
         .accesskit_node()
         .value()
         .unwrap_or_default();
@@ -42,23 +42,47 @@ fn the_card_measures_the_mode_it_describes() {
     let measured_line = harness
         .query_all_by_label_contains("measured from the run")
         .filter_map(|node| node.accesskit_node().value())
-        .find(|text| text.contains('±'))
+        .find(|text| text.contains("growth "))
         .expect("the card's measured line");
     assert!(
         measured_line.contains(&format!("({mode})")),
         "{measured_line}"
     );
-    // The value shown is the card's mode's, to the fit's accuracy.
-    let shown: f64 = measured_line
-        .rsplit('±')
-        .next()
-        .and_then(|s| s.trim().split('i').next())
-        .and_then(|s| s.trim().parse().ok())
-        .expect("a frequency");
+    // "growth +0.00042 ± 0.00030 1/s, frequency 2.1964 ± 0.0002 rad/s".
+    // or "(-1.33 ± 0.46)e-7", or "2.196425 ± <0.000001".
+    let measurement = |name: &str| -> (f64, f64) {
+        let after = measured_line.split(name).nth(1).expect(name);
+        let text = after.split([',', '/']).next().expect(name);
+        let (scale, text) = match text.split_once(")e") {
+            Some((inner, exponent)) => {
+                let exponent: i32 = exponent.split_whitespace().next().unwrap().parse().unwrap();
+                (10f64.powi(exponent), inner.trim_start_matches('('))
+            }
+            None => (1.0, text),
+        };
+        let (value, uncertainty) = text.split_once('±').expect("±");
+        let value: f64 = value.trim().parse().expect(name);
+        let uncertainty = uncertainty.split_whitespace().next().unwrap();
+        let uncertainty: f64 = uncertainty.trim_start_matches('<').parse().expect(name);
+        (value * scale, uncertainty * scale)
+    };
+    // The value shown is the card's mode's, to the fit's accuracy, and its
+    // uncertainty covers the prediction.
+    let (frequency, frequency_uncertainty) = measurement("frequency ");
+    let (growth, growth_uncertainty) = measurement("growth ");
     assert!(
-        (shown - card.im.abs()).abs() < 1e-3 * card.im.abs(),
-        "{shown} against {}",
+        (frequency - card.im.abs()).abs() < 1e-3 * card.im.abs(),
+        "{frequency} against {}",
         card.im.abs()
+    );
+    assert!(
+        frequency_uncertainty < 1e-3 * card.im.abs(),
+        "{measured_line}"
+    );
+    assert!(
+        (growth - card.re).abs() <= 3.0 * growth_uncertainty + 1e-6,
+        "{measured_line}: the prediction's growth is {}",
+        card.re
     );
 }
 

@@ -10,7 +10,7 @@ use std::fmt::Write as _;
 
 use super::settings::Settings;
 use crate::format::clipped;
-use crate::model::{Key, Model, PresetId};
+use crate::model::{Assignment, Key, Model, PresetId, apply_assignments};
 use crate::sim::{EngineKind, SPEED_RANGE};
 use entries::{Entry, Write, apply};
 use ron_migration::read_ron;
@@ -59,7 +59,11 @@ impl Settings {
                 continue;
             }
             let value = key.get(&self.model);
-            if value.to_bits() != key.get(&preset).to_bits() {
+            // A chain's load is written whatever it is: read without it,
+            // the load would start in place on the chain's bar.
+            let chain_load =
+                spec.stage == LOAD_STAGE && self.model.column.rods != preset.column.rods;
+            if chain_load || value.to_bits() != key.get(&preset).to_bits() {
                 // Writing to a String cannot fail.
                 let _ = writeln!(text, "{key} = {value}");
             }
@@ -202,13 +206,43 @@ fn name_value_lines<'a>(text: &'a str, ignored: &mut Vec<String>) -> Vec<(&'a st
 /// The parameters onto `base` (the preset's model) in the order that sets
 /// the load last, each kept when the model stays valid: a key of another
 /// load (`R` on a follower column) or a value out of range is named.
+///
+/// Rods set with no load start the load where the preset's stands on its
+/// bar ([`Model::load_in_place_of`]), as rods typed in the window do:
+/// `rods = 16` alone used to leave p = 2 on a bar of 0 to 0.125.
 fn read_parameters(base: Model, mut entries: Vec<Entry>, ignored: &mut Vec<String>) -> Model {
+    let sets = |wanted: &dyn Fn(Key) -> bool| {
+        entries
+            .iter()
+            .any(|entry| matches!(entry.set, Write::Key(key) if wanted(key)))
+    };
+    let rods_without_load =
+        sets(&|key| key == Key::Rods) && !sets(&|key| key.spec().stage == LOAD_STAGE);
     entries.sort_by_key(|entry| match entry.set {
         Write::Key(key) => key.spec().stage,
         Write::Field(_) => 0,
     });
-    apply(base, entries, ignored)
+    let mut model = apply(base, entries, ignored);
+    if rods_without_load {
+        let load = model.load_in_place_of(&base);
+        let mut moved = model;
+        if apply_assignments(
+            &mut moved,
+            &[Assignment {
+                key: Key::Load,
+                value: load,
+            }],
+        )
+        .is_ok()
+        {
+            model = moved;
+        }
+    }
+    model
 }
+
+/// The stage of the keys that set the load (`load`, `P`, `R`): the last.
+const LOAD_STAGE: u8 = 5;
 
 /// Takes a speed within [`SPEED_RANGE`], naming one outside it.
 pub(super) fn take_speed(settings: &mut Settings, speed: f64, ignored: &mut Vec<String>) {
@@ -227,7 +261,6 @@ pub(super) fn take_speed(settings: &mut Settings, speed: f64, ignored: &mut Vec<
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::{Assignment, apply_assignments};
 
     fn changed(id: PresetId, sets: &[(Key, f64)]) -> Settings {
         let mut model = id.model();
@@ -280,7 +313,9 @@ mod tests {
     }
 
     /// The preset's own values are not repeated: the default settings are
-    /// four lines.
+    /// four lines. A chain's load is written even where it is the
+    /// preset's (read without it, it would start in place on the chain's
+    /// bar).
     #[test]
     fn only_what_differs_from_the_preset_is_written() {
         assert_eq!(
@@ -290,7 +325,7 @@ mod tests {
         let text = changed(PresetId::Ziegler1952, &[(Key::Rods, 4.0), (Key::M2, 1.0)]).to_text();
         assert_eq!(
             text,
-            "preset = ziegler-1952\nm2 = 1\nrods = 4\nengine = reference\nspeed = 0.3\nprojector = true\n"
+            "preset = ziegler-1952\nm2 = 1\nrods = 4\nP = 0.1\nengine = reference\nspeed = 0.3\nprojector = true\n"
         );
     }
 
@@ -416,5 +451,29 @@ mod tests {
         let text = migrated.settings.to_text();
         assert!(text.starts_with("preset = beck\n"), "{text}");
         assert_eq!(read(&text).unwrap().settings, settings);
+    }
+
+    /// Rods with no load start the load where the preset's stands on its
+    /// bar (a 16-rod chain's bar is 64 times shorter than two rods'); a
+    /// load given is kept; a chain at the preset's own load is written
+    /// with its load, so it reads back as it was.
+    #[test]
+    fn a_chain_without_a_load_starts_inside_its_bar() {
+        let preset = PresetId::Tabletop.model();
+        let read_model = |text: &str| read(text).unwrap().settings.model;
+        let chain = read_model("preset = tabletop\nrods = 16\n");
+        assert_eq!(chain.column.rods, 16);
+        assert!(
+            (chain.load_p() - preset.load_p() / 64.0).abs() < 1e-15,
+            "{} against {}",
+            chain.load_p(),
+            preset.load_p()
+        );
+        assert!(chain.load_p() < chain.load_bar_max_p());
+        let given = read_model("preset = tabletop\nrods = 16\nload = 0.1\n");
+        assert!((given.load_p() - 0.1).abs() < 1e-15);
+        let at_preset_load = changed(PresetId::Tabletop, &[(Key::Rods, 16.0)]);
+        let text = at_preset_load.to_text();
+        assert_eq!(read(&text).unwrap().settings, at_preset_load, "{text}");
     }
 }

@@ -45,6 +45,10 @@ pub struct ShareSection {
     awaiting_clipboard: Option<u32>,
 }
 
+/// The most of the window's height the settings box takes before it
+/// scrolls.
+const BOX_SHARE: f32 = 0.35;
+
 impl ShareSection {
     /// The clipboard's text, when it has come: taken out of the frame's
     /// input (no text field receives it) and pasted as settings. Called
@@ -106,12 +110,21 @@ impl ShareSection {
                 self.awaiting_clipboard = Some(CLIPBOARD_FRAMES);
             }
         });
-        ui.add(
-            egui::TextEdit::multiline(&mut self.text)
-                .desired_rows(4)
-                .desired_width(300.0)
-                .hint_text("or type or paste settings text here"),
-        );
+        // A long paste scrolls inside the box's area rather than pushing
+        // the menu past the window's foot.
+        let most_height =
+            (ui.ctx().content_rect().height() * BOX_SHARE).max(ui.spacing().interact_size.y * 4.0);
+        egui::ScrollArea::vertical()
+            .id_salt("settings text")
+            .max_height(most_height)
+            .show(ui, |ui| {
+                ui.add(
+                    egui::TextEdit::multiline(&mut self.text)
+                        .desired_rows(4)
+                        .desired_width(300.0)
+                        .hint_text("or type or paste settings text here"),
+                );
+            });
         if ui
             .button("take the text above")
             .on_hover_text("load the settings written in the box")

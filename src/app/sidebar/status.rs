@@ -8,7 +8,9 @@ use crate::app::View;
 use crate::app::action::Actions;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
-use crate::format::{duration_text, load_text, number_text, percent_text, rate_text, secs_text};
+use crate::format::{
+    duration_text, load_text, measured_text, number_text, percent_text, rate_text, secs_text,
+};
 
 /// An e-folding time beyond this is a growth nobody sees in a lesson: even
 /// at the fastest speed (10x) it takes over five minutes to grow by e.
@@ -37,7 +39,7 @@ const E_FOLDING: &str =
     "e-folding time: the time in which the swing grows by a factor e = 2.72 (1 / growth rate)";
 const DECAY: &str = "decay time: the time in which the swing shrinks by a factor e = 2.72";
 /// What the measured line means, on hover.
-const MEASURED_TIP: &str = "the eigenvalue fitted to the run's own motion (a matrix pencil of the angles): at least 20 s of small swings (below 0.05 rad) since the last kick, release or change, each mode once the run holds a whole period of it; 'mode 2 of 2' counts the column's modes of swinging from the slowest";
+const MEASURED_TIP: &str = "the eigenvalue fitted to the run's own motion (a matrix pencil of the angles): at least 20 s of small swings (below 0.05 rad) since the last kick, release or change, each mode once the run holds a whole period of it; 'mode 2 of 2' counts the column's modes of swinging from the slowest. The ± is the fit's own uncertainty: how far fits over the run's first and last three quarters fall from the whole run's. The engine's time step dt moves the run itself from the linear model too, its frequency by about ω³dt²/24";
 
 const FREQUENCY_AND_MODES: &str = "frequency: how fast the column swings, in radians per second (the eigenvalue's height); the period is one full swing. A column of n rods has n modes of swinging, counted here from the slowest; the card describes the one that grows fastest (or dies away slowest), and the run's measurement is shown for that same mode";
 
@@ -85,36 +87,36 @@ fn frequency_and_measured_ui(
     } else {
         ui.label("non-oscillatory: the dominant eigenvalue is real");
     }
-    let measured: Vec<(C64, Option<usize>)> = state
+    let measured: Vec<(C64, Option<usize>, Option<C64>)> = state
         .measured()
         .unwrap_or_default()
         .iter()
-        .filter(|z| z.im > 0.0)
-        .map(|&z| (z, nearest_mode(z, &modes)))
+        .enumerate()
+        .filter(|(_, z)| z.im > 0.0)
+        .map(|(k, &z)| (z, nearest_mode(z, &modes), state.measured_uncertainty(k)))
         .collect();
     // The measurement of the card's mode; any one when the card's mode
     // does not swing (a divergence).
     let like_for_like = match card_mode {
-        Some(_) => measured.iter().find(|(_, k)| *k == card_mode),
+        Some(_) => measured.iter().find(|(_, k, _)| *k == card_mode),
         None => measured.first(),
     };
     let measured_label = match (like_for_like, measured.first()) {
-        (Some(&(z, k)), _) => ui.label(format!(
-            "measured from the run{}  {:+.5} ± {:.4}i 1/s",
+        (Some(&(z, k, uncertainty)), _) => ui.label(format!(
+            "measured from the run{}  {}",
             k.filter(|_| named)
                 .map(|k| format!(" ({})", mode_name(k)))
                 .unwrap_or_default(),
-            z.re,
-            z.im
+            measurement_text(z, uncertainty)
         )),
-        (None, Some(&(z, k))) => {
+        (None, Some(&(z, k, uncertainty))) => {
             let (measured_one, cards) = match (named, k, card_mode) {
                 (true, Some(k), Some(card)) => (mode_name(k), format!("the card's {}", mode_name(card))),
                 _ => ("another eigenvalue".to_owned(), "the card's".to_owned()),
             };
             ui.label(format!(
-                "measured from the run: {measured_one} only, {:+.5} ± {:.4}i 1/s ({cards} too weak in this run to fit)",
-                z.re, z.im
+                "measured from the run: {measured_one} only, {} ({cards} too weak in this run to fit)",
+                measurement_text(z, uncertainty)
             ))
         }
         (None, None) => ui.label(
@@ -127,6 +129,23 @@ fn frequency_and_measured_ui(
         ),
     };
     measured_label.on_hover_text(MEASURED_TIP);
+}
+
+/// A measured eigenvalue `z` as its growth rate and frequency, each with
+/// its uncertainty where the run tells it (the fits over the first and the
+/// last three quarters of the run), else said to be unknown.
+fn measurement_text(z: C64, uncertainty: Option<C64>) -> String {
+    match uncertainty {
+        Some(u) => format!(
+            "growth {} 1/s, frequency {} rad/s",
+            measured_text(z.re, u.re, true),
+            measured_text(z.im, u.im, false)
+        ),
+        None => format!(
+            "growth {:+.5} 1/s, frequency {:.4} rad/s (uncertainty unknown: too few periods in the run)",
+            z.re, z.im
+        ),
+    }
 }
 
 /// The oscillating modes of a spectrum, slowest first: of each pair, the

@@ -6,6 +6,10 @@ use super::{AppState, push_trail, start};
 use crate::app::notice::Notice;
 use crate::sim::Status;
 
+/// Exponentials fitted to the two-rod column's run: two per oscillating
+/// mode.
+const MEASURED_ORDER: usize = 4;
+
 impl AppState {
     /// Advances the run by `wall_secs` of wall-clock time at the chosen speed
     /// (whole engine steps, the remainder carried; see [`Pace`]).
@@ -61,6 +65,7 @@ impl AppState {
     /// history allows.
     pub(super) fn forget_measured(&mut self) {
         self.measured = None;
+        self.measured_uncertainty.clear();
         self.measured_at_secs = f64::NEG_INFINITY;
     }
 
@@ -73,8 +78,13 @@ impl AppState {
             // chain's many modes, some with periods far beyond the history,
             // are not measured: a fit of a few would show made-up values.
             self.measured = (self.sim.model().column.rods == 2)
-                .then(|| self.history.measured(4))
+                .then(|| self.history.measured(MEASURED_ORDER))
                 .flatten();
+            self.measured_uncertainty = self
+                .measured
+                .as_deref()
+                .map(|measured| self.history.uncertainty(MEASURED_ORDER, measured))
+                .unwrap_or_default();
             self.measured_at_secs = t;
         }
     }
