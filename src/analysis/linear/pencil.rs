@@ -5,6 +5,7 @@ use nalgebra::{DMatrix, linalg::Schur};
 
 use super::characteristic::CharacteristicPolynomial;
 use crate::analysis::roots::{MAX_DEGREE, Poly, aberth};
+use crate::analysis::stability::beyond_resolution;
 use crate::analysis::{AnalysisError, C64};
 use crate::model::{AsValid, LinearModel, linearize};
 
@@ -169,7 +170,16 @@ fn eigenvalues_from_squares(mut a: DMatrix<f64>) -> Option<Vec<C64>> {
 
 /// The eigenvalues of the balanced companion matrix `balanced` (or, when
 /// no iteration finishes on it, of the unbalanced `a`).
-fn eigenvalues_of(balanced: &DMatrix<f64>, a: &DMatrix<f64>) -> Option<Vec<C64>> {
+/// `bounded`: the EISPACK iteration first ([`crate::analysis::hqr`], at
+/// most 30 iterations an eigenvalue), for matrices whose modes span beyond
+/// resolution (see [`AffinePencil::new`]).
+fn eigenvalues_of(balanced: &DMatrix<f64>, a: &DMatrix<f64>, bounded: bool) -> Option<Vec<C64>> {
+    if bounded {
+        let bounded = crate::analysis::hqr::eigenvalues(balanced.nrows(), |i, j| balanced[(i, j)]);
+        if bounded.is_some() {
+            return bounded;
+        }
+    }
     if balanced.nrows() > NALGEBRA_MAX_ORDER {
         return faer_eigenvalues(balanced).or_else(|| faer_eigenvalues(a));
     }
@@ -187,7 +197,7 @@ fn eigenvalues_of(balanced: &DMatrix<f64>, a: &DMatrix<f64>) -> Option<Vec<C64>>
 /// Non-finite entries, a mass matrix that is not positive definite, or a
 /// QR iteration that converges for neither matrix.
 pub fn spectrum(lin: &LinearModel, load: f64) -> Result<Spectrum, AnalysisError> {
-    spectrum_from(lin, load, || squares_matrix(lin))
+    spectrum_from(lin, load, || squares_matrix(lin), false)
 }
 
 /// [`spectrum`], with `squares` giving `M^-1 K` where the squares' matrix
@@ -196,6 +206,7 @@ fn spectrum_from(
     lin: &LinearModel,
     load: f64,
     squares: impl FnOnce() -> Option<DMatrix<f64>>,
+    bounded: bool,
 ) -> Result<Spectrum, AnalysisError> {
     let finite = [&lin.mass, &lin.damping, &lin.stiffness]
         .iter()
@@ -213,7 +224,7 @@ fn spectrum_from(
         let a = companion(lin, &cyclic).ok_or(not_converged.clone())?;
         let mut balanced = a.clone();
         balance(&mut balanced);
-        eigenvalues_of(&balanced, &a).ok_or(not_converged)?
+        eigenvalues_of(&balanced, &a, bounded).ok_or(not_converged)?
     };
     Ok(Spectrum {
         eigenvalues,
@@ -250,6 +261,9 @@ pub struct AffinePencil {
     /// Threads a long chain's locus may compute its spectra on (the
     /// caller's choice: [`Self::with_threads`]; one by default).
     threads: usize,
+    /// Whether the spectra take the bounded iteration first (see
+    /// [`Self::new`]).
+    bounded: bool,
 }
 
 impl AffinePencil {
@@ -284,7 +298,7 @@ impl AffinePencil {
                     mass.solve(&per_unit_load.stiffness),
                 ]
             });
-        Ok(Self {
+        let mut pencil = Self {
             squares,
             norms: NormQuadratics::new(&at_zero, &per_unit_load),
             at_zero,
@@ -293,7 +307,24 @@ impl AffinePencil {
             characteristic,
             natural_load_max: model.analysis_max_p(),
             threads: 1,
-        })
+            bounded: false,
+        };
+        // A chain whose modes span beyond what rounding resolves (a first
+        // joint's damper of 1e149 on 64 rods): faer's Schur decomposition,
+        // whose aggressive early deflation ran for minutes on one load of
+        // such a matrix, gives way to the EISPACK iteration, bounded at 30
+        // iterations an eigenvalue. The answer is rounding either way, and
+        // the resolution warning says so; every other pencil keeps faer.
+        if 2 * pencil.dof() > NALGEBRA_MAX_ORDER && pencil.squares.is_none() {
+            let probe = Self {
+                bounded: true,
+                ..pencil.clone()
+            };
+            pencil.bounded = probe
+                .spectrum(0.0)
+                .is_ok_and(|spectrum| beyond_resolution(&spectrum.eigenvalues));
+        }
+        Ok(pencil)
     }
 
     /// Degrees of freedom of the pencil.
@@ -337,7 +368,7 @@ impl AffinePencil {
             Some([own, per_load]) => Some(own + p * per_load),
             None => squares_matrix(&lin),
         };
-        let mut spectrum = match spectrum_from(&lin, p, squares) {
+        let mut spectrum = match spectrum_from(&lin, p, squares, self.bounded) {
             Ok(spectrum) => spectrum,
             Err(error) => self.polynomial_spectrum(p, &lin).ok_or(error)?,
         };
@@ -467,6 +498,39 @@ impl NormQuadratics {
 mod tests {
     use super::*;
     use crate::model::{Assignment, Key, PresetId, apply_assignments};
+
+    /// Only a chain whose modes span beyond resolution takes the bounded
+    /// iteration: with a first damper of 1e149 on eight rods (its spectrum
+    /// by that iteration keeps the slow modes real: 1/s of the others'
+    /// order, not rounding of the fast one), not with an everyday damper
+    /// and not on two rods.
+    #[test]
+    fn only_a_span_beyond_resolution_takes_the_bounded_iteration() {
+        let pencil_of = |id: PresetId, sets: &[(Key, f64)]| {
+            let mut model = id.model();
+            let sets: Vec<Assignment> = sets
+                .iter()
+                .map(|&(key, value)| Assignment { key, value })
+                .collect();
+            apply_assignments(&mut model, &sets).unwrap();
+            AffinePencil::new(&model).unwrap()
+        };
+        let huge = pencil_of(
+            PresetId::PfluegerRoller,
+            &[(Key::Rods, 8.0), (Key::C1, 1e149)],
+        );
+        assert!(huge.bounded);
+        let spectrum = huge.spectrum(0.001).unwrap();
+        let (fastest, slowest) = crate::analysis::stability::mode_span(&spectrum.eigenvalues);
+        assert!(fastest > 1e148 && slowest < 10.0, "{fastest:e} {slowest:e}");
+        let everyday = pencil_of(
+            PresetId::PfluegerRoller,
+            &[(Key::Rods, 8.0), (Key::C1, 0.01)],
+        );
+        assert!(!everyday.bounded);
+        let two = pencil_of(PresetId::Roller, &[(Key::Nu, 1e-50)]);
+        assert!(!two.bounded);
+    }
 
     /// The half-order path of an undamped chain (the double-shift QR
     /// iteration on `M^-1 K`, and on the pencil's `M^-1 K0 + p M^-1 K1`)

@@ -5,12 +5,11 @@
 use crate::analysis::AnalysisError;
 use crate::analysis::locus::Locus;
 use crate::analysis::pencil::AffinePencil;
-use crate::analysis::stability::{RELATIVE_TOLERANCE, State, classify_with};
+use crate::analysis::stability::{
+    LARGEST_MODE_SPAN, RELATIVE_TOLERANCE, State, beyond_resolution, classify_with, mode_span,
+};
 use crate::format::load_text;
 
-/// Beyond this ratio of the fastest to the slowest mode, rounding of the
-/// fast one (about 1e-16 of it) reaches the slow ones' growth rates.
-const LARGEST_MODE_SPAN: f64 = 1e12;
 /// The sensitivity check classifies again with a tolerance this much finer.
 const FINER_TOLERANCE_FACTOR: f64 = 1e-2;
 /// Eigenvalues closer than this (relative to their size) are a double root.
@@ -54,18 +53,8 @@ pub fn resolution_warning(
     };
     let spectrum = pencil.spectrum(stiffest)?;
     let tolerance = RELATIVE_TOLERANCE * spectrum.scale_per_s;
-    let slowest = spectrum
-        .eigenvalues
-        .iter()
-        .map(|z| z.norm())
-        .filter(|&r| r > 0.0)
-        .fold(f64::INFINITY, f64::min);
-    let fastest = spectrum
-        .eigenvalues
-        .iter()
-        .map(|z| z.norm())
-        .fold(0.0, f64::max);
-    if slowest.is_finite() && fastest > LARGEST_MODE_SPAN * slowest {
+    let (fastest, slowest) = mode_span(&spectrum.eigenvalues);
+    if beyond_resolution(&spectrum.eigenvalues) {
         return Ok(Some(format!(
             "the stability is not resolved: at p = {} the modes span {fastest:.1e} 1/s to {slowest:.1e} 1/s, a ratio beyond {LARGEST_MODE_SPAN:.0e}, so the slow modes' growth rates are left to rounding (a mode far faster than the others, such as the spin of a roller of tiny mass nu)",
             load_text(stiffest)

@@ -96,3 +96,24 @@ pub fn classify_with(eigenvalues: &[C64], scale_per_s: f64, relative_tolerance: 
         tolerance_per_s,
     }
 }
+
+/// Beyond this ratio of the fastest to the slowest mode, rounding of the
+/// fast one (about 1e-16 of it) reaches the slow ones' growth rates.
+pub(crate) const LARGEST_MODE_SPAN: f64 = 1e12;
+
+/// The largest and the smallest nonzero size of `eigenvalues`, in 1/s.
+pub(crate) fn mode_span(eigenvalues: &[C64]) -> (f64, f64) {
+    let sizes = || eigenvalues.iter().map(|z| z.norm());
+    (
+        sizes().fold(0.0, f64::max),
+        sizes().filter(|&r| r > 0.0).fold(f64::INFINITY, f64::min),
+    )
+}
+
+/// Whether the modes of `eigenvalues` span more than
+/// [`LARGEST_MODE_SPAN`]: the slow modes' growth rates are then rounding
+/// of the fast ones.
+pub(crate) fn beyond_resolution(eigenvalues: &[C64]) -> bool {
+    let (fastest, slowest) = mode_span(eigenvalues);
+    slowest.is_finite() && fastest > LARGEST_MODE_SPAN * slowest
+}

@@ -18,6 +18,21 @@ pub const CLI_EXTREMES: &[Cli] = &[
         &["critical", "--preset", "roller", "--set", "V=1e-6"],
         "warning: the stability is not resolved",
     ),
+    // A chain whose first damper is 1e149 times the others': the modes span
+    // beyond resolution, and the bounded iteration answers in seconds
+    // (faer's Schur decomposition ran for minutes on one of its loads).
+    answered(
+        &[
+            "critical",
+            "--preset",
+            "pflueger-roller",
+            "--set",
+            "rods=64",
+            "--set",
+            "c1=1e149",
+        ],
+        "warning: the stability is not resolved: at p = 0.0098 the modes span 1.6e149 1/s",
+    ),
     answered(
         &[
             "simulate",
