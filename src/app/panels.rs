@@ -7,6 +7,9 @@ use eframe::egui;
 use super::theme::Theme;
 use super::{SMALLEST_WINDOW_POINTS, View as _, ZieglerApp, action, record_menu, sidebar};
 
+/// The egui memory key of the projector sidebar's foot's height.
+const FOOT_HEIGHT_ID: &str = "sidebar foot height";
+
 impl ZieglerApp {
     /// The panels in the space `ui` offers.
     pub(super) fn window_ui(&mut self, ui: &mut egui::Ui, theme: &Theme) {
@@ -52,26 +55,47 @@ impl ZieglerApp {
                         record_menu::record_ui(ui, choice, recorder, actions);
                     });
                 ui.separator();
-                if self.state.settings().projector {
-                    egui::Panel::bottom("sidebar foot")
-                        .frame(egui::Frame::NONE)
-                        .resizable(false)
-                        .show_separator_line(false)
-                        .show(ui, |ui| {
-                            sidebar::foot_ui(ui, &self.state, &mut self.actions, theme);
-                        });
-                }
+                // On a projector the foot keeps its place at the sidebar's
+                // bottom, its height the last frame's: it is made after what
+                // scrolls, so Tab reaches it in the order it is seen (made
+                // first, it came right after the heading).
+                let whole = ui.available_rect_before_wrap();
+                let foot_height = if self.state.settings().projector {
+                    ui.ctx()
+                        .data(|data| data.get_temp::<f32>(egui::Id::unique(FOOT_HEIGHT_ID)))
+                        .unwrap_or(0.0)
+                        .min(whole.height())
+                } else {
+                    0.0
+                };
+                let (above, foot) = whole.split_top_bottom_at_y(whole.bottom() - foot_height);
                 // Each lesson step's text read from its top.
                 let step = self
                     .state
                     .lesson()
                     .map(|run| (run.lesson.title.clone(), run.step));
-                egui::ScrollArea::vertical()
-                    .id_salt(("sidebar", step))
-                    .show(ui, |ui| {
-                        action::scroll_to_new_focus(ui);
-                        self.sidebar.ui(ui, &self.state, &mut self.actions, theme);
+                ui.scope_builder(egui::UiBuilder::new().max_rect(above), |ui| {
+                    egui::ScrollArea::vertical()
+                        .id_salt(("sidebar", step))
+                        .show(ui, |ui| {
+                            action::scroll_to_new_focus(ui);
+                            self.sidebar.ui(ui, &self.state, &mut self.actions, theme);
+                        });
+                });
+                if self.state.settings().projector {
+                    let shown = ui.scope_builder(egui::UiBuilder::new().max_rect(foot), |ui| {
+                        sidebar::foot_ui(ui, &self.state, &mut self.actions, theme);
                     });
+                    let needed = shown.response.rect.height();
+                    if (needed - foot_height).abs() > 0.5 {
+                        ui.ctx().data_mut(|data| {
+                            data.insert_temp(egui::Id::unique(FOOT_HEIGHT_ID), needed);
+                        });
+                        // The frame laid out with the wrong height is not shown.
+                        ui.ctx()
+                            .request_discard("the sidebar's foot changed its height");
+                    }
+                }
             });
         egui::CentralPanel::default()
             .frame(self.panel_frame(egui::Frame::central_panel(&style)))

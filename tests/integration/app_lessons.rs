@@ -90,9 +90,11 @@ fn a_lesson_file_is_read_off_the_ui_thread_and_checked() {
     let open = |harness: &mut Harness<'_>, path: &str| {
         type_into(harness, "lesson file", path);
         harness.get_by_label("open").click();
-        // Frames until the reading thread has answered.
+        // Frames until the reading thread has answered (a fixed number each
+        // time: the thread's answer may ask for frames while `run` waits
+        // for the window to settle, and on a busy machine `run` gave up).
         for _ in 0..200 {
-            harness.run();
+            harness.run_steps(3);
             if harness.query_by_label_contains("reading ").is_none() {
                 break;
             }
@@ -744,4 +746,14 @@ fn tab_keeps_the_focused_control_in_view() {
     }
     seen.dedup();
     assert!(seen.len() > 15, "Tab reached only {seen:?}");
+    // In the order they are seen: the sidebar's controls, then its foot
+    // (the foot came right after the heading, before the model).
+    let first = |name: &str| {
+        seen.iter()
+            .position(|s| s == &format!("{:?}", Some(name)))
+            .unwrap_or_else(|| panic!("{name} not reached: {seen:?}"))
+    };
+    assert!(first("model") < first("next"), "{seen:?}");
+    assert!(first("next") < first("pause"), "{seen:?}");
+    assert!(first("pause") < first("the column"), "{seen:?}");
 }
