@@ -5,11 +5,16 @@
 
 use std::process::{Command, Output};
 
+/// The slowest command a test runs takes about a minute in a debug build.
+const COMMAND_LIMIT: std::time::Duration = std::time::Duration::from_mins(5);
+
 pub(crate) fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
+    crate::common::output_within(
+        Command::new(env!("CARGO_BIN_EXE_zieglerlab")).args(args),
+        COMMAND_LIMIT,
+        &format!("{args:?}"),
+        "the binary runs",
+    )
 }
 
 pub(crate) fn stdout(args: &[&str]) -> String {
@@ -470,13 +475,16 @@ fn the_renderer_choice_is_checked_before_anything_opens() {
     );
     // No display: were the name taken, the window would fail to open.
     let with_unknown_renderer = |args: &[&str]| {
-        Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
-            .args(args)
-            .env("ZIEGLERLAB_RENDERER", "vulkan")
-            .env_remove("DISPLAY")
-            .env_remove("WAYLAND_DISPLAY")
-            .output()
-            .expect("the binary runs")
+        crate::common::output_within(
+            Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+                .args(args)
+                .env("ZIEGLERLAB_RENDERER", "vulkan")
+                .env_remove("DISPLAY")
+                .env_remove("WAYLAND_DISPLAY"),
+            COMMAND_LIMIT,
+            &format!("{args:?} with an unknown renderer"),
+            "the binary runs",
+        )
     };
     let unknown = with_unknown_renderer(&[]);
     assert_eq!(unknown.status.code(), Some(2));
@@ -521,4 +529,22 @@ fn the_readme_example_of_critical_is_what_it_prints() {
         .collect();
     let printed = stdout(&["critical", "--preset", "ziegler-1952"]);
     assert_eq!(shown, printed.lines().collect::<Vec<_>>());
+}
+
+/// A program that outlives its limit is killed and fails the test, naming
+/// it, instead of hanging the suite.
+#[test]
+fn a_hung_program_fails_the_test_in_time() {
+    let started = std::time::Instant::now();
+    let caught = std::panic::catch_unwind(|| {
+        crate::common::output_within(
+            Command::new("sleep").arg("30"),
+            std::time::Duration::from_millis(300),
+            "sleep 30",
+            "sleep runs",
+        )
+    });
+    let message = caught.expect_err("killed").downcast::<String>().unwrap();
+    assert!(message.contains("sleep 30: no answer"), "{message}");
+    assert!(started.elapsed() < std::time::Duration::from_secs(10));
 }

@@ -1,4 +1,6 @@
-//! Helpers shared by the physics tests: building models and reading spectra.
+//! Helpers shared by the tests: building models, reading spectra, and
+//! running the binary and other programs under a time limit (a test fails,
+//! it never hangs).
 
 #![allow(dead_code, reason = "each test module uses a different subset")]
 use zieglerlab::analysis::{AffinePencil, C64, Transition, critical_loads};
@@ -141,4 +143,60 @@ pub fn message_line(app: &zieglerlab::app::ZieglerApp) -> String {
         .notice()
         .map(|n| n.text.clone())
         .unwrap_or_default()
+}
+
+/// Waits for `child` to end; after `limit` it is killed and the test fails,
+/// saying `why` (so a hang fails instead of freezing CI).
+pub fn wait_within(
+    child: &mut std::process::Child,
+    limit: std::time::Duration,
+    why: &str,
+) -> std::process::ExitStatus {
+    let start = std::time::Instant::now();
+    loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            return status;
+        }
+        if start.elapsed() > limit {
+            child.kill().unwrap();
+            panic!("{why} after {limit:?}");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+}
+
+/// What `command` writes and its status, as `Command::output` gives them,
+/// but within `limit`: past it the program is killed and the test fails
+/// naming `what`. `expect` says what to install when the program is missing.
+pub fn output_within(
+    command: &mut std::process::Command,
+    limit: std::time::Duration,
+    what: &str,
+    expect: &str,
+) -> std::process::Output {
+    use std::io::Read as _;
+    use std::process::Stdio;
+    let mut child = command
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect(expect);
+    // Readers on their own threads, so a full pipe cannot stall the child.
+    let mut stdout = child.stdout.take().unwrap();
+    let mut stderr = child.stderr.take().unwrap();
+    let out_reader = std::thread::spawn(move || {
+        let mut bytes = Vec::new();
+        stdout.read_to_end(&mut bytes).map(|_| bytes)
+    });
+    let err_reader = std::thread::spawn(move || {
+        let mut bytes = Vec::new();
+        stderr.read_to_end(&mut bytes).map(|_| bytes)
+    });
+    let status = wait_within(&mut child, limit, &format!("{what}: no answer"));
+    std::process::Output {
+        status,
+        stdout: out_reader.join().unwrap().unwrap(),
+        stderr: err_reader.join().unwrap().unwrap(),
+    }
 }

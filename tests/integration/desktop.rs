@@ -28,10 +28,12 @@ fn subcommands() -> Vec<String> {
 #[test]
 fn the_desktop_entry_is_valid() {
     let entry = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/zieglerlab.desktop");
-    let checked = Command::new("desktop-file-validate")
-        .arg(entry)
-        .output()
-        .expect("desktop-file-validate (package desktop-file-utils; .ci/run installs it)");
+    let checked = crate::common::output_within(
+        Command::new("desktop-file-validate").arg(entry),
+        std::time::Duration::from_mins(1),
+        "desktop-file-validate",
+        "desktop-file-validate (package desktop-file-utils; .ci/run installs it)",
+    );
     let said = String::from_utf8_lossy(&checked.stdout).into_owned()
         + &String::from_utf8_lossy(&checked.stderr);
     assert!(checked.status.success() && said.trim().is_empty(), "{said}");

@@ -5,8 +5,8 @@
 //! caveat. The README's table "Bad input and extremes" lists the same cases.
 
 use std::io::Read as _;
-use std::process::{Child, Command, ExitStatus, Output, Stdio};
-use std::time::{Duration, Instant};
+use std::process::{Child, Command, Output, Stdio};
+use std::time::Duration;
 
 use zieglerlab::analysis::{
     AffinePencil, bracketing_locus, critical_loads_along, resolution_warning,
@@ -41,21 +41,7 @@ fn spawn(args: &[&str]) -> Child {
         .expect("the binary runs")
 }
 
-/// Waits for `child` to end; after `limit` it is killed and the test fails,
-/// saying `why` (so a hang fails instead of freezing CI).
-fn wait_within(child: &mut Child, limit: Duration, why: &str) -> ExitStatus {
-    let start = Instant::now();
-    loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            return status;
-        }
-        if start.elapsed() > limit {
-            child.kill().unwrap();
-            panic!("{why} after {limit:?}");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    }
-}
+pub(super) use crate::common::wait_within;
 
 /// Runs the binary with `args`, killed after [`CASE_LIMIT`].
 pub(super) fn run_limited(args: &[&str]) -> Output {
@@ -505,7 +491,11 @@ fn a_stopping_signal_ends_a_long_command_at_once() {
         .expect("kill runs");
     assert!(sent.success());
     // 100000 simulated seconds would take hours: 130 is the handler's.
-    let status = child.wait().expect("it ends");
+    let status = wait_within(
+        &mut child,
+        Duration::from_secs(30),
+        "SIGTERM: still running",
+    );
     assert_eq!(status.code(), Some(130));
     assert_eq!(
         std::fs::read_dir(folder.path())
