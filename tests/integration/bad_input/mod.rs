@@ -45,24 +45,12 @@ pub(super) use crate::common::wait_within;
 
 /// Runs the binary with `args`, killed after [`CASE_LIMIT`].
 pub(super) fn run_limited(args: &[&str]) -> Output {
-    let mut child = spawn(args);
-    // Readers on their own threads, so a full pipe cannot stall the child.
-    let mut stdout = child.stdout.take().unwrap();
-    let mut stderr = child.stderr.take().unwrap();
-    let out_reader = std::thread::spawn(move || {
-        let mut bytes = Vec::new();
-        stdout.read_to_end(&mut bytes).map(|_| bytes)
-    });
-    let err_reader = std::thread::spawn(move || {
-        let mut bytes = Vec::new();
-        stderr.read_to_end(&mut bytes).map(|_| bytes)
-    });
-    let status = wait_within(&mut child, CASE_LIMIT, &format!("{args:?}: no answer"));
-    Output {
-        status,
-        stdout: out_reader.join().unwrap().unwrap(),
-        stderr: err_reader.join().unwrap().unwrap(),
-    }
+    crate::common::output_within(
+        Command::new(env!("CARGO_BIN_EXE_zieglerlab")).args(args),
+        CASE_LIMIT,
+        &format!("{args:?}"),
+        "the binary runs",
+    )
 }
 
 #[test]
