@@ -15,6 +15,7 @@ pub mod export;
 pub mod figure;
 pub mod files;
 pub mod format;
+pub mod i18n;
 pub mod lesson;
 pub mod model;
 pub mod names;

@@ -10,6 +10,7 @@ use eframe::egui;
 
 use super::notice::Notice;
 use super::tabs::Tab;
+use crate::i18n::Language;
 use crate::lesson::Lesson;
 use crate::model::{Axis, Key, Model, PresetId};
 use crate::sim::{EngineKind, Ramp};
@@ -45,6 +46,8 @@ pub enum Action {
     /// Simulated seconds per wall-clock second.
     Speed(f64),
     Projector(bool),
+    /// The window speaks this language.
+    Language(Language),
     /// The mouse holds the column at rest with its rods at these angles.
     Hold {
         angles_rad: Vec<f64>,

@@ -1,5 +1,6 @@
 //! What the user arranged and expects to find again at the next launch:
-//! the open tab, the overlay, the map's second axis and its range. Kept
+//! the open tab, the overlay, the map's second axis and its range, the
+//! language chosen from the menu. Kept
 //! apart from the settings, which describe a setup to share.
 
 use serde::{Deserialize, Serialize};
@@ -20,6 +21,8 @@ pub struct Layout {
     pub overlay: Option<String>,
     /// The stability map's second axis, by name, and its range.
     pub map_axis: Option<(String, f64, f64)>,
+    /// The language chosen in the menu, by its code; none: the system's.
+    pub language: Option<String>,
 }
 
 /// The stored tab if it names one, else the first: the rest of the layout
@@ -57,6 +60,7 @@ mod tests {
             tab: Tab::Map,
             overlay: Some("beck".to_owned()),
             map_axis: Some(("nu".to_owned(), 0.0, 1.0)),
+            language: Some("pl".to_owned()),
         };
         let text = ron::to_string(&layout).unwrap();
         assert_eq!(Layout::read(&text), (layout, None));

@@ -31,6 +31,7 @@ mod scene_words;
 mod settings;
 mod settings_text;
 mod sidebar;
+mod speak;
 mod state;
 mod store_check;
 mod tabs;
@@ -41,9 +42,12 @@ mod zoom;
 
 use eframe::egui::{self, RichText, vec2};
 
+use crate::i18n::Language;
 use crate::model::PresetId;
 use crate::sim::{SimError, Simulation};
+use crate::tr;
 use action::Actions;
+use speak::Speak as _;
 
 pub use crate::plot::view::{EdgeMark, Side, ViewRect};
 pub use action::{Action, Command};
@@ -65,9 +69,6 @@ const LAYOUT_KEY: &str = "zieglerlab-layout";
 /// Below this height (in points, at the normal text size) the tab's plots
 /// would be unreadable and are not drawn.
 const MIN_PLOT_HEIGHT: f32 = 170.0;
-/// What stands where a plot would give a lesson's answer away.
-const ANSWER_HIDDEN_NOTE: &str =
-    "This plot shows the answer: it comes back when the lesson reveals it.";
 /// eframe's name for the app (its storage folder).
 const APP_ID: &str = "zieglerlab";
 
@@ -160,13 +161,14 @@ impl ZieglerApp {
             text(SETTINGS_KEY).as_deref(),
             true,
         ));
-        if let Some(layout) = text(LAYOUT_KEY) {
+        let layout = text(LAYOUT_KEY).map(|layout| {
             let (layout, note) = Layout::read(&layout);
             if let Some(note) = note {
                 app.state.tell(Notice::warning(note));
             }
-            app.arrange(&layout);
-        }
+            layout
+        });
+        app.arrange(layout.as_ref().unwrap_or(&Layout::default()));
         app
     }
 
@@ -186,6 +188,10 @@ impl ZieglerApp {
                 .tabs
                 .get::<tabs::MapPanel>()
                 .and_then(tabs::MapPanel::axis_choice),
+            language: self
+                .state
+                .language_choice()
+                .map(|language| language.code().to_owned()),
         }
     }
 
@@ -193,6 +199,12 @@ impl ZieglerApp {
     /// model (an overlay or a map axis it has not) is left out, and said.
     pub fn arrange(&mut self, layout: &Layout) {
         self.tab = layout.tab;
+        // The language chosen in the menu; else the system's, not a choice.
+        match layout.language.as_deref().map(Language::from_code) {
+            Some(Ok(language)) => self.apply(Action::Language(language)),
+            Some(Err(why)) => self.state.tell(Notice::warning(format!("{why}"))),
+            None => self.state.speak(Language::system()),
+        }
         if let Some(name) = &layout.overlay {
             match name.parse::<PresetId>() {
                 Ok(id) => self.apply(Action::Overlay(Some(id))),
@@ -261,6 +273,7 @@ impl ZieglerApp {
         for action in self.actions.take() {
             self.apply(action);
         }
+        speak::install(ctx, self.state.language());
         if std::mem::take(&mut self.full_screen_asked) {
             let now = ctx.input(|i| i.viewport().fullscreen.unwrap_or(false));
             ctx.send_viewport_cmd(egui::ViewportCommand::Fullscreen(!now));
@@ -432,7 +445,7 @@ impl ZieglerApp {
             if !tab_on_top {
                 scene::scene_ui(ui, &self.state, &mut self.actions, &mut self.scene, theme);
             } else if tab_hidden {
-                ui.colored_label(theme.info, ANSWER_HIDDEN_NOTE);
+                ui.colored_label(theme.info, tr!(ui.words(), "answer-hidden"));
             } else {
                 ui.set_clip_rect(scene_rect);
                 self.tab_rect = scene_rect;
@@ -444,7 +457,7 @@ impl ZieglerApp {
         if let Some(rect) = locus_rect {
             ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
                 if self.state.answer_hidden() {
-                    ui.colored_label(theme.info, ANSWER_HIDDEN_NOTE);
+                    ui.colored_label(theme.info, tr!(ui.words(), "answer-hidden"));
                 } else if let Some(locus) = self.tabs.get_mut::<tabs::LocusTab>() {
                     locus.complex_plane_ui(ui, &self.state, theme);
                 }
@@ -462,25 +475,21 @@ impl ZieglerApp {
         if locus_beside || ui.available_height() < min_plot_height {
             // One reason a line: where the tab is, or that it is hidden,
             // or that it needs room (they were mixed into one sentence).
+            let words = ui.words();
             ui.weak(if tab_on_top {
-                format!(
-                    "The {} tab shows in the column's place; the root locus tab brings the column back.",
-                    self.tab.title()
-                )
+                tr!(words, "tab-in-column-place", tab = self.tab.title(words))
             } else if locus_beside {
-                "The root locus is beside the column; a tab chosen here shows in the column's place.".to_owned()
+                tr!(words, "locus-beside-column")
             } else if tab_hidden {
-                ANSWER_HIDDEN_NOTE.to_owned()
+                tr!(words, "answer-hidden")
             } else {
-                "The plots need more room here: a taller window, or projector mode off (P).".to_owned()
+                tr!(words, "plots-need-room")
             });
         } else if tab_hidden {
             ui.label(
-                RichText::new(format!(
-                    "{ANSWER_HIDDEN_NOTE} The time histories show what the column does."
-                ))
-                .size(theme.text_size * 1.2)
-                .color(theme.info),
+                RichText::new(tr!(ui.words(), "answer-hidden-histories"))
+                    .size(theme.text_size * 1.2)
+                    .color(theme.info),
             );
         } else {
             self.tab_rect = ui.available_rect_before_wrap();

@@ -14,6 +14,7 @@ mod startup;
 use std::collections::VecDeque;
 
 use crate::analysis::{AnalysisError, C64, Spectrum};
+use crate::i18n::{self, Language, Words};
 use crate::model::{
     Assignment, Axis, Key, Model, ModelError, PresetId, ValidModel, apply_assignments,
 };
@@ -119,6 +120,10 @@ pub struct AppState {
     held: bool,
     /// The lesson under way.
     lesson: Option<LessonRun>,
+    /// The language the window speaks, and whether it was chosen (in the
+    /// menu, or stored from a choice) rather than the system's.
+    language: Language,
+    language_chosen: bool,
 }
 
 /// Whom the window's frames are drawn for.
@@ -182,6 +187,8 @@ impl AppState {
             view_generation: 0,
             held: false,
             lesson: None,
+            language: Language::default(),
+            language_chosen: false,
         };
         state.refresh_analysis();
         Ok(state)
@@ -248,6 +255,29 @@ impl AppState {
     #[must_use]
     pub fn notice(&self) -> Option<&Notice> {
         self.notice.as_ref()
+    }
+
+    /// The language the window speaks.
+    #[must_use]
+    pub fn language(&self) -> Language {
+        self.language
+    }
+
+    /// Speaks `language` without its being a choice (the system's).
+    pub fn speak(&mut self, language: Language) {
+        self.language = language;
+    }
+
+    /// The language chosen rather than the system's, if one was.
+    #[must_use]
+    pub fn language_choice(&self) -> Option<Language> {
+        self.language_chosen.then_some(self.language)
+    }
+
+    /// The window's words, in its language.
+    #[must_use]
+    pub fn words(&self) -> &'static Words {
+        i18n::words(self.language)
     }
 
     /// Why the last value typed for `key` was refused, if it was.

@@ -5,17 +5,19 @@
 use eframe::egui;
 
 use super::action::{Action, Actions};
+use super::speak::Speak as _;
 use super::state::AppState;
 use super::tabs::Tab;
 use super::theme::Theme;
 use crate::lesson::{BUILT_IN, Lesson};
+use crate::tr;
 
-/// What a student reads first, paragraph by paragraph.
+/// What a student reads first, paragraph by paragraph (message ids).
 const WELCOME: [&str; 4] = [
-    "Two rods on springs stand clamped at one end. At the other end a force pushes along the last rod and turns with it: a follower force. Here it is made as in the laboratory, by a roller that a moving band drags along.",
-    "At small loads a nudge swings and stays small: the column is stable. Past a critical load it flutters: it swings back and forth, wider and wider. At larger loads still it can diverge: it bends away to one side without swinging.",
-    "The root locus draws how the column moves as numbers (its eigenvalues) while the load grows. Left of the vertical axis a swing dies away; right of it, it grows. How far right is the growth rate, how high up the frequency.",
-    "Drag the load bar and watch both: the column starts to flutter at the load where the eigenvalues cross the axis.",
+    "welcome-column",
+    "welcome-states",
+    "welcome-locus",
+    "welcome-try",
 ];
 
 /// The welcome's text size on a projector: a desk screen's, a little
@@ -55,17 +57,18 @@ pub fn welcome_ui(ctx: &egui::Context, state: &AppState, actions: &mut Actions, 
                 }
             }
             ui.set_max_width(34.0 * text_size);
-            ui.heading("Welcome to zieglerlab");
+            let words = ui.words();
+            ui.heading(tr!(words, "welcome-title"));
             for paragraph in WELCOME {
                 ui.add_space(0.4 * theme.text_size);
-                ui.label(paragraph);
+                ui.label(tr!(words, paragraph));
             }
             ui.add_space(0.8 * theme.text_size);
             ui.horizontal(|ui| {
                 let (name, text) = BUILT_IN[0];
                 if ui
-                    .button("start the first lesson")
-                    .on_hover_text("a few steps: predict where flutter starts, then watch")
+                    .button(tr!(words, "welcome-first-lesson"))
+                    .on_hover_text(tr!(words, "welcome-first-lesson.tooltip"))
                     .clicked()
                 {
                     match Lesson::read(text, &Tab::ids()) {
@@ -77,8 +80,8 @@ pub fn welcome_ui(ctx: &egui::Context, state: &AppState, actions: &mut Actions, 
                     actions.push(Action::CloseWelcome);
                 }
                 if ui
-                    .button("explore on my own")
-                    .on_hover_text("close this; the lessons stay at the top of the sidebar")
+                    .button(tr!(words, "welcome-explore"))
+                    .on_hover_text(tr!(words, "welcome-explore.tooltip"))
                     .clicked()
                 {
                     actions.push(Action::CloseWelcome);

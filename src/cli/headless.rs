@@ -9,6 +9,7 @@ use clap::builder::TypedValueParser as _;
 use anyhow::Result;
 
 use zieglerlab::app::{Panel, ZieglerApp};
+use zieglerlab::i18n::{Language, words};
 
 use super::tiles::TiledRenderer;
 
@@ -52,12 +53,31 @@ pub struct Look {
     pub projector: bool,
     #[arg(long, default_value = "window", value_parser = panel_parser())]
     pub panel: Panel,
+    /// The window's language: en, de, it, pl, es or fr [default: the
+    /// system's language, as the window follows it]
+    #[arg(long, value_name = "CODE", value_parser = language_parser())]
+    pub lang: Option<Language>,
+}
+
+/// The `--lang` values: the window's languages (and, unlisted, the
+/// pseudo-language of the layout tests).
+pub fn language_parser() -> impl clap::builder::TypedValueParser<Value = Language> {
+    let codes = Language::CHOSEN_FROM
+        .iter()
+        .map(|l| clap::builder::PossibleValue::new(l.code()))
+        .chain([clap::builder::PossibleValue::new(Language::Pseudo.code()).hide(true)]);
+    clap::builder::PossibleValuesParser::new(codes).try_map(|code| Language::from_code(&code))
 }
 
 impl Look {
     /// The panel these arguments picture.
     pub fn panel(&self) -> Panel {
         self.panel
+    }
+
+    /// The language asked for, or the system's.
+    pub fn language(&self) -> Language {
+        self.lang.unwrap_or_else(Language::system)
     }
 
     /// Pixels per point must be 0.5 to 8, and `size` at that scale must lay
@@ -141,7 +161,10 @@ pub fn render_frames(
     let background = drawn.filter(|&tab| tab.spec().background);
     if let Some(tab) = background {
         // A long chain's map takes minutes: say what is being waited for.
-        let working = super::spinner(&format!("computing the {} tab", tab.title()));
+        let working = super::spinner(&format!(
+            "computing the {} tab",
+            tab.title(words(Language::English))
+        ));
         app.complete_background_work(tab);
         working.finish_and_clear();
     }

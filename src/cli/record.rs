@@ -80,6 +80,7 @@ pub fn run(args: &Args) -> Result<()> {
         speed: 1.0,
         projector: args.look.projector,
     })?;
+    app.apply(Action::Language(args.look.language()));
     if let Some(ramp) = args.ramp {
         app.apply(Action::RampStart(ramp));
     }

@@ -90,6 +90,7 @@ pub fn run(args: &Args) -> Result<()> {
     };
     let lesson = args.lesson.as_deref().map(lesson_named).transpose()?;
     let mut app = ZieglerApp::new(settings)?;
+    app.apply(Action::Language(args.look.language()));
     if let Some(lesson) = lesson {
         open_at_step(&mut app, lesson, args.step)?;
     }

@@ -6,6 +6,7 @@ use crate::common::message_line;
 use eframe::egui;
 use egui_kittest::kittest::Queryable as _;
 use zieglerlab::app::{Action, Command, Settings, Tab, ZieglerApp};
+use zieglerlab::i18n::{Language, words};
 use zieglerlab::model::PresetId;
 
 use crate::app_input::harness_at;
@@ -103,7 +104,7 @@ fn in_projector_mode_every_tab_is_shown_once() {
             app.complete_background_work(tab);
             let harness = harness_at(&mut app, size);
             let bars = harness.query_all_by_label("save PNG...").count();
-            let at = format!("{} at {size:?}", tab.title());
+            let at = format!("{} at {size:?}", tab.title(words(Language::English)));
             // A full HD projector has room for the column and any tab: the
             // tab below the tab bar, not in the column's place above it.
             if size[1] >= 1080.0 {

@@ -10,7 +10,11 @@ const COMMAND_LIMIT: std::time::Duration = std::time::Duration::from_mins(5);
 
 pub(crate) fn run(args: &[&str]) -> Output {
     crate::common::output_within(
-        Command::new(env!("CARGO_BIN_EXE_zieglerlab")).args(args),
+        Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+            .args(args)
+            // Pictures in English whatever this machine's language.
+            .env_remove("LANGUAGE")
+            .env("LC_ALL", "C.UTF-8"),
         COMMAND_LIMIT,
         &format!("{args:?}"),
         "the binary runs",

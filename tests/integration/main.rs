@@ -24,6 +24,7 @@ mod external_damping;
 mod figures;
 mod hopf;
 mod jacobian;
+mod languages;
 mod layers;
 mod lecture_pace;
 mod locus_tracking;

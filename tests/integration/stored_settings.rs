@@ -248,6 +248,7 @@ fn the_window_layout_comes_back_and_a_misfit_is_said() {
         tab: Tab::Map,
         overlay: Some("ziegler-1952".to_owned()),
         map_axis: Some(("V".to_owned(), 0.05, 0.5)),
+        language: Some("it".to_owned()),
     };
     app.arrange(&arranged);
     assert_eq!(app.layout(), arranged);
@@ -270,6 +271,7 @@ fn the_window_layout_comes_back_and_a_misfit_is_said() {
         tab: Tab::Paradox,
         overlay: Some("no-such-preset".to_owned()),
         map_axis: Some(("nu".to_owned(), 0.01, 1.0)),
+        language: Some("klingon".to_owned()),
     });
     let layout = other.layout();
     assert_eq!(layout.tab, Tab::Paradox);
@@ -281,6 +283,8 @@ fn the_window_layout_comes_back_and_a_misfit_is_said() {
     let said = other.message().unwrap();
     assert!(said.contains("no-such-preset"), "{said}");
     assert!(said.contains("stored map axis not used"), "{said}");
+    assert!(said.contains("unknown language 'klingon'"), "{said}");
+    assert_eq!(layout.language, None, "the system's language, not a choice");
 
     let (garbage, note) = Layout::read("{{ not a layout");
     assert_eq!(garbage, Layout::default());

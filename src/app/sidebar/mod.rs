@@ -16,9 +16,12 @@ use eframe::egui;
 
 use super::View;
 use super::action::{Action, Actions, Command};
+use super::speak::Speak as _;
 use super::state::AppState;
 use super::theme::Theme;
-use crate::model::{PRESETS, PresetId};
+use crate::i18n::{Language, Words};
+use crate::model::PRESETS;
+use crate::tr;
 
 /// The sidebar and the sections that keep something of their own.
 #[derive(Default)]
@@ -47,6 +50,7 @@ impl Sidebar {
         actions: &mut Actions,
         record: impl FnOnce(&mut egui::Ui, &mut Actions),
     ) {
+        let words = ui.words();
         let keep_open = egui::containers::menu::MenuConfig::new()
             .close_behavior(egui::PopupCloseBehavior::CloseOnClickOutside);
         // The menus beside the heading, on a row of their own when the
@@ -58,20 +62,20 @@ impl Sidebar {
             } else {
                 ui.add_space(8.0);
             }
-            egui::containers::menu::MenuButton::new("share")
+            egui::containers::menu::MenuButton::new(tr!(words, "menu-share"))
                 .config(keep_open.clone())
                 .ui(ui, |ui| self.share.ui(ui, state, actions))
                 .0
-                .on_hover_text("the settings as text: copy them, or paste some");
-            egui::containers::menu::MenuButton::new("record")
+                .on_hover_text(tr!(words, "menu-share.tooltip"));
+            egui::containers::menu::MenuButton::new(tr!(words, "menu-record"))
                 .config(keep_open)
                 .ui(ui, |ui| record(ui, actions))
                 .0
-                .on_hover_text("record the window to a GIF");
-            egui::containers::menu::MenuButton::new("keys")
+                .on_hover_text(tr!(words, "menu-record.tooltip"));
+            egui::containers::menu::MenuButton::new(tr!(words, "menu-keys"))
                 .ui(ui, Command::keys_help_ui)
                 .0
-                .on_hover_text("the keyboard's commands");
+                .on_hover_text(tr!(words, "menu-keys.tooltip"));
         });
     }
 }
@@ -92,7 +96,7 @@ impl View for Sidebar {
             }
             self.load.ui(ui, state, actions, theme);
             self.ramp.ui(ui, state, actions, theme);
-            egui::CollapsingHeader::new("parameters")
+            egui::CollapsingHeader::new(tr!(ui.words(), "section-parameters"))
                 .show(ui, |ui| self.parameters.ui(ui, state, actions, theme));
         } else {
             self.load.ui(ui, state, actions, theme);
@@ -110,7 +114,7 @@ impl View for Sidebar {
             overlay_ui(ui, state, actions);
             let mut projector = state.settings().projector;
             if ui
-                .checkbox(&mut projector, "projector (P)")
+                .checkbox(&mut projector, tr!(ui.words(), "projector-toggle"))
                 .on_hover_text(Command::Projector.tooltip())
                 .changed()
             {
@@ -138,20 +142,42 @@ pub fn foot_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme
     status::StatusSection { compact: lesson }.ui(ui, state, actions, theme);
 }
 
+/// The language menu: each language by its own name; the choice is
+/// remembered with the window's layout.
+fn language_menu_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions) {
+    let current = state.language();
+    egui::containers::menu::MenuButton::new(current.endonym())
+        .ui(ui, |ui| {
+            for language in Language::CHOSEN_FROM {
+                if ui
+                    .selectable_label(language == current, language.endonym())
+                    .clicked()
+                {
+                    actions.push(Action::Language(language));
+                    ui.close();
+                }
+            }
+        })
+        .0
+        .on_hover_text(tr!(ui.words(), "menu-language"));
+}
+
 /// Another preset's locus behind the current one.
 fn overlay_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions) {
+    let words = ui.words();
     let current = state.overlay_choice();
     let mut chosen = current;
-    egui::ComboBox::from_label("overlay")
-        .selected_text(chosen.map_or("none", PresetId::name))
+    let none = tr!(words, "overlay.none");
+    egui::ComboBox::from_label(tr!(words, "overlay"))
+        .selected_text(chosen.map_or(none.clone(), |id| id.name().to_owned()))
         .show_ui(ui, |ui| {
-            ui.selectable_value(&mut chosen, None, "none");
+            ui.selectable_value(&mut chosen, None, none);
             for p in &PRESETS {
                 ui.selectable_value(&mut chosen, Some(p.id), p.id.name());
             }
         })
         .response
-        .on_hover_text("another model's locus in grey, at the same a (as Fig. 8 sets the ideal column beside the roller)");
+        .on_hover_text(tr!(words, "overlay.tooltip"));
     if chosen != current {
         actions.push(Action::Overlay(chosen));
     }
@@ -159,43 +185,59 @@ fn overlay_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions) {
 
 /// The status line at the foot of the window: the latest notice (with a
 /// button to dismiss it) or the first launch's hint, always in this one
-/// place, so that a message never moves a control. A picture (the command
+/// place, so that a message never moves a control; the language menu at
+/// its right end. A picture (the command
 /// line's, a recording's frames) shows no message: it is for the person at
 /// the window, not for the class.
 pub fn status_line_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
-    ui.horizontal(|ui| {
-        let notice = state.notice().cloned().filter(|_| !state.for_picture());
-        if let Some(notice) = notice {
-            if ui
-                .small_button("dismiss")
-                .on_hover_text("clear this message")
-                .clicked()
-            {
-                actions.push(Action::DismissNotice);
-            }
-            let line = ui
-                .add(
-                    egui::Label::new(
-                        egui::RichText::new(notice.text).color(theme.notice_color(notice.level)),
-                    )
-                    .truncate(),
-                )
-                .on_hover_text("the latest message (the whole text)");
-            // A live region: a screen reader says each new message.
-            ui.ctx().accesskit_node_builder(line.id, |node| {
-                node.set_live(egui::accesskit::Live::Polite);
-            });
-        } else if let Some(hint) = state.hint() {
-            if ui
-                .small_button("got it")
-                .on_hover_text("hide the hint")
-                .clicked()
-            {
-                actions.push(Action::DismissHint);
-            }
-            ui.label(hint);
-        } else {
-            ui.weak("ready");
-        }
+    let words = ui.words();
+    ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+        language_menu_ui(ui, state, actions);
+        ui.with_layout(egui::Layout::left_to_right(egui::Align::Center), |ui| {
+            message_ui(ui, state, actions, theme, words);
+        });
     });
+}
+
+/// The latest notice, the first launch's hint or "ready".
+fn message_ui(
+    ui: &mut egui::Ui,
+    state: &AppState,
+    actions: &mut Actions,
+    theme: &Theme,
+    words: &'static Words,
+) {
+    let notice = state.notice().cloned().filter(|_| !state.for_picture());
+    if let Some(notice) = notice {
+        if ui
+            .small_button(tr!(words, "status-dismiss"))
+            .on_hover_text(tr!(words, "status-dismiss.tooltip"))
+            .clicked()
+        {
+            actions.push(Action::DismissNotice);
+        }
+        let line = ui
+            .add(
+                egui::Label::new(
+                    egui::RichText::new(notice.text).color(theme.notice_color(notice.level)),
+                )
+                .truncate(),
+            )
+            .on_hover_text(tr!(words, "status-latest"));
+        // A live region: a screen reader says each new message.
+        ui.ctx().accesskit_node_builder(line.id, |node| {
+            node.set_live(egui::accesskit::Live::Polite);
+        });
+    } else if let Some(hint) = state.hint() {
+        if ui
+            .small_button(tr!(words, "status-got-it"))
+            .on_hover_text(tr!(words, "status-got-it.tooltip"))
+            .clicked()
+        {
+            actions.push(Action::DismissHint);
+        }
+        ui.label(tr!(words, hint));
+    } else {
+        ui.weak(tr!(words, "status-ready"));
+    }
 }

@@ -25,6 +25,10 @@ impl AppState {
             Action::Engine(engine) => self.set_engine(engine),
             Action::Speed(speed) => self.set_speed(speed),
             Action::Projector(on) => self.settings.projector = on,
+            Action::Language(language) => {
+                self.language = language;
+                self.language_chosen = true;
+            }
             Action::Hold { angles_rad } => self.hold(&angles_rad),
             Action::Release => self.release(),
             Action::KickBy { angle_rad } => self.kick(angle_rad),

@@ -6,9 +6,8 @@ use super::AppState;
 use crate::app::notice::Notice;
 use crate::model::StateViewMut;
 
-/// The hint a first launch shows in the status line.
-pub const FIRST_LAUNCH_HINT: &str =
-    "Drag the load bar to about 3 and press K to kick the column (space pauses).";
+/// The hint a first launch shows in the status line (its message id).
+pub const FIRST_LAUNCH_HINT: &str = "hint-first-launch";
 
 impl AppState {
     /// The default state with the first launch's hint and welcome.
@@ -26,7 +25,7 @@ impl AppState {
         self.first_launch.welcome && !self.for_picture()
     }
 
-    /// The hint to show, if any (none in a picture).
+    /// The hint to show, if any (none in a picture): its message id.
     #[must_use]
     pub fn hint(&self) -> Option<&'static str> {
         (self.first_launch.hint && !self.for_picture()).then_some(FIRST_LAUNCH_HINT)

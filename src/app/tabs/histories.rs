@@ -14,8 +14,6 @@ use crate::app::theme::Theme;
 pub const TAB: TabSpec = TabSpec {
     tab: super::Tab::Histories,
     id: "histories",
-    title: "time histories",
-    tooltip: "the angles, the energy and the band's power over the run",
     background: false,
     make: || Box::new(HistoriesTab::default()),
 };

@@ -19,8 +19,6 @@ use crate::plot::locus::{Layer, Loci, Present};
 pub const TAB: TabSpec = TabSpec {
     tab: super::Tab::Locus,
     id: "locus",
-    title: "root locus",
-    tooltip: "the root locus: the column's eigenvalues in the complex plane and against the load. Left of the vertical axis a motion dies away, right of it it grows; the height is the frequency. Flutter starts where a pair crosses the axis",
     background: false,
     make: || Box::new(LocusTab::default()),
 };

@@ -93,8 +93,6 @@ type MapAxes = (u64, String, (f64, f64), (f64, f64));
 pub const TAB: TabSpec = TabSpec {
     tab: super::Tab::Map,
     id: "map",
-    title: "stability map",
-    tooltip: "the stability of every load against a second parameter",
     background: true,
     make: || Box::new(MapPanel::default()),
 };

@@ -14,7 +14,10 @@ use std::any::Any;
 
 use super::View;
 use super::action::{Action, Actions, Table};
+use super::speak::Speak as _;
 use super::state::AppState;
+use crate::i18n::Words;
+use crate::tr;
 
 /// A tab's view: it draws itself from the state (a [`View`]) and can finish
 /// its background work for a picture.
@@ -28,12 +31,9 @@ pub trait TabView: View + Any {
 pub struct TabSpec {
     /// The tab this row describes (its place in [`TABS`]).
     pub tab: Tab,
-    /// The name lessons, `--panel` and the stored layout use.
+    /// The name lessons, `--panel` and the stored layout use; its title
+    /// and tooltip are the messages `tab-ID` and `tab-ID.tooltip`.
     pub id: &'static str,
-    /// The tab bar's name.
-    pub title: &'static str,
-    /// What it shows (the tab bar's tooltip).
-    pub tooltip: &'static str,
     /// Whether it computes something of its own off the window's thread (a
     /// picture waits for it, saying so).
     pub background: bool,
@@ -125,14 +125,18 @@ impl Tab {
         self.spec().id
     }
 
+    /// The tab bar's name, in `words`' language (message `tab-ID`).
     #[must_use]
-    pub fn title(self) -> &'static str {
-        self.spec().title
+    pub fn title(self, words: &'static Words) -> String {
+        words.get(&format!("tab-{}", self.id())).into_owned()
     }
 
+    /// What it shows, the tab bar's tooltip.
     #[must_use]
-    pub fn tooltip(self) -> &'static str {
-        self.spec().tooltip
+    pub fn tooltip(self, words: &'static Words) -> String {
+        words
+            .get(&format!("tab-{}.tooltip", self.id()))
+            .into_owned()
     }
 }
 
@@ -206,32 +210,33 @@ pub use map::MapPanel;
 /// table as the command line writes it, each to a file chosen in the
 /// desktop's dialog.
 fn save_buttons(ui: &mut eframe::egui::Ui, table: Option<Table>, actions: &mut Actions) {
+    let words = ui.words();
     if ui
-        .small_button("save PNG...")
-        .on_hover_text("these plots as a picture, without the buttons and hints")
+        .small_button(tr!(words, "save-png"))
+        .on_hover_text(tr!(words, "save-png.tooltip"))
         .clicked()
     {
         actions.push(Action::SavePicture);
     }
     if let Some(table) = table
         && ui
-            .small_button("save CSV...")
-            .on_hover_text(
-                "the numbers behind these plots, in the command line's columns, to a file",
-            )
+            .small_button(tr!(words, "save-csv"))
+            .on_hover_text(tr!(words, "save-csv.tooltip"))
             .clicked()
     {
         actions.push(Action::SaveCsv(table));
     }
 }
 
-/// The tab bar: a click asks for another tab.
+/// The tab bar: a click asks for another tab. Its titles wrap to a second
+/// row where they do not fit one (German on a projector).
 pub fn bar_ui(ui: &mut eframe::egui::Ui, open: Tab, actions: &mut Actions) {
-    ui.horizontal(|ui| {
+    let words = ui.words();
+    ui.horizontal_wrapped(|ui| {
         for tab in Tab::all() {
             if ui
-                .selectable_label(open == tab, tab.title())
-                .on_hover_text(tab.tooltip())
+                .selectable_label(open == tab, tab.title(words))
+                .on_hover_text(tab.tooltip(words))
                 .clicked()
             {
                 actions.push(Action::Tab(tab));

@@ -35,8 +35,6 @@ impl Default for ParadoxPanel {
 pub const TAB: TabSpec = TabSpec {
     tab: super::Tab::Paradox,
     id: "paradox",
-    title: "paradox",
-    tooltip: "the first critical load as the damping (or the roller's mass) vanishes",
     background: true,
     make: || Box::new(ParadoxPanel::default()),
 };

@@ -27,8 +27,6 @@ use crate::plot::bifurcation::{self, Present};
 pub const TAB: TabSpec = TabSpec {
     tab: super::Tab::PostCritical,
     id: "post-critical",
-    title: "post-critical",
-    tooltip: "past the flutter onset: the limit cycles' size against the load, stable or not, and the running column's own swing",
     background: true,
     make: || Box::new(PostCriticalPanel::default()),
 };

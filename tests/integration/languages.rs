@@ -1,0 +1,167 @@
+//! The window in every language: each screen holds its text at 1024x768,
+//! normal and projector, in each language and in the pseudo-language (40%
+//! longer than English); the command line's pictures speak the language
+//! asked for, or the system's.
+
+use egui_kittest::Harness;
+use egui_kittest::kittest::{NodeT as _, Queryable as _};
+use zieglerlab::app::{Action, Settings, Tab, ZieglerApp};
+use zieglerlab::i18n::{Language, words};
+
+use crate::common::output_within;
+
+/// The languages a layout test goes through: every one offered, and the
+/// pseudo-language.
+fn every_language() -> impl Iterator<Item = Language> {
+    Language::CHOSEN_FROM.into_iter().chain([Language::Pseudo])
+}
+
+/// What text in `harness` is out of place: a widget of the sidebar that
+/// reaches into the central panel, or anything past the window's left or
+/// right edge.
+fn text_out_of_place(harness: &Harness<'_>, size: [f32; 2], language: Language) -> Vec<String> {
+    // The central panel starts where the tab bar's first tab does.
+    let central_left = harness
+        .get_by_label(&Tab::Locus.title(words(language)))
+        .rect()
+        .left();
+    let mut out = Vec::new();
+    for node in harness.root().children_recursive() {
+        if node.accesskit_node().bounding_box().is_none() {
+            continue;
+        }
+        let rect = node.rect();
+        let text = node.accesskit_node().label().or_else(|| node.value());
+        let Some(text) = text.filter(|t| !t.trim().is_empty()) else {
+            continue;
+        };
+        let in_sidebar = rect.left() < central_left;
+        // Across only: what the sidebar and the tabs hold below the fold
+        // is scrolled to.
+        if rect.left() < 0.0 || rect.right() > size[0] + 0.5 {
+            out.push(format!("{text:?} at {rect:?}: past the window's edge"));
+        } else if in_sidebar && rect.right() > central_left + 0.5 {
+            out.push(format!(
+                "{text:?} at {rect:?}: from the sidebar into the central panel"
+            ));
+        }
+    }
+    out
+}
+
+/// Every tab, normal and projector, at 1024x768, in every language: no
+/// text past the window's edges, none from the sidebar into the central
+/// panel.
+#[test]
+fn every_language_fits_a_1024_window() {
+    let size = [1024.0, 768.0];
+    let mut problems = Vec::new();
+    for language in every_language() {
+        for projector in [false, true] {
+            for tab in Tab::all() {
+                let mut app = ZieglerApp::new(Settings {
+                    projector,
+                    ..Settings::default()
+                })
+                .unwrap();
+                app.apply(Action::Language(language));
+                app.show_tab(tab);
+                app.complete_background_work(tab);
+                let mut harness = Harness::builder()
+                    .with_size(size)
+                    .build_ui(|ui| app.contents_ui(ui));
+                harness.run_steps(4);
+                let at = format!("{language} {} (projector {projector})", tab.id());
+                let used = harness.ctx.globally_used_rect();
+                if used.right() > size[0] + 0.5 {
+                    problems.push(format!("{at}: drawn up to {used:?}"));
+                }
+                problems.extend(
+                    text_out_of_place(&harness, size, language)
+                        .into_iter()
+                        .map(|p| format!("{at}: {p}")),
+                );
+                // The tab bar speaks the language.
+                let title = tab.title(words(language));
+                assert!(
+                    harness.query_by_label(&title).is_some(),
+                    "{at}: no tab titled {title:?}"
+                );
+            }
+        }
+    }
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+/// The language menu lists every language by its own name and switches
+/// the window at once.
+#[test]
+fn the_language_menu_switches_the_window() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    let mut harness = Harness::builder()
+        .with_size([1024.0, 768.0])
+        .build_ui(|ui| app.contents_ui(ui));
+    harness.run_steps(2);
+    harness.get_by_label("English").click();
+    harness.run_steps(2);
+    harness.get_by_label("Polski").click();
+    harness.run_steps(3);
+    let polish = words(Language::Polish);
+    assert!(harness.query_by_label(&Tab::Map.title(polish)).is_some());
+    assert!(
+        harness
+            .query_by_label(&Tab::Map.title(words(Language::English)))
+            .is_none()
+    );
+    drop(harness);
+    assert_eq!(app.state().language(), Language::Polish);
+    assert_eq!(
+        app.layout().language.as_deref(),
+        Some("pl"),
+        "the choice is stored"
+    );
+}
+
+/// A picture from the command line: with `--lang`, or in the system's
+/// language (`LANG` when `LC_ALL` is unset; English when `LC_ALL=C`
+/// overrides it).
+#[test]
+fn pictures_speak_the_language_asked_for_or_the_system_s() {
+    let dir = tempfile::tempdir().unwrap();
+    let picture = |name: &str, lang: Option<&str>, env: &[(&str, &str)]| {
+        let out = dir.path().join(format!("{name}.png"));
+        let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_zieglerlab"));
+        command.args([
+            "snapshot", "--preset", "tabletop", "--size", "1024x768", "--out",
+        ]);
+        command.arg(&out);
+        if let Some(lang) = lang {
+            command.args(["--lang", lang]);
+        }
+        for var in ["LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"] {
+            command.env_remove(var);
+        }
+        command.envs(env.iter().copied());
+        let output = output_within(
+            &mut command,
+            std::time::Duration::from_mins(5),
+            name,
+            "the binary runs",
+        );
+        assert!(output.status.success(), "{name}: {output:?}");
+        std::fs::read(out).unwrap()
+    };
+    let german = picture("de", Some("de"), &[]);
+    let english = picture("en", Some("en"), &[]);
+    assert_ne!(german, english);
+    assert_eq!(picture("lang", None, &[("LANG", "de_DE.UTF-8")]), german);
+    assert_eq!(
+        picture("c", None, &[("LC_ALL", "C"), ("LANG", "de_DE.UTF-8")]),
+        english
+    );
+    // --lang wins over the system's.
+    assert_eq!(
+        picture("over", Some("en"), &[("LANG", "de_DE.UTF-8")]),
+        english
+    );
+}
