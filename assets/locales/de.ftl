@@ -79,3 +79,312 @@ welcome-first-lesson = die erste Lektion beginnen
     .tooltip = ein paar Schritte: vorhersagen, wo das Flattern beginnt, dann zusehen
 welcome-explore = selbst erkunden
     .tooltip = dies schließen; die Lektionen bleiben oben in der Seitenleiste
+
+## States and critical loads
+
+state-stable = stabil
+state-flutter = Flattern
+state-divergence = Divergenz
+transition = p = { $load }: { $from } -> { $to }
+transition-meaning = p = { $load }: Die Säule geht von { $from } zu { $to } über; { $how }
+    .to-flutter = oberhalb dieser Last liegt ein Eigenwertpaar rechts der imaginären Achse: Ein Stoß wächst zu einem immer größeren Schwingen an
+    .to-divergence = oberhalb dieser Last ist ein reeller Eigenwert positiv: Die Säule neigt sich weg, ohne zu schwingen
+    .to-stable = oberhalb dieser Last liegt kein Eigenwert rechts der imaginären Achse: Ein Stoß wächst nicht mehr an
+duration-forever = nie
+duration-days = { $count ->
+    [one] { $n } Tag
+   *[other] { $n } Tage
+}
+duration-years = { $count ->
+    [one] { $n } Jahr
+   *[other] { $n } Jahre
+}
+
+## The model and the engine
+
+model = Modell
+    .source = { $source }: wo das Modell in der Studie steht, der dieses Programm folgt (ihre Abbildung und Gleichungen)
+preset-ziegler-1952 = Ziegler 1952
+    .description = Zieglers Säule: masselose Stäbe, Punktmasse 2m im Gelenk A und m an der Spitze, ideale Folgelast
+preset-uniform-rods = Abb. 1a
+    .description = Homogene starre Stäbe der Masse m (Abb. 1a), ideale Folgelast
+preset-midpoint-masses = Abb. 1b, Gl. 1-7
+    .description = Masselose Stäbe mit einer Punktmasse m in jeder Stabmitte (Abb. 1b, Gl. 1-7), ideale Folgelast
+preset-roller = Abb. 7, Gl. 8-38
+    .description = Homogene Stäbe mit einer Rolle, die ein laufendes Band mitzieht (Abb. 7, Gl. 8-38), konsistente Drehträgheit; Parameter aus Abb. 8
+preset-roller-as-printed = Gl. 39, Abb. 8
+    .description = Das Rollenmodell wie in Gl. (39) gedruckt: die Drehträgheit mit r/l2 multipliziert, ein Druckfehler der Arbeit; Parameter aus Abb. 8
+preset-tabletop = Vorlesungstempo
+    .description = Eine Säule in Tischgröße für die Vorlesung: homogene Stäbe von 25 cm und 100 g, Federn von 0.0625 N m/rad (a = 10 1/s^2), ideale Folgelast; ab p = 2.54 flattert sie mit einer Periode von etwa 1.5 s
+preset-tabletop-roller = Vorlesungstempo
+    .description = Die Tischsäule, geschoben von einer 10-g-Rolle mit 2.5 cm Radius auf einem Band mit 0.1 m/s (nu = rho = mu = 0.1): ein schwaches Flattern ab p = 0.024, das Minuten zum Anwachsen braucht, ein starkes nahe der Last der idealen Säule
+preset-beck = Beck 1952, eine Kette aus 16 Stäben
+    .description = Becks Säule als Kette aus 16 homogenen Stäben mit Federn k in jedem Gelenk (ein Balken mit EI = k l, L = 16 l), Folgelast: Flattern bei P L^2/EI = 18.78 (Becks kontinuierliche Säule: 20.05)
+preset-pflueger = Pflügers Säule, eine Kette aus 16 Stäben
+    .description = Pflügers Säule: Becks Kette aus 16 Stäben mit einer Spitzenmasse von der halben Masse der Säule, Folgelast: die Spitzenmasse senkt die Flatterlast auf P L^2/EI = 15.06
+preset-beck-roller = Becks Kette, belastet wie bei Bigoni et al. 2018
+    .description = Becks Kette aus 16 Stäben, belastet durch die Rolle auf dem laufenden Band (die Kennzahlen der Arbeit an jedem Stab: Rollenmasse 0.1 m, Radius 0.1 l, mu = 0.1, V = 0.1 m/s): die Dämpfung durch das Gleiten lässt sie ab P L^2/EI = 0.025 schwach flattern (Anwachsrate unter 3e-4 1/s) und stark ab etwa 18.8, wo die Kette unter Folgelast flattert
+preset-pflueger-roller = Pflügers Kette, belastet wie bei Bigoni et al. 2018
+    .description = Pflügers Kette aus 16 Stäben (Spitzenmasse die halbe Stabmasse), belastet durch dieselbe Rolle auf dem laufenden Band: schwaches Flattern ab P L^2/EI = 0.008 (Anwachsrate unter 4e-5 1/s), starkes Flattern ab 15.06, wo die Kette unter Folgelast flattert
+tip-force-dead = Kraft an der Spitze: eine Totlast (eta = 0), richtungstreu, anstelle der Folgelast des Modells
+tip-force-partial = Kraft an der Spitze: teilweise tangential, um eta = { $eta } des Winkels des letzten Stabes gedreht (die Folgelast des Modells hat eta = 1)
+engine = Integrator
+    .tooltip = was die Bewegung integriert: Der Lauf geht dort weiter, wo er ist
+engine-rapier = rapier
+    .tooltip = rapier: die Physik-Engine rapier2d, Stäbe als starre Körper mit Gelenken (ein Mehrkörpersystem), der Spin der Rolle implizit
+engine-reference = Referenz
+    .tooltip = adaptives Dormand-Prince 5(4) auf den exakten Gleichungen
+
+## The load
+
+load-field = Last p = P l/k
+    .tooltip = eine Last eingeben (Enter übernimmt, Escape stellt wieder her); auch über das Ende des Reglers hinaus
+    .meaning = die Last ohne Einheit: die Kraft P an der Spitze mal die Stablänge l durch die Federsteifigkeit k (Zieglers Säule flattert ab p = 2.09)
+roller-load = Rolle: q = R l/k = p/μ = { $q }   (μ = { $mu })
+    .tooltip = die eigene Last der Rolle: die Kraft R, die sie auf das Band drückt, in den Einheiten von p; die Reibung des Bandes schiebt mit μ R, also p = μ q
+notes-more = ... und { $count } weitere (darauf zeigen)
+load-beyond-range = p = { $load } liegt außerhalb des gezeichneten Bereichs (0 bis { $end }); der Status unten gilt bei p
+critical-loads-hidden = Die kritischen Lasten sind verborgen, bis die Lektion sie auflöst.
+not-resolved = die Stabilität ist hier nicht aufgelöst (darauf zeigen für den Grund)
+ramp-visible = die Spitze um { $percent } % der Länge ausgelenkt
+ramp-theory = Theorie (weiße Marke): instabil ab p = { $load }
+ramp-seen = gesehen (Marke): Bewegung sichtbar bei p = { $load } ({ $visible })
+ramp-seen-late = gesehen (Marke): Bewegung sichtbar bei p = { $load }, verspätet: darauf zeigen für den Grund ({ $visible })
+    .why = Sie zeigt sich verspätet: Nach dem Einsatz braucht die Bewegung Zeit, um sichtbar groß zu werden, und die Rampe läuft inzwischen weiter. Eine langsamere Rampe zeigt sie näher an der Theorie.
+ramp-watching = warten, bis die Bewegung sichtbar wird ({ $visible })
+
+## The parameters
+
+groups = dimensionslose Kennzahlen
+    .tooltip = die wenigen Kombinationen der SI-Werte, die die Bewegung bestimmen (a = k/(m l^2) legt fest, wie schnell sie ist; nu, rho, mu und V der Rolle ihre Masse, Größe, Reibung und die Geschwindigkeit des Bandes); eine zu ändern lässt die anderen gleich
+si-parameters = SI-Parameter
+mu-moves-load = (R fest: verschiebt p)
+key-allowed = { $description } (erlaubt: { $range })
+refused = abgelehnt: { $why }
+key-load = Last p = P l/k auf der gemeinsamen Achse (P = mu R für die Rolle; l = l1, k = k1)
+    .range = >= 0
+key-a = a = k/(m l^2): setzt k1 (und k2 im selben Verhältnis), hält p
+    .range = > 0
+key-nu = nu = m3/m, Masse der Rolle durch die Masse des Stabes
+    .range = >= 0
+key-rho = rho = r/l, Radius der Rolle durch die Länge des Stabes
+    .range = in (0, l2/l]
+key-mu = Reibungskoeffizient; nur mu R geht in die Gleichungen ein, also bleibt R fest und die Last p = mu R l/k ändert sich
+    .range = > 0
+key-V = Geschwindigkeit des Bandes (es läuft in Richtung -x); die lineare Analyse braucht V > 0
+    .range = >= 0
+key-l1 = Länge von Stab 1 (seine Massenverteilung skaliert mit)
+    .range = > 0
+key-l2 = Länge von Stab 2 (seine Massenverteilung skaliert mit)
+    .range = > 0
+key-m1 = Masse von Stab 1, Punktmassen darauf eingeschlossen (Verteilung bleibt)
+    .range = >= 0
+key-m2 = Masse von Stab 2 (Verteilung bleibt)
+    .range = >= 0
+key-s1 = Schwerpunkt von Stab 1, ab der Einspannung O
+    .range = in [0, l1]
+key-s2 = Schwerpunkt von Stab 2, ab dem Gelenk A
+    .range = in [0, l2]
+key-I1 = Trägheitsmoment von Stab 1 um seinen Schwerpunkt
+    .range = >= 0
+key-I2 = Trägheitsmoment von Stab 2 um seinen Schwerpunkt
+    .range = >= 0
+key-m_tip = Punktmasse an der Spitze B (die Masse der Rolle ist m3)
+    .range = >= 0
+key-k1 = Drehfeder an der Einspannung O
+    .range = > 0
+key-k2 = Drehfeder im Gelenk A
+    .range = > 0
+key-c1 = viskoser Dämpfer an der Einspannung O
+    .range = >= 0
+key-c2 = viskoser Dämpfer im Gelenk A
+    .range = >= 0
+key-c_ext = äußerer viskoser Widerstand längs beider Stäbe (Luftwiderstand, linearisiert): eine Kraft je Längeneinheit von c_ext mal der örtlichen Quergeschwindigkeit des Stabes
+    .range = >= 0
+key-rods = Stäbe der Kette: Stab 1, dann Kopien von Stab 2 mit Feder und Dämpfer von Gelenk A in jedem Gelenk; Spitzenmasse und Last am Ende des letzten Stabes
+    .range = von 2 bis 64
+key-P = Betrag der Kraft an der Spitze
+    .range = >= 0
+key-eta = Tangentialität der Kraft an der Spitze: Ihre Richtung dreht sich um eta mal den Winkel des letzten Stabes (1: Folgelast, 0: Totlast)
+    .range = in [0, 1]
+key-m3 = Masse der Rolle (0: masselos, die ideale Folgelast)
+    .range = >= 0
+key-r = Radius der Rolle
+    .range = in (0, l2]
+key-R = Normalkraft der Rolle auf das Band
+    .range = >= 0
+
+## Time
+
+command-play = Start
+    .running = Pause
+    .tooltip = Start / Pause
+command-load-up = Last höher
+    .tooltip = die Last um ein Hundertstel des Lastreglers erhöhen
+command-load-down = Last tiefer
+    .tooltip = die Last um ein Hundertstel des Lastreglers senken
+command-kick = Stoß
+    .tooltip = Stoß: jeder Stab um 0.03 rad gedreht
+command-reset = Neustart
+    .tooltip = Neustart: ein neuer Lauf aus der Standardstörung
+command-reset-all = alles zurück
+    .tooltip = alles zurücksetzen: die Parameter und die Last des Modells, normale Geschwindigkeit, ein neuer Lauf, die Standardansichten; eine offene Lektion wird geschlossen
+command-projector = Beamermodus
+    .tooltip = Beamermodus: hoher Kontrast, große Schrift
+command-next = weiter
+    .tooltip = der nächste Schritt der Lektion (die Fernbedienung eines Vortragenden sendet Bild ab)
+command-back = zurück
+    .tooltip = der vorige Schritt der Lektion (Bild auf)
+command-full-screen = Vollbild
+    .tooltip = Vollbild: das Fenster füllt den Bildschirm (nochmals zum Verlassen)
+command-step = Schritt
+    .tooltip = ein Schritt des Integrators (1/240 s), dann Pause
+key-space = Leertaste
+key-right = rechts
+key-up = oben
+key-left = links
+key-down = unten
+key-page-down = Bild ab
+key-page-up = Bild auf
+focus-keys-tab = das nächste Bedienelement (Umschalt+Tab: das vorige)
+    .keys = Tab
+focus-keys-ctrl-tab = der nächste Reiter (Strg+Umschalt+Tab: der vorige)
+    .keys = Strg+Tab
+focus-keys-press = mit einer Schaltfläche, einem Kästchen, einer Auswahl oder einem Reiter im Fokus: betätigen (die Leertaste startet nur ohne Fokus)
+    .keys = Leertaste, Enter
+focus-keys-slider = mit einem Regler im Fokus (Lastregler, Vorhersage): um ein Hundertstel verschieben; Umschalt: ein Zehntel
+    .keys = links, rechts
+focus-keys-column = mit der Säule im Fokus (Tab bis zu ihr): um 0.02 rad in jede Richtung drehen, Umschalt: 0.1 rad (das Ziehen per Tastatur)
+    .keys = links, rechts
+focus-keys-ends = mit dem Lastregler oder der Vorhersage im Fokus: ihre Enden
+    .keys = Pos1, Ende
+focus-keys-plot = mit einem Diagramm im Fokus (Tab bis zu ihm): um ein Zehntel verschieben, um die Mitte zoomen; Enter: eine Karte übernimmt die Zelle unter dem Kreuz
+    .keys = Pfeile, +, -
+focus-keys-escape = den Fokus loslassen (ein Textfeld: die Eingabe rückgängig machen)
+    .keys = Esc
+focus-keys-others = Bild ab, Bild auf, K, R, P und oben/unten wirken bei jedem Fokus, außer in einem Textfeld in Bearbeitung
+    .keys = die übrigen
+pace-slow = Langsam
+    .tooltip = ein Viertel der Echtzeit
+pace-normal = Normal
+    .tooltip = Echtzeit: eine simulierte Sekunde pro Sekunde
+pace-fast = Schnell
+    .tooltip = viermal die Echtzeit
+speed-factor = × Tempo
+    .tooltip = simulierte Sekunden pro Sekunde Uhrzeit
+run-time = t = { $secs } s   ({ $status })
+run-paused = angehalten
+run-running = läuft
+run-diverged = divergiert bei t = { $secs } s
+run-too-stiff = zu steif für den Referenzintegrator bei t = { $secs } s: eine sehr leichte Rolle oder ein stehendes Band (der Integrator rapier kommt damit zurecht), oder eine Last oder Steifigkeit so groß, dass kein Schritt die Raten der Säule auflöst
+run-too-fast = zu schnell für den Integrator rapier bei t = { $secs } s: Die Säule dreht sich mit { $rate } rad/s, mehr als sein fester Schritt auflöst ({ $most } rad pro Schritt); der Referenzintegrator folgt ihr
+run-lagging = läuft mit { $achieved }x: dieser Rechner schafft { $asked }x nicht
+
+## The status card
+
+card-stable =
+    .meaning = stabil: ein kleiner Stoß bleibt klein (er klingt ab oder behält ganz ohne Dämpfung seine Größe)
+card-flutter =
+    .meaning = Flattern: Die Säule schwingt hin und her, immer weiter (ein Eigenwertpaar rechts der Achse)
+card-divergence =
+    .meaning = Divergenz: Die Säule biegt ohne zu schwingen zur Seite aus (ein reeller Eigenwert rechts der Achse)
+card-weak-flutter = schwaches Flattern
+    .meaning = schwaches Flattern: Das Schwingen wächst, aber um weniger als 1 % seiner Frequenz: langsam, über viele Schwingungen
+card-hidden = stabil oder nicht?
+    .why = Das Urteil ist verborgen, bis die Lektion es auflöst: die Säule beobachten.
+card-no-figures = keine Stabilitätswerte: { $why }
+card-growth = Anwachsrate  { $rate } 1/s
+    .tooltip = Anwachsrate: wie schnell die Bewegung wächst (positiv) oder abklingt (negativ), pro Sekunde: der Realteil des am weitesten rechts liegenden Eigenwerts
+card-growth-zero = Anwachsrate  0 (bis auf { $tolerance } 1/s)
+card-not-resolved = bei diesen Parametern nicht aufgelöst: siehe die Warnung unter der Last
+card-e-folding = e-Zeit  { $time }
+    .tooltip = e-Zeit: die Zeit, in der das Schwingen um den Faktor e = 2.72 wächst (1 / Anwachsrate)
+card-decay = Abklingzeit  { $time }
+    .tooltip = Abklingzeit: die Zeit, in der das Schwingen um den Faktor e = 2.72 abnimmt
+card-neutral = neutral: kein Wachsen, kein Abklingen
+card-mode = Mode { $k } von { $n }
+card-the-mode = die Mode
+card-frequency = Frequenz  { $frequency } rad/s  (Periode { $period } s{ $which })
+    .tooltip = Frequenz: wie schnell die Säule schwingt, in Radiant pro Sekunde (die Höhe des Eigenwerts); die Periode ist eine volle Schwingung. Eine Säule aus n Stäben hat n Schwingungsmoden, hier von der langsamsten an gezählt; die Karte beschreibt die am schnellsten wachsende (oder am langsamsten abklingende), und die Messung aus dem Lauf gilt derselben Mode
+card-non-oscillatory = nicht schwingend: der dominante Eigenwert ist reell
+card-measured = gemessen aus dem Lauf{ $mode }  { $measurement }
+    .tooltip = der an die eigene Bewegung des Laufs angepasste Eigenwert (ein Matrixbüschel der Winkel): mindestens 20 s kleiner Schwingungen (unter 0.05 rad) seit dem letzten Stoß, Loslassen oder Ändern, jede Mode, sobald der Lauf eine ganze Periode von ihr enthält; „Mode 2 von 2“ zählt die Schwingungsmoden der Säule von der langsamsten an. Das ± ist die eigene Unsicherheit der Anpassung: wie weit Anpassungen über das erste und das letzte Dreiviertel des Laufs von der über den ganzen Lauf abweichen. Auch der Zeitschritt dt des Integrators entfernt den Lauf selbst vom linearen Modell, seine Frequenz um etwa ω³dt²/24
+card-measured-other-mode = gemessen aus dem Lauf: nur { $mode }, { $measurement } ({ $card } der Karte in diesem Lauf zu schwach für eine Anpassung)
+card-measured-other = gemessen aus dem Lauf: nur ein anderer Eigenwert, { $measurement } (der der Karte in diesem Lauf zu schwach für eine Anpassung)
+card-measured-after = gemessen: nach 20 s Bewegung mit kleiner Amplitude (|φ| < 0.05 rad)
+card-measured-two-rods = gemessen: nur bei zwei Stäben (die vielen langsamen Moden einer Kette bräuchten einen längeren Lauf, als eine Anpassung nutzen kann)
+card-measurement = Anwachsen { $growth } 1/s, Frequenz { $frequency } rad/s
+card-measurement-unknown = Anwachsen { $growth } 1/s, Frequenz { $frequency } rad/s (Unsicherheit unbekannt: zu wenige Perioden im Lauf)
+card-grows-slowly = wächst um { $percent } pro Periode: minutenlang beobachten, nicht sekundenlang
+card-grows-too-slowly = wächst um { $percent } pro Periode: zu langsam, um es in einer Lektion zu sehen
+onset-soft = weicher Einsatz bei p = { $at }: Das Schwingen geht in einen Grenzzyklus über, der von null an wächst
+onset-soft-roller = weicher Einsatz bei p = { $at }: ein Zyklus wächst von null an, bis die Rolle fast haftet
+onset-hard = harter Einsatz bei p = { $at }: Das Schwingen springt auf einen großen Zyklus, der auch unterhalb des Einsatzes bleibt
+onset-degenerate = Einsatz bei p = { $at }, in erster Ordnung weder weich noch hart
+onset-reversible = keine Dämpfung: kein Grenzzyklus, auf dem sich das Schwingen einpendeln könnte (eine reversible Säule)
+    .tooltip = Ohne Dämpfung ist die Säule reversibel: Das Flattern beginnt, wo sich zwei Eigenwertpaare auf der imaginären Achse treffen, und es gibt keinen Attraktor, also keinen Grenzzyklus, auf dem sich das Schwingen einpendeln könnte.
+onset =
+    .tooltip = Weich: Nach dem Einsatz wächst das Schwingen von null zu einem kleinen stationären Zyklus, größer mit steigender Last; hart: Es springt auf einen großen, der bleibt, wenn die Last etwas gesenkt wird. Haften: Die Rolle hört auf, auf dem Band zu gleiten, wo die Reibung ihr Gesetz ändert.{"\u000A"}{"\u000A"}Erster Ljapunow-Koeffizient { $lyapunov } beim Einsatz p = { $at } (Hopf-Punkt, Frequenz { $frequency } rad/s).{ $amplitude }{ $sticking }
+onset-amplitude = In seiner Nähe ist |phi1| des Zyklus etwa { $a } sqrt(p - { $at }) rad.
+onset-sticking = Auf der Rolle nimmt der Schlupf am Kontakt ab, während der Zyklus wächst; wo er fast null wird, ist die Reibung nicht mehr glatt, und die Bewegung geht in Haftgleiten über, dem diese Analyse nicht folgt: Der Zweig im Reiter überkritisch endet dort.
+
+## The load ramp
+
+ramp = Lastrampe
+ramp-from = von
+    .name = Rampe von
+    .tooltip = die Last, bei der die Rampe beginnt
+ramp-to = bis
+    .name = Rampe bis
+    .tooltip = die Last, bei der die Rampe endet
+ramp-rate = mit
+    .name = Rampenrate
+    .tooltip = wie schnell sich die Last ändert, pro simulierter Sekunde
+ramp-start = Rampe starten
+    .tooltip = die Last geht auf „von“ und läuft mit der Rate nach „bis“, während der Lauf weitergeht (die Last von Hand setzen beendet sie)
+ramp-pause = Rampe anhalten
+    .tooltip = die Last halten, wo sie ist; der Lauf geht weiter
+ramp-resume = fortsetzen
+ramp-stop = beenden
+    .tooltip = die Rampe beenden
+ramp-done = fertig
+ramp-paused = angehalten
+ramp-moving = läuft
+ramp-progress = p = { $load } Richtung { $to } mit { $rate }/s ({ $doing })
+
+## Sharing the settings
+
+share-copy = Einstellungen kopieren
+    .tooltip = Modell, Last, Integrator und Tempo als Text, in die Zwischenablage und das Feld darunter
+share-paste = aus der Zwischenablage einfügen
+    .tooltip = anderswo kopierten Einstellungstext übernehmen (das Feld darunter zeigt ihn)
+share-box = oder Einstellungstext hier tippen oder einfügen
+share-take = den Text oben übernehmen
+    .tooltip = die im Feld geschriebenen Einstellungen laden
+paste-too-long = Einfügen abgelehnt, nichts geändert: der Text hat { $bytes } Bytes; kein Feld hier nimmt mehr als { $most } (Einstellungstext hat unter 2000)
+paste-no-text = Einstellungen einfügen: Die Zwischenablage enthält keinen Text (zuerst den Einstellungstext kopieren)
+
+## Lessons
+
+lessons = Lektionen
+lessons-built-in = die eingebaute Lektion { $name }
+lesson-file = Lektionsdatei
+    .hint = eine Lektionsdatei (.ron)
+    .tooltip = der Pfad zu einer eigenen Lektionsdatei (das Format steht in der README)
+lesson-open = öffnen
+    .tooltip = die Datei lesen und prüfen, dann starten
+lesson-reading = lese { $path }
+lesson-reading-stopped = { $path }: Das Lesen endete ohne Antwort
+lesson-step = Schritt { $k } von { $n }
+lesson-prediction = deine Vorhersage: p = { $load }
+lesson-predicted-load = vorhergesagte Last
+    .tooltip = wo du ihn erwartest; der Lastregler markiert ihn (Tasten wie beim Lastregler: links, rechts, Umschalt für zehn Schritte, Pos1, Ende)
+lesson-back = zurück
+    .tooltip = der vorige Schritt (Bild auf)
+lesson-next = weiter
+    .tooltip = der nächste Schritt: Er stellt ein und startet, was er sagt (Bild ab, wie es die Fernbedienung eines Vortragenden sendet)
+lesson-close = Lektion schließen
+    .tooltip = die Lektion verlassen; das Modell bleibt, wie es ist
+lesson-next-lesson = nächste Lektion: { $title }
+    .tooltip = die nächste Lektion, „{ $title }“, beim ersten Schritt öffnen (Bild ab)
+lesson-last = der letzte Schritt der letzten Lektion

@@ -78,3 +78,312 @@ welcome-first-lesson = start the first lesson
     .tooltip = a few steps: predict where flutter starts, then watch
 welcome-explore = explore on my own
     .tooltip = close this; the lessons stay at the top of the sidebar
+
+## States and critical loads
+
+state-stable = stable
+state-flutter = flutter
+state-divergence = divergence
+transition = p = { $load }: { $from } -> { $to }
+transition-meaning = p = { $load }: the column goes from { $from } to { $to }; { $how }
+    .to-flutter = past this load a pair of eigenvalues lies right of the imaginary axis: a kick grows into a growing swing
+    .to-divergence = past this load a real eigenvalue is positive: the column leans away without swinging
+    .to-stable = past this load no eigenvalue lies right of the imaginary axis: a kick no longer grows
+duration-forever = forever
+duration-days = { $count ->
+    [one] { $n } day
+   *[other] { $n } days
+}
+duration-years = { $count ->
+    [one] { $n } year
+   *[other] { $n } years
+}
+
+## The model and the engine
+
+model = model
+    .source = { $source }: where the model is in the study this program follows (its figure and equations)
+preset-ziegler-1952 = Ziegler 1952
+    .description = Ziegler's column: massless rods, point mass 2m at the joint A and m at the tip, ideal follower force
+preset-uniform-rods = Fig. 1a
+    .description = Uniform rigid rods of mass m (Fig. 1a), ideal follower force
+preset-midpoint-masses = Fig. 1b, eqs 1-7
+    .description = Massless rods with a point mass m at each midpoint (Fig. 1b, eqs 1-7), ideal follower force
+preset-roller = Fig. 7, eqs 8-38
+    .description = Uniform rods with a roller dragged by a moving band (Fig. 7, eqs 8-38), consistent spin inertia; Fig. 8 parameters
+preset-roller-as-printed = eq. 39, Fig. 8
+    .description = The roller model as printed in eq. (39): the spin inertia multiplied by r/l2, an erratum of the paper; Fig. 8 parameters
+preset-tabletop = lecture pace
+    .description = A desk-sized column for a lecture: uniform rods of 25 cm and 100 g, springs of 0.0625 N m/rad (a = 10 1/s^2), ideal follower force; past p = 2.54 it flutters with a period of about 1.5 s
+preset-tabletop-roller = lecture pace
+    .description = The tabletop column pushed by a 10 g roller of radius 2.5 cm on a band at 0.1 m/s (nu = rho = mu = 0.1): a weak flutter from p = 0.024 that takes minutes to grow, a strong one near the ideal column's load
+preset-beck = Beck 1952, a chain of 16 rods
+    .description = Beck's column as a chain of 16 uniform rods with springs k at every joint (a beam of EI = k l, L = 16 l), follower force: flutter at P L^2/EI = 18.78 (Beck's continuous column: 20.05)
+preset-pflueger = Pflueger's column, a chain of 16 rods
+    .description = Pflueger's column: Beck's chain of 16 rods with a tip mass of half the column's mass, follower force: the tip mass lowers the flutter load to P L^2/EI = 15.06
+preset-beck-roller = Beck's chain loaded as in Bigoni et al. 2018
+    .description = Beck's chain of 16 rods loaded by the roller on the moving band (the paper's groups on each rod: roller mass 0.1 m, radius 0.1 l, mu = 0.1, V = 0.1 m/s): the slip's damping makes it flutter weakly from P L^2/EI = 0.025 (growth below 3e-4 1/s), and strongly from about 18.8, where the follower chain flutters
+preset-pflueger-roller = Pflueger's chain loaded as in Bigoni et al. 2018
+    .description = Pflueger's chain of 16 rods (tip mass half the rods' mass) loaded by the same roller on the moving band: weak flutter from P L^2/EI = 0.008 (growth below 4e-5 1/s), strong flutter from 15.06, where the follower chain flutters
+tip-force-dead = tip force: a dead load (eta = 0), fixed in direction, in place of the preset's follower force
+tip-force-partial = tip force: partly tangential, turned by eta = { $eta } of the last rod's angle (the preset's follower force has eta = 1)
+engine = engine
+    .tooltip = what integrates the motion: the run goes on from where it is
+engine-rapier = rapier
+    .tooltip = rapier: the rapier2d physics engine, rods as rigid bodies joined by hinges (a multibody), the roller's spin implicit
+engine-reference = reference
+    .tooltip = adaptive Dormand-Prince 5(4) on the exact equations
+
+## The load
+
+load-field = load p = P l/k
+    .tooltip = type a load (Enter applies, Escape restores); beyond the bar's end too
+    .meaning = the load without units: the tip force P times the rod's length l over the springs' stiffness k (Ziegler's column flutters from p = 2.09)
+roller-load = roller: q = R l/k = p/μ = { $q }   (μ = { $mu })
+    .tooltip = the roller's own load: the force R pressing it on the band, in the units of p; the band's friction pushes with μ R, so p = μ q
+notes-more = ... and { $count } more (hover)
+load-beyond-range = p = { $load } is beyond the plotted range (0 to { $end }); the status below is at p
+critical-loads-hidden = The critical loads are hidden until the lesson reveals them.
+not-resolved = the stability is not resolved here (hover for why)
+ramp-visible = the tip off by { $percent }% of the length
+ramp-theory = theory (white mark): unstable from p = { $load }
+ramp-seen = seen (mark): motion visible at p = { $load } ({ $visible })
+ramp-seen-late = seen (mark): motion visible at p = { $load }, late: hover for why ({ $visible })
+    .why = It shows late: past the onset the motion needs time to grow to a visible size, and the ramp moves on meanwhile. A slower ramp shows it closer to the theory.
+ramp-watching = watching for the motion to become visible ({ $visible })
+
+## The parameters
+
+groups = dimensionless groups
+    .tooltip = the few combinations of the SI values that decide the motion (a = k/(m l^2) sets how fast it is; the roller's nu, rho, mu and V its mass, size, friction and the band's speed); changing one keeps the others
+si-parameters = SI parameters
+mu-moves-load = (R held: moves p)
+key-allowed = { $description } (allowed: { $range })
+refused = refused: { $why }
+key-load = load p = P l/k on the common axis (P = mu R for the roller; l = l1, k = k1)
+    .range = >= 0
+key-a = a = k/(m l^2): sets k1 (and k2 in the same ratio), keeps p
+    .range = > 0
+key-nu = nu = m3/m, roller mass over the rod's mass
+    .range = >= 0
+key-rho = rho = r/l, roller radius over the rod's length
+    .range = in (0, l2/l]
+key-mu = friction coefficient; only mu R enters the equations, so R is held and the load p = mu R l/k moves
+    .range = > 0
+key-V = band speed (the band moves toward -x); the linear analysis needs V > 0
+    .range = >= 0
+key-l1 = length of rod 1 (its mass distribution scales with it)
+    .range = > 0
+key-l2 = length of rod 2 (its mass distribution scales with it)
+    .range = > 0
+key-m1 = mass of rod 1, point masses on it included (distribution kept)
+    .range = >= 0
+key-m2 = mass of rod 2 (distribution kept)
+    .range = >= 0
+key-s1 = centre of mass of rod 1, from the clamp O
+    .range = in [0, l1]
+key-s2 = centre of mass of rod 2, from the joint A
+    .range = in [0, l2]
+key-I1 = moment of inertia of rod 1 about its centre of mass
+    .range = >= 0
+key-I2 = moment of inertia of rod 2 about its centre of mass
+    .range = >= 0
+key-m_tip = point mass at the tip B (the roller's mass is m3)
+    .range = >= 0
+key-k1 = rotary spring at the clamp O
+    .range = > 0
+key-k2 = rotary spring at the joint A
+    .range = > 0
+key-c1 = viscous damper at the clamp O
+    .range = >= 0
+key-c2 = viscous damper at the joint A
+    .range = >= 0
+key-c_ext = external viscous drag along both rods (air drag, linearized): a force per unit length of c_ext times the local velocity across the rod
+    .range = >= 0
+key-rods = rods in the chain: rod 1, then copies of rod 2 with joint A's spring and damper at every joint; the tip mass and load at the last rod's end
+    .range = from 2 to 64
+key-P = magnitude of the tip force
+    .range = >= 0
+key-eta = tangency of the tip force: its direction turns by eta times the last rod's angle (1: follower force, 0: dead load)
+    .range = in [0, 1]
+key-m3 = mass of the roller (0: massless, the ideal follower force)
+    .range = >= 0
+key-r = radius of the roller
+    .range = in (0, l2]
+key-R = normal force of the roller on the band
+    .range = >= 0
+
+## Time
+
+command-play = play
+    .running = pause
+    .tooltip = play / pause
+command-load-up = load up
+    .tooltip = load up by a hundredth of the load bar
+command-load-down = load down
+    .tooltip = load down by a hundredth of the load bar
+command-kick = kick
+    .tooltip = kick: every rod turned by 0.03 rad
+command-reset = reset
+    .tooltip = reset: a fresh run from the standard perturbation
+command-reset-all = reset all
+    .tooltip = reset all: the preset's parameters and load, normal speed, a fresh run, the default views; an open lesson is closed
+command-projector = projector mode
+    .tooltip = projector mode: high contrast, large text
+command-next = next
+    .tooltip = the lesson's next step (a presenter's remote sends Page Down)
+command-back = back
+    .tooltip = the lesson's previous step (Page Up)
+command-full-screen = full screen
+    .tooltip = full screen: the window fills the screen (again to leave)
+command-step = step
+    .tooltip = one engine step (1/240 s), then paused
+key-space = space
+key-right = right
+key-up = up
+key-left = left
+key-down = down
+key-page-down = page down
+key-page-up = page up
+focus-keys-tab = the next control (shift+tab: the previous one)
+    .keys = tab
+focus-keys-ctrl-tab = the next tab (ctrl+shift+tab: the previous one)
+    .keys = ctrl+tab
+focus-keys-press = with a button, checkbox, choice or tab focused: press it (space plays only with nothing focused)
+    .keys = space, enter
+focus-keys-slider = with a slider focused (the load bar, the prediction): move it by a hundredth; shift: a tenth
+    .keys = left, right
+focus-keys-column = with the column focused (tab to it): turn it by 0.02 rad either way, shift: 0.1 rad (the keyboard's drag)
+    .keys = left, right
+focus-keys-ends = with the load bar or the prediction focused: its ends
+    .keys = home, end
+focus-keys-plot = with a plot focused (tab to it): pan by a tenth, zoom about the centre; enter: a map takes the cell under the cross
+    .keys = arrows, +, -
+focus-keys-escape = let go of the focus (a text field: undo the typing)
+    .keys = esc
+focus-keys-others = page down, page up, K, R, P and up/down work whatever is focused, but a text field being edited
+    .keys = the others
+pace-slow = Slow
+    .tooltip = a quarter of real time
+pace-normal = Normal
+    .tooltip = real time: one simulated second per second
+pace-fast = Fast
+    .tooltip = four times real time
+speed-factor = × speed
+    .tooltip = simulated seconds per second of wall-clock time
+run-time = t = { $secs } s   ({ $status })
+run-paused = paused
+run-running = running
+run-diverged = diverged at t = { $secs } s
+run-too-stiff = too stiff for the reference integrator at t = { $secs } s: a very light roller or a stopped band (the rapier engine handles those), or a load or stiffness so large that no step resolves the column's rates
+run-too-fast = too fast for the rapier engine at t = { $secs } s: the column turns at { $rate } rad/s, more than its fixed step resolves ({ $most } rad per step); the reference engine follows it
+run-lagging = running at { $achieved }x: this computer cannot keep up at { $asked }x
+
+## The status card
+
+card-stable =
+    .meaning = stable: a small nudge stays small (it dies away, or with no damping at all keeps its size)
+card-flutter =
+    .meaning = flutter: the column swings back and forth, wider and wider (a pair of eigenvalues right of the axis)
+card-divergence =
+    .meaning = divergence: the column bends away to one side without swinging (a real eigenvalue right of the axis)
+card-weak-flutter = weak flutter
+    .meaning = weak flutter: the swing grows, but by less than 1% of its frequency: slowly, over many swings
+card-hidden = stable or not?
+    .why = The verdict is hidden until the lesson reveals it: watch the column.
+card-no-figures = no stability figures: { $why }
+card-growth = growth rate  { $rate } 1/s
+    .tooltip = growth rate: how fast the motion grows (positive) or dies away (negative), per second: the real part of the eigenvalue furthest right
+card-growth-zero = growth rate  0 (to within { $tolerance } 1/s)
+card-not-resolved = not resolved at these parameters: see the warning under the load
+card-e-folding = e-folding time  { $time }
+    .tooltip = e-folding time: the time in which the swing grows by a factor e = 2.72 (1 / growth rate)
+card-decay = decay time  { $time }
+    .tooltip = decay time: the time in which the swing shrinks by a factor e = 2.72
+card-neutral = neutral: no growth, no decay
+card-mode = mode { $k } of { $n }
+card-the-mode = the mode
+card-frequency = frequency  { $frequency } rad/s  (period { $period } s{ $which })
+    .tooltip = frequency: how fast the column swings, in radians per second (the eigenvalue's height); the period is one full swing. A column of n rods has n modes of swinging, counted here from the slowest; the card describes the one that grows fastest (or dies away slowest), and the run's measurement is shown for that same mode
+card-non-oscillatory = non-oscillatory: the dominant eigenvalue is real
+card-measured = measured from the run{ $mode }  { $measurement }
+    .tooltip = the eigenvalue fitted to the run's own motion (a matrix pencil of the angles): at least 20 s of small swings (below 0.05 rad) since the last kick, release or change, each mode once the run holds a whole period of it; 'mode 2 of 2' counts the column's modes of swinging from the slowest. The ± is the fit's own uncertainty: how far fits over the run's first and last three quarters fall from the whole run's. The engine's time step dt moves the run itself from the linear model too, its frequency by about ω³dt²/24
+card-measured-other-mode = measured from the run: { $mode } only, { $measurement } (the card's { $card } too weak in this run to fit)
+card-measured-other = measured from the run: another eigenvalue only, { $measurement } (the card's too weak in this run to fit)
+card-measured-after = measured: after 20 s of small-amplitude motion (|φ| < 0.05 rad)
+card-measured-two-rods = measured: for two rods only (a chain's many slow modes need a longer run than a fit can use)
+card-measurement = growth { $growth } 1/s, frequency { $frequency } rad/s
+card-measurement-unknown = growth { $growth } 1/s, frequency { $frequency } rad/s (uncertainty unknown: too few periods in the run)
+card-grows-slowly = grows by { $percent } per period: watch for minutes, not seconds
+card-grows-too-slowly = grows by { $percent } per period: too slow to see in a lesson
+onset-soft = soft onset at p = { $at }: the swing settles on a limit cycle that grows from zero
+onset-soft-roller = soft onset at p = { $at }: a cycle grows from zero, until the roller nears sticking
+onset-hard = hard onset at p = { $at }: the swing jumps to a large cycle, which persists below the onset
+onset-degenerate = onset at p = { $at } neither soft nor hard to first order
+onset-reversible = no damping: no limit cycle to settle on (a reversible column)
+    .tooltip = Without damping the column is reversible: flutter starts where two pairs of eigenvalues meet on the imaginary axis, and there is no attractor, so no limit cycle the swing could settle on.
+onset =
+    .tooltip = Soft: past the onset the swing grows from zero to a small steady cycle, larger as the load rises; hard: it jumps to a large one, which stays when the load is lowered a little. Sticking: the roller stops slipping on the band, where the friction changes its law.{"\u000A"}{"\u000A"}First Lyapunov coefficient { $lyapunov } at the onset p = { $at } (Hopf point, frequency { $frequency } rad/s).{ $amplitude }{ $sticking }
+onset-amplitude = Near it the cycle's |phi1| is about { $a } sqrt(p - { $at }) rad.
+onset-sticking = On the roller the slip at the contact falls as the cycle grows; where it nears zero the friction is no longer smooth and the motion turns to stick-slip, which this analysis does not follow: the post-critical tab's branch ends there.
+
+## The load ramp
+
+ramp = ramp the load
+ramp-from = from
+    .name = ramp from
+    .tooltip = the load the ramp starts at
+ramp-to = to
+    .name = ramp to
+    .tooltip = the load the ramp stops at
+ramp-rate = at
+    .name = ramp rate
+    .tooltip = how fast the load moves, per simulated second
+ramp-start = start ramp
+    .tooltip = the load goes to 'from' and moves to 'to' at the rate, as the run goes on (setting the load by hand ends it)
+ramp-pause = pause ramp
+    .tooltip = hold the load where it is; the run goes on
+ramp-resume = resume
+ramp-stop = stop
+    .tooltip = end the ramp
+ramp-done = done
+ramp-paused = paused
+ramp-moving = moving
+ramp-progress = p = { $load } toward { $to } at { $rate }/s ({ $doing })
+
+## Sharing the settings
+
+share-copy = copy settings
+    .tooltip = the model, load, engine and speed as text, to the clipboard and the box below
+share-paste = paste from clipboard
+    .tooltip = take settings text copied elsewhere (the box below shows it)
+share-box = or type or paste settings text here
+share-take = take the text above
+    .tooltip = load the settings written in the box
+paste-too-long = paste refused, nothing changed: the text holds { $bytes } bytes; no field here takes more than { $most } (settings text is under 2000)
+paste-no-text = paste settings: the clipboard holds no text (copy the settings text first)
+
+## Lessons
+
+lessons = lessons
+lessons-built-in = the built-in lesson { $name }
+lesson-file = lesson file
+    .hint = a lesson file (.ron)
+    .tooltip = the path of your own lesson file (see the README for the format)
+lesson-open = open
+    .tooltip = read and check the file, then start it
+lesson-reading = reading { $path }
+lesson-reading-stopped = { $path }: the reading stopped without an answer
+lesson-step = step { $k } of { $n }
+lesson-prediction = your prediction: p = { $load }
+lesson-predicted-load = predicted load
+    .tooltip = where you expect it; the load bar marks it (keys as on the load bar: left, right, shift for ten steps, home, end)
+lesson-back = back
+    .tooltip = the previous step (Page Up)
+lesson-next = next
+    .tooltip = the next step: it sets and starts what it says (Page Down, as a presenter's remote sends)
+lesson-close = close lesson
+    .tooltip = leave the lesson; the model stays as it is
+lesson-next-lesson = next lesson: { $title }
+    .tooltip = open the next lesson, "{ $title }", at its first step (Page Down)
+lesson-last = the last step of the last lesson

@@ -79,3 +79,312 @@ welcome-first-lesson = empezar la primera lección
     .tooltip = unos pocos pasos: predice dónde empieza el flameo y luego observa
 welcome-explore = explorar por mi cuenta
     .tooltip = cerrar esto; las lecciones siguen arriba en la barra lateral
+
+## States and critical loads
+
+state-stable = estable
+state-flutter = flameo
+state-divergence = divergencia
+transition = p = { $load }: { $from } -> { $to }
+transition-meaning = p = { $load }: la columna pasa de { $from } a { $to }; { $how }
+    .to-flutter = por encima de esta carga un par de autovalores queda a la derecha del eje imaginario: un golpe se convierte en una oscilación cada vez mayor
+    .to-divergence = por encima de esta carga un autovalor real es positivo: la columna se inclina sin oscilar
+    .to-stable = por encima de esta carga ningún autovalor queda a la derecha del eje imaginario: un golpe ya no crece
+duration-forever = nunca
+duration-days = { $count ->
+    [one] { $n } día
+   *[other] { $n } días
+}
+duration-years = { $count ->
+    [one] { $n } año
+   *[other] { $n } años
+}
+
+## The model and the engine
+
+model = modelo
+    .source = { $source }: dónde está el modelo en el estudio que sigue este programa (su figura y ecuaciones)
+preset-ziegler-1952 = Ziegler 1952
+    .description = La columna de Ziegler: barras sin masa, masa puntual 2m en la articulación A y m en el extremo, fuerza seguidora ideal
+preset-uniform-rods = Fig. 1a
+    .description = Barras rígidas homogéneas de masa m (Fig. 1a), fuerza seguidora ideal
+preset-midpoint-masses = Fig. 1b, ec. 1-7
+    .description = Barras sin masa con una masa puntual m en el centro de cada una (Fig. 1b, ec. 1-7), fuerza seguidora ideal
+preset-roller = Fig. 7, ec. 8-38
+    .description = Barras homogéneas con un rodillo arrastrado por una banda móvil (Fig. 7, ec. 8-38), inercia de giro coherente; parámetros de la Fig. 8
+preset-roller-as-printed = ec. 39, Fig. 8
+    .description = El modelo del rodillo tal como se imprimió en la ec. (39): la inercia de giro multiplicada por r/l2, una errata del artículo; parámetros de la Fig. 8
+preset-tabletop = ritmo de clase
+    .description = Una columna de mesa para una clase: barras homogéneas de 25 cm y 100 g, resortes de 0.0625 N m/rad (a = 10 1/s^2), fuerza seguidora ideal; pasado p = 2.54 entra en flameo con un periodo de unos 1.5 s
+preset-tabletop-roller = ritmo de clase
+    .description = La columna de mesa empujada por un rodillo de 10 g y 2.5 cm de radio sobre una banda a 0.1 m/s (nu = rho = mu = 0.1): un flameo débil desde p = 0.024 que tarda minutos en crecer, y uno fuerte cerca de la carga de la columna ideal
+preset-beck = Beck 1952, una cadena de 16 barras
+    .description = La columna de Beck como cadena de 16 barras homogéneas con resortes k en cada articulación (una viga con EI = k l, L = 16 l), fuerza seguidora: flameo en P L^2/EI = 18.78 (columna continua de Beck: 20.05)
+preset-pflueger = La columna de Pflüger, una cadena de 16 barras
+    .description = La columna de Pflüger: la cadena de Beck de 16 barras con una masa en el extremo igual a la mitad de la masa de la columna, fuerza seguidora: la masa del extremo baja la carga de flameo a P L^2/EI = 15.06
+preset-beck-roller = La cadena de Beck cargada como en Bigoni et al. 2018
+    .description = La cadena de Beck de 16 barras cargada por el rodillo sobre la banda móvil (los grupos del artículo en cada barra: masa del rodillo 0.1 m, radio 0.1 l, mu = 0.1, V = 0.1 m/s): el amortiguamiento del deslizamiento la hace entrar en flameo débil desde P L^2/EI = 0.025 (crecimiento por debajo de 3e-4 1/s), y fuerte desde unos 18.8, donde entra en flameo la cadena con fuerza seguidora
+preset-pflueger-roller = La cadena de Pflüger cargada como en Bigoni et al. 2018
+    .description = La cadena de Pflüger de 16 barras (masa del extremo la mitad de la de las barras) cargada por el mismo rodillo sobre la banda móvil: flameo débil desde P L^2/EI = 0.008 (crecimiento por debajo de 4e-5 1/s), flameo fuerte desde 15.06, donde entra en flameo la cadena con fuerza seguidora
+tip-force-dead = fuerza en el extremo: una carga muerta (eta = 0), de dirección fija, en lugar de la fuerza seguidora del modelo
+tip-force-partial = fuerza en el extremo: en parte tangencial, girada eta = { $eta } veces el ángulo de la última barra (la fuerza seguidora del modelo tiene eta = 1)
+engine = integrador
+    .tooltip = qué integra el movimiento: la simulación sigue desde donde está
+engine-rapier = rapier
+    .tooltip = rapier: el motor físico rapier2d, barras como sólidos rígidos unidos por bisagras (un sistema multicuerpo), el giro del rodillo implícito
+engine-reference = referencia
+    .tooltip = Dormand-Prince 5(4) adaptativo sobre las ecuaciones exactas
+
+## The load
+
+load-field = carga p = P l/k
+    .tooltip = escribe una carga (Intro aplica, Escape restaura); también más allá del final de la barra
+    .meaning = la carga sin unidades: la fuerza P del extremo por la longitud de la barra l entre la rigidez de los resortes k (la columna de Ziegler entra en flameo desde p = 2.09)
+roller-load = rodillo: q = R l/k = p/μ = { $q }   (μ = { $mu })
+    .tooltip = la carga propia del rodillo: la fuerza R que lo aprieta contra la banda, en las unidades de p; el rozamiento de la banda empuja con μ R, así que p = μ q
+notes-more = ... y { $count } más (pasa el ratón)
+load-beyond-range = p = { $load } está fuera del intervalo dibujado (de 0 a { $end }); el estado de abajo es en p
+critical-loads-hidden = Las cargas críticas están ocultas hasta que la lección las revele.
+not-resolved = la estabilidad no está resuelta aquí (pasa el ratón para ver por qué)
+ramp-visible = el extremo desplazado un { $percent }% de la longitud
+ramp-theory = teoría (marca blanca): inestable desde p = { $load }
+ramp-seen = visto (marca): movimiento visible en p = { $load } ({ $visible })
+ramp-seen-late = visto (marca): movimiento visible en p = { $load }, con retraso: pasa el ratón para ver por qué ({ $visible })
+    .why = Aparece con retraso: pasado el inicio, el movimiento necesita tiempo para crecer hasta un tamaño visible, y entretanto la rampa sigue avanzando. Una rampa más lenta lo muestra más cerca de la teoría.
+ramp-watching = esperando a que el movimiento sea visible ({ $visible })
+
+## The parameters
+
+groups = grupos adimensionales
+    .tooltip = las pocas combinaciones de los valores SI que deciden el movimiento (a = k/(m l^2) fija su rapidez; nu, rho, mu y V del rodillo su masa, tamaño, rozamiento y la velocidad de la banda); cambiar uno mantiene los demás
+si-parameters = parámetros SI
+mu-moves-load = (R fijo: mueve p)
+key-allowed = { $description } (permitido: { $range })
+refused = rechazado: { $why }
+key-load = carga p = P l/k en el eje común (P = mu R para el rodillo; l = l1, k = k1)
+    .range = >= 0
+key-a = a = k/(m l^2): fija k1 (y k2 en la misma proporción), mantiene p
+    .range = > 0
+key-nu = nu = m3/m, masa del rodillo entre la masa de la barra
+    .range = >= 0
+key-rho = rho = r/l, radio del rodillo entre la longitud de la barra
+    .range = en (0, l2/l]
+key-mu = coeficiente de rozamiento; en las ecuaciones solo entra mu R, así que R se mantiene y la carga p = mu R l/k cambia
+    .range = > 0
+key-V = velocidad de la banda (se mueve hacia -x); el análisis lineal necesita V > 0
+    .range = >= 0
+key-l1 = longitud de la barra 1 (su distribución de masa escala con ella)
+    .range = > 0
+key-l2 = longitud de la barra 2 (su distribución de masa escala con ella)
+    .range = > 0
+key-m1 = masa de la barra 1, incluidas sus masas puntuales (se mantiene la distribución)
+    .range = >= 0
+key-m2 = masa de la barra 2 (se mantiene la distribución)
+    .range = >= 0
+key-s1 = centro de masa de la barra 1, desde el empotramiento O
+    .range = en [0, l1]
+key-s2 = centro de masa de la barra 2, desde la articulación A
+    .range = en [0, l2]
+key-I1 = momento de inercia de la barra 1 respecto a su centro de masa
+    .range = >= 0
+key-I2 = momento de inercia de la barra 2 respecto a su centro de masa
+    .range = >= 0
+key-m_tip = masa puntual en el extremo B (la masa del rodillo es m3)
+    .range = >= 0
+key-k1 = resorte de torsión en el empotramiento O
+    .range = > 0
+key-k2 = resorte de torsión en la articulación A
+    .range = > 0
+key-c1 = amortiguador viscoso en el empotramiento O
+    .range = >= 0
+key-c2 = amortiguador viscoso en la articulación A
+    .range = >= 0
+key-c_ext = resistencia viscosa externa a lo largo de ambas barras (resistencia del aire, linealizada): una fuerza por unidad de longitud igual a c_ext por la velocidad local transversal a la barra
+    .range = >= 0
+key-rods = barras de la cadena: la barra 1 y luego copias de la barra 2 con el resorte y el amortiguador de la articulación A en cada articulación; la masa del extremo y la carga al final de la última barra
+    .range = de 2 a 64
+key-P = módulo de la fuerza en el extremo
+    .range = >= 0
+key-eta = tangencialidad de la fuerza en el extremo: su dirección gira eta veces el ángulo de la última barra (1: fuerza seguidora, 0: carga muerta)
+    .range = en [0, 1]
+key-m3 = masa del rodillo (0: sin masa, la fuerza seguidora ideal)
+    .range = >= 0
+key-r = radio del rodillo
+    .range = en (0, l2]
+key-R = fuerza normal del rodillo sobre la banda
+    .range = >= 0
+
+## Time
+
+command-play = iniciar
+    .running = pausa
+    .tooltip = iniciar / pausa
+command-load-up = subir carga
+    .tooltip = sube la carga una centésima de la barra
+command-load-down = bajar carga
+    .tooltip = baja la carga una centésima de la barra
+command-kick = golpe
+    .tooltip = golpe: cada barra girada 0.03 rad
+command-reset = reiniciar
+    .tooltip = reiniciar: una nueva simulación desde la perturbación estándar
+command-reset-all = reiniciar todo
+    .tooltip = reiniciar todo: los parámetros y la carga del modelo, velocidad normal, una nueva simulación, las vistas por defecto; una lección abierta se cierra
+command-projector = modo proyector
+    .tooltip = modo proyector: alto contraste, texto grande
+command-next = siguiente
+    .tooltip = el paso siguiente de la lección (el mando de un presentador envía Av Pág)
+command-back = atrás
+    .tooltip = el paso anterior de la lección (Re Pág)
+command-full-screen = pantalla completa
+    .tooltip = pantalla completa: la ventana llena la pantalla (otra vez para salir)
+command-step = paso
+    .tooltip = un paso del integrador (1/240 s), luego pausa
+key-space = espacio
+key-right = derecha
+key-up = arriba
+key-left = izquierda
+key-down = abajo
+key-page-down = Av Pág
+key-page-up = Re Pág
+focus-keys-tab = el control siguiente (mayús+tab: el anterior)
+    .keys = tab
+focus-keys-ctrl-tab = la pestaña siguiente (ctrl+mayús+tab: la anterior)
+    .keys = ctrl+tab
+focus-keys-press = con un botón, casilla, selector o pestaña enfocado: pulsarlo (el espacio solo inicia si no hay nada enfocado)
+    .keys = espacio, intro
+focus-keys-slider = con un deslizador enfocado (la barra de carga, la predicción): moverlo una centésima; mayús: una décima
+    .keys = izquierda, derecha
+focus-keys-column = con la columna enfocada (tab hasta ella): girarla 0.02 rad en un sentido u otro, mayús: 0.1 rad (el arrastre por teclado)
+    .keys = izquierda, derecha
+focus-keys-ends = con la barra de carga o la predicción enfocada: sus extremos
+    .keys = inicio, fin
+focus-keys-plot = con un gráfico enfocado (tab hasta él): desplazar una décima, ampliar en torno al centro; intro: un mapa toma la celda bajo la cruz
+    .keys = flechas, +, -
+focus-keys-escape = soltar el foco (un campo de texto: deshacer lo escrito)
+    .keys = esc
+focus-keys-others = Av Pág, Re Pág, K, R, P y arriba/abajo funcionan tenga el foco lo que tenga, salvo un campo de texto en edición
+    .keys = los demás
+pace-slow = Lento
+    .tooltip = un cuarto del tiempo real
+pace-normal = Normal
+    .tooltip = tiempo real: un segundo simulado por segundo
+pace-fast = Rápido
+    .tooltip = cuatro veces el tiempo real
+speed-factor = × velocidad
+    .tooltip = segundos simulados por segundo de reloj
+run-time = t = { $secs } s   ({ $status })
+run-paused = en pausa
+run-running = en marcha
+run-diverged = divergió en t = { $secs } s
+run-too-stiff = demasiado rígida para el integrador de referencia en t = { $secs } s: un rodillo muy ligero o una banda parada (el integrador rapier los maneja), o una carga o rigidez tan grandes que ningún paso resuelve las velocidades de la columna
+run-too-fast = demasiado rápida para el integrador rapier en t = { $secs } s: la columna gira a { $rate } rad/s, más de lo que resuelve su paso fijo ({ $most } rad por paso); el integrador de referencia la sigue
+run-lagging = en marcha a { $achieved }x: este ordenador no llega a { $asked }x
+
+## The status card
+
+card-stable =
+    .meaning = estable: un pequeño golpe sigue siendo pequeño (se amortigua o, sin ningún amortiguamiento, conserva su tamaño)
+card-flutter =
+    .meaning = flameo: la columna oscila de un lado a otro, cada vez más (un par de autovalores a la derecha del eje)
+card-divergence =
+    .meaning = divergencia: la columna se dobla hacia un lado sin oscilar (un autovalor real a la derecha del eje)
+card-weak-flutter = flameo débil
+    .meaning = flameo débil: la oscilación crece, pero menos del 1% de su frecuencia: despacio, a lo largo de muchas oscilaciones
+card-hidden = ¿estable o no?
+    .why = El veredicto está oculto hasta que la lección lo revele: observa la columna.
+card-no-figures = sin datos de estabilidad: { $why }
+card-growth = tasa de crecimiento  { $rate } 1/s
+    .tooltip = tasa de crecimiento: lo rápido que el movimiento crece (positiva) o se amortigua (negativa), por segundo: la parte real del autovalor más a la derecha
+card-growth-zero = tasa de crecimiento  0 (dentro de { $tolerance } 1/s)
+card-not-resolved = no resuelto con estos parámetros: mira el aviso bajo la carga
+card-e-folding = tiempo de e-plegado  { $time }
+    .tooltip = tiempo de e-plegado: el tiempo en que la oscilación crece un factor e = 2.72 (1 / tasa de crecimiento)
+card-decay = tiempo de amortiguamiento  { $time }
+    .tooltip = tiempo de amortiguamiento: el tiempo en que la oscilación se reduce un factor e = 2.72
+card-neutral = neutro: ni crecimiento ni amortiguamiento
+card-mode = modo { $k } de { $n }
+card-the-mode = el modo
+card-frequency = frecuencia  { $frequency } rad/s  (periodo { $period } s{ $which })
+    .tooltip = frecuencia: lo rápido que oscila la columna, en radianes por segundo (la altura del autovalor); el periodo es una oscilación completa. Una columna de n barras tiene n modos de oscilación, contados aquí desde el más lento; la tarjeta describe el que crece más rápido (o se amortigua más despacio), y la medida de la simulación se muestra para ese mismo modo
+card-non-oscillatory = no oscilatorio: el autovalor dominante es real
+card-measured = medido en la simulación{ $mode }  { $measurement }
+    .tooltip = el autovalor ajustado al propio movimiento de la simulación (un haz de matrices de los ángulos): al menos 20 s de oscilaciones pequeñas (por debajo de 0.05 rad) desde el último golpe, suelta o cambio, cada modo cuando la simulación contiene un periodo entero suyo; «modo 2 de 2» cuenta los modos de oscilación de la columna desde el más lento. El ± es la incertidumbre propia del ajuste: cuánto se apartan los ajustes sobre los primeros y los últimos tres cuartos de la simulación del ajuste sobre toda ella. También el paso de tiempo dt del integrador aparta la simulación del modelo lineal, su frecuencia en unos ω³dt²/24
+card-measured-other-mode = medido en la simulación: solo { $mode }, { $measurement } ({ $card } de la tarjeta, demasiado débil en esta simulación para ajustarlo)
+card-measured-other = medido en la simulación: solo otro autovalor, { $measurement } (el de la tarjeta, demasiado débil en esta simulación para ajustarlo)
+card-measured-after = medido: tras 20 s de movimiento de pequeña amplitud (|φ| < 0.05 rad)
+card-measured-two-rods = medido: solo con dos barras (los muchos modos lentos de una cadena necesitan una simulación más larga de la que un ajuste puede usar)
+card-measurement = crecimiento { $growth } 1/s, frecuencia { $frequency } rad/s
+card-measurement-unknown = crecimiento { $growth } 1/s, frecuencia { $frequency } rad/s (incertidumbre desconocida: muy pocos periodos en la simulación)
+card-grows-slowly = crece un { $percent } por periodo: observa durante minutos, no segundos
+card-grows-too-slowly = crece un { $percent } por periodo: demasiado lento para verlo en una lección
+onset-soft = inicio suave en p = { $at }: la oscilación se asienta en un ciclo límite que crece desde cero
+onset-soft-roller = inicio suave en p = { $at }: un ciclo crece desde cero, hasta que el rodillo se acerca a la adherencia
+onset-hard = inicio brusco en p = { $at }: la oscilación salta a un ciclo grande, que persiste por debajo del inicio
+onset-degenerate = inicio en p = { $at } ni suave ni brusco a primer orden
+onset-reversible = sin amortiguamiento: no hay ciclo límite en el que asentarse (una columna reversible)
+    .tooltip = Sin amortiguamiento la columna es reversible: el flameo empieza donde dos pares de autovalores se encuentran sobre el eje imaginario, y no hay atractor, así que no hay ciclo límite en el que la oscilación pueda asentarse.
+onset =
+    .tooltip = Suave: pasado el inicio la oscilación crece desde cero hasta un ciclo estacionario pequeño, mayor al subir la carga; brusco: salta a uno grande, que permanece cuando la carga baja un poco. Adherencia: el rodillo deja de deslizar sobre la banda, donde el rozamiento cambia de ley.{"\u000A"}{"\u000A"}Primer coeficiente de Liapunov { $lyapunov } en el inicio p = { $at } (punto de Hopf, frecuencia { $frequency } rad/s).{ $amplitude }{ $sticking }
+onset-amplitude = Cerca de él, |phi1| del ciclo vale unos { $a } sqrt(p - { $at }) rad.
+onset-sticking = Sobre el rodillo el deslizamiento en el contacto disminuye a medida que crece el ciclo; donde se acerca a cero el rozamiento deja de ser suave y el movimiento pasa a stick-slip, que este análisis no sigue: la rama de la pestaña poscrítico termina ahí.
+
+## The load ramp
+
+ramp = rampa de carga
+ramp-from = de
+    .name = rampa desde
+    .tooltip = la carga en la que empieza la rampa
+ramp-to = a
+    .name = rampa hasta
+    .tooltip = la carga en la que se detiene la rampa
+ramp-rate = a razón de
+    .name = ritmo de la rampa
+    .tooltip = lo rápido que cambia la carga, por segundo simulado
+ramp-start = iniciar rampa
+    .tooltip = la carga va a «de» y se mueve hacia «a» al ritmo dado, mientras la simulación sigue (fijar la carga a mano la termina)
+ramp-pause = pausar rampa
+    .tooltip = mantener la carga donde está; la simulación sigue
+ramp-resume = reanudar
+ramp-stop = parar
+    .tooltip = terminar la rampa
+ramp-done = terminada
+ramp-paused = en pausa
+ramp-moving = en marcha
+ramp-progress = p = { $load } hacia { $to } a { $rate }/s ({ $doing })
+
+## Sharing the settings
+
+share-copy = copiar ajustes
+    .tooltip = el modelo, la carga, el integrador y la velocidad como texto, al portapapeles y al cuadro de abajo
+share-paste = pegar del portapapeles
+    .tooltip = tomar un texto de ajustes copiado en otro sitio (el cuadro de abajo lo muestra)
+share-box = o escribe o pega aquí un texto de ajustes
+share-take = usar el texto de arriba
+    .tooltip = cargar los ajustes escritos en el cuadro
+paste-too-long = pegado rechazado, nada ha cambiado: el texto tiene { $bytes } bytes; ningún campo de aquí admite más de { $most } (un texto de ajustes tiene menos de 2000)
+paste-no-text = pegar ajustes: el portapapeles no contiene texto (copia primero el texto de ajustes)
+
+## Lessons
+
+lessons = lecciones
+lessons-built-in = la lección incluida { $name }
+lesson-file = archivo de lección
+    .hint = un archivo de lección (.ron)
+    .tooltip = la ruta de tu propio archivo de lección (el formato está en el README)
+lesson-open = abrir
+    .tooltip = leer y comprobar el archivo, y luego empezarlo
+lesson-reading = leyendo { $path }
+lesson-reading-stopped = { $path }: la lectura se detuvo sin respuesta
+lesson-step = paso { $k } de { $n }
+lesson-prediction = tu predicción: p = { $load }
+lesson-predicted-load = carga prevista
+    .tooltip = dónde la esperas; la barra de carga la marca (teclas como en la barra de carga: izquierda, derecha, mayús para diez pasos, inicio, fin)
+lesson-back = atrás
+    .tooltip = el paso anterior (Re Pág)
+lesson-next = siguiente
+    .tooltip = el paso siguiente: ajusta e inicia lo que dice (Av Pág, como envía el mando de un presentador)
+lesson-close = cerrar lección
+    .tooltip = salir de la lección; el modelo queda como está
+lesson-next-lesson = lección siguiente: { $title }
+    .tooltip = abrir la lección siguiente, «{ $title }», en su primer paso (Av Pág)
+lesson-last = el último paso de la última lección

@@ -79,3 +79,312 @@ welcome-first-lesson = commencer la première leçon
     .tooltip = quelques étapes : prédire où commence le flottement, puis regarder
 welcome-explore = explorer seul
     .tooltip = fermer ; les leçons restent en haut du panneau latéral
+
+## States and critical loads
+
+state-stable = stable
+state-flutter = flottement
+state-divergence = divergence
+transition = p = { $load } : { $from } -> { $to }
+transition-meaning = p = { $load } : la colonne passe de { $from } à { $to } ; { $how }
+    .to-flutter = au-delà de cette charge une paire de valeurs propres est à droite de l'axe imaginaire : une poussée devient une oscillation de plus en plus ample
+    .to-divergence = au-delà de cette charge une valeur propre réelle est positive : la colonne penche sans osciller
+    .to-stable = au-delà de cette charge aucune valeur propre n'est à droite de l'axe imaginaire : une poussée ne croît plus
+duration-forever = jamais
+duration-days = { $count ->
+    [one] { $n } jour
+   *[other] { $n } jours
+}
+duration-years = { $count ->
+    [one] { $n } an
+   *[other] { $n } ans
+}
+
+## The model and the engine
+
+model = modèle
+    .source = { $source } : où se trouve le modèle dans l'étude que suit ce programme (sa figure et ses équations)
+preset-ziegler-1952 = Ziegler 1952
+    .description = La colonne de Ziegler : barres sans masse, masse ponctuelle 2m à l'articulation A et m à l'extrémité, force suiveuse idéale
+preset-uniform-rods = fig. 1a
+    .description = Barres rigides homogènes de masse m (fig. 1a), force suiveuse idéale
+preset-midpoint-masses = fig. 1b, éq. 1-7
+    .description = Barres sans masse avec une masse ponctuelle m au milieu de chacune (fig. 1b, éq. 1-7), force suiveuse idéale
+preset-roller = fig. 7, éq. 8-38
+    .description = Barres homogènes avec un galet entraîné par une bande mobile (fig. 7, éq. 8-38), inertie de rotation cohérente ; paramètres de la fig. 8
+preset-roller-as-printed = éq. 39, fig. 8
+    .description = Le modèle du galet tel qu'imprimé dans l'éq. (39) : l'inertie de rotation multipliée par r/l2, une erreur de l'article ; paramètres de la fig. 8
+preset-tabletop = rythme de cours
+    .description = Une colonne de table pour un cours : barres homogènes de 25 cm et 100 g, ressorts de 0.0625 N m/rad (a = 10 1/s^2), force suiveuse idéale ; au-delà de p = 2.54 elle flotte avec une période d'environ 1.5 s
+preset-tabletop-roller = rythme de cours
+    .description = La colonne de table poussée par un galet de 10 g et de 2.5 cm de rayon sur une bande à 0.1 m/s (nu = rho = mu = 0.1) : un flottement faible dès p = 0.024 qui met des minutes à croître, un fort près de la charge de la colonne idéale
+preset-beck = Beck 1952, une chaîne de 16 barres
+    .description = La colonne de Beck comme une chaîne de 16 barres homogènes avec des ressorts k à chaque articulation (une poutre d'EI = k l, L = 16 l), force suiveuse : flottement à P L^2/EI = 18.78 (colonne continue de Beck : 20.05)
+preset-pflueger = La colonne de Pflüger, une chaîne de 16 barres
+    .description = La colonne de Pflüger : la chaîne de Beck de 16 barres avec une masse d'extrémité égale à la moitié de la masse de la colonne, force suiveuse : la masse d'extrémité abaisse la charge de flottement à P L^2/EI = 15.06
+preset-beck-roller = La chaîne de Beck chargée comme chez Bigoni et al. 2018
+    .description = La chaîne de Beck de 16 barres chargée par le galet sur la bande mobile (les groupes de l'article sur chaque barre : masse du galet 0.1 m, rayon 0.1 l, mu = 0.1, V = 0.1 m/s) : l'amortissement du glissement la fait flotter faiblement dès P L^2/EI = 0.025 (croissance sous 3e-4 1/s), et fortement dès environ 18.8, où flotte la chaîne sous force suiveuse
+preset-pflueger-roller = La chaîne de Pflüger chargée comme chez Bigoni et al. 2018
+    .description = La chaîne de Pflüger de 16 barres (masse d'extrémité égale à la moitié de celle des barres) chargée par le même galet sur la bande mobile : flottement faible dès P L^2/EI = 0.008 (croissance sous 4e-5 1/s), flottement fort dès 15.06, où flotte la chaîne sous force suiveuse
+tip-force-dead = force à l'extrémité : une charge morte (eta = 0), de direction fixe, à la place de la force suiveuse du modèle
+tip-force-partial = force à l'extrémité : en partie tangentielle, tournée de eta = { $eta } fois l'angle de la dernière barre (la force suiveuse du modèle a eta = 1)
+engine = intégrateur
+    .tooltip = ce qui intègre le mouvement : la simulation reprend là où elle en est
+engine-rapier = rapier
+    .tooltip = rapier : le moteur physique rapier2d, barres en solides rigides reliés par des charnières (un système multicorps), la rotation du galet implicite
+engine-reference = référence
+    .tooltip = Dormand-Prince 5(4) adaptatif sur les équations exactes
+
+## The load
+
+load-field = charge p = P l/k
+    .tooltip = saisir une charge (Entrée applique, Échap rétablit) ; aussi au-delà de la fin de la barre
+    .meaning = la charge sans unité : la force P à l'extrémité fois la longueur de barre l divisée par la raideur des ressorts k (la colonne de Ziegler flotte dès p = 2.09)
+roller-load = galet : q = R l/k = p/μ = { $q }   (μ = { $mu })
+    .tooltip = la charge propre du galet : la force R qui le presse sur la bande, dans les unités de p ; le frottement de la bande pousse avec μ R, donc p = μ q
+notes-more = ... et { $count } de plus (survoler)
+load-beyond-range = p = { $load } est au-delà de l'intervalle tracé (de 0 à { $end }) ; l'état ci-dessous est à p
+critical-loads-hidden = Les charges critiques sont cachées jusqu'à ce que la leçon les révèle.
+not-resolved = la stabilité n'est pas résolue ici (survoler pour savoir pourquoi)
+ramp-visible = l'extrémité déplacée de { $percent } % de la longueur
+ramp-theory = théorie (repère blanc) : instable dès p = { $load }
+ramp-seen = vu (repère) : mouvement visible à p = { $load } ({ $visible })
+ramp-seen-late = vu (repère) : mouvement visible à p = { $load }, en retard : survoler pour savoir pourquoi ({ $visible })
+    .why = Il apparaît en retard : après le début, le mouvement a besoin de temps pour atteindre une taille visible, et la rampe avance pendant ce temps. Une rampe plus lente le montre plus près de la théorie.
+ramp-watching = en attente d'un mouvement visible ({ $visible })
+
+## The parameters
+
+groups = groupes sans dimension
+    .tooltip = les quelques combinaisons des valeurs SI qui décident du mouvement (a = k/(m l^2) fixe sa rapidité ; nu, rho, mu et V du galet sa masse, sa taille, son frottement et la vitesse de la bande) ; en changer un garde les autres
+si-parameters = paramètres SI
+mu-moves-load = (R fixé : déplace p)
+key-allowed = { $description } (permis : { $range })
+refused = refusé : { $why }
+key-load = charge p = P l/k sur l'axe commun (P = mu R pour le galet ; l = l1, k = k1)
+    .range = >= 0
+key-a = a = k/(m l^2) : fixe k1 (et k2 dans le même rapport), garde p
+    .range = > 0
+key-nu = nu = m3/m, masse du galet sur masse de la barre
+    .range = >= 0
+key-rho = rho = r/l, rayon du galet sur longueur de la barre
+    .range = dans (0, l2/l]
+key-mu = coefficient de frottement ; seul mu R entre dans les équations, donc R est fixé et la charge p = mu R l/k varie
+    .range = > 0
+key-V = vitesse de la bande (elle avance vers -x) ; l'analyse linéaire exige V > 0
+    .range = >= 0
+key-l1 = longueur de la barre 1 (sa répartition de masse suit)
+    .range = > 0
+key-l2 = longueur de la barre 2 (sa répartition de masse suit)
+    .range = > 0
+key-m1 = masse de la barre 1, masses ponctuelles comprises (répartition conservée)
+    .range = >= 0
+key-m2 = masse de la barre 2 (répartition conservée)
+    .range = >= 0
+key-s1 = centre de masse de la barre 1, depuis l'encastrement O
+    .range = dans [0, l1]
+key-s2 = centre de masse de la barre 2, depuis l'articulation A
+    .range = dans [0, l2]
+key-I1 = moment d'inertie de la barre 1 autour de son centre de masse
+    .range = >= 0
+key-I2 = moment d'inertie de la barre 2 autour de son centre de masse
+    .range = >= 0
+key-m_tip = masse ponctuelle à l'extrémité B (la masse du galet est m3)
+    .range = >= 0
+key-k1 = ressort de torsion à l'encastrement O
+    .range = > 0
+key-k2 = ressort de torsion à l'articulation A
+    .range = > 0
+key-c1 = amortisseur visqueux à l'encastrement O
+    .range = >= 0
+key-c2 = amortisseur visqueux à l'articulation A
+    .range = >= 0
+key-c_ext = traînée visqueuse extérieure le long des deux barres (résistance de l'air, linéarisée) : une force par unité de longueur égale à c_ext fois la vitesse locale transverse de la barre
+    .range = >= 0
+key-rods = barres de la chaîne : la barre 1, puis des copies de la barre 2 avec le ressort et l'amortisseur de l'articulation A à chaque articulation ; la masse d'extrémité et la charge au bout de la dernière barre
+    .range = de 2 à 64
+key-P = intensité de la force à l'extrémité
+    .range = >= 0
+key-eta = tangentialité de la force à l'extrémité : sa direction tourne de eta fois l'angle de la dernière barre (1 : force suiveuse, 0 : charge morte)
+    .range = dans [0, 1]
+key-m3 = masse du galet (0 : sans masse, la force suiveuse idéale)
+    .range = >= 0
+key-r = rayon du galet
+    .range = dans (0, l2]
+key-R = force normale du galet sur la bande
+    .range = >= 0
+
+## Time
+
+command-play = lecture
+    .running = pause
+    .tooltip = lecture / pause
+command-load-up = charge +
+    .tooltip = augmenter la charge d'un centième de la barre
+command-load-down = charge -
+    .tooltip = diminuer la charge d'un centième de la barre
+command-kick = pousser
+    .tooltip = poussée : chaque barre tournée de 0.03 rad
+command-reset = relancer
+    .tooltip = relancer : une nouvelle simulation depuis la perturbation standard
+command-reset-all = tout réinitialiser
+    .tooltip = tout réinitialiser : les paramètres et la charge du modèle, vitesse normale, une nouvelle simulation, les vues par défaut ; une leçon ouverte est fermée
+command-projector = mode projecteur
+    .tooltip = mode projecteur : fort contraste, grand texte
+command-next = suivant
+    .tooltip = l'étape suivante de la leçon (la télécommande d'un présentateur envoie Page suivante)
+command-back = retour
+    .tooltip = l'étape précédente de la leçon (Page précédente)
+command-full-screen = plein écran
+    .tooltip = plein écran : la fenêtre remplit l'écran (à nouveau pour sortir)
+command-step = pas
+    .tooltip = un pas de l'intégrateur (1/240 s), puis pause
+key-space = espace
+key-right = droite
+key-up = haut
+key-left = gauche
+key-down = bas
+key-page-down = page suivante
+key-page-up = page précédente
+focus-keys-tab = le contrôle suivant (maj+tab : le précédent)
+    .keys = tab
+focus-keys-ctrl-tab = l'onglet suivant (ctrl+maj+tab : le précédent)
+    .keys = ctrl+tab
+focus-keys-press = avec un bouton, une case, un choix ou un onglet ciblé : l'actionner (espace ne lance la lecture que si rien n'est ciblé)
+    .keys = espace, entrée
+focus-keys-slider = avec un curseur ciblé (la barre de charge, la prédiction) : le déplacer d'un centième ; maj : d'un dixième
+    .keys = gauche, droite
+focus-keys-column = avec la colonne ciblée (tab jusqu'à elle) : la tourner de 0.02 rad dans un sens ou l'autre, maj : 0.1 rad (le glisser au clavier)
+    .keys = gauche, droite
+focus-keys-ends = avec la barre de charge ou la prédiction ciblée : ses extrémités
+    .keys = début, fin
+focus-keys-plot = avec un graphique ciblé (tab jusqu'à lui) : déplacer d'un dixième, zoomer autour du centre ; entrée : une carte prend la cellule sous la croix
+    .keys = flèches, +, -
+focus-keys-escape = lâcher le focus (un champ de texte : annuler la saisie)
+    .keys = échap
+focus-keys-others = page suivante, page précédente, K, R, P et haut/bas marchent quel que soit le focus, sauf dans un champ de texte en cours d'édition
+    .keys = les autres
+pace-slow = Lent
+    .tooltip = un quart du temps réel
+pace-normal = Normal
+    .tooltip = temps réel : une seconde simulée par seconde
+pace-fast = Rapide
+    .tooltip = quatre fois le temps réel
+speed-factor = × vitesse
+    .tooltip = secondes simulées par seconde d'horloge
+run-time = t = { $secs } s   ({ $status })
+run-paused = en pause
+run-running = en cours
+run-diverged = divergence numérique à t = { $secs } s
+run-too-stiff = trop raide pour l'intégrateur de référence à t = { $secs } s : un galet très léger ou une bande arrêtée (l'intégrateur rapier les gère), ou une charge ou une raideur si grandes qu'aucun pas ne résout les vitesses de la colonne
+run-too-fast = trop rapide pour l'intégrateur rapier à t = { $secs } s : la colonne tourne à { $rate } rad/s, plus que son pas fixe ne résout ({ $most } rad par pas) ; l'intégrateur de référence la suit
+run-lagging = tourne à { $achieved }x : cet ordinateur ne tient pas { $asked }x
+
+## The status card
+
+card-stable =
+    .meaning = stable : une petite poussée reste petite (elle s'amortit ou, sans aucun amortissement, garde sa taille)
+card-flutter =
+    .meaning = flottement : la colonne oscille d'un côté à l'autre, de plus en plus fort (une paire de valeurs propres à droite de l'axe)
+card-divergence =
+    .meaning = divergence : la colonne fléchit d'un côté sans osciller (une valeur propre réelle à droite de l'axe)
+card-weak-flutter = flottement faible
+    .meaning = flottement faible : l'oscillation croît, mais de moins de 1 % de sa fréquence : lentement, sur de nombreuses oscillations
+card-hidden = stable ou non ?
+    .why = Le verdict est caché jusqu'à ce que la leçon le révèle : regardez la colonne.
+card-no-figures = pas de données de stabilité : { $why }
+card-growth = taux de croissance  { $rate } 1/s
+    .tooltip = taux de croissance : la vitesse à laquelle le mouvement croît (positif) ou s'amortit (négatif), par seconde : la partie réelle de la valeur propre la plus à droite
+card-growth-zero = taux de croissance  0 (à { $tolerance } 1/s près)
+card-not-resolved = non résolu pour ces paramètres : voir l'avertissement sous la charge
+card-e-folding = temps de croissance e  { $time }
+    .tooltip = temps de croissance e : le temps en lequel l'oscillation croît d'un facteur e = 2.72 (1 / taux de croissance)
+card-decay = temps d'amortissement  { $time }
+    .tooltip = temps d'amortissement : le temps en lequel l'oscillation diminue d'un facteur e = 2.72
+card-neutral = neutre : ni croissance ni amortissement
+card-mode = mode { $k } sur { $n }
+card-the-mode = le mode
+card-frequency = fréquence  { $frequency } rad/s  (période { $period } s{ $which })
+    .tooltip = fréquence : la vitesse à laquelle la colonne oscille, en radians par seconde (la hauteur de la valeur propre) ; la période est une oscillation complète. Une colonne de n barres a n modes d'oscillation, comptés ici depuis le plus lent ; la carte décrit celui qui croît le plus vite (ou s'amortit le plus lentement), et la mesure de la simulation est donnée pour ce même mode
+card-non-oscillatory = non oscillant : la valeur propre dominante est réelle
+card-measured = mesuré sur la simulation{ $mode }  { $measurement }
+    .tooltip = la valeur propre ajustée au mouvement de la simulation elle-même (un faisceau de matrices des angles) : au moins 20 s de petites oscillations (sous 0.05 rad) depuis la dernière poussée, le dernier lâcher ou changement, chaque mode dès que la simulation en contient une période entière ; « mode 2 sur 2 » compte les modes d'oscillation de la colonne depuis le plus lent. Le ± est l'incertitude propre de l'ajustement : l'écart entre les ajustements sur les trois premiers et les trois derniers quarts de la simulation et celui sur toute la simulation. Le pas de temps dt de l'intégrateur écarte aussi la simulation du modèle linéaire, sa fréquence d'environ ω³dt²/24
+card-measured-other-mode = mesuré sur la simulation : seulement { $mode }, { $measurement } ({ $card } de la carte trop faible dans cette simulation pour l'ajuster)
+card-measured-other = mesuré sur la simulation : seulement une autre valeur propre, { $measurement } (celle de la carte trop faible dans cette simulation pour l'ajuster)
+card-measured-after = mesuré : après 20 s de mouvement de faible amplitude (|φ| < 0.05 rad)
+card-measured-two-rods = mesuré : pour deux barres seulement (les nombreux modes lents d'une chaîne demandent une simulation plus longue qu'un ajustement ne peut utiliser)
+card-measurement = croissance { $growth } 1/s, fréquence { $frequency } rad/s
+card-measurement-unknown = croissance { $growth } 1/s, fréquence { $frequency } rad/s (incertitude inconnue : trop peu de périodes dans la simulation)
+card-grows-slowly = croît de { $percent } par période : regarder pendant des minutes, pas des secondes
+card-grows-too-slowly = croît de { $percent } par période : trop lent pour être vu pendant une leçon
+onset-soft = apparition douce à p = { $at } : l'oscillation se stabilise sur un cycle limite qui croît depuis zéro
+onset-soft-roller = apparition douce à p = { $at } : un cycle croît depuis zéro, jusqu'à ce que le galet approche de l'adhérence
+onset-hard = apparition brutale à p = { $at } : l'oscillation saute sur un grand cycle, qui persiste sous le seuil
+onset-degenerate = apparition à p = { $at } ni douce ni brutale au premier ordre
+onset-reversible = pas d'amortissement : aucun cycle limite sur lequel se stabiliser (une colonne réversible)
+    .tooltip = Sans amortissement la colonne est réversible : le flottement commence où deux paires de valeurs propres se rencontrent sur l'axe imaginaire, et il n'y a pas d'attracteur, donc aucun cycle limite sur lequel l'oscillation pourrait se stabiliser.
+onset =
+    .tooltip = Douce : après le seuil l'oscillation croît depuis zéro jusqu'à un petit cycle stationnaire, plus grand quand la charge augmente ; brutale : elle saute sur un grand cycle, qui reste quand la charge baisse un peu. Adhérence : le galet cesse de glisser sur la bande, où le frottement change de loi.{"\u000A"}{"\u000A"}Premier coefficient de Liapounov { $lyapunov } au seuil p = { $at } (point de Hopf, fréquence { $frequency } rad/s).{ $amplitude }{ $sticking }
+onset-amplitude = Près de lui, |phi1| du cycle vaut environ { $a } sqrt(p - { $at }) rad.
+onset-sticking = Sur le galet, le glissement au contact diminue à mesure que le cycle croît ; là où il approche de zéro, le frottement n'est plus régulier et le mouvement devient du stick-slip, que cette analyse ne suit pas : la branche de l'onglet postcritique s'arrête là.
+
+## The load ramp
+
+ramp = rampe de charge
+ramp-from = de
+    .name = rampe depuis
+    .tooltip = la charge où commence la rampe
+ramp-to = à
+    .name = rampe jusqu'à
+    .tooltip = la charge où s'arrête la rampe
+ramp-rate = au rythme de
+    .name = rythme de la rampe
+    .tooltip = la vitesse à laquelle la charge varie, par seconde simulée
+ramp-start = lancer la rampe
+    .tooltip = la charge va à « de » puis à « à » au rythme donné, pendant que la simulation continue (régler la charge à la main l'arrête)
+ramp-pause = suspendre la rampe
+    .tooltip = garder la charge où elle est ; la simulation continue
+ramp-resume = reprendre
+ramp-stop = arrêter
+    .tooltip = terminer la rampe
+ramp-done = terminée
+ramp-paused = suspendue
+ramp-moving = en cours
+ramp-progress = p = { $load } vers { $to } à { $rate }/s ({ $doing })
+
+## Sharing the settings
+
+share-copy = copier les réglages
+    .tooltip = le modèle, la charge, l'intégrateur et la vitesse en texte, dans le presse-papiers et la zone ci-dessous
+share-paste = coller du presse-papiers
+    .tooltip = prendre un texte de réglages copié ailleurs (la zone ci-dessous le montre)
+share-box = ou saisir ou coller ici un texte de réglages
+share-take = prendre le texte ci-dessus
+    .tooltip = charger les réglages écrits dans la zone
+paste-too-long = collage refusé, rien n'a changé : le texte fait { $bytes } octets ; aucun champ ici n'en prend plus de { $most } (un texte de réglages fait moins de 2000)
+paste-no-text = coller les réglages : le presse-papiers ne contient pas de texte (copiez d'abord le texte des réglages)
+
+## Lessons
+
+lessons = leçons
+lessons-built-in = la leçon intégrée { $name }
+lesson-file = fichier de leçon
+    .hint = un fichier de leçon (.ron)
+    .tooltip = le chemin de votre propre fichier de leçon (le format est dans le README)
+lesson-open = ouvrir
+    .tooltip = lire et vérifier le fichier, puis le lancer
+lesson-reading = lecture de { $path }
+lesson-reading-stopped = { $path } : la lecture s'est arrêtée sans réponse
+lesson-step = étape { $k } sur { $n }
+lesson-prediction = votre prédiction : p = { $load }
+lesson-predicted-load = charge prévue
+    .tooltip = là où vous l'attendez ; la barre de charge la marque (touches comme sur la barre de charge : gauche, droite, maj pour dix pas, début, fin)
+lesson-back = retour
+    .tooltip = l'étape précédente (Page précédente)
+lesson-next = suivant
+    .tooltip = l'étape suivante : elle règle et lance ce qu'elle dit (Page suivante, comme l'envoie la télécommande d'un présentateur)
+lesson-close = fermer la leçon
+    .tooltip = quitter la leçon ; le modèle reste tel quel
+lesson-next-lesson = leçon suivante : { $title }
+    .tooltip = ouvrir la leçon suivante, « { $title } », à sa première étape (Page suivante)
+lesson-last = la dernière étape de la dernière leçon

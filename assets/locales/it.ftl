@@ -79,3 +79,312 @@ welcome-first-lesson = inizia la prima lezione
     .tooltip = pochi passi: prevedi dove inizia il flutter, poi osserva
 welcome-explore = esploro da solo
     .tooltip = chiudi; le lezioni restano in cima alla barra laterale
+
+## States and critical loads
+
+state-stable = stabile
+state-flutter = flutter
+state-divergence = divergenza
+transition = p = { $load }: { $from } -> { $to }
+transition-meaning = p = { $load }: la colonna passa da { $from } a { $to }; { $how }
+    .to-flutter = oltre questo carico una coppia di autovalori sta a destra dell'asse immaginario: un colpetto diventa un'oscillazione sempre più ampia
+    .to-divergence = oltre questo carico un autovalore reale è positivo: la colonna si inclina senza oscillare
+    .to-stable = oltre questo carico nessun autovalore sta a destra dell'asse immaginario: un colpetto non cresce più
+duration-forever = mai
+duration-days = { $count ->
+    [one] { $n } giorno
+   *[other] { $n } giorni
+}
+duration-years = { $count ->
+    [one] { $n } anno
+   *[other] { $n } anni
+}
+
+## The model and the engine
+
+model = modello
+    .source = { $source }: dove si trova il modello nello studio che questo programma segue (figura ed equazioni)
+preset-ziegler-1952 = Ziegler 1952
+    .description = La colonna di Ziegler: aste prive di massa, massa puntiforme 2m nel giunto A e m in punta, forza follower ideale
+preset-uniform-rods = Fig. 1a
+    .description = Aste rigide omogenee di massa m (Fig. 1a), forza follower ideale
+preset-midpoint-masses = Fig. 1b, eq. 1-7
+    .description = Aste prive di massa con una massa puntiforme m a metà di ciascuna (Fig. 1b, eq. 1-7), forza follower ideale
+preset-roller = Fig. 7, eq. 8-38
+    .description = Aste omogenee con una rotella trascinata da un nastro in movimento (Fig. 7, eq. 8-38), inerzia di rotazione coerente; parametri della Fig. 8
+preset-roller-as-printed = eq. 39, Fig. 8
+    .description = Il modello della rotella come stampato nell'eq. (39): l'inerzia di rotazione moltiplicata per r/l2, un refuso dell'articolo; parametri della Fig. 8
+preset-tabletop = ritmo da lezione
+    .description = Una colonna da tavolo per una lezione: aste omogenee da 25 cm e 100 g, molle da 0.0625 N m/rad (a = 10 1/s^2), forza follower ideale; oltre p = 2.54 va in flutter con un periodo di circa 1.5 s
+preset-tabletop-roller = ritmo da lezione
+    .description = La colonna da tavolo spinta da una rotella da 10 g di raggio 2.5 cm su un nastro a 0.1 m/s (nu = rho = mu = 0.1): un flutter debole da p = 0.024 che impiega minuti a crescere, uno forte vicino al carico della colonna ideale
+preset-beck = Beck 1952, una catena di 16 aste
+    .description = La colonna di Beck come catena di 16 aste omogenee con molle k in ogni giunto (una trave con EI = k l, L = 16 l), forza follower: flutter a P L^2/EI = 18.78 (colonna continua di Beck: 20.05)
+preset-pflueger = La colonna di Pflüger, una catena di 16 aste
+    .description = La colonna di Pflüger: la catena di Beck di 16 aste con una massa in punta pari a metà della massa della colonna, forza follower: la massa in punta abbassa il carico di flutter a P L^2/EI = 15.06
+preset-beck-roller = La catena di Beck caricata come in Bigoni et al. 2018
+    .description = La catena di Beck di 16 aste caricata dalla rotella sul nastro in movimento (i gruppi dell'articolo su ogni asta: massa della rotella 0.1 m, raggio 0.1 l, mu = 0.1, V = 0.1 m/s): lo smorzamento dello strisciamento la porta in un flutter debole da P L^2/EI = 0.025 (crescita sotto 3e-4 1/s), e forte da circa 18.8, dove va in flutter la catena con forza follower
+preset-pflueger-roller = La catena di Pflüger caricata come in Bigoni et al. 2018
+    .description = La catena di Pflüger di 16 aste (massa in punta metà di quella delle aste) caricata dalla stessa rotella sul nastro in movimento: flutter debole da P L^2/EI = 0.008 (crescita sotto 4e-5 1/s), flutter forte da 15.06, dove va in flutter la catena con forza follower
+tip-force-dead = forza in punta: un carico fisso (eta = 0), di direzione costante, al posto della forza follower del modello
+tip-force-partial = forza in punta: in parte tangenziale, ruotata di eta = { $eta } volte l'angolo dell'ultima asta (la forza follower del modello ha eta = 1)
+engine = integratore
+    .tooltip = che cosa integra il moto: la simulazione prosegue da dove si trova
+engine-rapier = rapier
+    .tooltip = rapier: il motore fisico rapier2d, aste come corpi rigidi uniti da cerniere (un sistema multicorpo), la rotazione della rotella implicita
+engine-reference = riferimento
+    .tooltip = Dormand-Prince 5(4) adattivo sulle equazioni esatte
+
+## The load
+
+load-field = carico p = P l/k
+    .tooltip = scrivi un carico (Invio applica, Esc ripristina); anche oltre la fine della barra
+    .meaning = il carico adimensionale: la forza in punta P per la lunghezza dell'asta l diviso la rigidezza delle molle k (la colonna di Ziegler va in flutter da p = 2.09)
+roller-load = rotella: q = R l/k = p/μ = { $q }   (μ = { $mu })
+    .tooltip = il carico proprio della rotella: la forza R che la preme sul nastro, nelle unità di p; l'attrito del nastro spinge con μ R, quindi p = μ q
+notes-more = ... e altre { $count } (passa sopra)
+load-beyond-range = p = { $load } è oltre l'intervallo tracciato (da 0 a { $end }); lo stato qui sotto è a p
+critical-loads-hidden = I carichi critici sono nascosti finché la lezione non li rivela.
+not-resolved = la stabilità qui non è risolta (passa sopra per il motivo)
+ramp-visible = la punta spostata del { $percent }% della lunghezza
+ramp-theory = teoria (segno bianco): instabile da p = { $load }
+ramp-seen = visto (segno): moto visibile a p = { $load } ({ $visible })
+ramp-seen-late = visto (segno): moto visibile a p = { $load }, in ritardo: passa sopra per il motivo ({ $visible })
+    .why = Appare in ritardo: oltre l'inizio il moto ha bisogno di tempo per crescere fino a una misura visibile, e intanto la rampa va avanti. Una rampa più lenta lo mostra più vicino alla teoria.
+ramp-watching = in attesa che il moto diventi visibile ({ $visible })
+
+## The parameters
+
+groups = gruppi adimensionali
+    .tooltip = le poche combinazioni dei valori SI che decidono il moto (a = k/(m l^2) fissa quanto è veloce; nu, rho, mu e V della rotella la sua massa, dimensione, attrito e la velocità del nastro); cambiarne uno lascia gli altri
+si-parameters = parametri SI
+mu-moves-load = (R fisso: sposta p)
+key-allowed = { $description } (ammesso: { $range })
+refused = rifiutato: { $why }
+key-load = carico p = P l/k sull'asse comune (P = mu R per la rotella; l = l1, k = k1)
+    .range = >= 0
+key-a = a = k/(m l^2): fissa k1 (e k2 nello stesso rapporto), mantiene p
+    .range = > 0
+key-nu = nu = m3/m, massa della rotella su massa dell'asta
+    .range = >= 0
+key-rho = rho = r/l, raggio della rotella su lunghezza dell'asta
+    .range = in (0, l2/l]
+key-mu = coefficiente d'attrito; nelle equazioni entra solo mu R, quindi R resta fisso e il carico p = mu R l/k cambia
+    .range = > 0
+key-V = velocità del nastro (si muove verso -x); l'analisi lineare richiede V > 0
+    .range = >= 0
+key-l1 = lunghezza dell'asta 1 (la sua distribuzione di massa scala con essa)
+    .range = > 0
+key-l2 = lunghezza dell'asta 2 (la sua distribuzione di massa scala con essa)
+    .range = > 0
+key-m1 = massa dell'asta 1, comprese le masse puntiformi (distribuzione mantenuta)
+    .range = >= 0
+key-m2 = massa dell'asta 2 (distribuzione mantenuta)
+    .range = >= 0
+key-s1 = baricentro dell'asta 1, dall'incastro O
+    .range = in [0, l1]
+key-s2 = baricentro dell'asta 2, dal giunto A
+    .range = in [0, l2]
+key-I1 = momento d'inerzia dell'asta 1 rispetto al baricentro
+    .range = >= 0
+key-I2 = momento d'inerzia dell'asta 2 rispetto al baricentro
+    .range = >= 0
+key-m_tip = massa puntiforme in punta B (la massa della rotella è m3)
+    .range = >= 0
+key-k1 = molla rotazionale all'incastro O
+    .range = > 0
+key-k2 = molla rotazionale al giunto A
+    .range = > 0
+key-c1 = smorzatore viscoso all'incastro O
+    .range = >= 0
+key-c2 = smorzatore viscoso al giunto A
+    .range = >= 0
+key-c_ext = resistenza viscosa esterna lungo entrambe le aste (resistenza dell'aria, linearizzata): una forza per unità di lunghezza pari a c_ext per la velocità locale trasversale all'asta
+    .range = >= 0
+key-rods = aste della catena: l'asta 1, poi copie dell'asta 2 con la molla e lo smorzatore del giunto A in ogni giunto; la massa in punta e il carico all'estremo dell'ultima asta
+    .range = da 2 a 64
+key-P = intensità della forza in punta
+    .range = >= 0
+key-eta = tangenzialità della forza in punta: la sua direzione ruota di eta volte l'angolo dell'ultima asta (1: forza follower, 0: carico fisso)
+    .range = in [0, 1]
+key-m3 = massa della rotella (0: senza massa, la forza follower ideale)
+    .range = >= 0
+key-r = raggio della rotella
+    .range = in (0, l2]
+key-R = forza normale della rotella sul nastro
+    .range = >= 0
+
+## Time
+
+command-play = avvia
+    .running = pausa
+    .tooltip = avvia / pausa
+command-load-up = carico su
+    .tooltip = alza il carico di un centesimo della barra
+command-load-down = carico giù
+    .tooltip = abbassa il carico di un centesimo della barra
+command-kick = colpetto
+    .tooltip = colpetto: ogni asta ruotata di 0.03 rad
+command-reset = riavvia
+    .tooltip = riavvia: una nuova simulazione dalla perturbazione standard
+command-reset-all = ripristina tutto
+    .tooltip = ripristina tutto: i parametri e il carico del modello, velocità normale, una nuova simulazione, le viste predefinite; una lezione aperta viene chiusa
+command-projector = modalità proiettore
+    .tooltip = modalità proiettore: contrasto alto, testo grande
+command-next = avanti
+    .tooltip = il passo successivo della lezione (il telecomando di un relatore invia Pagina giù)
+command-back = indietro
+    .tooltip = il passo precedente della lezione (Pagina su)
+command-full-screen = schermo intero
+    .tooltip = schermo intero: la finestra riempie lo schermo (di nuovo per uscire)
+command-step = passo
+    .tooltip = un passo dell'integratore (1/240 s), poi pausa
+key-space = spazio
+key-right = destra
+key-up = su
+key-left = sinistra
+key-down = giù
+key-page-down = pagina giù
+key-page-up = pagina su
+focus-keys-tab = il controllo successivo (maiusc+tab: il precedente)
+    .keys = tab
+focus-keys-ctrl-tab = la scheda successiva (ctrl+maiusc+tab: la precedente)
+    .keys = ctrl+tab
+focus-keys-press = con un pulsante, una casella, una scelta o una scheda a fuoco: premerlo (lo spazio avvia solo se nulla è a fuoco)
+    .keys = spazio, invio
+focus-keys-slider = con un cursore a fuoco (la barra del carico, la previsione): spostarlo di un centesimo; maiusc: un decimo
+    .keys = sinistra, destra
+focus-keys-column = con la colonna a fuoco (tab fino a lei): ruotarla di 0.02 rad in un verso o nell'altro, maiusc: 0.1 rad (il trascinamento da tastiera)
+    .keys = sinistra, destra
+focus-keys-ends = con la barra del carico o la previsione a fuoco: i suoi estremi
+    .keys = home, fine
+focus-keys-plot = con un grafico a fuoco (tab fino a lui): spostare di un decimo, ingrandire attorno al centro; invio: una mappa prende la cella sotto la croce
+    .keys = frecce, +, -
+focus-keys-escape = lasciare il fuoco (un campo di testo: annullare quanto scritto)
+    .keys = esc
+focus-keys-others = pagina giù, pagina su, K, R, P e su/giù funzionano qualunque cosa sia a fuoco, tranne un campo di testo in modifica
+    .keys = gli altri
+pace-slow = Lento
+    .tooltip = un quarto del tempo reale
+pace-normal = Normale
+    .tooltip = tempo reale: un secondo simulato al secondo
+pace-fast = Veloce
+    .tooltip = quattro volte il tempo reale
+speed-factor = × velocità
+    .tooltip = secondi simulati per secondo di orologio
+run-time = t = { $secs } s   ({ $status })
+run-paused = in pausa
+run-running = in corso
+run-diverged = divergita a t = { $secs } s
+run-too-stiff = troppo rigida per l'integratore di riferimento a t = { $secs } s: una rotella molto leggera o un nastro fermo (l'integratore rapier li gestisce), o un carico o una rigidezza così grandi che nessun passo risolve le velocità della colonna
+run-too-fast = troppo veloce per l'integratore rapier a t = { $secs } s: la colonna ruota a { $rate } rad/s, più di quanto il suo passo fisso risolva ({ $most } rad per passo); l'integratore di riferimento la segue
+run-lagging = in corso a { $achieved }x: questo computer non regge { $asked }x
+
+## The status card
+
+card-stable =
+    .meaning = stabile: un piccolo colpetto resta piccolo (si smorza, o senza alcuno smorzamento mantiene la sua ampiezza)
+card-flutter =
+    .meaning = flutter: la colonna oscilla avanti e indietro, sempre più ampia (una coppia di autovalori a destra dell'asse)
+card-divergence =
+    .meaning = divergenza: la colonna si piega da un lato senza oscillare (un autovalore reale a destra dell'asse)
+card-weak-flutter = flutter debole
+    .meaning = flutter debole: l'oscillazione cresce, ma di meno dell'1% della sua frequenza: lentamente, in molte oscillazioni
+card-hidden = stabile o no?
+    .why = Il verdetto è nascosto finché la lezione non lo rivela: osserva la colonna.
+card-no-figures = nessun dato di stabilità: { $why }
+card-growth = tasso di crescita  { $rate } 1/s
+    .tooltip = tasso di crescita: quanto in fretta il moto cresce (positivo) o si smorza (negativo), al secondo: la parte reale dell'autovalore più a destra
+card-growth-zero = tasso di crescita  0 (entro { $tolerance } 1/s)
+card-not-resolved = non risolto a questi parametri: vedi l'avviso sotto il carico
+card-e-folding = tempo di e-folding  { $time }
+    .tooltip = tempo di e-folding: il tempo in cui l'oscillazione cresce di un fattore e = 2.72 (1 / tasso di crescita)
+card-decay = tempo di smorzamento  { $time }
+    .tooltip = tempo di smorzamento: il tempo in cui l'oscillazione si riduce di un fattore e = 2.72
+card-neutral = neutro: né crescita né smorzamento
+card-mode = modo { $k } di { $n }
+card-the-mode = il modo
+card-frequency = frequenza  { $frequency } rad/s  (periodo { $period } s{ $which })
+    .tooltip = frequenza: quanto in fretta oscilla la colonna, in radianti al secondo (l'altezza dell'autovalore); il periodo è un'oscillazione completa. Una colonna di n aste ha n modi di oscillazione, contati qui dal più lento; la scheda descrive quello che cresce più in fretta (o si smorza più lentamente), e la misura dalla simulazione è mostrata per lo stesso modo
+card-non-oscillatory = non oscillatorio: l'autovalore dominante è reale
+card-measured = misurato dalla simulazione{ $mode }  { $measurement }
+    .tooltip = l'autovalore adattato al moto della simulazione stessa (un fascio di matrici degli angoli): almeno 20 s di piccole oscillazioni (sotto 0.05 rad) dall'ultimo colpetto, rilascio o modifica, ogni modo quando la simulazione ne contiene un periodo intero; «modo 2 di 2» conta i modi di oscillazione della colonna dal più lento. Il ± è l'incertezza propria dell'adattamento: quanto gli adattamenti sui primi e sugli ultimi tre quarti della simulazione si discostano da quello sull'intera. Anche il passo temporale dt dell'integratore allontana la simulazione dal modello lineare, la sua frequenza di circa ω³dt²/24
+card-measured-other-mode = misurato dalla simulazione: solo { $mode }, { $measurement } ({ $card } della scheda troppo debole in questa simulazione per adattarlo)
+card-measured-other = misurato dalla simulazione: solo un altro autovalore, { $measurement } (quello della scheda troppo debole in questa simulazione per adattarlo)
+card-measured-after = misurato: dopo 20 s di moto di piccola ampiezza (|φ| < 0.05 rad)
+card-measured-two-rods = misurato: solo per due aste (i molti modi lenti di una catena richiedono una simulazione più lunga di quella che un adattamento può usare)
+card-measurement = crescita { $growth } 1/s, frequenza { $frequency } rad/s
+card-measurement-unknown = crescita { $growth } 1/s, frequenza { $frequency } rad/s (incertezza ignota: troppo pochi periodi nella simulazione)
+card-grows-slowly = cresce del { $percent } per periodo: osserva per minuti, non secondi
+card-grows-too-slowly = cresce del { $percent } per periodo: troppo lento da vedere in una lezione
+onset-soft = insorgenza dolce a p = { $at }: l'oscillazione si assesta su un ciclo limite che cresce da zero
+onset-soft-roller = insorgenza dolce a p = { $at }: un ciclo cresce da zero, finché la rotella non è vicina all'aderenza
+onset-hard = insorgenza brusca a p = { $at }: l'oscillazione salta su un ciclo ampio, che persiste sotto l'insorgenza
+onset-degenerate = insorgenza a p = { $at } né dolce né brusca al primo ordine
+onset-reversible = nessuno smorzamento: nessun ciclo limite su cui assestarsi (una colonna reversibile)
+    .tooltip = Senza smorzamento la colonna è reversibile: il flutter inizia dove due coppie di autovalori si incontrano sull'asse immaginario, e non c'è alcun attrattore, quindi nessun ciclo limite su cui l'oscillazione possa assestarsi.
+onset =
+    .tooltip = Dolce: oltre l'insorgenza l'oscillazione cresce da zero fino a un piccolo ciclo stazionario, più ampio al crescere del carico; brusca: salta su uno ampio, che resta quando il carico viene abbassato di poco. Aderenza: la rotella smette di strisciare sul nastro, dove l'attrito cambia legge.{"\u000A"}{"\u000A"}Primo coefficiente di Ljapunov { $lyapunov } all'insorgenza p = { $at } (punto di Hopf, frequenza { $frequency } rad/s).{ $amplitude }{ $sticking }
+onset-amplitude = Vicino a essa |phi1| del ciclo vale circa { $a } sqrt(p - { $at }) rad.
+onset-sticking = Sulla rotella lo strisciamento al contatto diminuisce mentre il ciclo cresce; dove si avvicina a zero l'attrito non è più regolare e il moto diventa stick-slip, che questa analisi non segue: il ramo nella scheda post-critico finisce lì.
+
+## The load ramp
+
+ramp = rampa di carico
+ramp-from = da
+    .name = rampa da
+    .tooltip = il carico da cui parte la rampa
+ramp-to = a
+    .name = rampa a
+    .tooltip = il carico a cui si ferma la rampa
+ramp-rate = con
+    .name = velocità della rampa
+    .tooltip = quanto in fretta cambia il carico, per secondo simulato
+ramp-start = avvia rampa
+    .tooltip = il carico va a «da» e si sposta verso «a» con la velocità data, mentre la simulazione prosegue (impostare il carico a mano la termina)
+ramp-pause = pausa rampa
+    .tooltip = tieni il carico dove si trova; la simulazione prosegue
+ramp-resume = riprendi
+ramp-stop = ferma
+    .tooltip = termina la rampa
+ramp-done = finita
+ramp-paused = in pausa
+ramp-moving = in corso
+ramp-progress = p = { $load } verso { $to } a { $rate }/s ({ $doing })
+
+## Sharing the settings
+
+share-copy = copia impostazioni
+    .tooltip = il modello, il carico, l'integratore e la velocità come testo, negli appunti e nella casella qui sotto
+share-paste = incolla dagli appunti
+    .tooltip = prendi il testo delle impostazioni copiato altrove (la casella qui sotto lo mostra)
+share-box = oppure scrivi o incolla qui il testo delle impostazioni
+share-take = usa il testo qui sopra
+    .tooltip = carica le impostazioni scritte nella casella
+paste-too-long = incolla rifiutato, nulla è cambiato: il testo ha { $bytes } byte; nessun campo qui ne accetta più di { $most } (il testo delle impostazioni è sotto 2000)
+paste-no-text = incolla impostazioni: gli appunti non contengono testo (copia prima il testo delle impostazioni)
+
+## Lessons
+
+lessons = lezioni
+lessons-built-in = la lezione integrata { $name }
+lesson-file = file di lezione
+    .hint = un file di lezione (.ron)
+    .tooltip = il percorso di un tuo file di lezione (il formato è nel README)
+lesson-open = apri
+    .tooltip = leggi e controlla il file, poi avvialo
+lesson-reading = lettura di { $path }
+lesson-reading-stopped = { $path }: la lettura si è fermata senza risposta
+lesson-step = passo { $k } di { $n }
+lesson-prediction = la tua previsione: p = { $load }
+lesson-predicted-load = carico previsto
+    .tooltip = dove te lo aspetti; la barra del carico lo segna (tasti come sulla barra del carico: sinistra, destra, maiusc per dieci passi, home, fine)
+lesson-back = indietro
+    .tooltip = il passo precedente (Pagina su)
+lesson-next = avanti
+    .tooltip = il passo successivo: imposta e avvia ciò che dice (Pagina giù, come invia il telecomando di un relatore)
+lesson-close = chiudi lezione
+    .tooltip = esci dalla lezione; il modello resta com'è
+lesson-next-lesson = lezione successiva: { $title }
+    .tooltip = apri la lezione successiva, «{ $title }», al primo passo (Pagina giù)
+lesson-last = l'ultimo passo dell'ultima lezione

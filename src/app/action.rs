@@ -9,11 +9,13 @@ use std::path::PathBuf;
 use eframe::egui;
 
 use super::notice::Notice;
+use super::speak::Speak as _;
 use super::tabs::Tab;
-use crate::i18n::Language;
+use crate::i18n::{Language, Words};
 use crate::lesson::Lesson;
 use crate::model::{Axis, Key, Model, PresetId};
 use crate::sim::{EngineKind, Ramp};
+use crate::tr;
 
 /// One thing asked of the app.
 #[derive(Clone, Debug, PartialEq)]
@@ -170,26 +172,15 @@ pub enum Command {
 /// keys help) and the keys that ask for it (none: a button only).
 pub struct CommandSpec {
     pub command: Command,
-    pub label: &'static str,
-    pub label_running: &'static str,
-    pub tooltip: &'static str,
+    /// Its words are the message `command-ID`: the button's label, with
+    /// `.tooltip` what it does and (play) `.running` the label while the
+    /// run goes.
+    pub id: &'static str,
     pub keys: &'static [egui::Key],
 }
 
-/// A row whose label is the same whether the run goes or not.
-const fn row(
-    command: Command,
-    label: &'static str,
-    tooltip: &'static str,
-    keys: &'static [egui::Key],
-) -> CommandSpec {
-    CommandSpec {
-        command,
-        label,
-        label_running: label,
-        tooltip,
-        keys,
-    }
+const fn row(command: Command, id: &'static str, keys: &'static [egui::Key]) -> CommandSpec {
+    CommandSpec { command, id, keys }
 }
 
 /// The tabs Ctrl+Tab (1) and Ctrl+Shift+Tab (-1) move by this frame, but
@@ -315,111 +306,39 @@ impl Focus {
 }
 
 /// The keys of the focus, after the commands' in the keys help: only a
-/// text field being edited holds the shortcuts back.
-pub const FOCUS_KEYS: [(&str, &str); 9] = [
-    ("tab", "the next control (shift+tab: the previous one)"),
-    (
-        "ctrl+tab",
-        "the next tab (ctrl+shift+tab: the previous one)",
-    ),
-    (
-        "space, enter",
-        "with a button, checkbox, choice or tab focused: press it (space plays only with nothing focused)",
-    ),
-    (
-        "left, right",
-        "with a slider focused (the load bar, the prediction): move it by a hundredth; shift: a tenth",
-    ),
-    (
-        "left, right",
-        "with the column focused (tab to it): turn it by 0.02 rad either way, shift: 0.1 rad (the keyboard's drag)",
-    ),
-    (
-        "home, end",
-        "with the load bar or the prediction focused: its ends",
-    ),
-    (
-        "arrows, +, -",
-        "with a plot focused (tab to it): pan by a tenth, zoom about the centre; enter: a map takes the cell under the cross",
-    ),
-    ("esc", "let go of the focus (a text field: undo the typing)"),
-    (
-        "the others",
-        "page down, page up, K, R, P and up/down work whatever is focused, but a text field being edited",
-    ),
+/// text field being edited holds the shortcuts back. Each is a message
+/// (`focus-keys-ID`: what they do, `.keys`: the keys).
+pub const FOCUS_KEYS: [&str; 9] = [
+    "focus-keys-tab",
+    "focus-keys-ctrl-tab",
+    "focus-keys-press",
+    "focus-keys-slider",
+    "focus-keys-column",
+    "focus-keys-ends",
+    "focus-keys-plot",
+    "focus-keys-escape",
+    "focus-keys-others",
 ];
 
 /// Every command, one row each, in the keys help's order.
 pub const COMMANDS: [CommandSpec; 11] = {
     use egui::Key;
     [
-        CommandSpec {
-            command: Command::PlayPause,
-            label: "play",
-            label_running: "pause",
-            tooltip: "play / pause",
-            keys: &[Key::Space],
-        },
-        row(
-            Command::LoadUp,
-            "load up",
-            "load up by a hundredth of the load bar",
-            &[Key::ArrowRight, Key::ArrowUp],
-        ),
+        row(Command::PlayPause, "play", &[Key::Space]),
+        row(Command::LoadUp, "load-up", &[Key::ArrowRight, Key::ArrowUp]),
         row(
             Command::LoadDown,
-            "load down",
-            "load down by a hundredth of the load bar",
+            "load-down",
             &[Key::ArrowLeft, Key::ArrowDown],
         ),
-        row(
-            Command::Kick,
-            "kick",
-            "kick: every rod turned by 0.03 rad",
-            &[Key::K],
-        ),
-        row(
-            Command::Reset,
-            "reset",
-            "reset: a fresh run from the standard perturbation",
-            &[Key::R],
-        ),
-        row(
-            Command::ResetAll,
-            "reset all",
-            "reset all: the preset's parameters and load, normal speed, a fresh run, the default views; an open lesson is closed",
-            &[],
-        ),
-        row(
-            Command::Projector,
-            "projector mode",
-            "projector mode: high contrast, large text",
-            &[Key::P],
-        ),
-        row(
-            Command::LessonNext,
-            "next",
-            "the lesson's next step (a presenter's remote sends Page Down)",
-            &[Key::PageDown],
-        ),
-        row(
-            Command::LessonBack,
-            "back",
-            "the lesson's previous step (Page Up)",
-            &[Key::PageUp],
-        ),
-        row(
-            Command::FullScreen,
-            "full screen",
-            "full screen: the window fills the screen (again to leave)",
-            &[Key::F11],
-        ),
-        row(
-            Command::Step,
-            "step",
-            "one engine step (1/240 s), then paused",
-            &[],
-        ),
+        row(Command::Kick, "kick", &[Key::K]),
+        row(Command::Reset, "reset", &[Key::R]),
+        row(Command::ResetAll, "reset-all", &[]),
+        row(Command::Projector, "projector", &[Key::P]),
+        row(Command::LessonNext, "next", &[Key::PageDown]),
+        row(Command::LessonBack, "back", &[Key::PageUp]),
+        row(Command::FullScreen, "full-screen", &[Key::F11]),
+        row(Command::Step, "step", &[]),
     ]
 };
 
@@ -452,19 +371,22 @@ impl Command {
 
     /// The button's text, `running` or not.
     #[must_use]
-    pub fn label(self, running: bool) -> &'static str {
-        let spec = self.spec();
-        if running {
-            spec.label_running
+    pub fn label(self, words: &'static Words, running: bool) -> String {
+        let id = format!("command-{}", self.spec().id);
+        let running_id = format!("{id}.running");
+        if running && words.has(&running_id) {
+            words.get(&running_id).into_owned()
         } else {
-            spec.label
+            words.get(&id).into_owned()
         }
     }
 
     /// What it does, for tooltips and the keys help.
     #[must_use]
-    pub fn tooltip(self) -> &'static str {
-        self.spec().tooltip
+    pub fn tooltip(self, words: &'static Words) -> String {
+        words
+            .get(&format!("command-{}.tooltip", self.spec().id))
+            .into_owned()
     }
 
     /// The keys that ask for it (none: a button only).
@@ -473,20 +395,21 @@ impl Command {
         self.spec().keys
     }
 
-    /// The keys as the keys help names them.
+    /// The keys as the keys help names them (a letter as itself, the
+    /// others in `words`' language: messages `key-NAME`).
     #[must_use]
-    pub fn key_names(self) -> String {
+    pub fn key_names(self, words: &'static Words) -> String {
         self.keys()
             .iter()
             .map(|key| match key {
-                egui::Key::Space => "space",
-                egui::Key::ArrowRight => "right",
-                egui::Key::ArrowUp => "up",
-                egui::Key::ArrowLeft => "left",
-                egui::Key::ArrowDown => "down",
-                egui::Key::PageDown => "page down",
-                egui::Key::PageUp => "page up",
-                other => other.name(),
+                egui::Key::Space => tr!(words, "key-space"),
+                egui::Key::ArrowRight => tr!(words, "key-right"),
+                egui::Key::ArrowUp => tr!(words, "key-up"),
+                egui::Key::ArrowLeft => tr!(words, "key-left"),
+                egui::Key::ArrowDown => tr!(words, "key-down"),
+                egui::Key::PageDown => tr!(words, "key-page-down"),
+                egui::Key::PageUp => tr!(words, "key-page-up"),
+                other => other.name().to_owned(),
             })
             .collect::<Vec<_>>()
             .join(", ")
@@ -494,14 +417,15 @@ impl Command {
 
     /// Its button: the label, the tooltip with the keys; a click asks for it.
     pub fn button(self, ui: &mut egui::Ui, running: bool, actions: &mut Actions) {
-        let keys = self.key_names();
+        let words = ui.words();
+        let keys = self.key_names(words);
         let tooltip = if keys.is_empty() {
-            self.tooltip().to_owned()
+            self.tooltip(words)
         } else {
-            format!("{} ({keys})", self.tooltip())
+            format!("{} ({keys})", self.tooltip(words))
         };
         if ui
-            .button(self.label(running))
+            .button(self.label(words, running))
             .on_hover_text(tooltip)
             .clicked()
         {
@@ -547,15 +471,17 @@ impl Command {
     pub fn keys_help_ui(ui: &mut egui::Ui) {
         let width = (ui.ctx().content_rect().width() - 40.0).clamp(300.0, 760.0);
         ui.set_max_width(width);
+        let words = ui.words();
         let rows = Self::ALL
             .into_iter()
             .filter(|command| !command.keys().is_empty())
-            .map(|command| (command.key_names(), command.tooltip()))
-            .chain(
-                FOCUS_KEYS
-                    .iter()
-                    .map(|&(keys, what)| (keys.to_owned(), what)),
-            );
+            .map(|command| (command.key_names(words), command.tooltip(words)))
+            .chain(FOCUS_KEYS.iter().map(|id| {
+                (
+                    words.get(&format!("{id}.keys")).into_owned(),
+                    words.get(id).into_owned(),
+                )
+            }));
         let keys_width = 9.0 * ui.text_style_height(&egui::TextStyle::Monospace);
         for (keys, what) in rows {
             ui.horizontal_top(|ui| {

@@ -4,6 +4,8 @@
 
 use eframe::egui;
 
+use crate::analysis::{State, Transition};
+use crate::format::{duration_text, load_text};
 use crate::i18n::{self, Language, Words};
 
 /// Where the language is kept in the context's memory.
@@ -31,5 +33,102 @@ impl Speak for egui::Context {
 impl Speak for egui::Ui {
     fn words(&self) -> &'static Words {
         self.ctx().words()
+    }
+}
+
+/// A state's name in `words`' language (message `state-NAME`).
+#[must_use]
+pub fn state_name(words: &'static Words, state: State) -> String {
+    words.get(&format!("state-{}", state.name())).into_owned()
+}
+
+/// A critical load in words: "p = 2.5417: stable -> flutter".
+#[must_use]
+pub fn transition_text(words: &'static Words, t: &Transition) -> String {
+    crate::tr!(
+        words,
+        "transition",
+        load = load_text(t.load),
+        from = state_name(words, t.from),
+        to = state_name(words, t.to)
+    )
+}
+
+/// A duration in `words`' language: seconds, minutes and hours by their
+/// symbols (as `format::duration_text` writes them), days and years in
+/// words, each with the plural its number takes.
+#[must_use]
+pub fn duration_words(words: &'static Words, secs: f64) -> String {
+    let text = duration_text(secs);
+    let in_words = |unit: &str, id: &str| {
+        let number = text.strip_suffix(unit)?;
+        let count: f64 = number.parse().ok()?;
+        Some(crate::tr!(words, id, count = count, n = number.to_owned()))
+    };
+    if !secs.is_finite() {
+        return crate::tr!(words, "duration-forever");
+    }
+    in_words(" days", "duration-days")
+        .or_else(|| in_words(" years", "duration-years"))
+        .unwrap_or(text)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::app::action::{Command, FOCUS_KEYS};
+    use crate::app::tabs::Tab;
+    use crate::model::{KEYS, PresetId};
+
+    /// The ids the window makes from names (a preset's, a key's, a tab's, a
+    /// state's, a command's) are every one in English's file: the ids
+    /// written out in the code are checked by `i18n`'s own tests.
+    #[test]
+    fn every_id_made_from_a_name_is_in_english_s_file() {
+        let english = i18n::words(Language::English);
+        let mut ids: Vec<String> = Vec::new();
+        for id in PresetId::all() {
+            ids.push(format!("preset-{}", id.name()));
+            ids.push(format!("preset-{}.description", id.name()));
+        }
+        for spec in &KEYS {
+            ids.push(format!("key-{}", spec.key.name()));
+            ids.push(format!("key-{}.range", spec.key.name()));
+        }
+        for tab in Tab::all() {
+            ids.push(format!("tab-{}", tab.id()));
+            ids.push(format!("tab-{}.tooltip", tab.id()));
+        }
+        for state in [State::Stable, State::Flutter, State::Divergence] {
+            ids.push(format!("state-{}", state.name()));
+            ids.push(format!("card-{}.meaning", state.name()));
+            ids.push(format!("transition-meaning.to-{}", state.name()));
+        }
+        for command in Command::ALL {
+            ids.push(format!("command-{}", command.spec().id));
+            ids.push(format!("command-{}.tooltip", command.spec().id));
+        }
+        for id in FOCUS_KEYS {
+            ids.push(id.to_owned());
+            ids.push(format!("{id}.keys"));
+        }
+        for (id, _) in crate::app::sidebar::PACES {
+            ids.push(id.to_owned());
+            ids.push(format!("{id}.tooltip"));
+        }
+        let missing: Vec<&String> = ids.iter().filter(|id| !english.has(id)).collect();
+        assert!(missing.is_empty(), "not in en.ftl: {missing:?}");
+    }
+
+    #[test]
+    fn durations_in_days_and_years_take_their_plurals() {
+        let polish = i18n::words(Language::Polish);
+        let english = i18n::words(Language::English);
+        assert_eq!(duration_words(english, 86_400.0), "1 day");
+        assert_eq!(duration_words(english, 3.0 * 86_400.0), "3 days");
+        assert_eq!(duration_words(english, 90.0), "1.5 min");
+        assert_eq!(duration_words(english, f64::INFINITY), "forever");
+        let years = duration_words(polish, 5.0 * 365.25 * 86_400.0);
+        assert!(years.starts_with("5 ") && years != "5 years", "{years}");
     }
 }

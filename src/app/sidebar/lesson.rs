@@ -2,6 +2,8 @@
 //! then the step's text, the prediction (a load, or a choice), the result
 //! beside it, back and next.
 
+use crate::app::speak::Speak as _;
+use crate::tr;
 use eframe::egui::{self, RichText};
 
 use crate::app::action::{Action, Actions, Command};
@@ -64,9 +66,10 @@ impl LessonSection {
                 return;
             }
             Err(std::sync::mpsc::TryRecvError::Disconnected) => {
-                actions.push(Action::Say(Notice::error(format!(
-                    "{}: the reading stopped without an answer",
-                    reading.path
+                actions.push(Action::Say(Notice::error(tr!(
+                    ctx.words(),
+                    "lesson-reading-stopped",
+                    path = reading.path.clone()
                 ))));
             }
         }
@@ -110,13 +113,14 @@ impl View for LessonSection {
                 .map(|&(name, text)| (name, Lesson::read(text, &crate::app::Tab::ids())))
                 .collect()
         });
-        egui::CollapsingHeader::new("lessons").show(ui, |ui| {
+        let words = ui.words();
+        egui::CollapsingHeader::new(tr!(words, "lessons")).show(ui, |ui| {
             for (name, read) in built_in.iter() {
                 match read {
                     Ok(lesson) => {
                         if ui
                             .button(lesson.title.as_str())
-                            .on_hover_text(format!("the built-in lesson {name}"))
+                            .on_hover_text(tr!(words, "lessons-built-in", name = *name))
                             .clicked()
                         {
                             actions.push(Action::LessonOpen(Box::new(lesson.clone())));
@@ -130,16 +134,16 @@ impl View for LessonSection {
             ui.horizontal(|ui| {
                 ui.add(
                     egui::TextEdit::singleline(&mut self.path)
-                        .hint_text("a lesson file (.ron)")
+                        .hint_text(tr!(words, "lesson-file.hint"))
                         .desired_width(180.0),
                 )
-                .accessible_name("lesson file")
-                .on_hover_text("the path of your own lesson file (see the README for the format)");
+                .accessible_name(tr!(words, "lesson-file"))
+                .on_hover_text(tr!(words, "lesson-file.tooltip"));
                 if let Some(reading) = &self.reading {
-                    ui.weak(format!("reading {}", reading.path));
+                    ui.weak(tr!(words, "lesson-reading", path = reading.path.clone()));
                 } else if ui
-                    .button("open")
-                    .on_hover_text("read and check the file, then start it")
+                    .button(tr!(words, "lesson-open"))
+                    .on_hover_text(tr!(words, "lesson-open.tooltip"))
                     .clicked()
                 {
                     self.reading = Some(Reading::start(self.path.trim()));
@@ -157,13 +161,15 @@ fn step_ui(
     actions: &mut Actions,
     theme: &Theme,
 ) -> Option<egui::Response> {
+    let words = ui.words();
     let run = state.lesson()?.clone();
     let step = run.current().clone();
     ui.label(RichText::new(&run.lesson.title).strong());
-    ui.weak(format!(
-        "step {} of {}",
-        run.step + 1,
-        run.lesson.steps.len()
+    ui.weak(tr!(
+        words,
+        "lesson-step",
+        k = run.step + 1,
+        n = run.lesson.steps.len()
     ));
     ui.label(&step.text);
     match &step.predict {
@@ -173,21 +179,19 @@ fn step_ui(
             // The words and the value above the slider, the slider the
             // sidebar's width: beside it they ran past the sidebar's edge
             // on a projector ("your predictio").
-            ui.label(match run.predicted_load {
-                Some(p) => format!("your prediction: p = {}", load_text(p)),
-                None => "your prediction: p = ?".to_owned(),
-            });
+            ui.label(tr!(
+                words,
+                "lesson-prediction",
+                load = run.predicted_load.map_or("?".to_owned(), load_text)
+            ));
             let response = ui
                 .scope(|ui| {
                     ui.spacing_mut().slider_width = ui.available_width();
                     ui.add(egui::Slider::new(&mut load, 0.0..=state.load_max()).show_value(false))
                 })
                 .inner
-                .accessible_name("predicted load")
-                .on_hover_text(
-                    "where you expect it; the load bar marks it (keys as on the load bar: \
-                     left, right, shift for ten steps, home, end)",
-                );
+                .accessible_name(tr!(words, "lesson-predicted-load"))
+                .on_hover_text(tr!(words, "lesson-predicted-load.tooltip"));
             // The keys step as the load bar's do, not by egui's point.
             let keyed = if response.has_focus() {
                 let from = run.predicted_load.unwrap_or(0.0);
@@ -234,7 +238,7 @@ fn step_ui(
         && step.predict.is_none()
         && step.reveal != Some(Reveal::FirstInstability)
     {
-        ui.weak(format!("your prediction: p = {}", load_text(p)));
+        ui.weak(tr!(words, "lesson-prediction", load = load_text(p)));
     }
     revealed
 }
@@ -246,25 +250,26 @@ pub fn step_buttons_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Action
         return;
     };
     let last = run.step + 1 == run.lesson.steps.len();
+    let words = ui.words();
     ui.horizontal(|ui| {
         if ui
-            .add_enabled(run.step > 0, egui::Button::new("back"))
-            .on_hover_text("the previous step (Page Up)")
+            .add_enabled(run.step > 0, egui::Button::new(tr!(words, "lesson-back")))
+            .on_hover_text(tr!(words, "lesson-back.tooltip"))
             .clicked()
         {
             actions.push(Command::LessonBack);
         }
         if !last
             && ui
-                .button("next")
-                .on_hover_text("the next step: it sets and starts what it says (Page Down, as a presenter's remote sends)")
+                .button(tr!(words, "lesson-next"))
+                .on_hover_text(tr!(words, "lesson-next.tooltip"))
                 .clicked()
         {
             actions.push(Command::LessonNext);
         }
         if ui
-            .button("close lesson")
-            .on_hover_text("leave the lesson; the model stays as it is")
+            .button(tr!(words, "lesson-close"))
+            .on_hover_text(tr!(words, "lesson-close.tooltip"))
             .clicked()
         {
             actions.push(Action::LessonClose);
@@ -279,18 +284,23 @@ pub fn step_buttons_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Action
 /// the sidebar's width (a long title pushed the rows past its edge): the
 /// next lesson (Page Down), its whole title on hover.
 fn next_lesson_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions) {
+    let words = ui.words();
     if let Some(next) = state.next_lesson() {
         if ui
-            .add(egui::Button::new(format!("next lesson: {}", next.title)).truncate())
-            .on_hover_text(format!(
-                "open the next lesson, \"{}\", at its first step (Page Down)",
-                next.title
+            .add(
+                egui::Button::new(tr!(words, "lesson-next-lesson", title = next.title.clone()))
+                    .truncate(),
+            )
+            .on_hover_text(tr!(
+                words,
+                "lesson-next-lesson.tooltip",
+                title = next.title.clone()
             ))
             .clicked()
         {
             actions.push(Command::LessonNext);
         }
     } else {
-        ui.weak("the last step of the last lesson");
+        ui.weak(tr!(words, "lesson-last"));
     }
 }

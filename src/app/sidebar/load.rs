@@ -6,10 +6,13 @@ use eframe::egui::{self, RichText};
 use super::number_field::{NumberFields, refusal_ui};
 use crate::app::View;
 use crate::app::action::Actions;
+use crate::app::speak::{Speak as _, state_name, transition_text};
 use crate::app::state::{AppState, VISIBLE_FRACTION};
 use crate::app::theme::Theme;
 use crate::format::{load_text, number_text};
+use crate::i18n::Words;
 use crate::model::Key;
+use crate::tr;
 
 /// The load's number field.
 #[derive(Default)]
@@ -20,34 +23,31 @@ pub struct LoadSection {
 impl View for LoadSection {
     fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
         self.field.prune(ui, state);
+        let words = ui.words();
         ui.horizontal(|ui| {
             // The wide bar under the scene is the slider; this field takes a
             // typed load, also beyond the bar's range (not clamped).
             self.field
                 .show(ui, state, actions, theme, Key::Load)
-                .on_hover_text(
-                    "type a load (Enter applies, Escape restores); beyond the bar's end too",
-                );
-            ui.label("load p = P l/k").on_hover_text(
-                "the load without units: the tip force P times the rod's length l over the springs' stiffness k (Ziegler's column flutters from p = 2.09)",
-            );
+                .on_hover_text(tr!(words, "load-field.tooltip"));
+            ui.label(tr!(words, "load-field"))
+                .on_hover_text(tr!(words, "load-field.meaning"));
         });
         refusal_ui(ui, state, theme, Key::Load);
         let p = state.model().load_p();
         if let Some(roller) = state.model().roller() {
-            ui.label(format!(
-                "roller: q = R l/k = p/μ = {:.3}   (μ = {})",
-                p / roller.mu,
-                roller.mu
+            ui.label(tr!(
+                words,
+                "roller-load",
+                q = format!("{:.3}", p / roller.mu),
+                mu = roller.mu.to_string()
             ))
-            .on_hover_text(
-                "the roller's own load: the force R pressing it on the band, in the units of p; the band's friction pushes with μ R, so p = μ q",
-            );
+            .on_hover_text(tr!(words, "roller-load.tooltip"));
         }
         // The notes below the field (the critical loads, a ramp's onsets,
         // warnings) take a fixed number of lines whatever their count, so
         // the fields under them stay where the hand is.
-        let notes = notes(state, p, theme, ui.visuals().weak_text_color());
+        let notes = notes(state, p, theme, ui.visuals().weak_text_color(), words);
         let row_height = ui.text_style_height(&egui::TextStyle::Body);
         let spacing = ui.spacing().item_spacing.y;
         let shown = notes.len().min(NOTE_LINES);
@@ -56,7 +56,7 @@ impl View for LoadSection {
             let last_of_more = i + 1 == NOTE_LINES && notes.len() > NOTE_LINES;
             if last_of_more {
                 let rest: Vec<&str> = notes[i..].iter().map(|n| n.text.as_str()).collect();
-                ui.add(egui::Label::new(format!("... and {} more (hover)", rest.len())).truncate())
+                ui.add(egui::Label::new(tr!(words, "notes-more", count = rest.len())).truncate())
                     .on_hover_text(rest.join("\n"));
             } else {
                 let label = ui
@@ -101,49 +101,43 @@ impl Note {
 
 /// What a critical load means, for its tooltip (the line itself says the
 /// load and the states).
-fn transition_meaning(t: &crate::analysis::Transition) -> String {
-    use crate::analysis::State;
-    let how = match t.to {
-        State::Flutter => {
-            "past this load a pair of eigenvalues lies right of the imaginary axis: a kick grows into a growing swing"
-        }
-        State::Divergence => {
-            "past this load a real eigenvalue is positive: the column leans away without swinging"
-        }
-        State::Stable => {
-            "past this load no eigenvalue lies right of the imaginary axis: a kick no longer grows"
-        }
-    };
-    format!(
-        "p = {}: the column goes from {} to {}; {how}",
-        crate::format::load_text(t.load),
-        t.from.name(),
-        t.to.name()
+fn transition_meaning(words: &'static Words, t: &crate::analysis::Transition) -> String {
+    tr!(
+        words,
+        "transition-meaning",
+        load = crate::format::load_text(t.load),
+        from = state_name(words, t.from),
+        to = state_name(words, t.to),
+        how = words.get(&format!("transition-meaning.to-{}", t.to.name()))
     )
 }
 
 /// The notes under the load field, in order: the load beyond the plotted
 /// range, the critical loads (or that a lesson hides them), a ramp's
 /// onsets, the resolution warning.
-fn notes(state: &AppState, p: f64, theme: &Theme, weak: egui::Color32) -> Vec<Note> {
+fn notes(
+    state: &AppState,
+    p: f64,
+    theme: &Theme,
+    weak: egui::Color32,
+    words: &'static Words,
+) -> Vec<Note> {
     let mut notes = Vec::new();
     if p > state.load_max() {
         notes.push(Note::new(
-            format!(
-                "p = {} is beyond the plotted range (0 to {}); the status below is at p",
-                number_text(p),
-                number_text(state.load_max())
+            tr!(
+                words,
+                "load-beyond-range",
+                load = number_text(p),
+                end = number_text(state.load_max())
             ),
             theme.warning,
         ));
     }
     if state.answer_hidden() {
-        notes.push(Note::new(
-            "The critical loads are hidden until the lesson reveals them.",
-            weak,
-        ));
+        notes.push(Note::new(tr!(words, "critical-loads-hidden"), weak));
         if let Some(run) = state.ramp() {
-            ramp_onset_notes(&mut notes, run.seen_at_p, None, theme);
+            ramp_onset_notes(&mut notes, run.seen_at_p, None, theme, words);
         }
         return notes;
     }
@@ -151,8 +145,8 @@ fn notes(state: &AppState, p: f64, theme: &Theme, weak: egui::Color32) -> Vec<No
         return notes;
     };
     for t in &analysis.transitions {
-        let mut note = Note::new(t.to_string(), theme.state_color(t.to));
-        note.more = Some(transition_meaning(t));
+        let mut note = Note::new(transition_text(words, t), theme.state_color(t.to));
+        note.more = Some(transition_meaning(words, t));
         notes.push(note);
     }
     if let Some(run) = state.ramp() {
@@ -161,11 +155,12 @@ fn notes(state: &AppState, p: f64, theme: &Theme, weak: egui::Color32) -> Vec<No
             run.seen_at_p,
             analysis.first_instability(),
             theme,
+            words,
         );
     }
     if let Some(warning) = &analysis.warning {
         notes.push(Note {
-            text: "the stability is not resolved here (hover for why)".to_owned(),
+            text: tr!(words, "not-resolved"),
             color: theme.warning,
             more: Some(warning.clone()),
         });
@@ -175,38 +170,40 @@ fn notes(state: &AppState, p: f64, theme: &Theme, weak: egui::Color32) -> Vec<No
 
 /// The ramp's onsets in words: where the motion was seen against where the
 /// theory puts it, and why the first lags (on hover).
-fn ramp_onset_notes(notes: &mut Vec<Note>, seen: Option<f64>, theory: Option<f64>, theme: &Theme) {
-    let visible = format!(
-        "the tip off by {:.0}% of the length",
-        100.0 * VISIBLE_FRACTION
+fn ramp_onset_notes(
+    notes: &mut Vec<Note>,
+    seen: Option<f64>,
+    theory: Option<f64>,
+    theme: &Theme,
+    words: &'static Words,
+) {
+    let visible = tr!(
+        words,
+        "ramp-visible",
+        percent = format!("{:.0}", 100.0 * VISIBLE_FRACTION)
     );
     if let Some(theory) = theory {
         notes.push(Note::new(
-            format!(
-                "theory (white mark): unstable from p = {}",
-                load_text(theory)
-            ),
+            tr!(words, "ramp-theory", load = load_text(theory)),
             theme.text,
         ));
     }
     match seen {
-        Some(seen) => notes.push(Note {
-            text: format!(
-                "seen (mark): motion visible at p = {}{} ({visible})",
-                load_text(seen),
-                if theory.is_some_and(|theory| seen > theory) {
-                    ", late: hover for why"
+        Some(seen) => {
+            let late = theory.is_some_and(|theory| seen > theory);
+            let load = load_text(seen);
+            notes.push(Note {
+                text: if late {
+                    tr!(words, "ramp-seen-late", load = load, visible = visible)
                 } else {
-                    ""
-                }
-            ),
-            color: theme.measured,
-            more: theory.filter(|&theory| seen > theory).map(|_| {
-                "It shows late: past the onset the motion needs time to grow to a visible size, and the ramp moves on meanwhile. A slower ramp shows it closer to the theory.".to_owned()
-            }),
-        }),
+                    tr!(words, "ramp-seen", load = load, visible = visible)
+                },
+                color: theme.measured,
+                more: late.then(|| tr!(words, "ramp-seen-late.why")),
+            });
+        }
         None => notes.push(Note::new(
-            format!("watching for the motion to become visible ({visible})"),
+            tr!(words, "ramp-watching", visible = visible),
             theme.text,
         )),
     }

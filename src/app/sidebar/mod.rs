@@ -12,6 +12,9 @@ mod share;
 mod status;
 mod time;
 
+#[cfg(test)]
+pub use time::PACES;
+
 use eframe::egui;
 
 use super::View;
@@ -115,7 +118,7 @@ impl View for Sidebar {
             let mut projector = state.settings().projector;
             if ui
                 .checkbox(&mut projector, tr!(ui.words(), "projector-toggle"))
-                .on_hover_text(Command::Projector.tooltip())
+                .on_hover_text(Command::Projector.tooltip(ui.words()))
                 .changed()
             {
                 actions.push(Action::Projector(projector));

@@ -4,22 +4,27 @@ use eframe::egui::{self, RichText};
 
 use crate::app::View;
 use crate::app::action::{Action, Actions};
+use crate::app::speak::Speak as _;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::model::{PRESETS, PresetId};
 use crate::sim::EngineKind;
+use crate::tr;
 
 pub struct ModelSection;
 
 impl View for ModelSection {
     fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, _theme: &Theme) {
+        let words = ui.words();
         let current = state.settings().preset;
         let mut chosen = current;
-        let shown = |id: PresetId| format!("{} ({})", id.name(), id.preset().source);
+        let source = |id: PresetId| words.get(&format!("preset-{}", id.name()));
+        let description = |id: PresetId| words.get(&format!("preset-{}.description", id.name()));
+        let shown = |id: PresetId| format!("{} ({})", id.name(), source(id));
         // The label first and the name cut to the panel's width, so that a
         // long name in projector mode does not squeeze the label.
         ui.horizontal(|ui| {
-            let label = ui.label("model");
+            let label = ui.label(tr!(words, "model"));
             egui::ComboBox::from_id_salt("model")
                 .selected_text(shown(chosen))
                 .width(ui.available_width() - ui.spacing().icon_width)
@@ -27,15 +32,15 @@ impl View for ModelSection {
                 .show_ui(ui, |ui| {
                     for p in &PRESETS {
                         ui.selectable_value(&mut chosen, p.id, shown(p.id))
-                            .on_hover_text(p.description);
+                            .on_hover_text(description(p.id));
                     }
                 })
                 .response
                 .labelled_by(label.id)
                 .on_hover_text(format!(
-                    "{}\n\n{}: where the model is in the study this program follows (its figure and equations)",
-                    chosen.preset().description,
-                    chosen.preset().source
+                    "{}\n\n{}",
+                    description(chosen),
+                    tr!(words, "model.source", source = source(chosen))
                 ));
         });
         if chosen != current {
@@ -49,31 +54,44 @@ impl View for ModelSection {
         // them ("ideal follower force" over "a dead load").
         let eta = state.model().load.eta().filter(|&eta| eta < 1.0);
         if !state.settings().projector && !state.answer_hidden() && eta.is_none() {
-            ui.label(RichText::new(state.settings().preset.preset().description).small());
+            ui.label(RichText::new(description(state.settings().preset)).small());
         }
         match eta {
             Some(0.0) => {
-                ui.label("tip force: a dead load (eta = 0), fixed in direction, in place of the preset's follower force");
+                ui.label(tr!(words, "tip-force-dead"));
             }
             Some(eta) => {
-                ui.label(format!(
-                    "tip force: partly tangential, turned by eta = {} of the last rod's angle (the preset's follower force has eta = 1)",
-                    crate::format::Shown(eta)
+                ui.label(tr!(
+                    words,
+                    "tip-force-partial",
+                    eta = crate::format::Shown(eta).to_string()
                 ));
             }
             None => {}
         }
         let mut engine = state.settings().engine;
-        egui::ComboBox::from_label("engine")
-            .selected_text(format!("{engine:?}").to_lowercase())
+        let engine_name = |engine| match engine {
+            EngineKind::Rapier => tr!(words, "engine-rapier"),
+            EngineKind::Reference => tr!(words, "engine-reference"),
+        };
+        egui::ComboBox::from_label(tr!(words, "engine"))
+            .selected_text(engine_name(engine))
             .show_ui(ui, |ui| {
-                ui.selectable_value(&mut engine, EngineKind::Rapier, "rapier")
-                    .on_hover_text("rapier: the rapier2d physics engine, rods as rigid bodies joined by hinges (a multibody), the roller's spin implicit");
-                ui.selectable_value(&mut engine, EngineKind::Reference, "reference")
-                    .on_hover_text("adaptive Dormand-Prince 5(4) on the exact equations");
+                ui.selectable_value(
+                    &mut engine,
+                    EngineKind::Rapier,
+                    engine_name(EngineKind::Rapier),
+                )
+                .on_hover_text(tr!(words, "engine-rapier.tooltip"));
+                ui.selectable_value(
+                    &mut engine,
+                    EngineKind::Reference,
+                    engine_name(EngineKind::Reference),
+                )
+                .on_hover_text(tr!(words, "engine-reference.tooltip"));
             })
             .response
-            .on_hover_text("what integrates the motion: the run goes on from where it is");
+            .on_hover_text(tr!(words, "engine.tooltip"));
         if engine != state.settings().engine {
             actions.push(Action::Engine(engine));
         }

@@ -4,6 +4,8 @@
 //! the error colour, until it is corrected (the reason is the caller's to
 //! show beside it).
 
+use crate::app::speak::Speak as _;
+use crate::tr;
 use std::collections::HashMap;
 
 use eframe::egui;
@@ -105,7 +107,7 @@ impl NumberFields {
 /// The reason a typed value for `key` was refused, under its field.
 pub fn refusal_ui(ui: &mut egui::Ui, state: &AppState, theme: &Theme, key: Key) {
     if let Some(why) = state.refusal(key) {
-        ui.colored_label(theme.error, format!("refused: {why}"));
+        ui.colored_label(theme.error, tr!(ui.words(), "refused", why = why));
     }
 }
 

@@ -6,9 +6,11 @@ use eframe::egui;
 use super::number_field::{NumberFields, refusal_ui};
 use crate::app::View;
 use crate::app::action::Actions;
+use crate::app::speak::Speak as _;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::model::{KEYS, Key, KeySpec};
+use crate::tr;
 
 /// The parameters' number fields.
 #[derive(Default)]
@@ -28,13 +30,13 @@ impl View for ParametersSection {
             .filter(|k| k.applies_to(&model) && k.key != Key::Load)
             .collect();
         let (groups, si): (Vec<_>, Vec<_>) = applicable.into_iter().partition(|k| k.is_group);
-        ui.label("dimensionless groups").on_hover_text(
-            "the few combinations of the SI values that decide the motion (a = k/(m l^2) sets how fast it is; the roller's nu, rho, mu and V its mass, size, friction and the band's speed); changing one keeps the others",
-        );
+        let words = ui.words();
+        ui.label(tr!(words, "groups"))
+            .on_hover_text(tr!(words, "groups.tooltip"));
         for spec in groups {
             self.field(ui, state, actions, theme, spec);
         }
-        egui::CollapsingHeader::new("SI parameters").show(ui, |ui| {
+        egui::CollapsingHeader::new(tr!(words, "si-parameters")).show(ui, |ui| {
             for spec in si {
                 self.field(ui, state, actions, theme, spec);
             }
@@ -52,19 +54,25 @@ impl ParametersSection {
         spec: &'static KeySpec,
     ) {
         let key = spec.key;
+        let words = ui.words();
         ui.horizontal(|ui| {
             self.fields.show(ui, state, actions, theme, key);
             // Only mu R enters the equations: the mu field keeps R and so
             // moves the load, and says so.
             let note = if key == Key::Mu {
-                "  (R held: moves p)"
+                format!("  {}", tr!(words, "mu-moves-load"))
             } else {
-                ""
+                String::new()
             };
             ui.label(format!("{} {}{note}", key.name(), spec.unit));
         })
         .response
-        .on_hover_text(format!("{} (allowed: {})", spec.description, spec.range));
+        .on_hover_text(tr!(
+            words,
+            "key-allowed",
+            description = words.get(&format!("key-{}", key.name())),
+            range = words.get(&format!("key-{}.range", key.name()))
+        ));
         refusal_ui(ui, state, theme, key);
     }
 }

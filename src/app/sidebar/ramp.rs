@@ -1,6 +1,8 @@
 //! The quasi-static ramp: where the load starts and ends and how fast it
 //! moves, start, pause and resume, stop.
 
+use crate::app::speak::Speak as _;
+use crate::tr;
 use eframe::egui;
 
 use crate::app::View;
@@ -48,42 +50,51 @@ impl View for RampSection {
         if bar_max_p != self.bar_max_p {
             *self = Self::over_bar(bar_max_p);
         }
-        egui::CollapsingHeader::new("ramp the load").show(ui, |ui| {
+        let words = ui.words();
+        egui::CollapsingHeader::new(tr!(words, "ramp")).show(ui, |ui| {
             ui.horizontal(|ui| {
-                ui.label("from");
+                ui.label(tr!(words, "ramp-from"));
                 ui.add(load_field(&mut self.from_p, 0.01))
-                    .accessible_name("ramp from")
-                    .on_hover_text("the load the ramp starts at");
-                ui.label("to");
+                    .accessible_name(tr!(words, "ramp-from.name"))
+                    .on_hover_text(tr!(words, "ramp-from.tooltip"));
+                ui.label(tr!(words, "ramp-to"));
                 ui.add(load_field(&mut self.to_p, 0.01))
-                    .accessible_name("ramp to")
-                    .on_hover_text("the load the ramp stops at");
-                ui.label("at");
+                    .accessible_name(tr!(words, "ramp-to.name"))
+                    .on_hover_text(tr!(words, "ramp-to.tooltip"));
+                ui.label(tr!(words, "ramp-rate"));
                 ui.add(load_field(&mut self.rate_p_per_s, 0.001))
-                    .accessible_name("ramp rate")
-                    .on_hover_text("how fast the load moves, per simulated second");
+                    .accessible_name(tr!(words, "ramp-rate.name"))
+                    .on_hover_text(tr!(words, "ramp-rate.tooltip"));
                 ui.label("/s");
             });
             let ramp = Ramp::new(self.from_p, self.to_p, self.rate_p_per_s);
             ui.horizontal(|ui| {
                 let start = ui
-                    .add_enabled(ramp.is_ok(), egui::Button::new("start ramp"))
-                    .on_hover_text("the load goes to 'from' and moves to 'to' at the rate, as the run goes on (setting the load by hand ends it)");
+                    .add_enabled(ramp.is_ok(), egui::Button::new(tr!(words, "ramp-start")))
+                    .on_hover_text(tr!(words, "ramp-start.tooltip"));
                 if start.clicked()
                     && let Ok(ramp) = &ramp
                 {
                     actions.push(Action::RampStart(*ramp));
                 }
                 if let Some(run) = state.ramp() {
-                    let label = if run.paused { "resume" } else { "pause ramp" };
+                    let label = if run.paused {
+                        tr!(words, "ramp-resume")
+                    } else {
+                        tr!(words, "ramp-pause")
+                    };
                     if ui
                         .button(label)
-                        .on_hover_text("hold the load where it is; the run goes on")
+                        .on_hover_text(tr!(words, "ramp-pause.tooltip"))
                         .clicked()
                     {
                         actions.push(Action::RampPauseResume);
                     }
-                    if ui.button("stop").on_hover_text("end the ramp").clicked() {
+                    if ui
+                        .button(tr!(words, "ramp-stop"))
+                        .on_hover_text(tr!(words, "ramp-stop.tooltip"))
+                        .clicked()
+                    {
                         actions.push(Action::RampStop);
                     }
                 }
@@ -93,17 +104,19 @@ impl View for RampSection {
             }
             if let Some(run) = state.ramp() {
                 let doing = if run.finished() {
-                    "done"
+                    tr!(words, "ramp-done")
                 } else if run.paused {
-                    "paused"
+                    tr!(words, "ramp-paused")
                 } else {
-                    "moving"
+                    tr!(words, "ramp-moving")
                 };
-                ui.label(format!(
-                    "p = {} toward {} at {}/s ({doing})",
-                    load_text(run.load()),
-                    number_text(run.ramp.to_p),
-                    number_text(run.ramp.rate_p_per_s)
+                ui.label(tr!(
+                    words,
+                    "ramp-progress",
+                    load = load_text(run.load()),
+                    to = number_text(run.ramp.to_p),
+                    rate = number_text(run.ramp.rate_p_per_s),
+                    doing = doing
                 ));
             }
         });

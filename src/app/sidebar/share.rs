@@ -1,6 +1,8 @@
 //! Settings as text: copy them to share a setup, paste text (from the
 //! system clipboard or typed into the box) to load one.
 
+use crate::app::speak::Speak as _;
+use crate::tr;
 use eframe::egui;
 
 use crate::app::action::{Action, Actions};
@@ -28,9 +30,12 @@ fn refuse_long_pastes(ctx: &egui::Context, actions: &mut Actions) -> bool {
         });
         refused
     });
-    for bytes in &refused {
-        actions.push(Action::Say(Notice::error(format!(
-            "paste refused, nothing changed: the text holds {bytes} bytes; no field here takes more than {MOST_SETTINGS_BYTES} (settings text is under 2000)"
+    for &bytes in &refused {
+        actions.push(Action::Say(Notice::error(tr!(
+            ctx.words(),
+            "paste-too-long",
+            bytes = bytes,
+            most = MOST_SETTINGS_BYTES
         ))));
     }
     !refused.is_empty()
@@ -77,9 +82,10 @@ impl ShareSection {
             actions.push(Action::Paste(text));
         } else if frames_left == 0 {
             self.awaiting_clipboard = None;
-            actions.push(Action::Say(Notice::error(
-                "paste settings: the clipboard holds no text (copy the settings text first)",
-            )));
+            actions.push(Action::Say(Notice::error(tr!(
+                ctx.words(),
+                "paste-no-text"
+            ))));
         } else {
             self.awaiting_clipboard = Some(frames_left - 1);
             ctx.request_repaint();
@@ -88,12 +94,11 @@ impl ShareSection {
 
     /// The menu's contents: copy, paste from the clipboard, and the box.
     pub fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions) {
+        let words = ui.words();
         ui.horizontal(|ui| {
             if ui
-                .button("copy settings")
-                .on_hover_text(
-                    "the model, load, engine and speed as text, to the clipboard and the box below",
-                )
+                .button(tr!(words, "share-copy"))
+                .on_hover_text(tr!(words, "share-copy.tooltip"))
                 .clicked()
             {
                 let text = state.settings().to_text();
@@ -101,8 +106,8 @@ impl ShareSection {
                 self.text = text;
             }
             if ui
-                .button("paste from clipboard")
-                .on_hover_text("take settings text copied elsewhere (the box below shows it)")
+                .button(tr!(words, "share-paste"))
+                .on_hover_text(tr!(words, "share-paste.tooltip"))
                 .clicked()
             {
                 ui.ctx()
@@ -122,12 +127,12 @@ impl ShareSection {
                     egui::TextEdit::multiline(&mut self.text)
                         .desired_rows(4)
                         .desired_width(300.0)
-                        .hint_text("or type or paste settings text here"),
+                        .hint_text(tr!(words, "share-box")),
                 );
             });
         if ui
-            .button("take the text above")
-            .on_hover_text("load the settings written in the box")
+            .button(tr!(words, "share-take"))
+            .on_hover_text(tr!(words, "share-take.tooltip"))
             .clicked()
         {
             actions.push(Action::Paste(self.text.clone()));

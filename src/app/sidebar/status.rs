@@ -6,42 +6,26 @@ use eframe::egui::{self, RichText};
 use crate::analysis::{C64, Hopf, HopfKind, NoHopf, Stability, State, classify};
 use crate::app::View;
 use crate::app::action::Actions;
+use crate::app::speak::{Speak as _, duration_words, state_name};
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
-use crate::format::{
-    duration_text, load_text, measured_text, number_text, percent_text, rate_text, secs_text,
-};
+use crate::format::{load_text, measured_text, number_text, percent_text, rate_text, secs_text};
+use crate::i18n::Words;
+use crate::tr;
 
 /// An e-folding time beyond this is a growth nobody sees in a lesson: even
 /// at the fastest speed (10x) it takes over five minutes to grow by e.
 const TOO_SLOW_TO_SEE_SECS: f64 = 3000.0;
 
 /// What each word of the card means, in plain words (its tooltip).
-fn meaning(state: State, weak: bool) -> &'static str {
+fn meaning(words: &'static Words, state: State, weak: bool) -> String {
     match (state, weak) {
-        (State::Stable, _) => {
-            "stable: a small nudge stays small (it dies away, or with no damping at all keeps its size)"
-        }
-        (State::Flutter, true) => {
-            "weak flutter: the swing grows, but by less than 1% of its frequency: slowly, over many swings"
-        }
-        (State::Flutter, false) => {
-            "flutter: the column swings back and forth, wider and wider (a pair of eigenvalues right of the axis)"
-        }
-        (State::Divergence, _) => {
-            "divergence: the column bends away to one side without swinging (a real eigenvalue right of the axis)"
-        }
+        (State::Flutter, true) => tr!(words, "card-weak-flutter.meaning"),
+        (state, _) => words
+            .get(&format!("card-{}.meaning", state.name()))
+            .into_owned(),
     }
 }
-
-const GROWTH_RATE: &str = "growth rate: how fast the motion grows (positive) or dies away (negative), per second: the real part of the eigenvalue furthest right";
-const E_FOLDING: &str =
-    "e-folding time: the time in which the swing grows by a factor e = 2.72 (1 / growth rate)";
-const DECAY: &str = "decay time: the time in which the swing shrinks by a factor e = 2.72";
-/// What the measured line means, on hover.
-const MEASURED_TIP: &str = "the eigenvalue fitted to the run's own motion (a matrix pencil of the angles): at least 20 s of small swings (below 0.05 rad) since the last kick, release or change, each mode once the run holds a whole period of it; 'mode 2 of 2' counts the column's modes of swinging from the slowest. The ± is the fit's own uncertainty: how far fits over the run's first and last three quarters fall from the whole run's. The engine's time step dt moves the run itself from the linear model too, its frequency by about ω³dt²/24";
-
-const FREQUENCY_AND_MODES: &str = "frequency: how fast the column swings, in radians per second (the eigenvalue's height); the period is one full swing. A column of n rods has n modes of swinging, counted here from the slowest; the card describes the one that grows fastest (or dies away slowest), and the run's measurement is shown for that same mode";
 
 /// The frequency of the mode the card describes, named among the column's
 /// modes (slowest first), and the eigenvalue measured from the run for
@@ -52,6 +36,7 @@ fn frequency_and_measured_ui(
     s: &Stability,
     eigenvalues: &[C64],
 ) {
+    let words = ui.words();
     let frequency = s.frequency_rad_per_s();
     // The modes by frequency, slowest first: the card names the one it
     // describes, and shows the measured eigenvalue of that same mode.
@@ -68,9 +53,9 @@ fn frequency_and_measured_ui(
             .all(|pair| pair[1].im - pair[0].im > 1e-6 * pair[1].im);
     let mode_name = |k: usize| {
         if named {
-            format!("mode {} of {}", k + 1, modes.len())
+            tr!(words, "card-mode", k = k + 1, n = modes.len())
         } else {
-            "the mode".to_owned()
+            tr!(words, "card-the-mode")
         }
     };
     if frequency > s.tolerance_per_s {
@@ -79,13 +64,16 @@ fn frequency_and_measured_ui(
             .filter(|_| named)
             .map(|k| format!(", {}", mode_name(k)))
             .unwrap_or_default();
-        ui.label(format!(
-            "frequency  {frequency:.4} rad/s  (period {} s{which})",
-            secs_text(period)
+        ui.label(tr!(
+            words,
+            "card-frequency",
+            frequency = format!("{frequency:.4}"),
+            period = secs_text(period),
+            which = which
         ))
-        .on_hover_text(FREQUENCY_AND_MODES);
+        .on_hover_text(tr!(words, "card-frequency.tooltip"));
     } else {
-        ui.label("non-oscillatory: the dominant eigenvalue is real");
+        ui.label(tr!(words, "card-non-oscillatory"));
     }
     let measured: Vec<(C64, Option<usize>, Option<C64>)> = state
         .measured()
@@ -102,48 +90,57 @@ fn frequency_and_measured_ui(
         None => measured.first(),
     };
     let measured_label = match (like_for_like, measured.first()) {
-        (Some(&(z, k, uncertainty)), _) => ui.label(format!(
-            "measured from the run{}  {}",
-            k.filter(|_| named)
+        (Some(&(z, k, uncertainty)), _) => ui.label(tr!(
+            words,
+            "card-measured",
+            mode = k
+                .filter(|_| named)
                 .map(|k| format!(" ({})", mode_name(k)))
                 .unwrap_or_default(),
-            measurement_text(z, uncertainty)
+            measurement = measurement_text(words, z, uncertainty)
         )),
-        (None, Some(&(z, k, uncertainty))) => {
-            let (measured_one, cards) = match (named, k, card_mode) {
-                (true, Some(k), Some(card)) => (mode_name(k), format!("the card's {}", mode_name(card))),
-                _ => ("another eigenvalue".to_owned(), "the card's".to_owned()),
-            };
-            ui.label(format!(
-                "measured from the run: {measured_one} only, {} ({cards} too weak in this run to fit)",
-                measurement_text(z, uncertainty)
-            ))
-        }
+        (None, Some(&(z, k, uncertainty))) => ui.label(match (named, k, card_mode) {
+            (true, Some(k), Some(card)) => tr!(
+                words,
+                "card-measured-other-mode",
+                mode = mode_name(k),
+                card = mode_name(card),
+                measurement = measurement_text(words, z, uncertainty)
+            ),
+            _ => tr!(
+                words,
+                "card-measured-other",
+                measurement = measurement_text(words, z, uncertainty)
+            ),
+        }),
         (None, None) => ui.label(
             RichText::new(if state.model().column.rods == 2 {
-                "measured: after 20 s of small-amplitude motion (|φ| < 0.05 rad)"
+                tr!(words, "card-measured-after")
             } else {
-                "measured: for two rods only (a chain's many slow modes need a longer run than a fit can use)"
+                tr!(words, "card-measured-two-rods")
             })
             .small(),
         ),
     };
-    measured_label.on_hover_text(MEASURED_TIP);
+    measured_label.on_hover_text(tr!(words, "card-measured.tooltip"));
 }
 
 /// A measured eigenvalue `z` as its growth rate and frequency, each with
 /// its uncertainty where the run tells it (the fits over the first and the
 /// last three quarters of the run), else said to be unknown.
-fn measurement_text(z: C64, uncertainty: Option<C64>) -> String {
+fn measurement_text(words: &'static Words, z: C64, uncertainty: Option<C64>) -> String {
     match uncertainty {
-        Some(u) => format!(
-            "growth {} 1/s, frequency {} rad/s",
-            measured_text(z.re, u.re, true),
-            measured_text(z.im, u.im, false)
+        Some(u) => tr!(
+            words,
+            "card-measurement",
+            growth = measured_text(z.re, u.re, true),
+            frequency = measured_text(z.im, u.im, false)
         ),
-        None => format!(
-            "growth {:+.5} 1/s, frequency {:.4} rad/s (uncertainty unknown: too few periods in the run)",
-            z.re, z.im
+        None => tr!(
+            words,
+            "card-measurement-unknown",
+            growth = format!("{:+.5}", z.re),
+            frequency = format!("{:.4}", z.im)
         ),
     }
 }
@@ -172,49 +169,53 @@ fn nearest_mode(z: C64, modes: &[C64]) -> Option<usize> {
 /// the roller (`sliding`) the smooth analysis holds only while the contact
 /// slides: the card says where that ends.
 fn onset_ui(ui: &mut egui::Ui, onset: f64, hopf: &Result<Hopf, NoHopf>, sliding: bool) {
+    let words = ui.words();
     let at = load_text(onset);
-    let sticking_tip = if sliding {
-        " On the roller the slip at the contact falls as the cycle grows; where it nears zero the friction is no longer smooth and the motion turns to stick-slip, which this analysis does not follow: the post-critical tab's branch ends there."
-    } else {
-        ""
-    };
-    let (words, more) = match hopf {
+    let (line, more) = match hopf {
         Ok(hopf) => {
             let amplitude = hopf
                 .amplitude_per_sqrt_load_rad
                 .first()
-                .map(|a| format!(" Near it the cycle's |phi1| is about {} sqrt(p - {at}) rad.", number_text(*a)))
+                .map(|a| {
+                    format!(
+                        " {}",
+                        tr!(
+                            words,
+                            "onset-amplitude",
+                            a = number_text(*a),
+                            at = at.clone()
+                        )
+                    )
+                })
                 .unwrap_or_default();
-            let tip = format!(
-                "Soft: past the onset the swing grows from zero to a small steady cycle, larger as the load rises; hard: it jumps to a large one, which stays when the load is lowered a little. Sticking: the roller stops slipping on the band, where the friction changes its law.\n\nFirst Lyapunov coefficient {} at the onset p = {at} (Hopf point, frequency {} rad/s).{amplitude}{sticking_tip}",
-                number_text(hopf.first_lyapunov),
-                number_text(hopf.frequency_rad_per_s)
+            let sticking = if sliding {
+                format!(" {}", tr!(words, "onset-sticking"))
+            } else {
+                String::new()
+            };
+            let tip = tr!(
+                words,
+                "onset.tooltip",
+                lyapunov = number_text(hopf.first_lyapunov),
+                at = at.clone(),
+                frequency = number_text(hopf.frequency_rad_per_s),
+                amplitude = amplitude,
+                sticking = sticking
             );
-            match hopf.kind {
-                HopfKind::Supercritical if sliding => (
-                    format!("soft onset at p = {at}: a cycle grows from zero, until the roller nears sticking"),
-                    tip,
-                ),
-                HopfKind::Supercritical => (
-                    format!("soft onset at p = {at}: the swing settles on a limit cycle that grows from zero"),
-                    tip,
-                ),
-                HopfKind::Subcritical => (
-                    format!("hard onset at p = {at}: the swing jumps to a large cycle, which persists below the onset"),
-                    tip,
-                ),
-                HopfKind::Degenerate => (
-                    format!("onset at p = {at} neither soft nor hard to first order"),
-                    tip,
-                ),
-            }
+            let line = match hopf.kind {
+                HopfKind::Supercritical if sliding => tr!(words, "onset-soft-roller", at = at),
+                HopfKind::Supercritical => tr!(words, "onset-soft", at = at),
+                HopfKind::Subcritical => tr!(words, "onset-hard", at = at),
+                HopfKind::Degenerate => tr!(words, "onset-degenerate", at = at),
+            };
+            (line, tip)
         }
         Err(NoHopf::Reversible) => (
-            "no damping: no limit cycle to settle on (a reversible column)".to_owned(),
-            "Without damping the column is reversible: flutter starts where two pairs of eigenvalues meet on the imaginary axis, and there is no attractor, so no limit cycle the swing could settle on.".to_owned(),
+            tr!(words, "onset-reversible"),
+            tr!(words, "onset-reversible.tooltip"),
         ),
     };
-    ui.label(RichText::new(words).small()).on_hover_text(more);
+    ui.label(RichText::new(line).small()).on_hover_text(more);
 }
 
 /// The card. `compact`: the verdict, the growth and its time only, for a
@@ -227,14 +228,22 @@ pub struct StatusSection {
 
 impl View for StatusSection {
     fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, _actions: &mut Actions, theme: &Theme) {
+        let words = ui.words();
         if state.answer_hidden() {
-            ui.label(RichText::new("stable or not?").heading().color(theme.info));
-            ui.weak("The verdict is hidden until the lesson reveals it: watch the column.");
+            ui.label(
+                RichText::new(tr!(words, "card-hidden"))
+                    .heading()
+                    .color(theme.info),
+            );
+            ui.weak(tr!(words, "card-hidden.why"));
             return;
         }
         let (Some(analysis), Some(spectrum)) = (state.analysis(), state.current_spectrum()) else {
             if let Some(error) = state.analysis_failure() {
-                ui.colored_label(theme.warning, format!("no stability figures: {error}"));
+                ui.colored_label(
+                    theme.warning,
+                    tr!(words, "card-no-figures", why = error.to_string()),
+                );
             }
             return;
         };
@@ -243,42 +252,48 @@ impl View for StatusSection {
         let frequency = s.frequency_rad_per_s();
         let weak = s.state == State::Flutter && growth < 0.01 * frequency;
         let title = match (s.state, weak) {
-            (State::Flutter, true) => "weak flutter".to_owned(),
-            (stability, _) => stability.name().to_owned(),
+            (State::Flutter, true) => tr!(words, "card-weak-flutter"),
+            (stability, _) => state_name(words, stability),
         };
         ui.label(
             RichText::new(title)
                 .heading()
                 .color(theme.state_color(s.state)),
         )
-        .on_hover_text(meaning(s.state, weak));
+        .on_hover_text(meaning(words, s.state, weak));
         if growth.abs() <= s.tolerance_per_s {
             // Rounding's share of the real part: say zero, and to what accuracy.
-            ui.label(format!(
-                "growth rate  0 (to within {:.0e} 1/s)",
-                s.tolerance_per_s
+            ui.label(tr!(
+                words,
+                "card-growth-zero",
+                tolerance = format!("{:.0e}", s.tolerance_per_s)
             ))
-            .on_hover_text(GROWTH_RATE);
+            .on_hover_text(tr!(words, "card-growth.tooltip"));
         } else {
-            ui.label(format!("growth rate  {} 1/s", rate_text(growth)))
-                .on_hover_text(GROWTH_RATE);
+            ui.label(tr!(words, "card-growth", rate = rate_text(growth)))
+                .on_hover_text(tr!(words, "card-growth.tooltip"));
         }
         if analysis.warning.is_some() {
-            ui.colored_label(
-                theme.warning,
-                "not resolved at these parameters: see the warning under the load",
-            );
+            ui.colored_label(theme.warning, tr!(words, "card-not-resolved"));
         }
         match s.e_folding_secs() {
             Some(secs) => ui
-                .label(format!("e-folding time  {}", duration_text(secs)))
-                .on_hover_text(E_FOLDING),
+                .label(tr!(
+                    words,
+                    "card-e-folding",
+                    time = duration_words(words, secs)
+                ))
+                .on_hover_text(tr!(words, "card-e-folding.tooltip")),
             // Within the resolution the rate is zero: no decay time of
             // millions of years beside "growth rate 0".
             None if growth < -s.tolerance_per_s => ui
-                .label(format!("decay time  {}", duration_text(-1.0 / growth)))
-                .on_hover_text(DECAY),
-            None => ui.label("neutral: no growth, no decay"),
+                .label(tr!(
+                    words,
+                    "card-decay",
+                    time = duration_words(words, -1.0 / growth)
+                ))
+                .on_hover_text(tr!(words, "card-decay.tooltip")),
+            None => ui.label(tr!(words, "card-neutral")),
         };
         if !self.compact {
             frequency_and_measured_ui(ui, state, &s, &spectrum.eigenvalues);
@@ -292,21 +307,16 @@ impl View for StatusSection {
         }
         if weak {
             let per_period = 100.0 * (growth * std::f64::consts::TAU / frequency).exp_m1();
-            let pace = if s
+            let percent = percent_text(per_period);
+            let line = if s
                 .e_folding_secs()
                 .is_some_and(|secs| secs > TOO_SLOW_TO_SEE_SECS)
             {
-                "too slow to see in a lesson"
+                tr!(words, "card-grows-too-slowly", percent = percent)
             } else {
-                "watch for minutes, not seconds"
+                tr!(words, "card-grows-slowly", percent = percent)
             };
-            ui.label(
-                RichText::new(format!(
-                    "grows by {} per period: {pace}",
-                    percent_text(per_period)
-                ))
-                .small(),
-            );
+            ui.label(RichText::new(line).small());
         }
     }
 }

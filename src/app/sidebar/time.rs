@@ -4,17 +4,40 @@ use eframe::egui;
 
 use crate::app::View;
 use crate::app::action::{Action, Actions, Command};
+use crate::app::speak::Speak as _;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::number_text;
-use crate::sim::{SPEED_RANGE, Status};
+use crate::i18n::Words;
+use crate::sim::{MAX_TURN_PER_STEP_RAD, SPEED_RANGE, Status};
+use crate::tr;
+
+/// Where the run is, in words.
+fn status_words(words: &'static Words, status: Status) -> String {
+    match status {
+        Status::Running => tr!(words, "run-running"),
+        Status::Diverged { t_secs } => tr!(words, "run-diverged", secs = format!("{t_secs:.3}")),
+        Status::TooStiff { t_secs } => tr!(words, "run-too-stiff", secs = format!("{t_secs:.3}")),
+        Status::TooFast {
+            t_secs,
+            rate_rad_per_s,
+        } => tr!(
+            words,
+            "run-too-fast",
+            secs = format!("{t_secs:.3}"),
+            rate = format!("{rate_rad_per_s:.0}"),
+            most = MAX_TURN_PER_STEP_RAD.to_string()
+        ),
+    }
+}
 
 /// The named speeds, as in classroom simulations: simulated seconds per
-/// wall-clock second; Normal is real time.
-pub const PACES: [(&str, f64, &str); 3] = [
-    ("Slow", 0.25, "a quarter of real time"),
-    ("Normal", 1.0, "real time: one simulated second per second"),
-    ("Fast", 4.0, "four times real time"),
+/// wall-clock second; Normal is real time. Each is named by its message
+/// (with `.tooltip`).
+pub const PACES: [(&str, f64); 3] = [
+    ("pace-slow", 0.25),
+    ("pace-normal", 1.0),
+    ("pace-fast", 4.0),
 ];
 
 /// Time's buttons, in their row's order.
@@ -50,20 +73,27 @@ impl View for TimeSection {
         if !self.lesson_foot {
             speed_ui(ui, state, actions);
         }
+        let words = ui.words();
         let sim = state.simulation();
         let shown = if !state.running() && sim.status() == Status::Running {
-            "paused".to_owned()
+            tr!(words, "run-paused")
         } else {
-            sim.status().to_string()
+            status_words(words, sim.status())
         };
-        ui.label(format!("t = {:.2} s   ({shown})", sim.time_secs()));
+        ui.label(tr!(
+            words,
+            "run-time",
+            secs = format!("{:.2}", sim.time_secs()),
+            status = shown
+        ));
         if let Some(achieved) = state.lagging() {
             ui.colored_label(
                 theme.warning,
-                format!(
-                    "running at {}x: this computer cannot keep up at {}x",
-                    number_text(achieved),
-                    number_text(state.settings().speed)
+                tr!(
+                    words,
+                    "run-lagging",
+                    achieved = number_text(achieved),
+                    asked = number_text(state.settings().speed)
                 ),
             );
         }
@@ -72,12 +102,13 @@ impl View for TimeSection {
 
 /// The named speeds and the speed factor.
 pub fn speed_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions) {
+    let words = ui.words();
     ui.horizontal(|ui| {
-        for (name, speed, tip) in PACES {
+        for (id, speed) in PACES {
             let chosen = state.settings().speed == speed;
             if ui
-                .selectable_label(chosen, name)
-                .on_hover_text(tip)
+                .selectable_label(chosen, words.get(id))
+                .on_hover_text(words.get(&format!("{id}.tooltip")))
                 .clicked()
             {
                 actions.push(Action::Speed(speed));
@@ -89,9 +120,9 @@ pub fn speed_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions) {
         .add(
             egui::Slider::new(&mut speed, SPEED_RANGE)
                 .logarithmic(true)
-                .text("× speed"),
+                .text(tr!(words, "speed-factor")),
         )
-        .on_hover_text("simulated seconds per second of wall-clock time");
+        .on_hover_text(tr!(words, "speed-factor.tooltip"));
     if response.changed() {
         actions.push(Action::Speed(speed));
     }
