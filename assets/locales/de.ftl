@@ -388,3 +388,97 @@ lesson-close = Lektion schließen
 lesson-next-lesson = nächste Lektion: { $title }
     .tooltip = die nächste Lektion, „{ $title }“, beim ersten Schritt öffnen (Bild ab)
 lesson-last = der letzte Schritt der letzten Lektion
+
+## The plots: axes, legends and their words for a screen reader
+
+axis-re = Re λ (1/s)
+axis-im = Im λ (rad/s)
+axis-load = p = P l/k
+axis-load-named = Last p = P l/k
+axis-largest-angle = größtes |φ_i| über einen Zyklus (rad)
+axis-damping-level = Dämpfung g2 = c2 / √(k m l²)
+axis-mass-ratio = Massenverhältnis m1 / (Masse jenseits von Gelenk A)
+axis-log-scale = { $axis } (logarithmisch)
+axis-first-critical-load = erste kritische Last p
+mark-load = Last
+locus-far-left = { $name }: Eigenwerte bis hinab zu Re λ = { $re } 1/s (schnell abklingende Moden) liegen links der Ansicht, die jene zeigt, die über die Stabilität entscheiden
+legend-branch-colour = Farbe der Zweige: die Last, p = { $from } bis { $to }
+legend-eigenvalues-now = Eigenwerte bei der aktuellen Last
+legend-measured = gemessen aus dem Lauf
+legend-current-load = aktuelle Last
+legend-overlay-no-change = kein Stabilitätswechsel bis zum Ende des Reglers
+legend-overlay = Vergleich { $name }: { $loads }
+legend-transition = p = { $load }: { $from } zu { $to }
+legend-more-loads = { $count ->
+    [one] { $count } weitere kritische Last (zieglerlab critical listet sie)
+   *[other] { $count } weitere kritische Lasten (zieglerlab critical listet sie)
+}
+legend-no-analysis = keine Analyse
+legend-stronger = kräftiger: schnelleres Anwachsen oder Abklingen (am stärksten: { $largest } 1/s)
+legend-critical-loads = kritische Lasten
+legend-now = jetzt
+legend-now-off = jetzt: außerhalb der Karte ({ $why })
+legend-now-no-value = jetzt: nicht auf der Karte ({ $axis } hat für diese Säule keinen Wert)
+legend-now-below = { $name } = { $value } liegt unter { $bound }
+legend-now-above = { $name } = { $value } liegt über { $bound }
+legend-this-model = dieses Modell: p = { $load }
+legend-straight-stable = gerade Säule, stabil
+legend-straight-unstable = gerade Säule, instabil
+legend-stable-cycle = stabiler Grenzzyklus
+legend-unstable-cycle = instabiler Grenzzyklus
+legend-hopf-point = Flatterbeginn (Hopf-Punkt)
+legend-sweep-up = Durchlauf aufwärts (ein Lauf)
+legend-sweep-down = Durchlauf abwärts (ein Lauf)
+legend-seen-in-ramp = während der Rampe gesehen
+legend-largest-angle = größter Winkel dieses Laufs, letzte Periode
+describe-against = { $y } über { $x }
+describe-range = { $state } von { $from } bis { $to }
+describe-ranges = Bereiche: { $ranges }
+describe-mark = { $name } bei { $x }
+describe-marked = markiert: { $marks }
+describe-curves = { $count ->
+    [one] { $count } Kurve
+   *[other] { $count } Kurven
+}
+describe-now-stable = bei der aktuellen Last liegen alle { $count } Eigenwerte links der imaginären Achse: ein Stoß klingt ab
+describe-now-flutter = bei der aktuellen Last liegen { $right } von { $count } Eigenwerten rechts der imaginären Achse, { $oscillating } davon abseits der reellen Achse: ein Schwingen wächst (Flattern)
+describe-now-divergence = bei der aktuellen Last liegen { $right } von { $count } Eigenwerten rechts der imaginären Achse, keiner abseits der reellen Achse: die Säule biegt aus (Divergenz)
+describe-map = eine Karte aus { $columns } mal { $rows } Zellen: stabil { $stable } %, Flattern { $flutter } %, Divergenz { $divergence } %
+
+## The scene, the load bar and the tabs' own words
+
+scene-name = die Säule
+scene-swing = ihr Ausschlag jetzt { $rad } rad
+scene-hidden = die Säule, { $swing }
+scene-analysing = die Säule, { $swing }; ihre Stabilität wird analysiert
+scene-stable = stabil: ein Stoß klingt ab, auf ein Hundertstel in { $secs } s; { $swing }
+scene-undamped = stabil, aber ungedämpft: ein Stoß schwingt weiter, weder wachsend noch abklingend; { $swing }
+scene-flutter = die Säule flattert: ein Schwingen wächst, verdoppelt sich alle { $secs } s bei { $frequency } rad/s; { $swing }
+scene-divergence = Divergenz: die Säule biegt aus der Geraden aus, verdoppelt sich alle { $secs } s; { $swing }
+scene-stopped = der Lauf ist angehalten: { $status }; R startet einen neuen Lauf
+scene-drag-hint = die Spitze oder ein Gelenk ziehen, um die Säule auszulenken
+scene-whole-reach = ganzer Bereich
+    .tooltip = den ganzen Kreis zeigen, den die Spitze erreichen kann, ruhend; aus: die Ansicht folgt der Bewegung, zoomt sofort heraus, wenn die Säule weit schwingt, und wieder herein, wenn sie sich beruhigt, immer mit der Einspannung im Bild
+scene-delta =
+    .tooltip = δ: der Winkel von der Richtung des letzten Stabes (der gestrichelte Pfeil, wohin eine ideale Folgelast zeigen würde) zur Kraft, die die Reibung des Bandes tatsächlich aufbringt (der durchgezogene Pfeil), als Bogen an der Spitze gezeichnet. δ = 0 ist eine perfekte Folgelast; die Rolle dreht die Kraft um δ, während sie seitlich auf dem Band gleitet (Gl. 23)
+scene-stick-slip = Haftgleiten: die Gleitgeschwindigkeit liegt unter 1e-4 m/s; die Coulomb-Reibung ist hier regularisiert, außerhalb der Gültigkeit des Modells
+scene-band = Band läuft nach links mit V = { $speed } m/s
+load-bar = Last{"\u000A"}p = { $load }
+    .name = Lastregler
+    .tooltip = die Last p = P l/k: hier klicken oder ziehen, oder die Pfeiltasten nutzen (mit dem Regler im Fokus: links und rechts, Umschalt für zehn Schritte, Pos1 und Ende)
+load-bar-said = Last p = { $load } von 0 bis { $end }
+load-bar-said-hidden = { $load }: der Zustand ist verborgen, bis die Lektion ihn auflöst
+load-bar-said-analysing = { $load }: wird analysiert
+load-bar-said-range = { $load }: { $state }, von p = { $from } bis { $to }
+load-bar-said-beyond = { $load }: jenseits des analysierten Bereichs
+view-hint = ziehen: verschieben · Strg+Scrollen: zoomen · Doppelklick: einpassen
+    .more = Alle Daten wieder zeigen (wie ein Doppelklick auf ein Diagramm).{"\u000A"}Ziehen oder scrollen zum Verschieben, Strg+Scrollen zum Zoomen, mit der rechten Taste einen Rahmen ziehen, um hineinzuzoomen.
+view-fit = einpassen
+map-readout-growth = Anwachsrate { $rate } 1/s
+map-readout-hint = auf die Karte zeigen, um eine Zelle abzulesen; klicken übernimmt ihre Last und ihren Parameter
+histories-delta = δ: der Winkel der Bandkraft zu Stab 2
+histories-energy = kinetische + Federenergie
+histories-band-power = Leistung des Bandes
+histories-rod-2 = Stab 2
+zoom-outside = Zoom { $zoom } liegt außerhalb von { $least } bis { $most }: auf { $held } gesetzt (Strg+0: 100%)
+plot-name = Diagramm: { $y } über { $x }

@@ -387,3 +387,94 @@ lesson-close = close lesson
 lesson-next-lesson = next lesson: { $title }
     .tooltip = open the next lesson, "{ $title }", at its first step (Page Down)
 lesson-last = the last step of the last lesson
+
+## The plots: axes, legends and their words for a screen reader
+
+axis-re = Re λ (1/s)
+axis-im = Im λ (rad/s)
+axis-load = p = P l/k
+axis-load-named = load p = P l/k
+axis-largest-angle = largest |φ_i| over a cycle (rad)
+axis-damping-level = damping g2 = c2 / √(k m l²)
+axis-mass-ratio = mass ratio m1 / (mass beyond joint A)
+axis-log-scale = { $axis } (log scale)
+axis-first-critical-load = first critical load p
+mark-load = load
+locus-far-left = { $name }: eigenvalues down to Re λ = { $re } 1/s (fast decaying modes) lie left of the view, which holds those that decide stability
+legend-branch-colour = branch colour: the load, p = { $from } to { $to }
+legend-eigenvalues-now = eigenvalues at the current load
+legend-measured = measured from the run
+legend-current-load = current load
+legend-overlay-no-change = no change of stability up to the slider's end
+legend-overlay = overlay { $name }: { $loads }
+legend-transition = p = { $load }: { $from } to { $to }
+legend-more-loads = { $count } more critical loads (zieglerlab critical lists them)
+legend-no-analysis = no analysis
+legend-stronger = stronger: faster growth or decay (strongest: { $largest } 1/s)
+legend-critical-loads = critical loads
+legend-now = now
+legend-now-off = now: off the map ({ $why })
+legend-now-no-value = now: not on the map ({ $axis } has no value for this column)
+legend-now-below = { $name } = { $value } is below { $bound }
+legend-now-above = { $name } = { $value } is above { $bound }
+legend-this-model = this model: p = { $load }
+legend-straight-stable = straight column, stable
+legend-straight-unstable = straight column, unstable
+legend-stable-cycle = stable limit cycle
+legend-unstable-cycle = unstable limit cycle
+legend-hopf-point = flutter onset (Hopf point)
+legend-sweep-up = sweep up (a run)
+legend-sweep-down = sweep down (a run)
+legend-seen-in-ramp = seen during the ramp
+legend-largest-angle = this run's largest angle, last period
+describe-against = { $y } against { $x }
+describe-range = { $state } from { $from } to { $to }
+describe-ranges = ranges: { $ranges }
+describe-mark = { $name } at { $x }
+describe-marked = marked: { $marks }
+describe-curves = { $count ->
+    [one] { $count } curve
+   *[other] { $count } curves
+}
+describe-now-stable = at the present load all { $count } eigenvalues lie left of the imaginary axis: a kick dies away
+describe-now-flutter = at the present load { $right } of { $count } eigenvalues lie right of the imaginary axis, { $oscillating } of them off the real axis: a swing grows (flutter)
+describe-now-divergence = at the present load { $right } of { $count } eigenvalues lie right of the imaginary axis, 0 of them off the real axis: the column bends away (divergence)
+describe-map = a map of { $columns } by { $rows } cells: stable { $stable }%, flutter { $flutter }%, divergence { $divergence }%
+
+## The scene, the load bar and the tabs' own words
+
+scene-name = the column
+scene-swing = its swing now { $rad } rad
+scene-hidden = the column, { $swing }
+scene-analysing = the column, { $swing }; its stability is being analysed
+scene-stable = stable: a kick dies away, to a hundredth in { $secs } s; { $swing }
+scene-undamped = stable but undamped: a kick swings on, neither growing nor dying; { $swing }
+scene-flutter = the column flutters: a swing grows, doubling every { $secs } s at { $frequency } rad/s; { $swing }
+scene-divergence = divergence: the column bends away from straight, doubling every { $secs } s; { $swing }
+scene-stopped = the run stopped: { $status }; R starts a fresh run
+scene-drag-hint = drag the tip or a joint to displace the column
+scene-whole-reach = whole reach
+    .tooltip = frame the whole disc the tip can reach, still; off, the view follows the motion, zooming out at once as the column swings wide and back in as it settles, always with the clamp in view
+scene-delta =
+    .tooltip = δ: the angle from the last rod's direction (the dashed arrow, where an ideal follower force would point) to the force the band's friction actually applies (the solid arrow), drawn as the arc at the tip. δ = 0 is a perfect follower; the roller turns the force by δ as it slips sideways on the band (eq. 23)
+scene-stick-slip = stick-slip: the slip speed is below 1e-4 m/s; Coulomb friction is regularized here, outside the model's validity
+scene-band = band moving left at V = { $speed } m/s
+load-bar = load{"\u000A"}p = { $load }
+    .name = load slider
+    .tooltip = the load p = P l/k: click or drag here, or use the arrow keys (with the bar focused: left and right, shift for ten steps, home and end)
+load-bar-said = load p = { $load } of 0 to { $end }
+load-bar-said-hidden = { $load }: the state is hidden until the lesson reveals it
+load-bar-said-analysing = { $load }: analysing
+load-bar-said-range = { $load }: { $state }, from p = { $from } to { $to }
+load-bar-said-beyond = { $load }: beyond the analysed range
+view-hint = drag: pan · Ctrl+scroll: zoom · double-click: fit
+    .more = Show all the data again (as a double-click on a plot does).{"\u000A"}Drag or scroll to pan, Ctrl+scroll to zoom, drag a box with the right button to zoom into it.
+view-fit = fit
+map-readout-growth = growth rate { $rate } 1/s
+map-readout-hint = point at the map to read a cell; click to take its load and parameter
+histories-delta = δ: the band force's angle from rod 2
+histories-energy = kinetic + spring energy
+histories-band-power = power from the band
+histories-rod-2 = rod 2
+zoom-outside = zoom { $zoom } is outside { $least } to { $most }: set to { $held } (Ctrl+0: 100%)
+plot-name = plot: { $y } against { $x }

@@ -388,3 +388,97 @@ lesson-close = cerrar lección
 lesson-next-lesson = lección siguiente: { $title }
     .tooltip = abrir la lección siguiente, «{ $title }», en su primer paso (Av Pág)
 lesson-last = el último paso de la última lección
+
+## The plots: axes, legends and their words for a screen reader
+
+axis-re = Re λ (1/s)
+axis-im = Im λ (rad/s)
+axis-load = p = P l/k
+axis-load-named = carga p = P l/k
+axis-largest-angle = mayor |φ_i| en un ciclo (rad)
+axis-damping-level = amortiguamiento g2 = c2 / √(k m l²)
+axis-mass-ratio = relación de masas m1 / (masa más allá de la articulación A)
+axis-log-scale = { $axis } (escala logarítmica)
+axis-first-critical-load = primera carga crítica p
+mark-load = carga
+locus-far-left = { $name }: autovalores hasta Re λ = { $re } 1/s (modos que se amortiguan deprisa) quedan a la izquierda de la vista, que contiene los que deciden la estabilidad
+legend-branch-colour = color de las ramas: la carga, p = de { $from } a { $to }
+legend-eigenvalues-now = autovalores con la carga actual
+legend-measured = medidos en la simulación
+legend-current-load = carga actual
+legend-overlay-no-change = ningún cambio de estabilidad hasta el final del deslizador
+legend-overlay = comparación { $name }: { $loads }
+legend-transition = p = { $load }: de { $from } a { $to }
+legend-more-loads = { $count ->
+    [one] { $count } carga crítica más (zieglerlab critical las lista)
+   *[other] { $count } cargas críticas más (zieglerlab critical las lista)
+}
+legend-no-analysis = sin análisis
+legend-stronger = más intenso: crecimiento o amortiguamiento más rápido (máximo: { $largest } 1/s)
+legend-critical-loads = cargas críticas
+legend-now = ahora
+legend-now-off = ahora: fuera del mapa ({ $why })
+legend-now-no-value = ahora: no está en el mapa ({ $axis } no tiene valor para esta columna)
+legend-now-below = { $name } = { $value } está por debajo de { $bound }
+legend-now-above = { $name } = { $value } está por encima de { $bound }
+legend-this-model = este modelo: p = { $load }
+legend-straight-stable = columna recta, estable
+legend-straight-unstable = columna recta, inestable
+legend-stable-cycle = ciclo límite estable
+legend-unstable-cycle = ciclo límite inestable
+legend-hopf-point = inicio del flameo (punto de Hopf)
+legend-sweep-up = barrido hacia arriba (una simulación)
+legend-sweep-down = barrido hacia abajo (una simulación)
+legend-seen-in-ramp = visto durante la rampa
+legend-largest-angle = mayor ángulo de esta simulación, último periodo
+describe-against = { $y } frente a { $x }
+describe-range = { $state } de { $from } a { $to }
+describe-ranges = intervalos: { $ranges }
+describe-mark = { $name } en { $x }
+describe-marked = marcados: { $marks }
+describe-curves = { $count ->
+    [one] { $count } curva
+   *[other] { $count } curvas
+}
+describe-now-stable = con la carga actual los { $count } autovalores quedan a la izquierda del eje imaginario: un golpe se amortigua
+describe-now-flutter = con la carga actual { $right } de { $count } autovalores quedan a la derecha del eje imaginario, { $oscillating } de ellos fuera del eje real: una oscilación crece (flameo)
+describe-now-divergence = con la carga actual { $right } de { $count } autovalores quedan a la derecha del eje imaginario, ninguno fuera del eje real: la columna se dobla (divergencia)
+describe-map = un mapa de { $columns } por { $rows } celdas: estable { $stable } %, flameo { $flutter } %, divergencia { $divergence } %
+
+## The scene, the load bar and the tabs' own words
+
+scene-name = la columna
+scene-swing = su oscilación ahora { $rad } rad
+scene-hidden = la columna, { $swing }
+scene-analysing = la columna, { $swing }; se está analizando su estabilidad
+scene-stable = estable: un golpe se amortigua, hasta una centésima en { $secs } s; { $swing }
+scene-undamped = estable pero sin amortiguamiento: un golpe sigue oscilando, sin crecer ni amortiguarse; { $swing }
+scene-flutter = la columna entra en flameo: una oscilación crece, duplicándose cada { $secs } s a { $frequency } rad/s; { $swing }
+scene-divergence = divergencia: la columna se dobla alejándose de la recta, duplicándose cada { $secs } s; { $swing }
+scene-stopped = la simulación se detuvo: { $status }; R empieza una nueva
+scene-drag-hint = arrastra el extremo o una articulación para desplazar la columna
+scene-whole-reach = alcance total
+    .tooltip = encuadrar todo el disco que el extremo puede alcanzar, quieto; apagado, la vista sigue el movimiento, alejándose en cuanto la columna oscila mucho y acercándose cuando se calma, siempre con el empotramiento a la vista
+scene-delta =
+    .tooltip = δ: el ángulo desde la dirección de la última barra (la flecha discontinua, adonde apuntaría una fuerza seguidora ideal) hasta la fuerza que aplica de verdad el rozamiento de la banda (la flecha continua), dibujado como el arco del extremo. δ = 0 es una seguidora perfecta; el rodillo gira la fuerza δ al deslizar de lado sobre la banda (ec. 23)
+scene-stick-slip = stick-slip: la velocidad de deslizamiento es menor que 1e-4 m/s; el rozamiento de Coulomb está regularizado aquí, fuera de la validez del modelo
+scene-band = banda moviéndose a la izquierda a V = { $speed } m/s
+load-bar = carga{"\u000A"}p = { $load }
+    .name = deslizador de carga
+    .tooltip = la carga p = P l/k: haz clic o arrastra aquí, o usa las flechas (con la barra enfocada: izquierda y derecha, mayús para diez pasos, inicio y fin)
+load-bar-said = carga p = { $load } de 0 a { $end }
+load-bar-said-hidden = { $load }: el estado está oculto hasta que la lección lo revele
+load-bar-said-analysing = { $load }: analizando
+load-bar-said-range = { $load }: { $state }, de p = { $from } a { $to }
+load-bar-said-beyond = { $load }: fuera del intervalo analizado
+view-hint = arrastrar: desplazar · Ctrl+rueda: ampliar · doble clic: ajustar
+    .more = Mostrar de nuevo todos los datos (como un doble clic en un gráfico).{"\u000A"}Arrastra o desplaza para mover, Ctrl+rueda para ampliar, arrastra un recuadro con el botón derecho para ampliarlo.
+view-fit = ajustar
+map-readout-growth = tasa de crecimiento { $rate } 1/s
+map-readout-hint = señala el mapa para leer una celda; haz clic para tomar su carga y su parámetro
+histories-delta = δ: el ángulo de la fuerza de la banda respecto a la barra 2
+histories-energy = energía cinética + elástica
+histories-band-power = potencia de la banda
+histories-rod-2 = barra 2
+zoom-outside = el zoom { $zoom } está fuera de { $least } a { $most }: fijado en { $held } (Ctrl+0: 100%)
+plot-name = gráfico: { $y } frente a { $x }

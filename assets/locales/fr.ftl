@@ -388,3 +388,97 @@ lesson-close = fermer la leçon
 lesson-next-lesson = leçon suivante : { $title }
     .tooltip = ouvrir la leçon suivante, « { $title } », à sa première étape (Page suivante)
 lesson-last = la dernière étape de la dernière leçon
+
+## The plots: axes, legends and their words for a screen reader
+
+axis-re = Re λ (1/s)
+axis-im = Im λ (rad/s)
+axis-load = p = P l/k
+axis-load-named = charge p = P l/k
+axis-largest-angle = plus grand |φ_i| sur un cycle (rad)
+axis-damping-level = amortissement g2 = c2 / √(k m l²)
+axis-mass-ratio = rapport de masses m1 / (masse au-delà de l'articulation A)
+axis-log-scale = { $axis } (échelle logarithmique)
+axis-first-critical-load = première charge critique p
+mark-load = charge
+locus-far-left = { $name } : des valeurs propres jusqu'à Re λ = { $re } 1/s (modes vite amortis) sont à gauche de la vue, qui montre celles qui décident de la stabilité
+legend-branch-colour = couleur des branches : la charge, p = { $from } à { $to }
+legend-eigenvalues-now = valeurs propres à la charge actuelle
+legend-measured = mesurées sur la simulation
+legend-current-load = charge actuelle
+legend-overlay-no-change = aucun changement de stabilité jusqu'au bout du curseur
+legend-overlay = comparaison { $name } : { $loads }
+legend-transition = p = { $load } : de { $from } à { $to }
+legend-more-loads = { $count ->
+    [one] { $count } autre charge critique (zieglerlab critical les liste)
+   *[other] { $count } autres charges critiques (zieglerlab critical les liste)
+}
+legend-no-analysis = pas d'analyse
+legend-stronger = plus intense : croissance ou amortissement plus rapide (maximum : { $largest } 1/s)
+legend-critical-loads = charges critiques
+legend-now = maintenant
+legend-now-off = maintenant : hors de la carte ({ $why })
+legend-now-no-value = maintenant : pas sur la carte ({ $axis } n'a pas de valeur pour cette colonne)
+legend-now-below = { $name } = { $value } est sous { $bound }
+legend-now-above = { $name } = { $value } est au-dessus de { $bound }
+legend-this-model = ce modèle : p = { $load }
+legend-straight-stable = colonne droite, stable
+legend-straight-unstable = colonne droite, instable
+legend-stable-cycle = cycle limite stable
+legend-unstable-cycle = cycle limite instable
+legend-hopf-point = début du flottement (point de Hopf)
+legend-sweep-up = balayage montant (une simulation)
+legend-sweep-down = balayage descendant (une simulation)
+legend-seen-in-ramp = vu pendant la rampe
+legend-largest-angle = plus grand angle de cette simulation, dernière période
+describe-against = { $y } en fonction de { $x }
+describe-range = { $state } de { $from } à { $to }
+describe-ranges = intervalles : { $ranges }
+describe-mark = { $name } à { $x }
+describe-marked = repères : { $marks }
+describe-curves = { $count ->
+    [one] { $count } courbe
+   *[other] { $count } courbes
+}
+describe-now-stable = à la charge actuelle les { $count } valeurs propres sont à gauche de l'axe imaginaire : une poussée s'amortit
+describe-now-flutter = à la charge actuelle { $right } des { $count } valeurs propres sont à droite de l'axe imaginaire, dont { $oscillating } hors de l'axe réel : une oscillation croît (flottement)
+describe-now-divergence = à la charge actuelle { $right } des { $count } valeurs propres sont à droite de l'axe imaginaire, aucune hors de l'axe réel : la colonne fléchit (divergence)
+describe-map = une carte de { $columns } sur { $rows } cellules : stable { $stable } %, flottement { $flutter } %, divergence { $divergence } %
+
+## The scene, the load bar and the tabs' own words
+
+scene-name = la colonne
+scene-swing = son oscillation maintenant { $rad } rad
+scene-hidden = la colonne, { $swing }
+scene-analysing = la colonne, { $swing } ; sa stabilité est en cours d'analyse
+scene-stable = stable : une poussée s'amortit, jusqu'au centième en { $secs } s ; { $swing }
+scene-undamped = stable mais non amortie : une poussée continue d'osciller, sans croître ni s'amortir ; { $swing }
+scene-flutter = la colonne flotte : une oscillation croît, doublant toutes les { $secs } s à { $frequency } rad/s ; { $swing }
+scene-divergence = divergence : la colonne fléchit hors de la droite, doublant toutes les { $secs } s ; { $swing }
+scene-stopped = la simulation s'est arrêtée : { $status } ; R en lance une nouvelle
+scene-drag-hint = faire glisser l'extrémité ou une articulation pour déplacer la colonne
+scene-whole-reach = portée entière
+    .tooltip = cadrer tout le disque que l'extrémité peut atteindre, fixe ; désactivé, la vue suit le mouvement, s'éloigne dès que la colonne oscille fort et se rapproche quand elle se calme, toujours avec l'encastrement en vue
+scene-delta =
+    .tooltip = δ : l'angle entre la direction de la dernière barre (la flèche en tirets, où pointerait une force suiveuse idéale) et la force qu'applique réellement le frottement de la bande (la flèche pleine), tracé comme l'arc à l'extrémité. δ = 0 est une suiveuse parfaite ; le galet tourne la force de δ en glissant de côté sur la bande (éq. 23)
+scene-stick-slip = stick-slip : la vitesse de glissement est sous 1e-4 m/s ; le frottement de Coulomb est ici régularisé, hors du domaine de validité du modèle
+scene-band = bande se déplaçant vers la gauche à V = { $speed } m/s
+load-bar = charge{"\u000A"}p = { $load }
+    .name = curseur de charge
+    .tooltip = la charge p = P l/k : cliquer ou faire glisser ici, ou utiliser les flèches (barre ciblée : gauche et droite, maj pour dix pas, début et fin)
+load-bar-said = charge p = { $load } de 0 à { $end }
+load-bar-said-hidden = { $load } : l'état est caché jusqu'à ce que la leçon le révèle
+load-bar-said-analysing = { $load } : analyse en cours
+load-bar-said-range = { $load } : { $state }, de p = { $from } à { $to }
+load-bar-said-beyond = { $load } : au-delà de l'intervalle analysé
+view-hint = glisser : déplacer · Ctrl+molette : zoomer · double-clic : ajuster
+    .more = Montrer à nouveau toutes les données (comme un double-clic sur un graphique).{"\u000A"}Glisser ou faire défiler pour déplacer, Ctrl+molette pour zoomer, tracer un cadre avec le bouton droit pour zoomer dessus.
+view-fit = ajuster
+map-readout-growth = taux de croissance { $rate } 1/s
+map-readout-hint = pointer la carte pour lire une cellule ; cliquer pour prendre sa charge et son paramètre
+histories-delta = δ : l'angle de la force de la bande par rapport à la barre 2
+histories-energy = énergie cinétique + élastique
+histories-band-power = puissance venant de la bande
+histories-rod-2 = barre 2
+zoom-outside = le zoom { $zoom } est hors de { $least } à { $most } : ramené à { $held } (Ctrl+0 : 100 %)
+plot-name = graphique : { $y } en fonction de { $x }

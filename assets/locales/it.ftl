@@ -388,3 +388,97 @@ lesson-close = chiudi lezione
 lesson-next-lesson = lezione successiva: { $title }
     .tooltip = apri la lezione successiva, «{ $title }», al primo passo (Pagina giù)
 lesson-last = l'ultimo passo dell'ultima lezione
+
+## The plots: axes, legends and their words for a screen reader
+
+axis-re = Re λ (1/s)
+axis-im = Im λ (rad/s)
+axis-load = p = P l/k
+axis-load-named = carico p = P l/k
+axis-largest-angle = massimo |φ_i| in un ciclo (rad)
+axis-damping-level = smorzamento g2 = c2 / √(k m l²)
+axis-mass-ratio = rapporto di masse m1 / (massa oltre il giunto A)
+axis-log-scale = { $axis } (scala logaritmica)
+axis-first-critical-load = primo carico critico p
+mark-load = carico
+locus-far-left = { $name }: autovalori fino a Re λ = { $re } 1/s (modi che si smorzano in fretta) stanno a sinistra della vista, che contiene quelli che decidono la stabilità
+legend-branch-colour = colore dei rami: il carico, p = da { $from } a { $to }
+legend-eigenvalues-now = autovalori al carico attuale
+legend-measured = misurati dalla simulazione
+legend-current-load = carico attuale
+legend-overlay-no-change = nessun cambio di stabilità fino alla fine del cursore
+legend-overlay = confronto { $name }: { $loads }
+legend-transition = p = { $load }: da { $from } a { $to }
+legend-more-loads = { $count ->
+    [one] { $count } altro carico critico (zieglerlab critical li elenca)
+   *[other] altri { $count } carichi critici (zieglerlab critical li elenca)
+}
+legend-no-analysis = nessuna analisi
+legend-stronger = più intenso: crescita o smorzamento più rapidi (massimo: { $largest } 1/s)
+legend-critical-loads = carichi critici
+legend-now = ora
+legend-now-off = ora: fuori dalla mappa ({ $why })
+legend-now-no-value = ora: non sulla mappa ({ $axis } non ha valore per questa colonna)
+legend-now-below = { $name } = { $value } è sotto { $bound }
+legend-now-above = { $name } = { $value } è sopra { $bound }
+legend-this-model = questo modello: p = { $load }
+legend-straight-stable = colonna diritta, stabile
+legend-straight-unstable = colonna diritta, instabile
+legend-stable-cycle = ciclo limite stabile
+legend-unstable-cycle = ciclo limite instabile
+legend-hopf-point = inizio del flutter (punto di Hopf)
+legend-sweep-up = scansione in salita (una simulazione)
+legend-sweep-down = scansione in discesa (una simulazione)
+legend-seen-in-ramp = visto durante la rampa
+legend-largest-angle = angolo massimo di questa simulazione, ultimo periodo
+describe-against = { $y } in funzione di { $x }
+describe-range = { $state } da { $from } a { $to }
+describe-ranges = intervalli: { $ranges }
+describe-mark = { $name } a { $x }
+describe-marked = segnati: { $marks }
+describe-curves = { $count ->
+    [one] { $count } curva
+   *[other] { $count } curve
+}
+describe-now-stable = al carico attuale tutti i { $count } autovalori stanno a sinistra dell'asse immaginario: un colpetto si smorza
+describe-now-flutter = al carico attuale { $right } di { $count } autovalori stanno a destra dell'asse immaginario, { $oscillating } fuori dall'asse reale: un'oscillazione cresce (flutter)
+describe-now-divergence = al carico attuale { $right } di { $count } autovalori stanno a destra dell'asse immaginario, nessuno fuori dall'asse reale: la colonna si piega (divergenza)
+describe-map = una mappa di { $columns } per { $rows } celle: stabile { $stable }%, flutter { $flutter }%, divergenza { $divergence }%
+
+## The scene, the load bar and the tabs' own words
+
+scene-name = la colonna
+scene-swing = la sua oscillazione ora { $rad } rad
+scene-hidden = la colonna, { $swing }
+scene-analysing = la colonna, { $swing }; la sua stabilità è in analisi
+scene-stable = stabile: un colpetto si smorza, fino a un centesimo in { $secs } s; { $swing }
+scene-undamped = stabile ma non smorzata: un colpetto continua a oscillare, senza crescere né smorzarsi; { $swing }
+scene-flutter = la colonna è in flutter: un'oscillazione cresce, raddoppiando ogni { $secs } s a { $frequency } rad/s; { $swing }
+scene-divergence = divergenza: la colonna si piega lontano dalla retta, raddoppiando ogni { $secs } s; { $swing }
+scene-stopped = la simulazione si è fermata: { $status }; R ne avvia una nuova
+scene-drag-hint = trascina la punta o un giunto per spostare la colonna
+scene-whole-reach = tutta la portata
+    .tooltip = inquadra tutto il disco che la punta può raggiungere, fermo; spento, la vista segue il moto, allargandosi subito quando la colonna oscilla molto e stringendosi quando si calma, sempre con l'incastro in vista
+scene-delta =
+    .tooltip = δ: l'angolo dalla direzione dell'ultima asta (la freccia tratteggiata, dove punterebbe una forza follower ideale) alla forza che l'attrito del nastro applica davvero (la freccia piena), disegnato come l'arco in punta. δ = 0 è una follower perfetta; la rotella ruota la forza di δ mentre striscia di lato sul nastro (eq. 23)
+scene-stick-slip = stick-slip: la velocità di strisciamento è sotto 1e-4 m/s; l'attrito di Coulomb è qui regolarizzato, fuori dalla validità del modello
+scene-band = nastro che si muove a sinistra a V = { $speed } m/s
+load-bar = carico{"\u000A"}p = { $load }
+    .name = cursore del carico
+    .tooltip = il carico p = P l/k: clicca o trascina qui, oppure usa le frecce (con la barra a fuoco: sinistra e destra, maiusc per dieci passi, home e fine)
+load-bar-said = carico p = { $load } su 0 a { $end }
+load-bar-said-hidden = { $load }: lo stato è nascosto finché la lezione non lo rivela
+load-bar-said-analysing = { $load }: in analisi
+load-bar-said-range = { $load }: { $state }, da p = { $from } a { $to }
+load-bar-said-beyond = { $load }: oltre l'intervallo analizzato
+view-hint = trascina: sposta · Ctrl+rotella: zoom · doppio clic: adatta
+    .more = Mostra di nuovo tutti i dati (come un doppio clic su un grafico).{"\u000A"}Trascina o scorri per spostare, Ctrl+rotella per lo zoom, trascina un riquadro col tasto destro per ingrandirlo.
+view-fit = adatta
+map-readout-growth = tasso di crescita { $rate } 1/s
+map-readout-hint = punta sulla mappa per leggere una cella; clicca per prenderne carico e parametro
+histories-delta = δ: l'angolo della forza del nastro rispetto all'asta 2
+histories-energy = energia cinetica + elastica
+histories-band-power = potenza dal nastro
+histories-rod-2 = asta 2
+zoom-outside = lo zoom { $zoom } è fuori da { $least }-{ $most }: impostato a { $held } (Ctrl+0: 100%)
+plot-name = grafico: { $y } in funzione di { $x }

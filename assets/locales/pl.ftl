@@ -394,3 +394,99 @@ lesson-close = zamknij lekcję
 lesson-next-lesson = następna lekcja: { $title }
     .tooltip = otwórz następną lekcję, „{ $title }”, od pierwszego kroku (Page Down)
 lesson-last = ostatni krok ostatniej lekcji
+
+## The plots: axes, legends and their words for a screen reader
+
+axis-re = Re λ (1/s)
+axis-im = Im λ (rad/s)
+axis-load = p = P l/k
+axis-load-named = obciążenie p = P l/k
+axis-largest-angle = największe |φ_i| w cyklu (rad)
+axis-damping-level = tłumienie g2 = c2 / √(k m l²)
+axis-mass-ratio = stosunek mas m1 / (masa za przegubem A)
+axis-log-scale = { $axis } (skala logarytmiczna)
+axis-first-critical-load = pierwsze obciążenie krytyczne p
+mark-load = obciążenie
+locus-far-left = { $name }: wartości własne aż do Re λ = { $re } 1/s (szybko zanikające postaci) leżą na lewo od widoku, który obejmuje te decydujące o stateczności
+legend-branch-colour = kolor gałęzi: obciążenie, p = od { $from } do { $to }
+legend-eigenvalues-now = wartości własne przy bieżącym obciążeniu
+legend-measured = zmierzone z symulacji
+legend-current-load = bieżące obciążenie
+legend-overlay-no-change = brak zmiany stateczności do końca suwaka
+legend-overlay = porównanie { $name }: { $loads }
+legend-transition = p = { $load }: { $from } w { $to }
+legend-more-loads = { $count ->
+    [one] jeszcze { $count } obciążenie krytyczne (zieglerlab critical je wymienia)
+    [few] jeszcze { $count } obciążenia krytyczne (zieglerlab critical je wymienia)
+   *[many] jeszcze { $count } obciążeń krytycznych (zieglerlab critical je wymienia)
+}
+legend-no-analysis = brak analizy
+legend-stronger = mocniej: szybsze narastanie lub zanik (najmocniej: { $largest } 1/s)
+legend-critical-loads = obciążenia krytyczne
+legend-now = teraz
+legend-now-off = teraz: poza mapą ({ $why })
+legend-now-no-value = teraz: nie na mapie ({ $axis } nie ma wartości dla tej kolumny)
+legend-now-below = { $name } = { $value } jest poniżej { $bound }
+legend-now-above = { $name } = { $value } jest powyżej { $bound }
+legend-this-model = ten model: p = { $load }
+legend-straight-stable = prosta kolumna, stateczna
+legend-straight-unstable = prosta kolumna, niestateczna
+legend-stable-cycle = stabilny cykl graniczny
+legend-unstable-cycle = niestabilny cykl graniczny
+legend-hopf-point = początek flatteru (punkt Hopfa)
+legend-sweep-up = przejście w górę (jedna symulacja)
+legend-sweep-down = przejście w dół (jedna symulacja)
+legend-seen-in-ramp = widziane podczas rampy
+legend-largest-angle = największy kąt tej symulacji, ostatni okres
+describe-against = { $y } w funkcji { $x }
+describe-range = { $state } od { $from } do { $to }
+describe-ranges = zakresy: { $ranges }
+describe-mark = { $name } przy { $x }
+describe-marked = zaznaczone: { $marks }
+describe-curves = { $count ->
+    [one] { $count } krzywa
+    [few] { $count } krzywe
+   *[many] { $count } krzywych
+}
+describe-now-stable = przy bieżącym obciążeniu wszystkie wartości własne ({ $count }) leżą na lewo od osi urojonej: pchnięcie zanika
+describe-now-flutter = przy bieżącym obciążeniu { $right } z { $count } wartości własnych leży na prawo od osi urojonej, { $oscillating } z nich poza osią rzeczywistą: drgania rosną (flatter)
+describe-now-divergence = przy bieżącym obciążeniu { $right } z { $count } wartości własnych leży na prawo od osi urojonej, żadna poza osią rzeczywistą: kolumna się wygina (dywergencja)
+describe-map = mapa { $columns } na { $rows } komórek: stateczność { $stable }%, flatter { $flutter }%, dywergencja { $divergence }%
+
+## The scene, the load bar and the tabs' own words
+
+scene-name = kolumna
+scene-swing = jej wychylenie teraz { $rad } rad
+scene-hidden = kolumna, { $swing }
+scene-analysing = kolumna, { $swing }; jej stateczność jest analizowana
+scene-stable = stateczna: pchnięcie zanika, do setnej części w { $secs } s; { $swing }
+scene-undamped = stateczna, ale bez tłumienia: pchnięcie drga dalej, ani nie rośnie, ani nie zanika; { $swing }
+scene-flutter = kolumna ma flatter: drgania rosną, podwajając się co { $secs } s przy { $frequency } rad/s; { $swing }
+scene-divergence = dywergencja: kolumna wygina się z prostej, podwajając wychylenie co { $secs } s; { $swing }
+scene-stopped = symulacja się zatrzymała: { $status }; R zaczyna nową
+scene-drag-hint = przeciągnij koniec lub przegub, aby wychylić kolumnę
+scene-whole-reach = cały zasięg
+    .tooltip = pokaż cały krąg, do którego sięga koniec, nieruchomo; wyłączone: widok śledzi ruch, oddala się od razu, gdy kolumna szeroko się wychyla, i przybliża, gdy się uspokaja, zawsze z utwierdzeniem w kadrze
+scene-delta =
+    .tooltip = δ: kąt od kierunku ostatniego pręta (przerywana strzałka, tam wskazywałaby idealna siła śledząca) do siły, którą faktycznie wywiera tarcie taśmy (ciągła strzałka), narysowany jako łuk na końcu. δ = 0 to idealna siła śledząca; rolka obraca siłę o δ, ślizgając się bokiem po taśmie (równ. 23)
+scene-stick-slip = stick-slip: prędkość poślizgu jest poniżej 1e-4 m/s; tarcie Coulomba jest tu regularyzowane, poza zakresem ważności modelu
+scene-band = taśma porusza się w lewo z V = { $speed } m/s
+load-bar = obciążenie{"\u000A"}p = { $load }
+    .name = suwak obciążenia
+    .tooltip = obciążenie p = P l/k: kliknij lub przeciągnij tutaj albo użyj strzałek (gdy suwak jest aktywny: w lewo i w prawo, shift o dziesięć kroków, home i end)
+load-bar-said = obciążenie p = { $load } w zakresie od 0 do { $end }
+load-bar-said-hidden = { $load }: stan jest ukryty, dopóki lekcja go nie odsłoni
+load-bar-said-analysing = { $load }: trwa analiza
+load-bar-said-range = { $load }: { $state }, od p = { $from } do { $to }
+load-bar-said-beyond = { $load }: poza przeanalizowanym zakresem
+view-hint = przeciągnij: przesuń · Ctrl+kółko: powiększ · dwuklik: dopasuj
+    .more = Pokaż znów wszystkie dane (jak dwuklik na wykresie).{"\u000A"}Przeciągnij lub przewiń, by przesunąć, Ctrl+kółko, by powiększyć, przeciągnij prostokąt prawym przyciskiem, by go przybliżyć.
+view-fit = dopasuj
+map-readout-growth = szybkość narastania { $rate } 1/s
+map-readout-hint = wskaż mapę, by odczytać komórkę; kliknij, by przyjąć jej obciążenie i parametr
+histories-delta = δ: kąt siły taśmy względem pręta 2
+histories-energy = energia kinetyczna + sprężyn
+histories-band-power = moc od taśmy
+histories-rod-2 = pręt 2
+zoom-outside = powiększenie { $zoom } jest poza zakresem { $least }-{ $most }: ustawiono { $held } (Ctrl+0: 100%)
+plot-name = wykres: { $y } w funkcji { $x }

@@ -2,6 +2,9 @@
 //! by the stability ranges, that is itself the slider (click or drag it to
 //! set the load), with the critical loads and a ramp's onsets marked on it.
 
+use super::speak::Speak as _;
+use crate::i18n::state_name;
+use crate::tr;
 use eframe::egui::{self, Align2, FontId, Rect, Sense, Stroke, pos2, vec2};
 
 use super::action::{Action, Actions, Command, keep_arrows, net_presses};
@@ -82,20 +85,23 @@ pub fn load_bar_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, t
     let bar_height = 1.4 * text_height;
     let font = FontId::proportional(theme.text_size);
     let p = state.model().load_p();
+    let words = ui.words();
     ui.horizontal(|ui| {
         let label = ui.add_sized(
             vec2(6.0 * theme.text_size, bar_height + 2.0 * text_height),
-            egui::Label::new(format!("load\np = {}", bar_load_text(p, state.load_max()))),
+            egui::Label::new(tr!(
+                words,
+                "load-bar",
+                load = bar_load_text(p, state.load_max())
+            )),
         );
         let size = vec2(ui.available_width(), bar_height + 2.0 * text_height);
         let (rect, response) = ui.allocate_exact_size(size, Sense::click_and_drag());
         let response = response
-            .on_hover_text(
-                "the load p = P l/k: click or drag here, or use the arrow keys \
-                 (with the bar focused: left and right, shift for ten steps, home and end)",
-            )
+            .on_hover_text(tr!(words, "load-bar.tooltip"))
             .labelled_by(label.id);
-        response.widget_info(|| egui::WidgetInfo::slider(true, p, "load slider"));
+        let name = tr!(words, "load-bar.name");
+        response.widget_info(|| egui::WidgetInfo::slider(true, p, &name));
         describe(ui, &response, state);
         keys_ui(ui, &response, state, actions);
         let bar = Rect::from_min_max(
@@ -225,31 +231,35 @@ fn describe(ui: &egui::Ui, response: &egui::Response, state: &AppState) {
 /// to 8: flutter, from p = 2.0900 to 4.2641".
 #[must_use]
 pub fn load_bar_description(state: &AppState) -> String {
+    let words = state.words();
     let p = state.model().load_p();
     let load_max = state.load_max();
-    let load = format!(
-        "load p = {} of 0 to {}",
-        bar_load_text(p, load_max),
-        number_text(load_max)
+    let load = tr!(
+        words,
+        "load-bar-said",
+        load = bar_load_text(p, load_max),
+        end = number_text(load_max)
     );
     if state.answer_hidden() {
-        return format!("{load}: the state is hidden until the lesson reveals it");
+        return tr!(words, "load-bar-said-hidden", load = load);
     }
     let Some(analysis) = state.analysis() else {
-        return format!("{load}: analysing");
+        return tr!(words, "load-bar-said-analysing", load = load);
     };
     let here = analysis
         .ranges
         .iter()
         .find(|&&(start, end, _)| start <= p && p <= end);
     match here {
-        Some(&(start, end, range)) => format!(
-            "{load}: {}, from p = {} to {}",
-            range.name(),
-            load_text(start),
-            load_text(end)
+        Some(&(start, end, range)) => tr!(
+            words,
+            "load-bar-said-range",
+            load = load,
+            state = state_name(words, range),
+            from = load_text(start),
+            to = load_text(end)
         ),
-        None => format!("{load}: beyond the analysed range"),
+        None => tr!(words, "load-bar-said-beyond", load = load),
     }
 }
 
@@ -355,7 +365,8 @@ fn range_ui(painter: &egui::Painter, r: Rect, state: State, font: &FontId, theme
             ));
         }
     }
-    let galley = painter.layout_no_wrap(state.name().to_owned(), font.clone(), theme.background);
+    let name = state_name(painter.ctx().words(), state);
+    let galley = painter.layout_no_wrap(name, font.clone(), theme.background);
     if galley.size().x + 12.0 <= r.width() && galley.size().y <= r.height() {
         let at = r.center() - 0.5 * galley.size();
         painter.rect_filled(

@@ -1,6 +1,9 @@
 //! Draws a plot's description ([`crate::plot::spec`]) in the window with
 //! `egui_plot`, in the theme's colours: the window's one renderer of plots.
 
+use super::speak::Speak as _;
+use crate::i18n::state_name;
+use crate::tr;
 use std::sync::Arc;
 
 use eframe::egui::{self, Color32};
@@ -170,12 +173,20 @@ pub fn plot_ui(
         );
     }
     // A screen reader's name and description of the plot.
-    let name = format!("plot: {} against {}", plot.y_label, plot.x_label);
+    // (The words first: the node's builder holds the context.)
+    let words = ui.words();
+    let name = tr!(
+        words,
+        "plot-name",
+        y = plot.y_label.clone(),
+        x = plot.x_label.clone()
+    );
+    let description = describe(plot, words);
     shown
         .response
         .widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &name));
     ui.ctx().accesskit_node_builder(shown.response.id, |node| {
-        node.set_description(describe(plot));
+        node.set_description(description);
     });
     shown
 }
@@ -255,7 +266,8 @@ fn mark_ui<'a>(
         }
         Mark::Cells { x, y, grid } => cells_ui(plot_ui, plot_id, (*x, *y), grid, theme),
         Mark::Range { from, to, state } => {
-            plot_ui.span(Span::new(state.name(), *from..=*to).fill(range_tint(*state, theme)));
+            let name = state_name(plot_ui.ctx().words(), *state);
+            plot_ui.span(Span::new(name, *from..=*to).fill(range_tint(*state, theme)));
         }
         Mark::Label { at, text } => {
             // Spaces pad the plate on both sides of the word.

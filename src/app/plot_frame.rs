@@ -2,6 +2,8 @@
 //! at any size, and the view control of a tab (a "fit" button, how to zoom
 //! and pan, and a refit when what the plots show changes).
 
+use super::speak::Speak as _;
+use crate::tr;
 use eframe::egui::{self, WidgetText};
 use egui_plot::{
     AxisHints, GridInput, GridMark, Line, Plot, PlotBounds, PlotPoint, PlotPoints, PlotUi,
@@ -192,12 +194,9 @@ fn distance_to_segment(p: egui::Pos2, a: egui::Pos2, b: egui::Pos2) -> f32 {
     p.distance(a + t * ab)
 }
 
-/// How to move about in a plot (the plot crate's bindings).
-pub const VIEW_HINT: &str = "drag: pan · Ctrl+scroll: zoom · double-click: fit";
-
-/// The rest of the bindings, in the fit button's tooltip.
-const VIEW_HINT_MORE: &str = "Show all the data again (as a double-click on a plot does).\n\
-     Drag or scroll to pan, Ctrl+scroll to zoom, drag a box with the right button to zoom into it.";
+/// How to move about in a plot (the plot crate's bindings): its message,
+/// with the rest of the bindings in `.more` (the fit button's tooltip).
+pub const VIEW_HINT: &str = "view-hint";
 
 /// The grid's steps, finest first: 1, 5, 10, 50 and 100 times the power of
 /// ten just below `base_step` (the plot crate's minimum). Each divides the
@@ -317,13 +316,14 @@ impl<T: PartialEq> Fit<T> {
         }
         ui.horizontal(|ui| {
             extra(ui);
+            let words = ui.words();
             self.asked |= ui
-                .small_button("fit")
-                .on_hover_text(VIEW_HINT_MORE)
+                .small_button(tr!(words, "view-fit"))
+                .on_hover_text(tr!(words, "view-hint.more"))
                 .clicked();
             // Cut to the row (its whole text on hover): at full length it
             // widened a projector's tab past the window's right edge.
-            ui.add(egui::Label::new(egui::RichText::new(VIEW_HINT).weak()).truncate());
+            ui.add(egui::Label::new(egui::RichText::new(words.get(VIEW_HINT)).weak()).truncate());
         });
     }
 

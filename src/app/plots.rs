@@ -1,6 +1,8 @@
 //! The time histories: the angles and delta against time, the energies,
 //! and a phase portrait of rod 2.
 
+use super::speak::Speak as _;
+use crate::tr;
 use eframe::egui::{self, vec2};
 use egui_plot::{Line, Plot, PlotPoints};
 
@@ -18,6 +20,9 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, band: bool, refit: boo
         samples.iter().map(|o| [o.t_secs, f(o)]).collect()
     };
     let (width, height) = (ui.available_width(), ui.available_height());
+    let words = ui.words();
+    let energy = tr!(words, "histories-energy");
+    let power = tr!(words, "histories-band-power");
     ui.horizontal(|ui| {
         ui.vertical(|ui| {
             ui.allocate_ui(vec2(0.62 * width, 0.5 * height - 4.0), |ui| {
@@ -26,10 +31,7 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, band: bool, refit: boo
                     (Swatch::Line(theme.series[1]), "φ2".to_owned()),
                 ];
                 if band {
-                    legend.push((
-                        Swatch::Line(theme.series[2]),
-                        "δ: the band force's angle from rod 2".to_owned(),
-                    ));
+                    legend.push((Swatch::Line(theme.series[2]), tr!(words, "histories-delta")));
                 }
                 legend_row(ui, &legend);
                 // Symmetric about 0 and as high as a labelled grid step.
@@ -51,27 +53,21 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, band: bool, refit: boo
                 });
             });
             ui.allocate_ui(vec2(0.62 * width, 0.5 * height - 4.0), |ui| {
-                let mut legend = vec![(
-                    Swatch::Line(theme.series[3]),
-                    "kinetic + spring energy".to_owned(),
-                )];
+                let mut legend = vec![(Swatch::Line(theme.series[3]), energy.clone())];
                 if band {
-                    legend.push((
-                        Swatch::Line(theme.series[4]),
-                        "power from the band".to_owned(),
-                    ));
+                    legend.push((Swatch::Line(theme.series[4]), power.clone()));
                 }
                 legend_row(ui, &legend);
                 let plot = Plot::new("energy");
                 let units = if band { "J, W" } else { "J" };
                 refit_if(axes(plot, "t (s)", units), refit).show(ui, |plot_ui| {
                     plot_ui.line(
-                        Line::new("kinetic + spring energy", series(&|o| o.energy_j()))
+                        Line::new(energy.as_str(), series(&|o| o.energy_j()))
                             .color(theme.series[3]),
                     );
                     if band {
                         plot_ui.line(
-                            Line::new("power from the band", series(&|o| o.band_power_w))
+                            Line::new(power.as_str(), series(&|o| o.band_power_w))
                                 .color(theme.series[4]),
                         );
                     }
@@ -85,7 +81,8 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, band: bool, refit: boo
                     .iter()
                     .map(|o| [o.phi2_rad, o.phi2_dot_rad_per_s])
                     .collect();
-                plot_ui.line(Line::new("rod 2", points).color(theme.series[5]));
+                plot_ui
+                    .line(Line::new(tr!(words, "histories-rod-2"), points).color(theme.series[5]));
             });
         });
     });

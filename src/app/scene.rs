@@ -2,6 +2,8 @@
 //! roller spinning with psi over the band moving at V, force arrows, the
 //! angle delta and a fading trail of the tip.
 
+use super::speak::{Speak as _, status_words};
+use crate::tr;
 use std::collections::VecDeque;
 use std::f64::consts::TAU;
 
@@ -109,7 +111,7 @@ pub fn scene_ui(
     scene_access::describe_ui(ui, drag.id, state);
     if let Some(badge) = delta_badge {
         ui.interact(badge, ui.scope_id().with("delta"), Sense::hover())
-            .on_hover_text(DELTA_TIP);
+            .on_hover_text(tr!(ui.words(), "scene-delta.tooltip"));
     }
     if !state.for_picture() {
         plate(
@@ -117,7 +119,7 @@ pub fn scene_ui(
             theme,
             rect.left_bottom() + vec2(10.0, -10.0),
             Align2::LEFT_BOTTOM,
-            "drag the tip or a joint to displace the column".to_owned(),
+            tr!(ui.words(), "scene-drag-hint"),
             theme.axis,
         );
     }
@@ -176,9 +178,9 @@ fn camera_corner_ui(ui: &mut egui::Ui, camera: &mut Camera, rect: Rect, theme: &
     if ui
         .put(
             corner,
-            egui::Button::selectable(camera.whole_reach, "whole reach"),
+            egui::Button::selectable(camera.whole_reach, tr!(ui.words(), "scene-whole-reach")),
         )
-        .on_hover_text("frame the whole disc the tip can reach, still; off, the view follows the motion, zooming out at once as the column swings wide and back in as it settles, always with the clamp in view")
+        .on_hover_text(tr!(ui.words(), "scene-whole-reach.tooltip"))
         .clicked()
     {
         camera.whole_reach = !camera.whole_reach;
@@ -296,9 +298,6 @@ fn delta_text(delta_rad: f64) -> String {
     let degrees = (delta_rad.to_degrees() * 100.0).round() / 100.0 + 0.0;
     format!("δ = {degrees:+.2}°")
 }
-
-/// What the angle delta is, on hover over it.
-const DELTA_TIP: &str = "δ: the angle from the last rod's direction (the dashed arrow, where an ideal follower force would point) to the force the band's friction actually applies (the solid arrow), drawn as the arc at the tip. δ = 0 is a perfect follower; the roller turns the force by δ as it slips sideways on the band (eq. 23)";
 
 /// The clamp at O: a wall with hatching on the far side.
 fn clamp(painter: &egui::Painter, theme: &Theme, view: &View, reach: f64) {
@@ -431,14 +430,12 @@ fn roller_ui(
 /// What the picture cannot show by itself, in words.
 fn notes(painter: &egui::Painter, theme: &Theme, rect: Rect, status: Status, stick_slip: bool) {
     let mut lines = Vec::new();
+    let words = painter.ctx().words();
     if status != Status::Running {
-        lines.push((status.to_string(), theme.error));
+        lines.push((status_words(words, status), theme.error));
     }
     if stick_slip {
-        lines.push((
-            "stick-slip: the slip speed is below 1e-4 m/s; Coulomb friction is regularized here, outside the model's validity".to_owned(),
-            theme.warning,
-        ));
+        lines.push((tr!(words, "scene-stick-slip"), theme.warning));
     }
     for (i, (text, color)) in lines.into_iter().enumerate() {
         #[expect(clippy::cast_precision_loss, reason = "a handful of lines")]
@@ -494,9 +491,10 @@ fn band(
     // own corner may be far out of the camera's frame), or under the
     // camera's switch when the two do not fit side by side (a projector's
     // narrow scene).
-    let text = format!(
-        "band moving left at V = {} m/s",
-        crate::format::number_text(speed_m_per_s)
+    let text = tr!(
+        painter.ctx().words(),
+        "scene-band",
+        speed = crate::format::number_text(speed_m_per_s)
     );
     let width = painter
         .layout_no_wrap(

@@ -2,6 +2,8 @@
 //! (what the column does), and the keys that turn the column while it has
 //! the focus (the keyboard's drag).
 
+use super::speak::Speak as _;
+use crate::tr;
 use eframe::egui;
 
 use super::action::{Action, Actions, keep_arrows, net_presses};
@@ -19,7 +21,8 @@ const TURN_COARSE_RAD: f64 = 0.1;
 /// [`TURN_RAD`] (the keyboard's drag: counter-clockwise and clockwise),
 /// and a ring shows it has the keys.
 pub fn keys_ui(ui: &egui::Ui, drag: &egui::Response, actions: &mut Actions, theme: &Theme) {
-    drag.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, "the column"));
+    let name = tr!(ui.words(), "scene-name");
+    drag.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &name));
     if !drag.has_focus() {
         return;
     }

@@ -2,6 +2,8 @@
 //! at the load (stable, flutter, divergence, and how fast), and how far the
 //! column swings now; refreshed at most twice a second.
 
+use super::speak::status_words;
+use crate::tr;
 use eframe::egui;
 
 use super::state::AppState;
@@ -46,35 +48,44 @@ fn swing_rad(state: &AppState, omega_rad_per_s: f64) -> f64 {
 /// What the column does, in a sentence or two.
 #[must_use]
 pub fn scene_text(state: &AppState) -> String {
+    let words = state.words();
     let stopped = match state.simulation().status() {
         Status::Running => None,
-        status => Some(format!("the run stopped: {status}; R starts a fresh run")),
+        status => Some(tr!(
+            words,
+            "scene-stopped",
+            status = status_words(words, status)
+        )),
     };
     let spectrum = state.current_spectrum();
     let stability = spectrum.map(|s| classify(&s.eigenvalues, s.scale_per_s));
     let omega = stability.map_or(0.0, |s| s.frequency_rad_per_s());
-    let swing = format!("its swing now {} rad", rounded(swing_rad(state, omega)));
+    let swing = tr!(words, "scene-swing", rad = rounded(swing_rad(state, omega)));
     let text = match stability {
-        _ if state.answer_hidden() => format!("the column, {swing}"),
-        None => format!("the column, {swing}; its stability is being analysed"),
+        _ if state.answer_hidden() => tr!(words, "scene-hidden", swing = swing),
+        None => tr!(words, "scene-analysing", swing = swing),
         Some(s) => {
             let rate = s.growth_rate_per_s();
             match s.state {
-                State::Stable if rate < -s.tolerance_per_s => format!(
-                    "stable: a kick dies away, to a hundredth in {} s; {swing}",
-                    rounded(100f64.ln() / -rate)
+                State::Stable if rate < -s.tolerance_per_s => tr!(
+                    words,
+                    "scene-stable",
+                    secs = rounded(100f64.ln() / -rate),
+                    swing = swing
                 ),
-                State::Stable => format!(
-                    "stable but undamped: a kick swings on, neither growing nor dying; {swing}"
+                State::Stable => tr!(words, "scene-undamped", swing = swing),
+                State::Flutter => tr!(
+                    words,
+                    "scene-flutter",
+                    secs = rounded(2f64.ln() / rate),
+                    frequency = rounded(s.frequency_rad_per_s()),
+                    swing = swing
                 ),
-                State::Flutter => format!(
-                    "the column flutters: a swing grows, doubling every {} s at {} rad/s; {swing}",
-                    rounded(2f64.ln() / rate),
-                    rounded(s.frequency_rad_per_s())
-                ),
-                State::Divergence => format!(
-                    "divergence: the column bends away from straight, doubling every {} s; {swing}",
-                    rounded(2f64.ln() / rate)
+                State::Divergence => tr!(
+                    words,
+                    "scene-divergence",
+                    secs = rounded(2f64.ln() / rate),
+                    swing = swing
                 ),
             }
         }

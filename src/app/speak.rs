@@ -4,9 +4,9 @@
 
 use eframe::egui;
 
-use crate::analysis::{State, Transition};
-use crate::format::{duration_text, load_text};
 use crate::i18n::{self, Language, Words};
+use crate::sim::{MAX_TURN_PER_STEP_RAD, Status};
+use crate::tr;
 
 /// Where the language is kept in the context's memory.
 fn language_id() -> egui::Id {
@@ -36,46 +36,30 @@ impl Speak for egui::Ui {
     }
 }
 
-/// A state's name in `words`' language (message `state-NAME`).
+/// Where the run is, in `words`' language.
 #[must_use]
-pub fn state_name(words: &'static Words, state: State) -> String {
-    words.get(&format!("state-{}", state.name())).into_owned()
-}
-
-/// A critical load in words: "p = 2.5417: stable -> flutter".
-#[must_use]
-pub fn transition_text(words: &'static Words, t: &Transition) -> String {
-    crate::tr!(
-        words,
-        "transition",
-        load = load_text(t.load),
-        from = state_name(words, t.from),
-        to = state_name(words, t.to)
-    )
-}
-
-/// A duration in `words`' language: seconds, minutes and hours by their
-/// symbols (as `format::duration_text` writes them), days and years in
-/// words, each with the plural its number takes.
-#[must_use]
-pub fn duration_words(words: &'static Words, secs: f64) -> String {
-    let text = duration_text(secs);
-    let in_words = |unit: &str, id: &str| {
-        let number = text.strip_suffix(unit)?;
-        let count: f64 = number.parse().ok()?;
-        Some(crate::tr!(words, id, count = count, n = number.to_owned()))
-    };
-    if !secs.is_finite() {
-        return crate::tr!(words, "duration-forever");
+pub fn status_words(words: &'static Words, status: Status) -> String {
+    match status {
+        Status::Running => tr!(words, "run-running"),
+        Status::Diverged { t_secs } => tr!(words, "run-diverged", secs = format!("{t_secs:.3}")),
+        Status::TooStiff { t_secs } => tr!(words, "run-too-stiff", secs = format!("{t_secs:.3}")),
+        Status::TooFast {
+            t_secs,
+            rate_rad_per_s,
+        } => tr!(
+            words,
+            "run-too-fast",
+            secs = format!("{t_secs:.3}"),
+            rate = format!("{rate_rad_per_s:.0}"),
+            most = MAX_TURN_PER_STEP_RAD.to_string()
+        ),
     }
-    in_words(" days", "duration-days")
-        .or_else(|| in_words(" years", "duration-years"))
-        .unwrap_or(text)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::analysis::State;
     use crate::app::action::{Command, FOCUS_KEYS};
     use crate::app::tabs::Tab;
     use crate::model::{KEYS, PresetId};
@@ -122,6 +106,7 @@ mod tests {
 
     #[test]
     fn durations_in_days_and_years_take_their_plurals() {
+        use crate::i18n::duration_words;
         let polish = i18n::words(Language::Polish);
         let english = i18n::words(Language::English);
         assert_eq!(duration_words(english, 86_400.0), "1 day");

@@ -2,6 +2,8 @@
 //! with egui's memory between launches) kept from 75% to 200%, where the
 //! layout holds: a zoom outside, typed or stored, is brought back and said.
 
+use super::speak::Speak as _;
+use crate::tr;
 use std::ops::RangeInclusive;
 
 use eframe::egui;
@@ -29,11 +31,12 @@ pub fn hold(ctx: &egui::Context) -> Option<Notice> {
         1.0
     };
     ctx.set_zoom_factor(held);
-    Some(Notice::warning(format!(
-        "zoom {} is outside {} to {}: set to {} (Ctrl+0: 100%)",
-        percent(zoom),
-        percent(*ZOOM_RANGE.start()),
-        percent(*ZOOM_RANGE.end()),
-        percent(held)
+    Some(Notice::warning(tr!(
+        ctx.words(),
+        "zoom-outside",
+        zoom = percent(zoom),
+        least = percent(*ZOOM_RANGE.start()),
+        most = percent(*ZOOM_RANGE.end()),
+        held = percent(held)
     )))
 }

@@ -40,6 +40,7 @@ where
         branches: data.branches.iter().collect(),
         sweep: &data.sweep,
         present: None,
+        words: ink.words,
     };
     plots::draw(root, &diagram.legend(), &[diagram.plot()], ink)
 }

@@ -84,11 +84,12 @@ impl Analysed {
 }
 
 /// The locus plots of `main` with `overlays` behind it, on paper.
-fn loci<'a>(main: &'a Analysed, overlays: &'a [Analysed]) -> Loci<'a> {
+fn loci<'a>(main: &'a Analysed, overlays: &'a [Analysed], ink: &Ink) -> Loci<'a> {
     Loci {
         main: main.layer(),
         others: overlays.iter().map(Analysed::layer).collect(),
         present: None,
+        words: ink.words,
     }
 }
 
@@ -102,7 +103,7 @@ pub(super) fn draw_plane<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    let loci = loci(main, overlays);
+    let loci = loci(main, overlays, ink);
     plots::draw(root, &loci.paper_legend(true), &[loci.plane()], ink)
 }
 
@@ -116,7 +117,7 @@ pub(super) fn draw_versus_load<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    let loci = loci(main, overlays);
+    let loci = loci(main, overlays, ink);
     let plots = [loci.versus_load(false), loci.versus_load(true)];
     self::plots::draw(root, &loci.paper_legend(false), &plots, ink)
 }

@@ -38,6 +38,7 @@ where
         rows: &data.rows,
         grid: Arc::new(CellGrid::new(&data.spec, &data.rows)),
         now: None,
+        words: ink.words,
     };
     plots::draw(root, &map.legend(), &[map.plot()], ink)
 }

@@ -48,6 +48,7 @@ where
     let paradox = Paradox {
         curves: &data.curves,
         here: data.here.map(|(x, p)| [x, p]),
+        words: ink.words,
     };
     let plot = paradox
         .plot()

@@ -9,6 +9,7 @@
 
 mod language;
 mod pseudo;
+mod terms;
 
 use std::borrow::Cow;
 use std::sync::OnceLock;
@@ -18,6 +19,7 @@ use fluent_bundle::{FluentArgs, FluentResource};
 
 pub use fluent_bundle::FluentValue;
 pub use language::{Language, UnknownLanguage};
+pub use terms::{duration_words, state_name, transition_text};
 
 /// The message file of each language, as shipped: English is the source.
 const SOURCES: [(Language, &str); 6] = [
@@ -69,6 +71,12 @@ pub struct Words {
     /// What the file said that Fluent could not read (none in a shipped
     /// file: the tests read every one).
     problems: Vec<String>,
+}
+
+impl std::fmt::Debug for Words {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Words({})", self.language)
+    }
 }
 
 /// The words of `language`, read once for the life of the process.

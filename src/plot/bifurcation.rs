@@ -7,6 +7,8 @@
 
 use super::spec::{Entry, Ink, Mark, OffView, Plot, Size, Swatch, Ticks, View, Weight};
 use crate::analysis::{Branch, State};
+use crate::i18n::Words;
+use crate::tr;
 
 /// The window's present on the diagram.
 #[derive(Clone, Copy, Debug)]
@@ -30,6 +32,8 @@ pub struct Diagram<'a> {
     pub sweep: &'a [(f64, f64, bool)],
     /// `Some` in the window.
     pub present: Option<Present>,
+    /// The language of the axes and the legend.
+    pub words: &'static Words,
 }
 
 impl Diagram<'_> {
@@ -94,7 +98,7 @@ impl Diagram<'_> {
         if let Some(present) = self.present {
             marks.push(Mark::Vertical {
                 x: present.load,
-                name: "load".to_owned(),
+                name: tr!(self.words, "mark-load"),
                 ink: Ink::LoadLine,
                 weight: Weight::Fine,
                 dashed: false,
@@ -102,7 +106,7 @@ impl Diagram<'_> {
             if let Some(seen) = present.seen_at {
                 marks.push(Mark::Vertical {
                     x: seen,
-                    name: "seen during the ramp".to_owned(),
+                    name: tr!(self.words, "legend-seen-in-ramp"),
                     ink: Ink::Measured,
                     weight: Weight::Fine,
                     dashed: true,
@@ -120,8 +124,8 @@ impl Diagram<'_> {
         }
         Plot {
             id: "post-critical",
-            x_label: "load p = P l/k".to_owned(),
-            y_label: "largest |φ_i| over a cycle (rad)".to_owned(),
+            x_label: tr!(self.words, "axis-load-named"),
+            y_label: tr!(self.words, "axis-largest-angle"),
             x_ticks: Ticks::Plain,
             // A little below zero: the straight column's line along the
             // load axis clear of the plot's edge.
@@ -137,54 +141,58 @@ impl Diagram<'_> {
     /// The legend: what each line and marker drawn is.
     #[must_use]
     pub fn legend(&self) -> Vec<Entry> {
+        let words = self.words;
         let flutter = Ink::State(State::Flutter);
         let runs = self.runs();
         let any = |stable: bool| runs.iter().any(|(_, s)| *s == stable);
         let mut entries = vec![Entry::new(
             Swatch::Line(Ink::Main),
-            "straight column, stable",
+            tr!(words, "legend-straight-stable"),
         )];
         if self.equilibrium.iter().any(|(_, _, stable)| !stable) {
             entries.push(Entry::new(
                 Swatch::Dashed(Ink::Main),
-                "straight column, unstable",
+                tr!(words, "legend-straight-unstable"),
             ));
         }
         if any(true) {
             entries.push(Entry::new(
                 Swatch::Line(flutter.clone()),
-                "stable limit cycle",
+                tr!(words, "legend-stable-cycle"),
             ));
         }
         if any(false) {
             entries.push(Entry::new(
                 Swatch::Dashed(flutter.clone()),
-                "unstable limit cycle",
+                tr!(words, "legend-unstable-cycle"),
             ));
         }
         if !self.branches.is_empty() {
             entries.push(Entry::new(
                 Swatch::Marker(flutter, false),
-                "flutter onset (Hopf point)",
+                tr!(words, "legend-hopf-point"),
             ));
         }
-        for (upward, words) in [(true, "sweep up (a run)"), (false, "sweep down (a run)")] {
+        for (upward, id) in [(true, "legend-sweep-up"), (false, "legend-sweep-down")] {
             if self.sweep.iter().any(|s| s.2 == upward) {
-                entries.push(Entry::new(Swatch::Marker(Ink::Main, upward), words));
+                entries.push(Entry::new(Swatch::Marker(Ink::Main, upward), words.get(id)));
             }
         }
         if let Some(present) = self.present {
-            entries.push(Entry::new(Swatch::Line(Ink::LoadLine), "current load"));
+            entries.push(Entry::new(
+                Swatch::Line(Ink::LoadLine),
+                tr!(words, "legend-current-load"),
+            ));
             if present.seen_at.is_some() {
                 entries.push(Entry::new(
                     Swatch::Dashed(Ink::Measured),
-                    "seen during the ramp",
+                    tr!(words, "legend-seen-in-ramp"),
                 ));
             }
             if present.swing_rad.is_some() {
                 entries.push(Entry::new(
                     Swatch::Marker(Ink::Now, true),
-                    "this run's largest angle, last period",
+                    tr!(words, "legend-largest-angle"),
                 ));
             }
         }

@@ -7,39 +7,50 @@
 use super::spec::{Ink, Mark, Plot};
 use crate::analysis::{RELATIVE_TOLERANCE, State};
 use crate::format::number_text;
+use crate::i18n::{Words, state_name};
+use crate::tr;
 
 /// `plot` in a few sentences.
 #[must_use]
-pub fn describe(plot: &Plot) -> String {
-    let mut sentences = vec![format!("{} against {}", plot.y_label, plot.x_label)];
+pub fn describe(plot: &Plot, words: &'static Words) -> String {
+    let mut sentences = vec![tr!(
+        words,
+        "describe-against",
+        y = plot.y_label.clone(),
+        x = plot.x_label.clone()
+    )];
     let ranges: Vec<String> = plot
         .marks
         .iter()
         .filter_map(|mark| match mark {
-            Mark::Range { from, to, state } => Some(format!(
-                "{} from {} to {}",
-                state.name(),
-                number_text(*from),
-                number_text(*to)
+            Mark::Range { from, to, state } => Some(tr!(
+                words,
+                "describe-range",
+                state = state_name(words, *state),
+                from = number_text(*from),
+                to = number_text(*to)
             )),
             _ => None,
         })
         .collect();
     if !ranges.is_empty() {
-        sentences.push(format!("ranges: {}", ranges.join("; ")));
+        sentences.push(tr!(words, "describe-ranges", ranges = ranges.join("; ")));
     }
     let marked: Vec<String> = plot
         .marks
         .iter()
         .filter_map(|mark| match mark {
-            Mark::Vertical { x, name, .. } if !name.is_empty() => {
-                Some(format!("{name} at {}", number_text(*x)))
-            }
+            Mark::Vertical { x, name, .. } if !name.is_empty() => Some(tr!(
+                words,
+                "describe-mark",
+                name = name.clone(),
+                x = number_text(*x)
+            )),
             _ => None,
         })
         .collect();
     if !marked.is_empty() {
-        sentences.push(format!("marked: {}", marked.join("; ")));
+        sentences.push(tr!(words, "describe-marked", marks = marked.join("; ")));
     }
     let curves = plot
         .marks
@@ -47,15 +58,12 @@ pub fn describe(plot: &Plot) -> String {
         .filter(|mark| matches!(mark, Mark::Line { .. }))
         .count();
     if curves > 0 {
-        sentences.push(format!(
-            "{curves} {}",
-            if curves == 1 { "curve" } else { "curves" }
-        ));
+        sentences.push(tr!(words, "describe-curves", count = curves));
     }
-    if let Some(now) = present(plot) {
+    if let Some(now) = present(plot, words) {
         sentences.push(now);
     }
-    if let Some(cells) = cell_shares(plot) {
+    if let Some(cells) = cell_shares(plot, words) {
         sentences.push(cells);
     }
     sentences.join(". ")
@@ -63,7 +71,7 @@ pub fn describe(plot: &Plot) -> String {
 
 /// The present's eigenvalues on a plane of Re λ (x) and Im λ (y): how many
 /// lie right of the imaginary axis, growing.
-fn present(plot: &Plot) -> Option<String> {
+fn present(plot: &Plot, words: &'static Words) -> Option<String> {
     let points: Vec<[f64; 2]> = plot
         .marks
         .iter()
@@ -77,7 +85,7 @@ fn present(plot: &Plot) -> Option<String> {
         })
         .flatten()
         .collect();
-    if points.is_empty() || !plot.x_label.starts_with("Re") {
+    if points.is_empty() || plot.id != "root locus" {
         return None;
     }
     // Rounding leaves an undamped column's pairs a hair off the axis: the
@@ -90,24 +98,25 @@ fn present(plot: &Plot) -> Option<String> {
         .filter(|p| p[0] > tolerance && p[1].abs() > tolerance)
         .count();
     Some(match right {
-        0 => format!(
-            "at the present load all {} eigenvalues lie left of the imaginary axis: a kick dies away",
-            points.len()
+        0 => tr!(words, "describe-now-stable", count = points.len()),
+        _ if oscillating > 0 => tr!(
+            words,
+            "describe-now-flutter",
+            right = right,
+            count = points.len(),
+            oscillating = oscillating
         ),
-        _ => format!(
-            "at the present load {right} of {} eigenvalues lie right of the imaginary axis, {oscillating} of them off the real axis: {}",
-            points.len(),
-            if oscillating > 0 {
-                "a swing grows (flutter)"
-            } else {
-                "the column bends away (divergence)"
-            }
+        _ => tr!(
+            words,
+            "describe-now-divergence",
+            right = right,
+            count = points.len()
         ),
     })
 }
 
 /// A map's share of each state, in per cent of its cells.
-fn cell_shares(plot: &Plot) -> Option<String> {
+fn cell_shares(plot: &Plot, words: &'static Words) -> Option<String> {
     let grid = plot.marks.iter().find_map(|mark| match mark {
         Mark::Cells { grid, .. } => Some(grid),
         _ => None,
@@ -121,24 +130,30 @@ fn cell_shares(plot: &Plot) -> Option<String> {
             .count();
         100 * count / total
     };
-    Some(format!(
-        "a map of {} by {} cells: stable {}%, flutter {}%, divergence {}%",
-        grid.columns,
-        grid.rows,
-        share(State::Stable),
-        share(State::Flutter),
-        share(State::Divergence)
+    Some(tr!(
+        words,
+        "describe-map",
+        columns = grid.columns,
+        rows = grid.rows,
+        stable = share(State::Stable),
+        flutter = share(State::Flutter),
+        divergence = share(State::Divergence)
     ))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::i18n::{Language, words};
     use crate::plot::spec::{OffView, Size, Ticks, View, Weight};
+
+    fn english() -> &'static Words {
+        words(Language::English)
+    }
 
     fn plane(now: Vec<[f64; 2]>) -> Plot {
         Plot {
-            id: "test",
+            id: "root locus",
             x_label: "Re λ (1/s)".to_owned(),
             y_label: "Im λ (rad/s)".to_owned(),
             x_ticks: Ticks::Plain,
@@ -164,14 +179,17 @@ mod tests {
 
     #[test]
     fn the_present_is_counted_on_its_side_of_the_axis() {
-        let stable = describe(&plane(vec![[-0.1, 1.0], [-0.1, -1.0]]));
+        let stable = describe(&plane(vec![[-0.1, 1.0], [-0.1, -1.0]]), english());
         assert!(stable.contains("all 2 eigenvalues lie left"), "{stable}");
-        let flutter = describe(&plane(vec![[0.1, 1.0], [0.1, -1.0], [-2.0, 0.0]]));
+        let flutter = describe(
+            &plane(vec![[0.1, 1.0], [0.1, -1.0], [-2.0, 0.0]]),
+            english(),
+        );
         assert!(
             flutter.contains("2 of 3 eigenvalues lie right") && flutter.contains("flutter"),
             "{flutter}"
         );
-        let divergence = describe(&plane(vec![[0.3, 0.0], [-0.3, 0.0]]));
+        let divergence = describe(&plane(vec![[0.3, 0.0], [-0.3, 0.0]]), english());
         assert!(divergence.contains("divergence"), "{divergence}");
         assert!(divergence.starts_with("Im λ (rad/s) against Re λ (1/s)"));
     }

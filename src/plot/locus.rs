@@ -10,6 +10,8 @@ use super::spec::{
 use super::view::{deciding_extent, versus_load_extent};
 use crate::analysis::{C64, Locus, State, Transition};
 use crate::format::{load_text, number_text};
+use crate::i18n::{Words, state_name, transition_text};
+use crate::tr;
 
 /// One model's locus and what was found on it.
 #[derive(Clone, Copy, Debug)]
@@ -40,12 +42,14 @@ pub struct Loci<'a> {
     pub others: Vec<Layer<'a>>,
     /// `Some` in the window, `None` on paper.
     pub present: Option<Present<'a>>,
+    /// The language of the axes and the legends.
+    pub words: &'static Words,
 }
 
-/// The axes' words.
+/// The plots' ids (their names for the views that keep state per plot,
+/// in no language).
 const RE: &str = "Re λ (1/s)";
 const IM: &str = "Im λ (rad/s)";
-const LOAD: &str = "p = P l/k";
 
 /// Branch segments are drawn in this many colour bands along the load.
 const COLOR_BANDS: usize = 24;
@@ -123,18 +127,19 @@ impl Loci<'_> {
                     .fold(0.0, f64::min);
                 FarLeft {
                     x: furthest,
-                    note: format!(
-                        "{}: eigenvalues down to Re λ = {} 1/s (fast decaying modes) lie left of the view, which holds those that decide stability",
-                        layer.name,
-                        number_text(furthest)
+                    note: tr!(
+                        self.words,
+                        "locus-far-left",
+                        name = layer.name,
+                        re = number_text(furthest)
                     ),
                 }
             })
             .collect();
         Plot {
             id: "root locus",
-            x_label: RE.to_owned(),
-            y_label: IM.to_owned(),
+            x_label: tr!(self.words, "axis-re"),
+            y_label: tr!(self.words, "axis-im"),
             x_ticks: Ticks::Plain,
             view: View::Equal { extent },
             marks,
@@ -328,17 +333,21 @@ impl Loci<'_> {
         if let Some(present) = self.present {
             marks.push(Mark::Vertical {
                 x: present.load,
-                name: "load".to_owned(),
+                name: tr!(self.words, "mark-load"),
                 ink: Ink::LoadLine,
                 weight: Weight::Regular,
                 dashed: false,
             });
         }
-        let label = if imaginary { IM } else { RE };
+        let (id, label) = if imaginary {
+            (IM, "axis-im")
+        } else {
+            (RE, "axis-re")
+        };
         Plot {
-            id: label,
-            x_label: LOAD.to_owned(),
-            y_label: label.to_owned(),
+            id,
+            x_label: tr!(self.words, "axis-load"),
+            y_label: self.words.get(label).into_owned(),
             x_ticks: Ticks::Plain,
             view: View::Ranges {
                 x: (p0, p1),
@@ -353,43 +362,48 @@ impl Loci<'_> {
     /// lines are, and the overlay's own critical loads.
     #[must_use]
     pub fn window_legend(&self) -> Vec<Entry> {
+        let words = self.words;
         let (min, max) = self.load_range();
         let scale = (0..8).map(|i| Ink::Along(f64::from(i) / 7.0)).collect();
         let mut entries = vec![
             Entry::new(
                 Swatch::Scale(scale),
-                format!(
-                    "branch colour: the load, p = {} to {}",
-                    number_text(min),
-                    number_text(max)
+                tr!(
+                    words,
+                    "legend-branch-colour",
+                    from = number_text(min),
+                    to = number_text(max)
                 ),
             ),
             Entry::new(
                 Swatch::Marker(Ink::Now, true),
-                "eigenvalues at the current load",
+                tr!(words, "legend-eigenvalues-now"),
             ),
         ];
         if self.present.is_some_and(|p| p.measured.is_some()) {
             entries.push(Entry::new(
                 Swatch::Marker(Ink::Measured, false),
-                "measured from the run",
+                tr!(words, "legend-measured"),
             ));
         }
-        entries.push(Entry::new(Swatch::Line(Ink::LoadLine), "current load"));
+        entries.push(Entry::new(
+            Swatch::Line(Ink::LoadLine),
+            tr!(words, "legend-current-load"),
+        ));
         for other in &self.others {
             let loads = if other.transitions.is_empty() {
-                "no change of stability up to the slider's end".to_owned()
+                tr!(words, "legend-overlay-no-change")
             } else {
                 other
                     .transitions
                     .iter()
-                    .map(ToString::to_string)
+                    .map(|t| transition_text(words, t))
                     .collect::<Vec<_>>()
                     .join(";  ")
             };
             entries.push(Entry::new(
                 Swatch::Line(Ink::Overlay),
-                format!("overlay {}: {loads}", other.name),
+                tr!(words, "legend-overlay", name = other.name, loads = loads),
             ));
         }
         entries
@@ -422,14 +436,16 @@ impl Loci<'_> {
             ));
         }
         let transitions = self.main.transitions;
+        let words = self.words;
         entries.extend(transitions.iter().take(MOST_LEGEND_LOADS).map(|t| {
             Entry::new(
                 mark(Ink::State(t.to)),
-                format!(
-                    "p = {}: {} to {}",
-                    load_text(t.load),
-                    t.from.name(),
-                    t.to.name()
+                tr!(
+                    words,
+                    "legend-transition",
+                    load = load_text(t.load),
+                    from = state_name(words, t.from),
+                    to = state_name(words, t.to)
                 ),
             )
         }));
@@ -437,13 +453,13 @@ impl Loci<'_> {
         if more > 0 {
             entries.push(Entry::new(
                 mark(Ink::Main),
-                format!("{more} more critical loads (zieglerlab critical lists them)"),
+                tr!(words, "legend-more-loads", count = more),
             ));
         }
         if !plane {
             for state in [State::Stable, State::Flutter, State::Divergence] {
                 if self.main.ranges.iter().any(|r| r.2 == state) {
-                    entries.push(Entry::new(Swatch::Fill(state), state.name()));
+                    entries.push(Entry::new(Swatch::Fill(state), state_name(words, state)));
                 }
             }
         }
@@ -526,6 +542,7 @@ mod tests {
             main: layer,
             others: Vec::new(),
             present: None,
+            words: crate::i18n::words(crate::i18n::Language::English),
         };
         let window = Loci {
             present: Some(Present {

@@ -3,6 +3,8 @@
 //! as lines, on axes of the load and the second parameter; in the window
 //! the current model's point.
 
+use crate::i18n::{Words, state_name};
+use crate::tr;
 use std::sync::Arc;
 
 use super::map_words;
@@ -85,17 +87,19 @@ pub struct StabilityMap<'a> {
     pub grid: Arc<CellGrid>,
     /// The current model's point `[load, value]` (the window's).
     pub now: Option<[f64; 2]>,
+    /// The language of the axes and the key.
+    pub words: &'static Words,
 }
 
 /// The second axis's words: its name and unit.
 #[must_use]
-pub fn axis_words(axis: &Axis) -> String {
+pub fn axis_words(axis: &Axis, words: &'static Words) -> String {
     match axis {
         Axis::Key(key) if !key.spec().unit.is_empty() => {
             format!("{} ({})", key.name(), key.spec().unit)
         }
-        Axis::DampingLevel => "damping g2 = c2 / √(k m l²)".to_owned(),
-        Axis::MassRatio => "mass ratio m1 / (mass beyond joint A)".to_owned(),
+        Axis::DampingLevel => tr!(words, "axis-damping-level"),
+        Axis::MassRatio => tr!(words, "axis-mass-ratio"),
         _ => axis.name().to_owned(),
     }
 }
@@ -158,7 +162,7 @@ impl StabilityMap<'_> {
                 .into_iter()
                 .map(|(at, state)| Mark::Label {
                     at,
-                    text: state.name().to_owned(),
+                    text: state_name(self.words, state),
                 }),
         );
         if let Some(now) = self.now {
@@ -172,8 +176,8 @@ impl StabilityMap<'_> {
         }
         Plot {
             id: "stability map",
-            x_label: "p = P l/k".to_owned(),
-            y_label: axis_words(&self.spec.axis),
+            x_label: tr!(self.words, "axis-load"),
+            y_label: axis_words(&self.spec.axis, self.words),
             x_ticks: Ticks::Plain,
             view: View::Ranges { x, y },
             marks,
@@ -189,22 +193,34 @@ impl StabilityMap<'_> {
         let mut entries: Vec<Entry> = [State::Stable, State::Flutter, State::Divergence]
             .into_iter()
             .filter(|&state| cells.iter().flatten().any(|c| c.0 == state))
-            .map(|state| Entry::new(Swatch::Scale(vec![Ink::Cell(state, 1.0)]), state.name()))
+            .map(|state| {
+                Entry::new(
+                    Swatch::Scale(vec![Ink::Cell(state, 1.0)]),
+                    state_name(self.words, state),
+                )
+            })
             .collect();
         if self.rows.iter().flatten().any(Result::is_err) {
-            entries.push(Entry::new(Swatch::Scale(vec![Ink::NoData]), "no analysis"));
+            entries.push(Entry::new(
+                Swatch::Scale(vec![Ink::NoData]),
+                tr!(self.words, "legend-no-analysis"),
+            ));
         }
         entries.push(Entry::new(
             Swatch::Scale(vec![
                 Ink::Cell(State::Flutter, 0.0),
                 Ink::Cell(State::Flutter, 1.0),
             ]),
-            format!(
-                "stronger: faster growth or decay (strongest: {} 1/s)",
-                number_text(significant(self.grid.largest_per_s))
+            tr!(
+                self.words,
+                "legend-stronger",
+                largest = number_text(significant(self.grid.largest_per_s))
             ),
         ));
-        entries.push(Entry::new(Swatch::Line(Ink::Main), "critical loads"));
+        entries.push(Entry::new(
+            Swatch::Line(Ink::Main),
+            tr!(self.words, "legend-critical-loads"),
+        ));
         if let Some(now) = self.now {
             entries.push(Entry::new(
                 Swatch::Marker(Ink::Now, true),
@@ -217,31 +233,37 @@ impl StabilityMap<'_> {
     /// The present's entry in the key: "now", or why its dot is not on the
     /// map (the column lies off the map's axes).
     fn now_words(&self, [load, value]: [f64; 2]) -> String {
+        let words = self.words;
         let ((p0, p1), (y0, y1)) = (self.spec.load_range, self.spec.axis_range);
-        let beyond = |x: f64, (lo, hi): (f64, f64)| {
-            if x < lo {
-                Some(format!("below {}", number_text(lo)))
+        let beyond = |name: &str, x: f64, (lo, hi): (f64, f64)| {
+            let (id, bound) = if x < lo {
+                ("legend-now-below", lo)
             } else if x > hi {
-                Some(format!("above {}", number_text(hi)))
+                ("legend-now-above", hi)
             } else {
-                None
-            }
+                return None;
+            };
+            Some(words.with(
+                id,
+                &[
+                    ("name", name.to_owned().into()),
+                    ("value", number_text(x).into()),
+                    ("bound", number_text(bound).into()),
+                ],
+            ))
         };
         let axis = self.spec.axis.name();
         if !value.is_finite() {
-            return format!("now: not on the map ({axis} has no value for this column)");
+            return tr!(words, "legend-now-no-value", axis = axis);
         }
-        let off: Vec<String> = [
-            beyond(load, (p0, p1)).map(|why| format!("p = {} is {why}", number_text(load))),
-            beyond(value, (y0, y1)).map(|why| format!("{axis} = {} is {why}", number_text(value))),
-        ]
-        .into_iter()
-        .flatten()
-        .collect();
+        let off: Vec<String> = [beyond("p", load, (p0, p1)), beyond(axis, value, (y0, y1))]
+            .into_iter()
+            .flatten()
+            .collect();
         if off.is_empty() {
-            "now".to_owned()
+            tr!(words, "legend-now")
         } else {
-            format!("now: off the map ({})", off.join(", "))
+            tr!(words, "legend-now-off", why = off.join(", "))
         }
     }
 }
@@ -306,6 +328,7 @@ mod tests {
             rows: &rows,
             grid: Arc::new(grid),
             now: None,
+            words: crate::i18n::words(crate::i18n::Language::English),
         };
         let plot = map.plot();
         let View::Ranges { x, y } = plot.view else {

@@ -5,6 +5,8 @@
 use super::spec::{Entry, Ink, Mark, OffView, Plot, Size, Swatch, Ticks, View, Weight};
 use crate::analysis::Curves;
 use crate::format::load_text;
+use crate::i18n::Words;
+use crate::tr;
 
 /// The plot's height over its highest point.
 const HEADROOM: f64 = 1.1;
@@ -18,6 +20,8 @@ const SIDE_ROOM: f64 = 0.02;
 pub struct Paradox<'a> {
     pub curves: &'a Curves,
     pub here: Option<[f64; 2]>,
+    /// The language of the axes and the legend.
+    pub words: &'static Words,
 }
 
 impl Paradox<'_> {
@@ -71,8 +75,8 @@ impl Paradox<'_> {
         }
         Some(Plot {
             id: "paradox",
-            x_label: format!("{} (log scale)", curves.x_label),
-            y_label: "first critical load p".to_owned(),
+            x_label: tr!(self.words, "axis-log-scale", axis = curves.x_label),
+            y_label: tr!(self.words, "axis-first-critical-load"),
             x_ticks: Ticks::Decades,
             view: View::Ranges {
                 x: (x0 - SIDE_ROOM * (x1 - x0), x1 + SIDE_ROOM * (x1 - x0)),
@@ -101,7 +105,7 @@ impl Paradox<'_> {
         if let Some([_, p]) = self.here {
             entries.push(Entry::new(
                 Swatch::Marker(Ink::Now, true),
-                format!("this model: p = {}", load_text(p)),
+                tr!(self.words, "legend-this-model", load = load_text(p)),
             ));
         }
         entries

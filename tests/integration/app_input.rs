@@ -370,7 +370,10 @@ fn pictures_carry_no_hints_for_the_hand() {
         harness.run();
         [
             harness
-                .query_by_label_contains(zieglerlab::app::VIEW_HINT)
+                .query_by_label_contains(
+                    &zieglerlab::i18n::words(zieglerlab::i18n::Language::English)
+                        .get(zieglerlab::app::VIEW_HINT),
+                )
                 .is_some(),
             harness.query_by_label("fit").is_some(),
             harness

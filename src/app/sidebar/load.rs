@@ -6,11 +6,12 @@ use eframe::egui::{self, RichText};
 use super::number_field::{NumberFields, refusal_ui};
 use crate::app::View;
 use crate::app::action::Actions;
-use crate::app::speak::{Speak as _, state_name, transition_text};
+use crate::app::speak::Speak as _;
 use crate::app::state::{AppState, VISIBLE_FRACTION};
 use crate::app::theme::Theme;
 use crate::format::{load_text, number_text};
 use crate::i18n::Words;
+use crate::i18n::{state_name, transition_text};
 use crate::model::Key;
 use crate::tr;
 

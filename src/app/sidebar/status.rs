@@ -6,11 +6,12 @@ use eframe::egui::{self, RichText};
 use crate::analysis::{C64, Hopf, HopfKind, NoHopf, Stability, State, classify};
 use crate::app::View;
 use crate::app::action::Actions;
-use crate::app::speak::{Speak as _, duration_words, state_name};
+use crate::app::speak::Speak as _;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::{load_text, measured_text, number_text, percent_text, rate_text, secs_text};
 use crate::i18n::Words;
+use crate::i18n::{duration_words, state_name};
 use crate::tr;
 
 /// An e-folding time beyond this is a growth nobody sees in a lesson: even

@@ -5,31 +5,12 @@ use eframe::egui;
 use crate::app::View;
 use crate::app::action::{Action, Actions, Command};
 use crate::app::speak::Speak as _;
+use crate::app::speak::status_words;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::number_text;
-use crate::i18n::Words;
-use crate::sim::{MAX_TURN_PER_STEP_RAD, SPEED_RANGE, Status};
+use crate::sim::{SPEED_RANGE, Status};
 use crate::tr;
-
-/// Where the run is, in words.
-fn status_words(words: &'static Words, status: Status) -> String {
-    match status {
-        Status::Running => tr!(words, "run-running"),
-        Status::Diverged { t_secs } => tr!(words, "run-diverged", secs = format!("{t_secs:.3}")),
-        Status::TooStiff { t_secs } => tr!(words, "run-too-stiff", secs = format!("{t_secs:.3}")),
-        Status::TooFast {
-            t_secs,
-            rate_rad_per_s,
-        } => tr!(
-            words,
-            "run-too-fast",
-            secs = format!("{t_secs:.3}"),
-            rate = format!("{rate_rad_per_s:.0}"),
-            most = MAX_TURN_PER_STEP_RAD.to_string()
-        ),
-    }
-}
 
 /// The named speeds, as in classroom simulations: simulated seconds per
 /// wall-clock second; Normal is real time. Each is named by its message

@@ -147,5 +147,6 @@ fn loci<'a>(state: &'a AppState, current: &'a [C64], overlay: Option<&'a str>) -
             eigenvalues: current,
             measured: state.measured(),
         }),
+        words: state.words(),
     })
 }

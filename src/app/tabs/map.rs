@@ -2,6 +2,7 @@
 //! off the UI thread on every core (coarse first), drawn as coloured cells
 //! with the boundaries as curves; a click sets both parameters.
 
+use crate::app::speak::Speak as _;
 use std::sync::Arc;
 use std::sync::atomic::AtomicUsize;
 
@@ -294,6 +295,7 @@ impl MapPanel {
             rows: &job.rows,
             grid,
             now: Some([model.load_p(), spec.axis.get(model)]),
+            words: ui.words(),
         };
         legend_ui(ui, &map.legend(), theme);
         if !for_picture {

@@ -1,6 +1,9 @@
 //! The values of the stability map's cell under the pointer (its readout),
 //! and where that cell is.
 
+use crate::app::speak::Speak as _;
+use crate::i18n::state_name;
+use crate::tr;
 use eframe::egui;
 
 use crate::analysis::{MapSpec, RowResult, State};
@@ -57,18 +60,23 @@ pub fn cell_at(
 pub fn readout_ui(ui: &mut egui::Ui, readout: Option<&Readout>, axis_name: &str, theme: &Theme) {
     match readout {
         Some(cell) => {
+            let words = ui.words();
             ui.horizontal(|ui| {
                 ui.label(format!(
                     "p = {}, {axis_name} = {}:",
                     number_text(cell.load),
                     number_text(cell.value)
                 ));
-                ui.colored_label(theme.state_color(cell.state), cell.state.name());
-                ui.label(format!("growth rate {} 1/s", rate_text(cell.growth_per_s)));
+                ui.colored_label(theme.state_color(cell.state), state_name(words, cell.state));
+                ui.label(tr!(
+                    words,
+                    "map-readout-growth",
+                    rate = rate_text(cell.growth_per_s)
+                ));
             });
         }
         None => {
-            ui.weak("point at the map to read a cell; click to take its load and parameter");
+            ui.weak(tr!(ui.words(), "map-readout-hint"));
         }
     }
 }

@@ -4,6 +4,7 @@
 //! at several band speeds), next to the undamped value, computed off the UI
 //! thread.
 
+use crate::app::speak::Speak as _;
 use eframe::egui;
 
 use super::{TabSpec, TabView, save_buttons};
@@ -163,7 +164,11 @@ impl ParadoxPanel {
         self.fit
             .bar_ui(ui, for_picture, |ui| save_buttons(ui, None, actions));
         let refit = self.fit.refit((self.generation, *curves_key));
-        let paradox = Paradox { curves, here };
+        let paradox = Paradox {
+            curves,
+            here,
+            words: ui.words(),
+        };
         legend_ui(ui, &paradox.legend(), theme);
         match paradox.plot() {
             Some(plot) => {

@@ -153,6 +153,7 @@ impl View for PostCriticalPanel {
                 seen_at: state.ramp().and_then(|ramp| ramp.seen_at_p),
                 swing_rad: swing,
             }),
+            words: state.words(),
         };
         legend_ui(ui, &diagram.legend(), theme);
         plot_ui(ui, &diagram.plot(), refit, theme);

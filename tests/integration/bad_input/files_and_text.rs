@@ -132,6 +132,7 @@ fn figures_take_the_loads_and_the_range_rules_of_critical() {
         height_mm: 93.5,
         font_pt: 8.0,
         dpi: 150.0,
+        ..Page::default()
     };
     render(&content, &page, Format::Png).expect("the legend fits");
     let refused = analyse("beck", &beck, 0.0, 1e300).unwrap_err().to_string();
@@ -180,6 +181,7 @@ fn a_page_too_small_for_its_legend_is_refused_with_one_that_fits() {
         height_mm: 30.0,
         font_pt: 8.0,
         dpi: 300.0,
+        ..Page::default()
     };
     let why = render(&content, &small, Format::Svg)
         .unwrap_err()
