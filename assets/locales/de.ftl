@@ -482,3 +482,66 @@ histories-band-power = Leistung des Bandes
 histories-rod-2 = Stab 2
 zoom-outside = Zoom { $zoom } liegt außerhalb von { $least } bis { $most }: auf { $held } gesetzt (Strg+0: 100%)
 plot-name = Diagramm: { $y } über { $x }
+
+## The tabs' controls and captions, and the record menu
+
+locus-computing = Die Wurzelortskurve dieser Parameter wird berechnet...
+locus-none = Keine Wurzelortskurve für diese Parameter.
+locus-none-why = Keine Wurzelortskurve für diese Parameter: { $why }.
+locus-title = Wurzelortskurve, p = { $from } bis { $to }
+map-rows = Zeilen { $done } von { $total }
+map-grey-rows = graue Zeilen haben keine Analyse: { $why }
+map-axis = Last p über
+    .tooltip = der zweite Parameter der Karte (sein Bereich unten startet die Karte neu)
+map-from = von
+    .name = Kartenbereich von
+    .tooltip = wo der zweite Parameter beginnt
+map-to = bis
+    .name = Kartenbereich bis
+    .tooltip = wo der zweite Parameter endet
+paradox-computing = die Flatterlasten werden berechnet, während die Dämpfung verschwindet ...
+paradox-joints = Die Flatterlast mit Gelenkdämpfern c1 = (c1/c2) c2, wenn das Dämpfungsniveau g2 = c2 / sqrt(k m l^2) gegen null geht: Der Grenzwert hängt vom Verhältnis ab und liegt unter der ungedämpften Last (Ziegler-Paradoxon).
+paradox-external = Die Flatterlast mit gleichen Gelenkdämpfern c1 = c2 = c (innere Dämpfung) und dem Widerstand c_ext = (c_ext l^3 / c) c / l^3 längs der Stäbe (äußere Dämpfung), wenn das Niveau g2 = c / sqrt(k m l^2) gegen null geht: Auch äußere Dämpfung destabilisiert, und der Grenzwert hängt vom Verhältnis ab.
+paradox-no-extent = die Kurven haben keine Ausdehnung entlang des Verhältnisses
+paradox-kind = verschwindende Dämpfung:
+paradox-kind-joints = Gelenkdämpfer
+    .tooltip = die Gelenkdämpfer c1 und c2 im Verhältnis c1/c2
+paradox-kind-external = äußerer Widerstand und innere
+    .tooltip = Widerstand c_ext längs der Stäbe (äußere) und gleiche Gelenkdämpfer c1 = c2 = c (innere) im Verhältnis c_ext l^3 / c
+paradox-roller = Die Last, bei der die Säule mit Rolle zuerst ihre Stabilität verliert, über der Masse der Rolle, für drei Bandgeschwindigkeiten (die Gleitdämpfung ist mu R / V).
+paradox-roller-falling = fallen gegen null, wenn nu -> 0
+paradox-roller-flat = fallen über diesen Bereich nicht gegen null
+paradox-roller-massless = ; die masselose Rolle (die ideale Folgelast) verliert ihre Stabilität bei p = { $load }
+paradox-roller-caption = { $intro } Bei der kleinsten gezeigten Masse, nu = { $nu }, stehen die Kurven bei { $at }, { $trend }{ $massless }.
+record-next = die nächsten
+record-secs = s nach
+    .name = Sekunden der Aufnahme
+    .tooltip = Sekunden des Fensters, die aufgenommen werden (1 bis 60)
+record-folder =
+    .name = Ordner der Aufnahme
+    .tooltip = der Ordner, in den das GIF kommt
+record-choosing = wird gewählt...
+record-choose = wählen...
+    .tooltip = den Ordner im Dialog der Arbeitsumgebung wählen
+    .title = zieglerlab: der Ordner für Aufnahmen
+record-start = aufnehmen
+    .tooltip = aufnehmen, was das Fenster zeigt, 10 Bilder pro Sekunde, als GIF
+    .no-folder = den Ordner gibt es nicht
+
+## A lesson's revealed results
+
+reveal-never = die Säule verliert ihre Stabilität bis p = { $load } nicht
+reveal-theory = die Theorie: instabil ab p = { $load }
+reveal-seen = ; die Bewegung zeigte sich bei p = { $load }
+reveal-predicted = Deine Vorhersage war p = { $load };{" "}
+reveal-first-instability = { $predicted }{ $theory }{ $seen }.
+reveal-right = Richtig: Du hast „{ $chosen }“ gewählt, die Antwort.
+reveal-wrong = Nicht diese: Du hast „{ $chosen }“ gewählt; die Antwort ist „{ $answer }“.
+reveal-answer = Die Antwort: „{ $answer }“.
+reveal-no-answer = die Theorie hat bei dieser Last keine Antwort
+reveal-period = , eine Periode von { $secs } s
+reveal-flutter = Flattern: Das Schwingen verdoppelt sich alle { $secs } s{ $period }
+reveal-divergence = Divergenz: Die Neigung verdoppelt sich alle { $secs } s
+reveal-stable = stabil: Ein Stoß halbiert sich alle { $secs } s{ $period }
+reveal-undamped = stabil: Ein Stoß wächst weder, noch klingt er ab{ $period }
+reveal-here = Die Theorie bei p = { $load }: { $how }.

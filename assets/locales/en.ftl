@@ -478,3 +478,66 @@ histories-band-power = power from the band
 histories-rod-2 = rod 2
 zoom-outside = zoom { $zoom } is outside { $least } to { $most }: set to { $held } (Ctrl+0: 100%)
 plot-name = plot: { $y } against { $x }
+
+## The tabs' controls and captions, and the record menu
+
+locus-computing = Computing the root locus of these parameters...
+locus-none = No root locus for these parameters.
+locus-none-why = No root locus for these parameters: { $why }.
+locus-title = root locus, p = { $from } to { $to }
+map-rows = rows { $done } of { $total }
+map-grey-rows = grey rows have no analysis: { $why }
+map-axis = load p against
+    .tooltip = the map's second parameter (its range below restarts the map)
+map-from = from
+    .name = map range from
+    .tooltip = where the second parameter starts
+map-to = to
+    .name = map range to
+    .tooltip = where the second parameter ends
+paradox-computing = computing the flutter loads as the damping vanishes ...
+paradox-joints = The flutter load with joint dampers c1 = (c1/c2) c2 as the damping level g2 = c2 / sqrt(k m l^2) goes to zero: the limit depends on the ratio and lies below the undamped load (Ziegler's paradox).
+paradox-external = The flutter load with equal joint dampers c1 = c2 = c (internal damping) and drag c_ext = (c_ext l^3 / c) c / l^3 along the rods (external damping) as the level g2 = c / sqrt(k m l^2) goes to zero: external damping destabilizes too, and the limit depends on the ratio.
+paradox-no-extent = the curves have no extent along the ratio
+paradox-kind = damping that vanishes:
+paradox-kind-joints = joint dampers
+    .tooltip = the joint dampers c1 and c2 in the ratio c1/c2
+paradox-kind-external = external drag and internal
+    .tooltip = drag c_ext along the rods (external) and equal joint dampers c1 = c2 = c (internal) in the ratio c_ext l^3 / c
+paradox-roller = The load at which the roller column first loses stability, against the roller's mass, for three band speeds (the slip damping is mu R / V).
+paradox-roller-falling = falling toward zero as nu -> 0
+paradox-roller-flat = not falling toward zero over this range
+paradox-roller-massless = ; the massless roller (the ideal follower) loses stability at p = { $load }
+paradox-roller-caption = { $intro } At the smallest mass shown, nu = { $nu }, the curves stand at { $at }, { $trend }{ $massless }.
+record-next = the next
+record-secs = s into
+    .name = record seconds
+    .tooltip = seconds of the window to record (1 to 60)
+record-folder =
+    .name = record folder
+    .tooltip = the folder the GIF goes in
+record-choosing = choosing...
+record-choose = choose...
+    .tooltip = choose the folder in the desktop's dialog
+    .title = zieglerlab: the folder for recordings
+record-start = record
+    .tooltip = record what the window shows, 10 frames a second, to a GIF
+    .no-folder = the folder does not exist
+
+## A lesson's revealed results
+
+reveal-never = the column does not lose stability up to p = { $load }
+reveal-theory = the theory: unstable from p = { $load }
+reveal-seen = ; the motion showed at p = { $load }
+reveal-predicted = You predicted p = { $load };{" "}
+reveal-first-instability = { $predicted }{ $theory }{ $seen }.
+reveal-right = Right: you chose "{ $chosen }", the answer.
+reveal-wrong = Not this one: you chose "{ $chosen }"; the answer is "{ $answer }".
+reveal-answer = The answer: "{ $answer }".
+reveal-no-answer = the theory has no answer at this load
+reveal-period = , a period of { $secs } s
+reveal-flutter = flutter: the swing doubles every { $secs } s{ $period }
+reveal-divergence = divergence: the lean doubles every { $secs } s
+reveal-stable = stable: a kick halves every { $secs } s{ $period }
+reveal-undamped = stable: a kick neither grows nor dies away{ $period }
+reveal-here = The theory at p = { $load }: { $how }.

@@ -482,3 +482,66 @@ histories-band-power = potencia de la banda
 histories-rod-2 = barra 2
 zoom-outside = el zoom { $zoom } está fuera de { $least } a { $most }: fijado en { $held } (Ctrl+0: 100%)
 plot-name = gráfico: { $y } frente a { $x }
+
+## The tabs' controls and captions, and the record menu
+
+locus-computing = Calculando el lugar de las raíces de estos parámetros...
+locus-none = No hay lugar de las raíces para estos parámetros.
+locus-none-why = No hay lugar de las raíces para estos parámetros: { $why }.
+locus-title = lugar de las raíces, p = de { $from } a { $to }
+map-rows = filas { $done } de { $total }
+map-grey-rows = las filas grises no tienen análisis: { $why }
+map-axis = carga p frente a
+    .tooltip = el segundo parámetro del mapa (su intervalo de abajo reinicia el mapa)
+map-from = de
+    .name = intervalo del mapa desde
+    .tooltip = dónde empieza el segundo parámetro
+map-to = a
+    .name = intervalo del mapa hasta
+    .tooltip = dónde termina el segundo parámetro
+paradox-computing = calculando las cargas de flameo a medida que el amortiguamiento desaparece ...
+paradox-joints = La carga de flameo con amortiguadores en las articulaciones c1 = (c1/c2) c2 cuando el nivel de amortiguamiento g2 = c2 / sqrt(k m l^2) tiende a cero: el límite depende de la relación y queda por debajo de la carga sin amortiguamiento (paradoja de Ziegler).
+paradox-external = La carga de flameo con amortiguadores iguales en las articulaciones c1 = c2 = c (amortiguamiento interno) y resistencia c_ext = (c_ext l^3 / c) c / l^3 a lo largo de las barras (amortiguamiento externo) cuando el nivel g2 = c / sqrt(k m l^2) tiende a cero: el amortiguamiento externo también desestabiliza, y el límite depende de la relación.
+paradox-no-extent = las curvas no tienen extensión a lo largo de la relación
+paradox-kind = amortiguamiento que desaparece:
+paradox-kind-joints = amortiguadores en las articulaciones
+    .tooltip = los amortiguadores de las articulaciones c1 y c2 en la relación c1/c2
+paradox-kind-external = resistencia externa e interno
+    .tooltip = resistencia c_ext a lo largo de las barras (externa) y amortiguadores iguales en las articulaciones c1 = c2 = c (interno) en la relación c_ext l^3 / c
+paradox-roller = La carga con la que la columna con rodillo pierde primero la estabilidad, frente a la masa del rodillo, para tres velocidades de la banda (el amortiguamiento por deslizamiento es mu R / V).
+paradox-roller-falling = bajando hacia cero cuando nu -> 0
+paradox-roller-flat = sin bajar hacia cero en este intervalo
+paradox-roller-massless = ; el rodillo sin masa (la seguidora ideal) pierde la estabilidad en p = { $load }
+paradox-roller-caption = { $intro } Con la menor masa mostrada, nu = { $nu }, las curvas están en { $at }, { $trend }{ $massless }.
+record-next = los próximos
+record-secs = s en
+    .name = segundos a grabar
+    .tooltip = segundos de la ventana que se graban (de 1 a 60)
+record-folder =
+    .name = carpeta de la grabación
+    .tooltip = la carpeta donde va el GIF
+record-choosing = eligiendo...
+record-choose = elegir...
+    .tooltip = elegir la carpeta en el diálogo del escritorio
+    .title = zieglerlab: la carpeta de las grabaciones
+record-start = grabar
+    .tooltip = grabar lo que muestra la ventana, 10 fotogramas por segundo, en un GIF
+    .no-folder = la carpeta no existe
+
+## A lesson's revealed results
+
+reveal-never = la columna no pierde la estabilidad hasta p = { $load }
+reveal-theory = la teoría: inestable desde p = { $load }
+reveal-seen = ; el movimiento apareció en p = { $load }
+reveal-predicted = Predijiste p = { $load };{" "}
+reveal-first-instability = { $predicted }{ $theory }{ $seen }.
+reveal-right = Correcto: elegiste «{ $chosen }», la respuesta.
+reveal-wrong = Esta no: elegiste «{ $chosen }»; la respuesta es «{ $answer }».
+reveal-answer = La respuesta: «{ $answer }».
+reveal-no-answer = la teoría no tiene respuesta con esta carga
+reveal-period = , un periodo de { $secs } s
+reveal-flutter = flameo: la oscilación se duplica cada { $secs } s{ $period }
+reveal-divergence = divergencia: la inclinación se duplica cada { $secs } s
+reveal-stable = estable: un golpe se reduce a la mitad cada { $secs } s{ $period }
+reveal-undamped = estable: un golpe ni crece ni se amortigua{ $period }
+reveal-here = La teoría en p = { $load }: { $how }.

@@ -482,3 +482,66 @@ histories-band-power = puissance venant de la bande
 histories-rod-2 = barre 2
 zoom-outside = le zoom { $zoom } est hors de { $least } à { $most } : ramené à { $held } (Ctrl+0 : 100 %)
 plot-name = graphique : { $y } en fonction de { $x }
+
+## The tabs' controls and captions, and the record menu
+
+locus-computing = Calcul du lieu des racines de ces paramètres...
+locus-none = Pas de lieu des racines pour ces paramètres.
+locus-none-why = Pas de lieu des racines pour ces paramètres : { $why }.
+locus-title = lieu des racines, p = { $from } à { $to }
+map-rows = lignes { $done } sur { $total }
+map-grey-rows = les lignes grises n'ont pas d'analyse : { $why }
+map-axis = charge p en fonction de
+    .tooltip = le second paramètre de la carte (son intervalle ci-dessous relance la carte)
+map-from = de
+    .name = intervalle de la carte depuis
+    .tooltip = où commence le second paramètre
+map-to = à
+    .name = intervalle de la carte jusqu'à
+    .tooltip = où finit le second paramètre
+paradox-computing = calcul des charges de flottement quand l'amortissement disparaît ...
+paradox-joints = La charge de flottement avec des amortisseurs aux articulations c1 = (c1/c2) c2 quand le niveau d'amortissement g2 = c2 / sqrt(k m l^2) tend vers zéro : la limite dépend du rapport et se trouve sous la charge sans amortissement (paradoxe de Ziegler).
+paradox-external = La charge de flottement avec des amortisseurs égaux aux articulations c1 = c2 = c (amortissement interne) et une traînée c_ext = (c_ext l^3 / c) c / l^3 le long des barres (amortissement externe) quand le niveau g2 = c / sqrt(k m l^2) tend vers zéro : l'amortissement externe déstabilise aussi, et la limite dépend du rapport.
+paradox-no-extent = les courbes n'ont pas d'étendue selon le rapport
+paradox-kind = amortissement qui disparaît :
+paradox-kind-joints = amortisseurs aux articulations
+    .tooltip = les amortisseurs aux articulations c1 et c2 dans le rapport c1/c2
+paradox-kind-external = traînée externe et interne
+    .tooltip = traînée c_ext le long des barres (externe) et amortisseurs égaux aux articulations c1 = c2 = c (interne) dans le rapport c_ext l^3 / c
+paradox-roller = La charge à laquelle la colonne à galet perd d'abord sa stabilité, en fonction de la masse du galet, pour trois vitesses de bande (l'amortissement par glissement est mu R / V).
+paradox-roller-falling = en baisse vers zéro quand nu -> 0
+paradox-roller-flat = sans baisse vers zéro sur cet intervalle
+paradox-roller-massless = ; le galet sans masse (la suiveuse idéale) perd sa stabilité à p = { $load }
+paradox-roller-caption = { $intro } À la plus petite masse montrée, nu = { $nu }, les courbes sont à { $at }, { $trend }{ $massless }.
+record-next = les prochaines
+record-secs = s dans
+    .name = secondes à enregistrer
+    .tooltip = secondes de la fenêtre à enregistrer (de 1 à 60)
+record-folder =
+    .name = dossier de l'enregistrement
+    .tooltip = le dossier où va le GIF
+record-choosing = choix en cours...
+record-choose = choisir...
+    .tooltip = choisir le dossier dans la boîte de dialogue du bureau
+    .title = zieglerlab : le dossier des enregistrements
+record-start = enregistrer
+    .tooltip = enregistrer ce que montre la fenêtre, 10 images par seconde, dans un GIF
+    .no-folder = le dossier n'existe pas
+
+## A lesson's revealed results
+
+reveal-never = la colonne ne perd pas sa stabilité jusqu'à p = { $load }
+reveal-theory = la théorie : instable dès p = { $load }
+reveal-seen = ; le mouvement est apparu à p = { $load }
+reveal-predicted = Vous aviez prédit p = { $load } ;{" "}
+reveal-first-instability = { $predicted }{ $theory }{ $seen }.
+reveal-right = Exact : vous avez choisi « { $chosen } », la réponse.
+reveal-wrong = Pas celle-ci : vous avez choisi « { $chosen } » ; la réponse est « { $answer } ».
+reveal-answer = La réponse : « { $answer } ».
+reveal-no-answer = la théorie n'a pas de réponse à cette charge
+reveal-period = , une période de { $secs } s
+reveal-flutter = flottement : l'oscillation double toutes les { $secs } s{ $period }
+reveal-divergence = divergence : l'inclinaison double toutes les { $secs } s
+reveal-stable = stable : une poussée diminue de moitié toutes les { $secs } s{ $period }
+reveal-undamped = stable : une poussée ne croît ni ne s'amortit{ $period }
+reveal-here = La théorie à p = { $load } : { $how }.

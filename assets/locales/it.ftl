@@ -482,3 +482,66 @@ histories-band-power = potenza dal nastro
 histories-rod-2 = asta 2
 zoom-outside = lo zoom { $zoom } è fuori da { $least }-{ $most }: impostato a { $held } (Ctrl+0: 100%)
 plot-name = grafico: { $y } in funzione di { $x }
+
+## The tabs' controls and captions, and the record menu
+
+locus-computing = Calcolo del luogo delle radici di questi parametri...
+locus-none = Nessun luogo delle radici per questi parametri.
+locus-none-why = Nessun luogo delle radici per questi parametri: { $why }.
+locus-title = luogo delle radici, p = da { $from } a { $to }
+map-rows = righe { $done } di { $total }
+map-grey-rows = le righe grigie non hanno analisi: { $why }
+map-axis = carico p rispetto a
+    .tooltip = il secondo parametro della mappa (il suo intervallo qui sotto riavvia la mappa)
+map-from = da
+    .name = intervallo della mappa da
+    .tooltip = dove inizia il secondo parametro
+map-to = a
+    .name = intervallo della mappa a
+    .tooltip = dove finisce il secondo parametro
+paradox-computing = calcolo dei carichi di flutter mentre lo smorzamento svanisce ...
+paradox-joints = Il carico di flutter con smorzatori nei giunti c1 = (c1/c2) c2 quando il livello di smorzamento g2 = c2 / sqrt(k m l^2) tende a zero: il limite dipende dal rapporto e sta sotto il carico non smorzato (paradosso di Ziegler).
+paradox-external = Il carico di flutter con smorzatori uguali nei giunti c1 = c2 = c (smorzamento interno) e resistenza c_ext = (c_ext l^3 / c) c / l^3 lungo le aste (smorzamento esterno) quando il livello g2 = c / sqrt(k m l^2) tende a zero: anche lo smorzamento esterno destabilizza, e il limite dipende dal rapporto.
+paradox-no-extent = le curve non hanno estensione lungo il rapporto
+paradox-kind = smorzamento che svanisce:
+paradox-kind-joints = smorzatori nei giunti
+    .tooltip = gli smorzatori nei giunti c1 e c2 nel rapporto c1/c2
+paradox-kind-external = resistenza esterna e interno
+    .tooltip = resistenza c_ext lungo le aste (esterna) e smorzatori uguali nei giunti c1 = c2 = c (interno) nel rapporto c_ext l^3 / c
+paradox-roller = Il carico a cui la colonna con rotella perde per prima la stabilità, in funzione della massa della rotella, per tre velocità del nastro (lo smorzamento da strisciamento è mu R / V).
+paradox-roller-falling = in calo verso zero per nu -> 0
+paradox-roller-flat = non in calo verso zero in questo intervallo
+paradox-roller-massless = ; la rotella senza massa (la follower ideale) perde la stabilità a p = { $load }
+paradox-roller-caption = { $intro } Alla massa più piccola mostrata, nu = { $nu }, le curve stanno a { $at }, { $trend }{ $massless }.
+record-next = i prossimi
+record-secs = s in
+    .name = secondi da registrare
+    .tooltip = secondi della finestra da registrare (da 1 a 60)
+record-folder =
+    .name = cartella della registrazione
+    .tooltip = la cartella in cui va la GIF
+record-choosing = scelta in corso...
+record-choose = scegli...
+    .tooltip = scegli la cartella nella finestra di dialogo del desktop
+    .title = zieglerlab: la cartella delle registrazioni
+record-start = registra
+    .tooltip = registra ciò che mostra la finestra, 10 fotogrammi al secondo, in una GIF
+    .no-folder = la cartella non esiste
+
+## A lesson's revealed results
+
+reveal-never = la colonna non perde stabilità fino a p = { $load }
+reveal-theory = la teoria: instabile da p = { $load }
+reveal-seen = ; il moto si è visto a p = { $load }
+reveal-predicted = Hai previsto p = { $load };{" "}
+reveal-first-instability = { $predicted }{ $theory }{ $seen }.
+reveal-right = Giusto: hai scelto «{ $chosen }», la risposta.
+reveal-wrong = Non questa: hai scelto «{ $chosen }»; la risposta è «{ $answer }».
+reveal-answer = La risposta: «{ $answer }».
+reveal-no-answer = la teoria non ha risposta a questo carico
+reveal-period = , un periodo di { $secs } s
+reveal-flutter = flutter: l'oscillazione raddoppia ogni { $secs } s{ $period }
+reveal-divergence = divergenza: l'inclinazione raddoppia ogni { $secs } s
+reveal-stable = stabile: un colpetto si dimezza ogni { $secs } s{ $period }
+reveal-undamped = stabile: un colpetto né cresce né si smorza{ $period }
+reveal-here = La teoria a p = { $load }: { $how }.

@@ -490,3 +490,66 @@ histories-band-power = moc od taśmy
 histories-rod-2 = pręt 2
 zoom-outside = powiększenie { $zoom } jest poza zakresem { $least }-{ $most }: ustawiono { $held } (Ctrl+0: 100%)
 plot-name = wykres: { $y } w funkcji { $x }
+
+## The tabs' controls and captions, and the record menu
+
+locus-computing = Obliczam linie pierwiastkowe dla tych parametrów...
+locus-none = Brak linii pierwiastkowych dla tych parametrów.
+locus-none-why = Brak linii pierwiastkowych dla tych parametrów: { $why }.
+locus-title = linie pierwiastkowe, p = od { $from } do { $to }
+map-rows = wiersze: { $done } z { $total }
+map-grey-rows = szare wiersze nie mają analizy: { $why }
+map-axis = obciążenie p względem
+    .tooltip = drugi parametr mapy (jego zakres poniżej uruchamia mapę od nowa)
+map-from = od
+    .name = zakres mapy od
+    .tooltip = gdzie zaczyna się drugi parametr
+map-to = do
+    .name = zakres mapy do
+    .tooltip = gdzie kończy się drugi parametr
+paradox-computing = obliczam obciążenia flatteru przy zanikającym tłumieniu ...
+paradox-joints = Obciążenie flatteru z tłumikami w przegubach c1 = (c1/c2) c2, gdy poziom tłumienia g2 = c2 / sqrt(k m l^2) dąży do zera: granica zależy od stosunku i leży poniżej obciążenia bez tłumienia (paradoks Zieglera).
+paradox-external = Obciążenie flatteru z równymi tłumikami w przegubach c1 = c2 = c (tłumienie wewnętrzne) i oporem c_ext = (c_ext l^3 / c) c / l^3 wzdłuż prętów (tłumienie zewnętrzne), gdy poziom g2 = c / sqrt(k m l^2) dąży do zera: tłumienie zewnętrzne też destabilizuje, a granica zależy od stosunku.
+paradox-no-extent = krzywe nie mają rozpiętości wzdłuż stosunku
+paradox-kind = zanikające tłumienie:
+paradox-kind-joints = tłumiki w przegubach
+    .tooltip = tłumiki w przegubach c1 i c2 w stosunku c1/c2
+paradox-kind-external = opór zewnętrzny i wewnętrzne
+    .tooltip = opór c_ext wzdłuż prętów (zewnętrzny) i równe tłumiki w przegubach c1 = c2 = c (wewnętrzne) w stosunku c_ext l^3 / c
+paradox-roller = Obciążenie, przy którym kolumna z rolką najpierw traci stateczność, w funkcji masy rolki, dla trzech prędkości taśmy (tłumienie przez poślizg to mu R / V).
+paradox-roller-falling = maleją do zera, gdy nu -> 0
+paradox-roller-flat = nie maleją do zera w tym zakresie
+paradox-roller-massless = ; nieważka rolka (idealna siła śledząca) traci stateczność przy p = { $load }
+paradox-roller-caption = { $intro } Przy najmniejszej pokazanej masie, nu = { $nu }, krzywe są na poziomie { $at }, { $trend }{ $massless }.
+record-next = najbliższe
+record-secs = s do
+    .name = sekundy nagrania
+    .tooltip = ile sekund okna nagrać (od 1 do 60)
+record-folder =
+    .name = folder nagrania
+    .tooltip = folder, do którego trafi GIF
+record-choosing = wybieranie...
+record-choose = wybierz...
+    .tooltip = wybierz folder w oknie dialogowym pulpitu
+    .title = zieglerlab: folder na nagrania
+record-start = nagraj
+    .tooltip = nagraj to, co pokazuje okno, 10 klatek na sekundę, do pliku GIF
+    .no-folder = folder nie istnieje
+
+## A lesson's revealed results
+
+reveal-never = kolumna nie traci stateczności aż do p = { $load }
+reveal-theory = teoria: niestateczna od p = { $load }
+reveal-seen = ; ruch pojawił się przy p = { $load }
+reveal-predicted = Przewidziałeś p = { $load };{" "}
+reveal-first-instability = { $predicted }{ $theory }{ $seen }.
+reveal-right = Dobrze: wybrałeś „{ $chosen }”, to jest odpowiedź.
+reveal-wrong = Nie ta: wybrałeś „{ $chosen }”; odpowiedź to „{ $answer }”.
+reveal-answer = Odpowiedź: „{ $answer }”.
+reveal-no-answer = teoria nie ma odpowiedzi przy tym obciążeniu
+reveal-period = , okres { $secs } s
+reveal-flutter = flatter: drgania podwajają się co { $secs } s{ $period }
+reveal-divergence = dywergencja: wychylenie podwaja się co { $secs } s
+reveal-stable = stateczna: pchnięcie maleje o połowę co { $secs } s{ $period }
+reveal-undamped = stateczna: pchnięcie ani nie rośnie, ani nie zanika{ $period }
+reveal-here = Teoria przy p = { $load }: { $how }.

@@ -2,6 +2,8 @@
 //! chosen in the desktop's dialog), the button, and the recording's
 //! progress.
 
+use super::speak::Speak as _;
+use crate::tr;
 use std::path::{Path, PathBuf};
 
 use eframe::egui;
@@ -58,30 +60,31 @@ pub fn record_ui(
     recorder: &Recorder,
     actions: &mut Actions,
 ) {
+    let words = ui.words();
     ui.horizontal(|ui| {
-        ui.label("the next");
+        ui.label(tr!(words, "record-next"));
         ui.add(
             egui::DragValue::new(&mut choice.secs)
                 .range(1.0..=60.0)
                 .speed(0.5),
         )
-        .accessible_name("record seconds")
-        .on_hover_text("seconds of the window to record (1 to 60)");
-        ui.label("s into");
+        .accessible_name(tr!(words, "record-secs.name"))
+        .on_hover_text(tr!(words, "record-secs.tooltip"));
+        ui.label(tr!(words, "record-secs"));
     });
     ui.horizontal(|ui| {
         ui.add(egui::TextEdit::singleline(&mut choice.folder).desired_width(200.0))
-            .accessible_name("record folder")
-            .on_hover_text("the folder the GIF goes in");
+            .accessible_name(tr!(words, "record-folder.name"))
+            .on_hover_text(tr!(words, "record-folder.tooltip"));
         if choice.dialog.is_open() {
-            ui.label("choosing...");
+            ui.label(tr!(words, "record-choosing"));
         } else if ui
-            .button("choose...")
-            .on_hover_text("choose the folder in the desktop's dialog")
+            .button(tr!(words, "record-choose"))
+            .on_hover_text(tr!(words, "record-choose.tooltip"))
             .clicked()
         {
             choice.dialog.pick_folder(
-                "zieglerlab: the folder for recordings",
+                &tr!(words, "record-choose.title"),
                 Path::new(choice.folder.trim()),
                 ui.ctx(),
             );
@@ -99,9 +102,9 @@ pub fn record_ui(
     let folder = PathBuf::from(choice.folder.trim());
     let ready = folder.is_dir();
     if ui
-        .add_enabled(ready, egui::Button::new("record"))
-        .on_hover_text("record what the window shows, 10 frames a second, to a GIF")
-        .on_disabled_hover_text("the folder does not exist")
+        .add_enabled(ready, egui::Button::new(tr!(words, "record-start")))
+        .on_hover_text(tr!(words, "record-start.tooltip"))
+        .on_disabled_hover_text(tr!(words, "record-start.no-folder"))
         .clicked()
     {
         actions.push(Action::Record {

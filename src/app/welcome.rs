@@ -9,7 +9,7 @@ use super::speak::Speak as _;
 use super::state::AppState;
 use super::tabs::Tab;
 use super::theme::Theme;
-use crate::lesson::{BUILT_IN, Lesson};
+use crate::lesson::{Lesson, built_in};
 use crate::tr;
 
 /// What a student reads first, paragraph by paragraph (message ids).
@@ -65,7 +65,7 @@ pub fn welcome_ui(ctx: &egui::Context, state: &AppState, actions: &mut Actions, 
             }
             ui.add_space(0.8 * theme.text_size);
             ui.horizontal(|ui| {
-                let (name, text) = BUILT_IN[0];
+                let (name, text) = built_in(state.language())[0];
                 if ui
                     .button(tr!(words, "welcome-first-lesson"))
                     .on_hover_text(tr!(words, "welcome-first-lesson.tooltip"))

@@ -5,7 +5,8 @@ use anyhow::Result;
 use zieglerlab::format::Shown;
 
 use zieglerlab::app::{Action, Command, Settings, Tab, ZieglerApp};
-use zieglerlab::lesson::{BUILT_IN, Lesson};
+use zieglerlab::i18n::Language;
+use zieglerlab::lesson::{Lesson, built_in};
 
 use super::headless::{Look, Size, render_frames};
 use super::output::{check_output, write_png};
@@ -40,9 +41,10 @@ pub struct Args {
 
 /// The lesson named `name` (a built-in one, with or without `.ron`) or in
 /// the file `name`.
-fn lesson_named(name: &str) -> Result<Lesson> {
+fn lesson_named(name: &str, language: Language) -> Result<Lesson> {
     let tabs = Tab::ids();
-    let built_in = BUILT_IN
+    let lessons = built_in(language);
+    let built_in = lessons
         .iter()
         .find(|(file, _)| *file == name || file.strip_suffix(".ron") == Some(name));
     match built_in {
@@ -88,9 +90,14 @@ pub fn run(args: &Args) -> Result<()> {
         speed: 1.0,
         projector: args.look.projector,
     };
-    let lesson = args.lesson.as_deref().map(lesson_named).transpose()?;
+    let language = args.look.language();
+    let lesson = args
+        .lesson
+        .as_deref()
+        .map(|name| lesson_named(name, language))
+        .transpose()?;
     let mut app = ZieglerApp::new(settings)?;
-    app.apply(Action::Language(args.look.language()));
+    app.apply(Action::Language(language));
     if let Some(lesson) = lesson {
         open_at_step(&mut app, lesson, args.step)?;
     }

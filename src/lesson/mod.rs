@@ -4,6 +4,10 @@
 //! ramp, ask for a prediction and reveal the result. Reading, checking, and
 //! the column each step leaves (the one rule the app and the checker share).
 
+mod languages;
+
+pub use languages::built_in;
+
 use std::collections::BTreeMap;
 use std::path::Path;
 

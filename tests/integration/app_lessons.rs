@@ -340,7 +340,13 @@ fn the_roller_lesson_s_last_reveal_says_what_the_step_shows() {
     let said = state
         .lesson()
         .unwrap()
-        .reveal_text(None, state.load_max(), None, Some((3.0, &stability)))
+        .reveal_text(
+            None,
+            state.load_max(),
+            None,
+            Some((3.0, &stability)),
+            zieglerlab::i18n::words(zieglerlab::i18n::Language::English),
+        )
         .unwrap();
     let expected = format!(
         "The theory at p = {}: flutter: the swing doubles every {} s",
@@ -377,7 +383,15 @@ fn a_right_and_a_wrong_answer_are_revealed_differently() {
         ));
         let run = app.state().lesson().unwrap();
         assert_eq!(run.verdict(), Some(verdict));
-        let text = run.reveal_text(None, 8.0, None, None).unwrap();
+        let text = run
+            .reveal_text(
+                None,
+                8.0,
+                None,
+                None,
+                zieglerlab::i18n::words(zieglerlab::i18n::Language::English),
+            )
+            .unwrap();
         let mut harness = harness(&mut app);
         harness.run();
         harness.get_by_label(&text);

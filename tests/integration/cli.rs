@@ -440,15 +440,26 @@ fn simulate_with_a_ramp_adds_the_load_of_each_step() {
     assert!(String::from_utf8_lossy(&bad.stderr).contains("ramp rate = 0"));
 }
 
-/// `lesson --check`: every shipped lesson passes; a broken one is refused
-/// with status 2, its line and what was expected.
+/// `lesson --check`: every shipped lesson, in every language, passes; a
+/// broken one is refused with status 2, its line and what was expected.
 #[test]
 fn lesson_check_passes_the_shipped_lessons_and_names_the_line_of_a_broken_one() {
-    for entry in std::fs::read_dir("assets/lessons").expect("the lessons folder") {
-        let path = entry.expect("an entry").path();
-        let text = stdout(&["lesson", "--check", path.to_str().expect("a path")]);
-        assert!(text.contains(": ok: "), "{text}");
+    // English's, and each language's folder of translations.
+    let mut checked = 0;
+    let mut folders = vec![std::path::PathBuf::from("assets/lessons")];
+    while let Some(folder) = folders.pop() {
+        for entry in std::fs::read_dir(folder).expect("a lessons folder") {
+            let path = entry.expect("an entry").path();
+            if path.is_dir() {
+                folders.push(path);
+                continue;
+            }
+            let text = stdout(&["lesson", "--check", path.to_str().expect("a path")]);
+            assert!(text.contains(": ok: "), "{text}");
+            checked += 1;
+        }
     }
+    assert_eq!(checked, 18, "three lessons in six languages");
     let folder = tempfile::tempdir().expect("a temporary folder");
     let broken = folder.path().join("broken.ron");
     std::fs::write(

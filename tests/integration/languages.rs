@@ -165,3 +165,43 @@ fn pictures_speak_the_language_asked_for_or_the_system_s() {
         english
     );
 }
+
+/// A built-in lesson follows the window's language: opened in Italian it
+/// reads in Italian, and a switch to French mid-lesson goes on in French
+/// at the same step.
+#[test]
+fn a_lesson_speaks_the_window_s_language() {
+    use zieglerlab::app::Command;
+    use zieglerlab::lesson::{Lesson, built_in};
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.apply(Action::Language(Language::Italian));
+    let (_, text) = built_in(Language::Italian)[0];
+    let lesson = Lesson::read(text, &Tab::ids()).unwrap();
+    app.apply(Action::LessonOpen(Box::new(lesson)));
+    app.apply(Action::Command(Command::LessonNext));
+    let step = |app: &ZieglerApp| {
+        let run = app.state().lesson().unwrap();
+        (run.step, run.lesson.title.clone())
+    };
+    assert_eq!(step(&app).1, "Dove inizia il flutter della colonna?");
+    app.apply(Action::Language(Language::French));
+    assert_eq!(
+        step(&app),
+        (1, "Où la colonne commence-t-elle à flotter ?".to_owned())
+    );
+    let mut harness = Harness::builder()
+        .with_size([1024.0, 768.0])
+        .build_ui(|ui| app.contents_ui(ui));
+    harness.run_steps(3);
+    assert!(
+        harness
+            .query_by_label_contains("Nous allons augmenter la charge")
+            .is_some(),
+        "the French step's text"
+    );
+    let next = words(Language::French).get("lesson-next");
+    assert!(
+        harness.query_by_label(&next).is_some(),
+        "the step buttons in French"
+    );
+}

@@ -11,13 +11,17 @@ use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::app::{Notice, View};
 use crate::format::load_text;
-use crate::lesson::{BUILT_IN, Lesson, LessonError, LessonFileError, Predict, Reveal};
+use crate::i18n::Language;
+use crate::lesson::{Lesson, LessonError, LessonFileError, Predict, Reveal, built_in};
 
 /// The built-in lessons (read and checked once), the path typed to open a
 /// lesson file, and the file being read.
+/// A built-in lesson's file name and what reading it gave.
+type BuiltIn = (&'static str, Result<Lesson, LessonError>);
+
 #[derive(Default)]
 pub struct LessonSection {
-    built_in: Option<Vec<(&'static str, Result<Lesson, LessonError>)>>,
+    built_in: Option<(Language, Vec<BuiltIn>)>,
     path: String,
     reading: Option<Reading>,
     /// The step whose reveal is shown (the lesson's title and the step's
@@ -107,15 +111,25 @@ impl View for LessonSection {
             }
             return;
         }
-        let built_in = self.built_in.get_or_insert_with(|| {
-            BUILT_IN
+        // Read again when the language changes.
+        let language = state.language();
+        if self
+            .built_in
+            .as_ref()
+            .is_none_or(|(read, _)| *read != language)
+        {
+            let read = built_in(language)
                 .iter()
                 .map(|&(name, text)| (name, Lesson::read(text, &crate::app::Tab::ids())))
-                .collect()
-        });
+                .collect();
+            self.built_in = Some((language, read));
+        }
+        let Some((_, built_in)) = &self.built_in else {
+            return;
+        };
         let words = ui.words();
         egui::CollapsingHeader::new(tr!(words, "lessons")).show(ui, |ui| {
-            for (name, read) in built_in.iter() {
+            for (name, read) in built_in {
                 match read {
                     Ok(lesson) => {
                         if ui
@@ -221,7 +235,7 @@ fn step_ui(
     let here = spectrum.map(|s| crate::analysis::classify(&s.eigenvalues, s.scale_per_s));
     let here = here.as_ref().map(|s| (state.model().load_p(), s));
     let revealed = run
-        .reveal_text(first, state.load_max(), seen, here)
+        .reveal_text(first, state.load_max(), seen, here, words)
         .map(|result| {
             // Right in the stable colour and strong, wrong in the warning
             // colour, a result of the theory in the text's: the words differ too.

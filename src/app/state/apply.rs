@@ -26,6 +26,7 @@ impl AppState {
             Action::Speed(speed) => self.set_speed(speed),
             Action::Projector(on) => self.settings.projector = on,
             Action::Language(language) => {
+                self.translate_lesson(self.language, language);
                 self.language = language;
                 self.language_chosen = true;
             }

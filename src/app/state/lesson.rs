@@ -6,8 +6,10 @@ use super::{AppState, Settings};
 use crate::app::action::{Action, Command};
 use crate::app::notice::Notice;
 use crate::app::tabs::Tab;
+use crate::i18n::{Language, Words};
 use crate::lesson::{Column, Lesson, Predict, Reveal, Run};
 use crate::sim::Ramp;
+use crate::tr;
 
 /// A lesson and where the class is in it.
 #[derive(Clone, Debug, PartialEq)]
@@ -68,27 +70,29 @@ impl LessonRun {
         bar_max_p: f64,
         seen_at_p: Option<f64>,
         here: Option<(f64, &crate::analysis::Stability)>,
+        words: &'static Words,
     ) -> Option<String> {
         let load = |p: f64| crate::format::load_text(p);
         let text = match self.current().reveal.as_ref()? {
             Reveal::FirstInstability => {
                 let theory = first_instability.map_or_else(
-                    || {
-                        format!(
-                            "the column does not lose stability up to p = {}",
-                            load(bar_max_p)
-                        )
-                    },
-                    |p| format!("the theory: unstable from p = {}", load(p)),
+                    || tr!(words, "reveal-never", load = load(bar_max_p)),
+                    |p| tr!(words, "reveal-theory", load = load(p)),
                 );
                 let seen = seen_at_p
-                    .map(|p| format!("; the motion showed at p = {}", load(p)))
+                    .map(|p| tr!(words, "reveal-seen", load = load(p)))
                     .unwrap_or_default();
                 let predicted = self
                     .predicted_load
-                    .map(|p| format!("You predicted p = {}; ", load(p)))
+                    .map(|p| tr!(words, "reveal-predicted", load = load(p)))
                     .unwrap_or_default();
-                format!("{predicted}{theory}{seen}.")
+                tr!(
+                    words,
+                    "reveal-first-instability",
+                    predicted = predicted,
+                    theory = theory,
+                    seen = seen
+                )
             }
             Reveal::Answer(right) => {
                 let answers = self.last_choice.as_deref().unwrap_or_default();
@@ -96,20 +100,19 @@ impl LessonRun {
                 // Right and wrong read differently in words, not only in
                 // colour.
                 match self.chosen {
-                    Some(i) if i == *right => {
-                        format!("Right: you chose \"{}\", the answer.", name(i))
-                    }
-                    Some(i) => format!(
-                        "Not this one: you chose \"{}\"; the answer is \"{}\".",
-                        name(i),
-                        name(*right)
+                    Some(i) if i == *right => tr!(words, "reveal-right", chosen = name(i)),
+                    Some(i) => tr!(
+                        words,
+                        "reveal-wrong",
+                        chosen = name(i),
+                        answer = name(*right)
                     ),
-                    None => format!("The answer: \"{}\".", name(*right)),
+                    None => tr!(words, "reveal-answer", answer = name(*right)),
                 }
             }
             Reveal::StabilityHere => match here {
-                Some((p, stability)) => stability_words(p, stability),
-                None => "the theory has no answer at this load".to_owned(),
+                Some((p, stability)) => stability_words(p, stability, words),
+                None => tr!(words, "reveal-no-answer"),
             },
             Reveal::Text(text) => text.clone(),
         };
@@ -119,38 +122,44 @@ impl LessonRun {
 
 /// The theory's word on the column at load `p`: its state and how a kick
 /// grows or dies away, in doubling or halving times and the period.
-fn stability_words(p: f64, stability: &crate::analysis::Stability) -> String {
+fn stability_words(
+    p: f64,
+    stability: &crate::analysis::Stability,
+    words: &'static Words,
+) -> String {
     use crate::analysis::State;
     use crate::format::{load_text, secs_text};
     let rate = stability.growth_rate_per_s();
     let frequency = stability.frequency_rad_per_s();
     let period = if frequency > stability.tolerance_per_s {
-        format!(
-            ", a period of {} s",
-            secs_text(std::f64::consts::TAU / frequency)
+        tr!(
+            words,
+            "reveal-period",
+            secs = secs_text(std::f64::consts::TAU / frequency)
         )
     } else {
         String::new()
     };
     let times = |rate: f64| secs_text(std::f64::consts::LN_2 / rate.abs());
     let how = match stability.state {
-        State::Flutter => format!("flutter: the swing doubles every {} s{period}", times(rate)),
-        State::Divergence => format!("divergence: the lean doubles every {} s", times(rate)),
+        State::Flutter => tr!(words, "reveal-flutter", secs = times(rate), period = period),
+        State::Divergence => tr!(words, "reveal-divergence", secs = times(rate)),
         State::Stable if rate < -stability.tolerance_per_s => {
-            format!("stable: a kick halves every {} s{period}", times(rate))
+            tr!(words, "reveal-stable", secs = times(rate), period = period)
         }
-        State::Stable => format!("stable: a kick neither grows nor dies away{period}"),
+        State::Stable => tr!(words, "reveal-undamped", period = period),
     };
-    format!("The theory at p = {}: {how}.", load_text(p))
+    tr!(words, "reveal-here", load = load_text(p), how = how)
 }
 
-/// The built-in lessons, read once (the sidebar asks for the next one
-/// every frame of a last step).
-fn built_in_lessons() -> &'static [Lesson] {
-    static READ: std::sync::OnceLock<Vec<Lesson>> = std::sync::OnceLock::new();
-    READ.get_or_init(|| {
+/// The built-in lessons in `language`, read once (the sidebar asks for
+/// the next one every frame of a last step).
+fn built_in_lessons(language: Language) -> &'static [Lesson] {
+    static READ: [std::sync::OnceLock<Vec<Lesson>>; Language::COUNT] =
+        [const { std::sync::OnceLock::new() }; Language::COUNT];
+    READ[language as usize].get_or_init(|| {
         let tabs = Tab::ids();
-        crate::lesson::BUILT_IN
+        crate::lesson::built_in(language)
             .iter()
             .filter_map(|(_, text)| Lesson::read(text, &tabs).ok())
             .collect()
@@ -224,12 +233,29 @@ impl AppState {
         self.step_actions()
     }
 
+    /// A built-in lesson open in `from`'s words goes on in `to`'s, at the
+    /// same step (a lesson of the user's own keeps its words).
+    pub(super) fn translate_lesson(&mut self, from: Language, to: Language) {
+        let Some(run) = &mut self.lesson else {
+            return;
+        };
+        let Some(k) = built_in_lessons(from)
+            .iter()
+            .position(|lesson| lesson.title == run.lesson.title)
+        else {
+            return;
+        };
+        if let Some(lesson) = built_in_lessons(to).get(k) {
+            run.lesson = lesson.clone();
+        }
+    }
+
     /// The built-in lesson after the open one, when the open one is built
     /// in and not the last.
     #[must_use]
     pub fn next_lesson(&self) -> Option<Lesson> {
         let title = &self.lesson.as_ref()?.lesson.title;
-        let mut built_in = built_in_lessons().iter();
+        let mut built_in = built_in_lessons(self.language()).iter();
         built_in.find(|lesson| &lesson.title == title)?;
         built_in.next().cloned()
     }

@@ -2,6 +2,8 @@
 //! real and imaginary parts against the load, the current load marked, and
 //! the overlay's critical loads when one is drawn.
 
+use crate::app::speak::Speak as _;
+use crate::tr;
 use eframe::egui::{self, vec2};
 
 use super::{TabSpec, TabView, save_buttons};
@@ -34,21 +36,22 @@ impl TabView for LocusTab {}
 
 impl View for LocusTab {
     fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
+        let words = ui.words();
         let Some(analysis) = state.analysis() else {
             if state.analysis_pending() {
                 // A long chain's first analysis takes seconds, off this thread.
                 ui.horizontal(|ui| {
                     ui.spinner();
-                    ui.label("Computing the root locus of these parameters...");
+                    ui.label(tr!(words, "locus-computing"));
                 });
                 return;
             }
-            let why = state
-                .analysis_failure()
-                .map_or_else(String::new, |error| format!(": {error}"));
             ui.colored_label(
                 theme.warning,
-                format!("No root locus for these parameters{why}."),
+                match state.analysis_failure() {
+                    Some(error) => tr!(words, "locus-none-why", why = error.to_string()),
+                    None => tr!(words, "locus-none"),
+                },
             );
             return;
         };
@@ -98,10 +101,11 @@ impl LocusTab {
             overlay.map(|o| o.preset),
         ));
         let loads = &analysis.locus.loads;
-        ui.label(format!(
-            "root locus, p = {} to {}",
-            number_text(loads.first().copied().unwrap_or(0.0)),
-            number_text(loads.last().copied().unwrap_or(0.0))
+        ui.label(tr!(
+            ui.words(),
+            "locus-title",
+            from = number_text(loads.first().copied().unwrap_or(0.0)),
+            to = number_text(loads.last().copied().unwrap_or(0.0))
         ));
         let current = state.current_eigenvalues();
         let name = overlay_name(state);

@@ -3,6 +3,7 @@
 //! with the boundaries as curves; a click sets both parameters.
 
 use crate::app::speak::Speak as _;
+use crate::tr;
 use std::sync::Arc;
 use std::sync::atomic::AtomicUsize;
 
@@ -274,12 +275,17 @@ impl MapPanel {
         if done < total {
             #[expect(clippy::cast_precision_loss, reason = "row counts")]
             let fraction = done as f32 / total as f32;
-            ui.add(egui::ProgressBar::new(fraction).text(format!("rows {done} of {total}")));
+            ui.add(egui::ProgressBar::new(fraction).text(tr!(
+                ui.words(),
+                "map-rows",
+                done = done,
+                total = total
+            )));
         }
         if let Some(reason) = job.rows.iter().flatten().find_map(|r| r.as_ref().err()) {
             ui.colored_label(
                 theme.warning,
-                format!("grey rows have no analysis: {reason}"),
+                tr!(ui.words(), "map-grey-rows", why = reason.to_string()),
             );
         }
         if job.stale || job.grid.is_none() {
@@ -326,8 +332,9 @@ impl MapPanel {
     }
 
     fn controls_ui(&mut self, ui: &mut egui::Ui, model: &Model) {
+        let words = ui.words();
         ui.horizontal(|ui| {
-            let label = ui.label("load p against");
+            let label = ui.label(tr!(words, "map-axis"));
             let current = self.axis.as_ref().map_or("", Axis::name);
             let mut chosen = current;
             egui::ComboBox::from_id_salt("map axis")
@@ -341,7 +348,7 @@ impl MapPanel {
                 })
                 .response
                 .labelled_by(label.id)
-                .on_hover_text("the map's second parameter (its range below restarts the map)");
+                .on_hover_text(tr!(words, "map-axis.tooltip"));
             if chosen != current
                 && let Ok(axis) = Axis::parse(chosen, model)
             {
@@ -353,16 +360,16 @@ impl MapPanel {
                 };
                 self.axis = Some(axis);
             }
-            ui.label("from");
+            ui.label(tr!(words, "map-from"));
             let (mut lo, mut hi) = self.range;
             let speed = 0.01 * (hi - lo).abs().max(1e-6);
             ui.add(range_field(&mut lo, speed))
-                .accessible_name("map range from")
-                .on_hover_text("where the second parameter starts");
-            ui.label("to");
+                .accessible_name(tr!(words, "map-from.name"))
+                .on_hover_text(tr!(words, "map-from.tooltip"));
+            ui.label(tr!(words, "map-to"));
             ui.add(range_field(&mut hi, speed))
-                .accessible_name("map range to")
-                .on_hover_text("where the second parameter ends");
+                .accessible_name(tr!(words, "map-to.name"))
+                .on_hover_text(tr!(words, "map-to.tooltip"));
             // An empty or reversed range is not taken; the old one stays.
             if lo.is_finite() && hi.is_finite() && hi > lo {
                 self.range = (lo, hi);

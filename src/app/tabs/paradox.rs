@@ -5,6 +5,8 @@
 //! thread.
 
 use crate::app::speak::Speak as _;
+use crate::i18n::Words;
+use crate::tr;
 use eframe::egui;
 
 use super::{TabSpec, TabView, save_buttons};
@@ -144,11 +146,12 @@ impl ParadoxPanel {
         let here = self.current_point(model, known);
         self.receive();
         let key = curve_key(model, self.kind);
+        let words = ui.words();
         let Some((curves_key, curves)) = self.curves.as_ref().filter(|(k, _)| *k == key) else {
             ui.ctx().request_repaint();
             ui.horizontal(|ui| {
                 ui.spinner();
-                ui.label("computing the flutter loads as the damping vanishes ...");
+                ui.label(tr!(words, "paradox-computing"));
             });
             return;
         };
@@ -157,9 +160,9 @@ impl ParadoxPanel {
             return;
         }
         ui.label(match (model.load, self.kind) {
-            (Load::Roller(_), _) => roller_caption(curves),
-            (Load::Follower { .. }, DampingKind::Joints) => "The flutter load with joint dampers c1 = (c1/c2) c2 as the damping level g2 = c2 / sqrt(k m l^2) goes to zero: the limit depends on the ratio and lies below the undamped load (Ziegler's paradox).".to_owned(),
-            (Load::Follower { .. }, DampingKind::External) => "The flutter load with equal joint dampers c1 = c2 = c (internal damping) and drag c_ext = (c_ext l^3 / c) c / l^3 along the rods (external damping) as the level g2 = c / sqrt(k m l^2) goes to zero: external damping destabilizes too, and the limit depends on the ratio.".to_owned(),
+            (Load::Roller(_), _) => roller_caption(curves, words),
+            (Load::Follower { .. }, DampingKind::Joints) => tr!(words, "paradox-joints"),
+            (Load::Follower { .. }, DampingKind::External) => tr!(words, "paradox-external"),
         });
         self.fit
             .bar_ui(ui, for_picture, |ui| save_buttons(ui, None, actions));
@@ -167,7 +170,7 @@ impl ParadoxPanel {
         let paradox = Paradox {
             curves,
             here,
-            words: ui.words(),
+            words,
         };
         legend_ui(ui, &paradox.legend(), theme);
         match paradox.plot() {
@@ -175,7 +178,7 @@ impl ParadoxPanel {
                 plot_ui(ui, &plot, refit, theme);
             }
             None => {
-                ui.colored_label(theme.warning, "the curves have no extent along the ratio");
+                ui.colored_label(theme.warning, tr!(words, "paradox-no-extent"));
             }
         }
     }
@@ -207,18 +210,21 @@ impl View for ParadoxPanel {
 impl ParadoxPanel {
     /// The choice of the damping that vanishes.
     fn kind_ui(&mut self, ui: &mut egui::Ui) {
+        let words = ui.words();
         ui.horizontal(|ui| {
-            ui.label("damping that vanishes:");
-            ui.selectable_value(&mut self.kind, DampingKind::Joints, "joint dampers")
-                .on_hover_text("the joint dampers c1 and c2 in the ratio c1/c2");
+            ui.label(tr!(words, "paradox-kind"));
+            ui.selectable_value(
+                &mut self.kind,
+                DampingKind::Joints,
+                tr!(words, "paradox-kind-joints"),
+            )
+            .on_hover_text(tr!(words, "paradox-kind-joints.tooltip"));
             ui.selectable_value(
                 &mut self.kind,
                 DampingKind::External,
-                "external drag and internal",
+                tr!(words, "paradox-kind-external"),
             )
-            .on_hover_text(
-                "drag c_ext along the rods (external) and equal joint dampers c1 = c2 = c (internal) in the ratio c_ext l^3 / c",
-            );
+            .on_hover_text(tr!(words, "paradox-kind-external.tooltip"));
         });
     }
 }
@@ -232,8 +238,8 @@ const FALLING_SHARE: f64 = 0.5;
 /// whether they fall toward zero as nu -> 0 (with drag along the rods they
 /// stay flat, and a caption that always said "goes to zero" contradicted
 /// them).
-fn roller_caption(curves: &Curves) -> String {
-    let intro = "The load at which the roller column first loses stability, against the roller's mass, for three band speeds (the slip damping is mu R / V).";
+fn roller_caption(curves: &Curves, words: &'static Words) -> String {
+    let intro = tr!(words, "paradox-roller");
     // Each line's load at its smallest and at its largest mass (x is log10 nu).
     let ends: Vec<(f64, f64, f64)> = curves
         .lines
@@ -245,7 +251,7 @@ fn roller_caption(curves: &Curves) -> String {
         })
         .collect();
     let Some(smallest_x) = ends.iter().map(|e| e.0).reduce(f64::min) else {
-        return intro.to_owned();
+        return intro;
     };
     let (low, high) = ends
         .iter()
@@ -262,23 +268,23 @@ fn roller_caption(curves: &Curves) -> String {
         .iter()
         .all(|&(_, small, large)| small < FALLING_SHARE * large);
     let trend = if falling {
-        "falling toward zero as nu -> 0"
+        tr!(words, "paradox-roller-falling")
     } else {
-        "not falling toward zero over this range"
+        tr!(words, "paradox-roller-flat")
     };
     let massless = curves
         .reference
         .as_ref()
-        .map(|(_, p)| {
-            format!(
-                "; the massless roller (the ideal follower) loses stability at p = {}",
-                number_text(*p)
-            )
-        })
+        .map(|(_, p)| tr!(words, "paradox-roller-massless", load = number_text(*p)))
         .unwrap_or_default();
-    format!(
-        "{intro} At the smallest mass shown, nu = {}, the curves stand at {at_smallest}, {trend}{massless}.",
-        number_text(10f64.powf(smallest_x))
+    tr!(
+        words,
+        "paradox-roller-caption",
+        intro = intro,
+        nu = number_text(10f64.powf(smallest_x)),
+        at = at_smallest,
+        trend = trend,
+        massless = massless
     )
 }
 
@@ -300,7 +306,7 @@ mod tests {
             1,
             &std::sync::atomic::AtomicBool::new(false),
         );
-        roller_caption(&curves)
+        roller_caption(&curves, crate::i18n::words(crate::i18n::Language::English))
     }
 
     /// The caption says what the curves show: the plain roller's first
