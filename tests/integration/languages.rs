@@ -49,29 +49,47 @@ fn text_out_of_place(harness: &Harness<'_>, size: [f32; 2], language: Language) 
     out
 }
 
-/// Every tab, normal and projector, at 1024x768, in every language: no
-/// text past the window's edges, none from the sidebar into the central
-/// panel.
+/// Every tab, normal and projector, at 1024x768, in every language, and
+/// every step of the first lesson on a projector (its buttons and its
+/// card at the sidebar's foot): no text past the window's edges, none from
+/// the sidebar into the central panel.
 #[test]
 fn every_language_fits_a_1024_window() {
+    use zieglerlab::lesson::{Lesson, built_in};
     let size = [1024.0, 768.0];
     let mut problems = Vec::new();
+    // Each tab with no lesson open, then the lesson's steps (1 to 4).
+    let cases = Tab::all()
+        .map(|tab| (tab, 0))
+        .chain((1..=4).map(|step| (Tab::Locus, step)))
+        .collect::<Vec<_>>();
     for language in every_language() {
         for projector in [false, true] {
-            for tab in Tab::all() {
+            for &(tab, lesson_step) in &cases {
                 let mut app = ZieglerApp::new(Settings {
                     projector,
                     ..Settings::default()
                 })
                 .unwrap();
                 app.apply(Action::Language(language));
+                if lesson_step > 0 {
+                    let (_, text) = built_in(language)[0];
+                    let lesson = Lesson::read(text, &Tab::ids()).unwrap();
+                    app.apply(Action::LessonOpen(Box::new(lesson)));
+                    for _ in 1..lesson_step {
+                        app.apply(Action::Command(zieglerlab::app::Command::LessonNext));
+                    }
+                }
                 app.show_tab(tab);
                 app.complete_background_work(tab);
                 let mut harness = Harness::builder()
                     .with_size(size)
                     .build_ui(|ui| app.contents_ui(ui));
                 harness.run_steps(4);
-                let at = format!("{language} {} (projector {projector})", tab.id());
+                let at = format!(
+                    "{language} {} lesson step {lesson_step} (projector {projector})",
+                    tab.id()
+                );
                 let used = harness.ctx.globally_used_rect();
                 if used.right() > size[0] + 0.5 {
                     problems.push(format!("{at}: drawn up to {used:?}"));

@@ -265,7 +265,8 @@ pub fn step_buttons_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Action
     };
     let last = run.step + 1 == run.lesson.steps.len();
     let words = ui.words();
-    ui.horizontal(|ui| {
+    // Wrapped: in German on a projector the three do not fit one row.
+    ui.horizontal_wrapped(|ui| {
         if ui
             .add_enabled(run.step > 0, egui::Button::new(tr!(words, "lesson-back")))
             .on_hover_text(tr!(words, "lesson-back.tooltip"))
