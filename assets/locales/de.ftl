@@ -545,3 +545,27 @@ reveal-divergence = Divergenz: Die Neigung verdoppelt sich alle { $secs } s
 reveal-stable = stabil: Ein Stoß halbiert sich alle { $secs } s{ $period }
 reveal-undamped = stabil: Ein Stoß wächst weder, noch klingt er ab{ $period }
 reveal-here = Die Theorie bei p = { $load }: { $how }.
+
+## Messages in the status line, the recording and the typed save
+
+notice-rods-load-moved = Stäbe = { $rods }: Der Lastregler reicht jetzt von 0 bis { $end }, und die Last ist mit ihm von p = { $from } nach { $to } gewandert (dieselbe Stelle auf dem Regler; eine andere Last eintippen)
+notice-rods-load-kept = Stäbe = { $rods }: Die Last p = { $load } bleibt ({ $why })
+notice-switched-to-reference = die Säule ist zu steif für den Integrator rapier mit seinem Schritt von 1/240 s (riesige Dämpfung oder Steifigkeit bei wenig Masse); auf den Referenzintegrator umgeschaltet
+notice-lesson-last-step = das war der letzte Schritt der Lektion: sie schließen oder eine andere aus dem Menü Lektionen öffnen
+notice-paste-nothing = nichts einzufügen: zuerst Einstellungstext kopieren („Einstellungen kopieren“ im Menü teilen) oder ihn in das Feld tippen
+notice-paste-not-understood = eingefügte Einstellungen abgelehnt, nichts geändert: { $what } nicht verstanden
+notice-pasted = Einstellungen eingefügt
+notice-not-saved = nicht gespeichert: keine Datei gewählt (wo sich kein Dialog öffnete, bietet diese Arbeitsumgebung keinen an)
+recording-saved = Aufnahme gespeichert unter { $path }: { $frames } Bilder in { $secs } s{ $slow }
+recording-jerky = ; sie hat nur { $caught } Bilder pro Sekunde von den { $fps } pro Sekunde des GIFs erfasst (die Erfassungsrate: der Rechner war zu beschäftigt für mehr), also läuft das GIF im richtigen Tempo, aber ruckelig: ein kleineres Fenster (oder der Beamermodus aus) nimmt mehr auf
+recording-title = { $title }: Aufnahme, noch { $secs } s
+recording-making = das GIF entsteht: Bild { $done } von { $kept }
+save-as = speichern unter
+    .path = Pfad zum Speichern
+save-as-typed = Auf dieser Arbeitsumgebung öffnete sich kein Dateidialog: Tippe, wohin { $what } gespeichert werden soll.
+save-as-exists = { $path } gibt es schon: ersetzen? (zum Ersetzen nochmals speichern)
+save-as-replace = ersetzen
+save-as-save = speichern
+save-as-cancel = abbrechen
+save-as-what-table = die Tabelle (CSV)
+save-as-what-plots = die Diagramme (PNG)

@@ -541,3 +541,27 @@ reveal-divergence = divergence: the lean doubles every { $secs } s
 reveal-stable = stable: a kick halves every { $secs } s{ $period }
 reveal-undamped = stable: a kick neither grows nor dies away{ $period }
 reveal-here = The theory at p = { $load }: { $how }.
+
+## Messages in the status line, the recording and the typed save
+
+notice-rods-load-moved = rods = { $rods }: the load bar is now 0 to { $end }, and the load moved with it from p = { $from } to { $to } (the same place on the bar; type the load to set another)
+notice-rods-load-kept = rods = { $rods }: the load p = { $load } is kept ({ $why })
+notice-switched-to-reference = the column is too stiff for the rapier engine at its 1/240 s step (huge damping or stiffness against little mass); switched to the reference engine
+notice-lesson-last-step = this was the lesson's last step: close it, or open another from the lessons menu
+notice-paste-nothing = nothing to paste: copy settings text first ("copy settings" in the share menu), or type it in the box
+notice-paste-not-understood = pasted settings refused, nothing changed: { $what } not understood
+notice-pasted = settings pasted
+notice-not-saved = not saved: no file chosen (where no dialog opened, this desktop offers none)
+recording-saved = recording saved to { $path }: { $frames } frames in { $secs } s{ $slow }
+recording-jerky = ; it caught only { $caught } frames a second of the { $fps } a second the GIF is made of (the capture rate: the machine was too busy to take more), so the GIF plays in the right time but jerkily: a smaller window (or projector mode off) records more
+recording-title = { $title }: recording, { $secs } s to go
+recording-making = making the GIF: frame { $done } of { $kept }
+save-as = save as
+    .path = save as path
+save-as-typed = No file dialog opened on this desktop: type where to save { $what }.
+save-as-exists = { $path } exists: replace it? (save again to replace)
+save-as-replace = replace
+save-as-save = save
+save-as-cancel = cancel
+save-as-what-table = the table (CSV)
+save-as-what-plots = the plots (PNG)

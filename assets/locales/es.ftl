@@ -545,3 +545,27 @@ reveal-divergence = divergencia: la inclinación se duplica cada { $secs } s
 reveal-stable = estable: un golpe se reduce a la mitad cada { $secs } s{ $period }
 reveal-undamped = estable: un golpe ni crece ni se amortigua{ $period }
 reveal-here = La teoría en p = { $load }: { $how }.
+
+## Messages in the status line, the recording and the typed save
+
+notice-rods-load-moved = barras = { $rods }: la barra de carga va ahora de 0 a { $end }, y la carga se movió con ella de p = { $from } a { $to } (el mismo lugar de la barra; escribe la carga para fijar otra)
+notice-rods-load-kept = barras = { $rods }: se mantiene la carga p = { $load } ({ $why })
+notice-switched-to-reference = la columna es demasiado rígida para el integrador rapier con su paso de 1/240 s (amortiguamiento o rigidez enormes frente a poca masa); se cambió al integrador de referencia
+notice-lesson-last-step = este era el último paso de la lección: ciérrala, o abre otra desde el menú lecciones
+notice-paste-nothing = nada que pegar: copia antes un texto de ajustes («copiar ajustes» en el menú compartir), o escríbelo en el cuadro
+notice-paste-not-understood = ajustes pegados rechazados, nada ha cambiado: no se entendió { $what }
+notice-pasted = ajustes pegados
+notice-not-saved = no guardado: no se eligió ningún archivo (donde no se abrió un diálogo, este escritorio no ofrece ninguno)
+recording-saved = grabación guardada en { $path }: { $frames } fotogramas en { $secs } s{ $slow }
+recording-jerky = ; solo capturó { $caught } fotogramas por segundo de los { $fps } por segundo del GIF (el ritmo de captura: la máquina estaba demasiado ocupada para tomar más), así que el GIF va a la velocidad correcta pero a saltos: una ventana más pequeña (o el modo proyector apagado) graba más
+recording-title = { $title }: grabando, faltan { $secs } s
+recording-making = creando el GIF: fotograma { $done } de { $kept }
+save-as = guardar como
+    .path = ruta donde guardar
+save-as-typed = No se abrió ningún diálogo de archivos en este escritorio: escribe dónde guardar { $what }.
+save-as-exists = { $path } ya existe: ¿reemplazarlo? (guarda otra vez para reemplazar)
+save-as-replace = reemplazar
+save-as-save = guardar
+save-as-cancel = cancelar
+save-as-what-table = la tabla (CSV)
+save-as-what-plots = los gráficos (PNG)

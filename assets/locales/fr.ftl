@@ -545,3 +545,27 @@ reveal-divergence = divergence : l'inclinaison double toutes les { $secs } s
 reveal-stable = stable : une poussée diminue de moitié toutes les { $secs } s{ $period }
 reveal-undamped = stable : une poussée ne croît ni ne s'amortit{ $period }
 reveal-here = La théorie à p = { $load } : { $how }.
+
+## Messages in the status line, the recording and the typed save
+
+notice-rods-load-moved = barres = { $rods } : la barre de charge va maintenant de 0 à { $end }, et la charge s'est déplacée avec elle de p = { $from } à { $to } (le même endroit de la barre ; saisir la charge pour en choisir une autre)
+notice-rods-load-kept = barres = { $rods } : la charge p = { $load } est gardée ({ $why })
+notice-switched-to-reference = la colonne est trop raide pour l'intégrateur rapier à son pas de 1/240 s (amortissement ou raideur énormes pour peu de masse) ; passage à l'intégrateur de référence
+notice-lesson-last-step = c'était la dernière étape de la leçon : fermez-la, ou ouvrez-en une autre depuis le menu leçons
+notice-paste-nothing = rien à coller : copiez d'abord un texte de réglages (« copier les réglages » dans le menu partager), ou saisissez-le dans la zone
+notice-paste-not-understood = réglages collés refusés, rien n'a changé : { $what } non compris
+notice-pasted = réglages collés
+notice-not-saved = non enregistré : aucun fichier choisi (là où aucune boîte de dialogue ne s'est ouverte, ce bureau n'en offre pas)
+recording-saved = enregistrement sauvé dans { $path } : { $frames } images en { $secs } s{ $slow }
+recording-jerky = ; il n'a saisi que { $caught } images par seconde sur les { $fps } par seconde du GIF (le rythme de capture : la machine était trop occupée pour en prendre plus), donc le GIF passe à la bonne vitesse mais par saccades : une fenêtre plus petite (ou le mode projecteur désactivé) en enregistre plus
+recording-title = { $title } : enregistrement, encore { $secs } s
+recording-making = création du GIF : image { $done } sur { $kept }
+save-as = enregistrer sous
+    .path = chemin d'enregistrement
+save-as-typed = Aucune boîte de dialogue de fichiers ne s'est ouverte sur ce bureau : saisissez où enregistrer { $what }.
+save-as-exists = { $path } existe : le remplacer ? (enregistrer à nouveau pour remplacer)
+save-as-replace = remplacer
+save-as-save = enregistrer
+save-as-cancel = annuler
+save-as-what-table = le tableau (CSV)
+save-as-what-plots = les graphiques (PNG)

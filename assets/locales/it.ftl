@@ -545,3 +545,27 @@ reveal-divergence = divergenza: l'inclinazione raddoppia ogni { $secs } s
 reveal-stable = stabile: un colpetto si dimezza ogni { $secs } s{ $period }
 reveal-undamped = stabile: un colpetto né cresce né si smorza{ $period }
 reveal-here = La teoria a p = { $load }: { $how }.
+
+## Messages in the status line, the recording and the typed save
+
+notice-rods-load-moved = aste = { $rods }: la barra del carico ora va da 0 a { $end }, e il carico si è spostato con essa da p = { $from } a { $to } (lo stesso punto della barra; scrivi il carico per impostarne un altro)
+notice-rods-load-kept = aste = { $rods }: il carico p = { $load } resta ({ $why })
+notice-switched-to-reference = la colonna è troppo rigida per l'integratore rapier con il suo passo di 1/240 s (smorzamento o rigidezza enormi rispetto a poca massa); passato all'integratore di riferimento
+notice-lesson-last-step = questo era l'ultimo passo della lezione: chiudila, o aprine un'altra dal menu lezioni
+notice-paste-nothing = niente da incollare: copia prima il testo delle impostazioni («copia impostazioni» nel menu condividi), o scrivilo nella casella
+notice-paste-not-understood = impostazioni incollate rifiutate, nulla è cambiato: { $what } non compreso
+notice-pasted = impostazioni incollate
+notice-not-saved = non salvato: nessun file scelto (dove non si è aperta una finestra di dialogo, questo desktop non ne offre)
+recording-saved = registrazione salvata in { $path }: { $frames } fotogrammi in { $secs } s{ $slow }
+recording-jerky = ; ha catturato solo { $caught } fotogrammi al secondo dei { $fps } al secondo di cui è fatta la GIF (la frequenza di cattura: la macchina era troppo occupata per prenderne di più), quindi la GIF va alla giusta velocità ma a scatti: una finestra più piccola (o la modalità proiettore spenta) ne registra di più
+recording-title = { $title }: registrazione, mancano { $secs } s
+recording-making = creazione della GIF: fotogramma { $done } di { $kept }
+save-as = salva come
+    .path = percorso per salvare
+save-as-typed = Su questo desktop non si è aperta alcuna finestra di dialogo: scrivi dove salvare { $what }.
+save-as-exists = { $path } esiste già: sostituirlo? (salva di nuovo per sostituire)
+save-as-replace = sostituisci
+save-as-save = salva
+save-as-cancel = annulla
+save-as-what-table = la tabella (CSV)
+save-as-what-plots = i grafici (PNG)

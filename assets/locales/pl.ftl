@@ -553,3 +553,27 @@ reveal-divergence = dywergencja: wychylenie podwaja się co { $secs } s
 reveal-stable = stateczna: pchnięcie maleje o połowę co { $secs } s{ $period }
 reveal-undamped = stateczna: pchnięcie ani nie rośnie, ani nie zanika{ $period }
 reveal-here = Teoria przy p = { $load }: { $how }.
+
+## Messages in the status line, the recording and the typed save
+
+notice-rods-load-moved = pręty = { $rods }: suwak obciążenia obejmuje teraz od 0 do { $end }, a obciążenie przesunęło się razem z nim z p = { $from } na { $to } (to samo miejsce na suwaku; wpisz obciążenie, by ustawić inne)
+notice-rods-load-kept = pręty = { $rods }: obciążenie p = { $load } pozostaje ({ $why })
+notice-switched-to-reference = kolumna jest zbyt sztywna dla całkowania rapier z jego krokiem 1/240 s (ogromne tłumienie lub sztywność przy małej masie); przełączono na całkowanie wzorcowe
+notice-lesson-last-step = to był ostatni krok lekcji: zamknij ją albo otwórz inną z menu lekcje
+notice-paste-nothing = nie ma czego wkleić: najpierw skopiuj tekst ustawień („kopiuj ustawienia” w menu udostępnij) albo wpisz go w pole
+notice-paste-not-understood = wklejone ustawienia odrzucone, nic się nie zmieniło: nie rozpoznano { $what }
+notice-pasted = ustawienia wklejone
+notice-not-saved = nie zapisano: nie wybrano pliku (gdzie nie otworzyło się okno dialogowe, ten pulpit go nie oferuje)
+recording-saved = nagranie zapisane w { $path }: { $frames } klatek w { $secs } s{ $slow }
+recording-jerky = ; uchwyciło tylko { $caught } klatek na sekundę z { $fps } na sekundę, z których składa się GIF (tempo przechwytywania: komputer był zbyt zajęty, by wziąć więcej), więc GIF odtwarza się we właściwym tempie, ale skokowo: mniejsze okno (lub wyłączony tryb projektora) nagrywa więcej
+recording-title = { $title }: nagrywanie, zostało { $secs } s
+recording-making = tworzenie GIF-a: klatka { $done } z { $kept }
+save-as = zapisz jako
+    .path = ścieżka zapisu
+save-as-typed = Na tym pulpicie nie otworzyło się okno wyboru pliku: wpisz, gdzie zapisać { $what }.
+save-as-exists = { $path } już istnieje: zastąpić? (zapisz ponownie, by zastąpić)
+save-as-replace = zastąp
+save-as-save = zapisz
+save-as-cancel = anuluj
+save-as-what-table = tabelę (CSV)
+save-as-what-plots = wykresy (PNG)

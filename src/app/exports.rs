@@ -3,6 +3,8 @@
 //! and written whole or not at all, off the window's thread (a slow disk or
 //! a stalled mount never freezes the window).
 
+use super::speak::Speak as _;
+use crate::tr;
 use std::path::{Path, PathBuf};
 
 use eframe::egui;
@@ -52,7 +54,8 @@ impl Exports {
                 .save_file("zieglerlab: save the table", table.file_name(), ctx);
             self.open_for = Some(table);
         }
-        self.dialog.typed_path_ui(ctx, "the table (CSV)");
+        self.dialog
+            .typed_path_ui(ctx, &tr!(ctx.words(), "save-as-what-table"));
         if let Some((_, written)) = self.writes.drain().last() {
             return Some(written);
         }
@@ -60,7 +63,7 @@ impl Exports {
         let table = self.open_for.take()?;
         match closed {
             Closed::Chosen(path) => self.save(table, state, path, ctx),
-            Closed::NoneChosen => Some(Notice::info(NOT_SAVED)),
+            Closed::NoneChosen => Some(Notice::info(tr!(ctx.words(), NOT_SAVED))),
         }
     }
 

@@ -3,6 +3,8 @@
 //! that asks; where a desktop has no save dialog, a path typed in the
 //! window instead (the folder and a suggested name filled in).
 
+use super::speak::Speak as _;
+use crate::tr;
 use std::path::{Path, PathBuf};
 use std::sync::mpsc;
 
@@ -17,9 +19,8 @@ pub enum Closed {
     NoneChosen,
 }
 
-/// What a save dialog closed with no file chosen says.
-pub const NOT_SAVED: &str =
-    "not saved: no file chosen (where no dialog opened, this desktop offers none)";
+/// What a save dialog closed with no file chosen says (its message).
+pub const NOT_SAVED: &str = "notice-not-saved";
 
 /// A dialog that closes within this time without a file never opened: no
 /// person cancels a dialog so fast (a desktop with neither a portal nor
@@ -126,17 +127,17 @@ impl FileDialog {
             return;
         };
         let mut answer = None;
-        egui::Window::new("save as")
+        let words = ctx.words();
+        egui::Window::new(tr!(words, "save-as"))
+            .id(egui::Id::unique("save as"))
             .collapsible(false)
             .resizable(false)
             .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
             .show(ctx, |ui| {
-                ui.label(format!(
-                    "No file dialog opened on this desktop: type where to save {what}."
-                ));
+                ui.label(tr!(words, "save-as-typed", what = what));
                 let edit = ui
                     .add(egui::TextEdit::singleline(path).desired_width(360.0))
-                    .accessible_name("save as path");
+                    .accessible_name(tr!(words, "save-as.path"));
                 let entered = edit.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
                 let file = PathBuf::from(path.trim());
                 let why_not = refusal(&file, path);
@@ -148,15 +149,20 @@ impl FileDialog {
                 let exists = std::fs::metadata(&file).is_ok_and(|m| m.is_file());
                 let asked = self.replacing.as_ref() == Some(&file);
                 if asked {
-                    ui.label(format!(
-                        "{} exists: replace it? (save again to replace)",
-                        file.display()
+                    ui.label(tr!(
+                        words,
+                        "save-as-exists",
+                        path = file.display().to_string()
                     ));
                 } else {
                     self.replacing = None;
                 }
                 ui.horizontal(|ui| {
-                    let label = if asked { "replace" } else { "save" };
+                    let label = if asked {
+                        tr!(words, "save-as-replace")
+                    } else {
+                        tr!(words, "save-as-save")
+                    };
                     let save = ui.add_enabled(why_not.is_none(), egui::Button::new(label));
                     if save.clicked() || (entered && why_not.is_none()) {
                         if exists && !asked {
@@ -165,7 +171,7 @@ impl FileDialog {
                             answer = Some(Closed::Chosen(file.clone()));
                         }
                     }
-                    if ui.button("cancel").clicked() {
+                    if ui.button(tr!(words, "save-as-cancel")).clicked() {
                         answer = Some(Closed::NoneChosen);
                     }
                 });

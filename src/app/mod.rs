@@ -370,7 +370,10 @@ impl ZieglerApp {
             self.for_pictures || self.recorder.is_capturing() || self.picture.capturing(),
         );
         match self.recorder.frame(ui.ctx()) {
-            Some(Ok(recorded)) => self.state.say(Notice::info(recorded.text())),
+            Some(Ok(recorded)) => {
+                let text = recorded.text(self.state.words());
+                self.state.say(Notice::info(text));
+            }
             Some(Err(why)) => self
                 .state
                 .say(Notice::error(format!("recording failed: {why}"))),

@@ -2,6 +2,8 @@
 //! dialog, then the next frame drawn as for a picture (no hints, no view
 //! buttons) and the tab's area cut out of the window's screenshot.
 
+use super::speak::Speak as _;
+use crate::tr;
 use std::path::PathBuf;
 use std::sync::{Arc, mpsc};
 
@@ -46,14 +48,15 @@ impl PanelPicture {
             self.dialog
                 .save_file("zieglerlab: save the plots as PNG", &name, ctx);
         }
-        self.dialog.typed_path_ui(ctx, "the plots (PNG)");
+        self.dialog
+            .typed_path_ui(ctx, &tr!(ctx.words(), "save-as-what-plots"));
         match self.dialog.answer() {
             Some(Closed::Chosen(path)) => {
                 self.chosen = Some(path);
                 ctx.request_repaint();
             }
             Some(Closed::NoneChosen) => {
-                return Some(Notice::info(NOT_SAVED));
+                return Some(Notice::info(tr!(ctx.words(), NOT_SAVED)));
             }
             None => {}
         }

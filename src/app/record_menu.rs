@@ -95,7 +95,7 @@ pub fn record_ui(
         // title counts down.
         return;
     }
-    if let Some(progress) = recorder.progress_text() {
+    if let Some(progress) = recorder.progress_text(words) {
         ui.label(progress);
         return;
     }

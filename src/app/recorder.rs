@@ -5,6 +5,9 @@
 //! written whole into the chosen folder, with progress on the way and a
 //! notice saying where the file went.
 
+use super::speak::Speak as _;
+use crate::i18n::Words;
+use crate::tr;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, OnceLock, mpsc};
@@ -75,22 +78,26 @@ impl Recorded {
     /// a machine too busy for a smooth GIF (fewer than half the frames a
     /// second asked for), what records more.
     #[must_use]
-    pub fn text(&self) -> String {
+    pub fn text(&self, words: &'static Words) -> String {
         #[expect(clippy::cast_precision_loss, reason = "a count of frames")]
         let per_sec = self.frames as f64 / self.secs.max(1e-9);
         let slow = if per_sec < f64::from(RECORD_FPS) / 2.0 {
-            format!(
-                "; it caught only {} frames a second of the {RECORD_FPS} a second the GIF is made of (the capture rate: the machine was too busy to take more), so the GIF plays in the right time but jerkily: a smaller window (or projector mode off) records more",
-                crate::format::number_text((per_sec * 10.0).round() / 10.0)
+            tr!(
+                words,
+                "recording-jerky",
+                caught = crate::format::number_text((per_sec * 10.0).round() / 10.0),
+                fps = RECORD_FPS
             )
         } else {
             String::new()
         };
-        format!(
-            "recording saved to {}: {} frames in {} s{slow}",
-            self.path.display(),
-            self.frames,
-            crate::format::number_text(self.secs)
+        tr!(
+            words,
+            "recording-saved",
+            path = self.path.display().to_string(),
+            frames = self.frames,
+            secs = crate::format::number_text(self.secs),
+            slow = slow
         )
     }
 }
@@ -224,9 +231,11 @@ impl Recorder {
                 let (take, next) = due(*next_secs, now_secs, RECORD_FPS);
                 *next_secs = next;
                 if take {
-                    ctx.send_viewport_cmd(egui::ViewportCommand::Title(format!(
-                        "{WINDOW_TITLE}: recording, {:.0} s to go",
-                        (*until_secs - now_secs).max(0.0).ceil()
+                    ctx.send_viewport_cmd(egui::ViewportCommand::Title(tr!(
+                        ctx.words(),
+                        "recording-title",
+                        title = WINDOW_TITLE,
+                        secs = format!("{:.0}", (*until_secs - now_secs).max(0.0).ceil())
                     )));
                     *requested += 1;
                     ctx.request_screenshot(encoder.taker(now_secs));
@@ -270,14 +279,16 @@ impl Recorder {
     /// A line saying how far the making of the GIF is, if only that is left
     /// (the capture's own progress is in the window's title).
     #[must_use]
-    pub fn progress_text(&self) -> Option<String> {
+    pub fn progress_text(&self, words: &'static Words) -> Option<String> {
         match self {
             Self::Encoding { encoder } => {
                 let kept = encoder.delivered.load(Ordering::Relaxed)
                     - encoder.left_out.load(Ordering::Relaxed);
-                Some(format!(
-                    "making the GIF: frame {} of {kept}",
-                    encoder.done.load(Ordering::Relaxed)
+                Some(tr!(
+                    words,
+                    "recording-making",
+                    done = encoder.done.load(Ordering::Relaxed),
+                    kept = kept
                 ))
             }
             Self::Idle | Self::Capturing { .. } => None,
@@ -499,14 +510,14 @@ mod tests {
             frames,
             secs: 10.0,
         };
-        let busy = recorded(19).text();
+        let busy = recorded(19).text(crate::i18n::words(crate::i18n::Language::English));
         assert!(
             busy.starts_with("recording saved to /tmp/clip.gif: 19 frames in 10 s; it caught only 1.9 frames a second of the 10 a second the GIF is made of (the capture rate"),
             "{busy}"
         );
         assert!(busy.contains("a smaller window"), "{busy}");
         assert_eq!(
-            recorded(98).text(),
+            recorded(98).text(crate::i18n::words(crate::i18n::Language::English)),
             "recording saved to /tmp/clip.gif: 98 frames in 10 s"
         );
     }

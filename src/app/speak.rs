@@ -100,6 +100,26 @@ mod tests {
             ids.push(id.to_owned());
             ids.push(format!("{id}.tooltip"));
         }
+        // Ids kept in constants or chosen at run time.
+        ids.extend(
+            [
+                crate::app::VIEW_HINT,
+                crate::app::file_dialog::NOT_SAVED,
+                crate::app::state::SWITCHED_TO_REFERENCE,
+                "legend-now-below",
+                "legend-now-above",
+                "legend-sweep-up",
+                "legend-sweep-down",
+                "axis-re",
+                "axis-im",
+                "welcome-column",
+                "welcome-states",
+                "welcome-locus",
+                "welcome-try",
+                "hint-first-launch",
+            ]
+            .map(str::to_owned),
+        );
         let missing: Vec<&String> = ids.iter().filter(|id| !english.has(id)).collect();
         assert!(missing.is_empty(), "not in en.ftl: {missing:?}");
     }

@@ -45,20 +45,25 @@ fn push_trail(trail: &mut VecDeque<(f64, [f64; 2])>, now: &Observables) {
 }
 
 /// What the user is told when rapier cannot integrate the column.
-const SWITCHED_TO_REFERENCE: &str = "the column is too stiff for the rapier engine at its 1/240 s step (huge damping or stiffness against little mass); switched to the reference engine";
+pub(crate) const SWITCHED_TO_REFERENCE: &str = "notice-switched-to-reference";
 
 /// A run of the settings' model from the standard kick. When rapier cannot
 /// integrate it the reference engine runs instead, the settings say so, and
 /// so does the returned notice.
-fn start(settings: &mut Settings) -> Result<(Simulation, Option<Notice>), SimError> {
+fn start(
+    settings: &mut Settings,
+    words: &'static Words,
+) -> Result<(Simulation, Option<Notice>), SimError> {
     let model = settings.model;
     let x0 = initial_state(&model, 1e-3);
     match Simulation::new(model, settings.engine, x0.clone(), DEFAULT_STEP_SECS) {
         Ok(sim) => Ok((sim, None)),
         Err(SimError::TooStiffForRapier { .. }) => {
             settings.engine = EngineKind::Reference;
-            Simulation::new(model, EngineKind::Reference, x0, DEFAULT_STEP_SECS)
-                .map(|sim| (sim, Some(Notice::warning(SWITCHED_TO_REFERENCE))))
+            Simulation::new(model, EngineKind::Reference, x0, DEFAULT_STEP_SECS).map(|sim| {
+                let notice = Notice::warning(crate::tr!(words, SWITCHED_TO_REFERENCE));
+                (sim, Some(notice))
+            })
         }
         Err(error) => Err(error),
     }
@@ -160,7 +165,8 @@ impl AppState {
         mut settings: Settings,
         worker: Option<analysis::AnalysisJobs>,
     ) -> Result<Self, SimError> {
-        let (sim, notice) = start(&mut settings)?;
+        // A new state speaks English until told otherwise.
+        let (sim, notice) = start(&mut settings, i18n::words(Language::default()))?;
         let mut state = Self {
             settings,
             sim,
@@ -348,17 +354,20 @@ impl AppState {
     fn scale_load_with_the_bar(&mut self, bar_before: f64, load_before: f64) {
         let load = load_before * self.load_max() / bar_before;
         match self.set_parameter(Key::Load, load) {
-            Ok(()) => self.say(Notice::info(format!(
-                "rods = {}: the load bar is now 0 to {}, and the load moved with it from p = {} to {} (the same place on the bar; type the load to set another)",
-                self.settings.model.column.rods,
-                crate::format::number_text(self.load_max()),
-                crate::format::load_text(load_before),
-                crate::format::load_text(load)
+            Ok(()) => self.say(Notice::info(crate::tr!(
+                self.words(),
+                "notice-rods-load-moved",
+                rods = self.settings.model.column.rods,
+                end = crate::format::number_text(self.load_max()),
+                from = crate::format::load_text(load_before),
+                to = crate::format::load_text(load)
             ))),
-            Err(why) => self.say(Notice::warning(format!(
-                "rods = {}: the load p = {} is kept ({why})",
-                self.settings.model.column.rods,
-                crate::format::load_text(load_before)
+            Err(why) => self.say(Notice::warning(crate::tr!(
+                self.words(),
+                "notice-rods-load-kept",
+                rods = self.settings.model.column.rods,
+                load = crate::format::load_text(load_before),
+                why = why.to_string()
             ))),
         }
     }
@@ -417,7 +426,7 @@ impl AppState {
     fn take_settings(&mut self, settings: Settings) -> Result<(), SimError> {
         // Would the run start? (Cheap: no analysis.) The engine it settles on.
         let mut trial = settings;
-        start(&mut trial)?;
+        start(&mut trial, self.words())?;
         self.switch_column(trial.preset, trial.model);
         if trial.engine != self.settings.engine {
             self.set_engine(trial.engine);
@@ -475,7 +484,10 @@ impl AppState {
                     .and_then(|()| self.sim.set_model(valid));
                 if switched.is_ok() {
                     self.settings.engine = EngineKind::Reference;
-                    self.say(Notice::warning(SWITCHED_TO_REFERENCE));
+                    self.say(Notice::warning(crate::tr!(
+                        self.words(),
+                        SWITCHED_TO_REFERENCE
+                    )));
                 }
                 switched
             }

@@ -216,9 +216,7 @@ impl AppState {
             if let Some(next) = self.next_lesson() {
                 return vec![Action::LessonOpen(Box::new(next))];
             }
-            self.say(Notice::info(
-                "this was the lesson's last step: close it, or open another from the lessons menu",
-            ));
+            self.say(Notice::info(tr!(self.words(), "notice-lesson-last-step")));
             return Vec::new();
         }
         let step = if forward {

@@ -108,7 +108,8 @@ impl AppState {
 
     /// A fresh run of the current model from the standard kick.
     pub(super) fn reset(&mut self) {
-        match start(&mut self.settings) {
+        let words = self.words();
+        match start(&mut self.settings, words) {
             Ok((sim, notice)) => {
                 if let Some(notice) = notice {
                     self.say(notice);

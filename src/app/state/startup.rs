@@ -78,17 +78,19 @@ impl AppState {
     /// and says why.
     pub(super) fn paste_settings(&mut self, text: &str) {
         if text.trim().is_empty() {
-            self.say(Notice::error(
-                "nothing to paste: copy settings text first (\"copy settings\" in the share menu), or type it in the box",
-            ));
+            self.say(Notice::error(crate::tr!(
+                self.words(),
+                "notice-paste-nothing"
+            )));
             return;
         }
         let settings = match read(text) {
             Ok(read) if read.ignored.is_empty() => read.settings,
             Ok(read) => {
-                self.say(Notice::error(format!(
-                    "pasted settings refused, nothing changed: {} not understood",
-                    read.ignored.join(", ")
+                self.say(Notice::error(crate::tr!(
+                    self.words(),
+                    "notice-paste-not-understood",
+                    what = read.ignored.join(", ")
                 )));
                 return;
             }
@@ -103,7 +105,7 @@ impl AppState {
         // the tab stay (a new state dropped the thread, so every later change
         // was analysed on the UI thread).
         match self.take_settings(settings) {
-            Ok(()) => self.say(Notice::info("settings pasted")),
+            Ok(()) => self.say(Notice::info(crate::tr!(self.words(), "notice-pasted"))),
             Err(error) => {
                 self.say(Notice::error(format!(
                     "pasted settings refused, nothing changed: {error}"
