@@ -223,3 +223,43 @@ fn a_lesson_speaks_the_window_s_language() {
         "the step buttons in French"
     );
 }
+
+/// A figure's axes and legend in the language asked for; English unless
+/// asked, whatever the system's.
+#[test]
+fn a_figure_speaks_the_language_asked_for() {
+    let dir = tempfile::tempdir().unwrap();
+    let figure = |lang: Option<&str>| {
+        let out = dir.path().join(format!("{}.svg", lang.unwrap_or("none")));
+        let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_zieglerlab"));
+        command.args([
+            "figure",
+            "--preset",
+            "ziegler-1952",
+            "--kind",
+            "re-im",
+            "--out",
+        ]);
+        command.arg(&out);
+        if let Some(lang) = lang {
+            command.args(["--lang", lang]);
+        }
+        command.env("LANG", "de_DE.UTF-8").env_remove("LC_ALL");
+        let output = output_within(
+            &mut command,
+            std::time::Duration::from_mins(5),
+            "figure",
+            "the binary runs",
+        );
+        assert!(output.status.success(), "{output:?}");
+        std::fs::read_to_string(out).unwrap()
+    };
+    let german = figure(Some("de"));
+    assert!(
+        german.contains("stabil zu Flattern"),
+        "the legend in German"
+    );
+    assert!(!german.contains("stable to flutter"));
+    let english = figure(None);
+    assert!(english.contains("stable to flutter"), "English by default");
+}
