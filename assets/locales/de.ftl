@@ -30,6 +30,7 @@ menu-record = aufnehmen
 menu-keys = Tasten
     .tooltip = die Befehle der Tastatur
 menu-language = die Sprache des Fensters (für den nächsten Start gemerkt)
+    .name = Sprache: { $language }
 projector-toggle = Beamer (P)
 overlay = Vergleich
     .none = keiner

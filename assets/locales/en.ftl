@@ -29,6 +29,7 @@ menu-record = record
 menu-keys = keys
     .tooltip = the keyboard's commands
 menu-language = the window's language (remembered for the next launch)
+    .name = language: { $language }
 projector-toggle = projector (P)
 overlay = overlay
     .none = none

@@ -30,6 +30,7 @@ menu-record = grabar
 menu-keys = teclas
     .tooltip = las órdenes del teclado
 menu-language = el idioma de la ventana (se recuerda en el próximo inicio)
+    .name = idioma: { $language }
 projector-toggle = proyector (P)
 overlay = comparar
     .none = ninguno

@@ -30,6 +30,7 @@ menu-record = enregistrer
 menu-keys = touches
     .tooltip = les commandes du clavier
 menu-language = la langue de la fenêtre (retenue pour le prochain lancement)
+    .name = langue : { $language }
 projector-toggle = projecteur (P)
 overlay = comparer
     .none = aucun

@@ -30,6 +30,7 @@ menu-record = registra
 menu-keys = tasti
     .tooltip = i comandi da tastiera
 menu-language = la lingua della finestra (ricordata al prossimo avvio)
+    .name = lingua: { $language }
 projector-toggle = proiettore (P)
 overlay = confronto
     .none = nessuno

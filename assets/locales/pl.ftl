@@ -32,6 +32,7 @@ menu-record = nagraj
 menu-keys = klawisze
     .tooltip = polecenia klawiatury
 menu-language = język okna (zapamiętany do następnego uruchomienia)
+    .name = język: { $language }
 projector-toggle = projektor (P)
 overlay = porównanie
     .none = brak

@@ -120,7 +120,7 @@ fn the_language_menu_switches_the_window() {
         .with_size([1024.0, 768.0])
         .build_ui(|ui| app.contents_ui(ui));
     harness.run_steps(2);
-    harness.get_by_label("English").click();
+    harness.get_by_label("language: English").click();
     harness.run_steps(2);
     harness.get_by_label("Polski").click();
     harness.run_steps(3);

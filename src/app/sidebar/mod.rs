@@ -162,6 +162,11 @@ fn language_menu_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions) 
             }
         })
         .0
+        .accessible_name(tr!(
+            ui.words(),
+            "menu-language.name",
+            language = current.endonym()
+        ))
         .on_hover_text(tr!(ui.words(), "menu-language"));
 }
 

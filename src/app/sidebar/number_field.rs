@@ -81,7 +81,13 @@ impl NumberFields {
         if refused {
             edit = edit.text_color(theme.error);
         }
-        let response = ui.add(edit).accessible_name(key.name());
+        // The load by its word (the others by their symbols, a, nu, k1...).
+        let name = if key == Key::Load {
+            tr!(ui.words(), "mark-load")
+        } else {
+            key.name().to_owned()
+        };
+        let response = ui.add(edit).accessible_name(name);
         let escaped = response.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Escape));
         if escaped {
             self.drafts.remove(&key);
