@@ -9,6 +9,7 @@ use super::speak::Speak as _;
 use super::state::AppState;
 use super::tabs::Tab;
 use super::theme::Theme;
+use crate::i18n::Language;
 use crate::lesson::{Lesson, built_in};
 use crate::tr;
 
@@ -59,6 +60,19 @@ pub fn welcome_ui(ctx: &egui::Context, state: &AppState, actions: &mut Actions, 
             ui.set_max_width(34.0 * text_size);
             let words = ui.words();
             ui.heading(tr!(words, "welcome-title"));
+            // The languages first: the card is modal, the status line's
+            // menu out of reach until it closes.
+            ui.horizontal_wrapped(|ui| {
+                for language in Language::CHOSEN_FROM {
+                    if ui
+                        .selectable_label(state.language() == language, language.endonym())
+                        .on_hover_text(tr!(words, "menu-language"))
+                        .clicked()
+                    {
+                        actions.push(Action::Language(language));
+                    }
+                }
+            });
             for paragraph in WELCOME {
                 ui.add_space(0.4 * theme.text_size);
                 ui.label(tr!(words, paragraph));

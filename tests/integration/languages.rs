@@ -263,3 +263,29 @@ fn a_figure_speaks_the_language_asked_for() {
     let english = figure(None);
     assert!(english.contains("stable to flutter"), "English by default");
 }
+
+/// The first launch's welcome offers every language before anything else
+/// (the card is modal: the status line's menu is out of reach behind it).
+#[test]
+fn the_welcome_offers_every_language() {
+    let mut app = ZieglerApp::from_storage(None);
+    let mut harness = Harness::builder()
+        .with_size([1024.0, 768.0])
+        .build_ui(|ui| app.contents_ui(ui));
+    harness.run_steps(2);
+    for language in Language::CHOSEN_FROM {
+        assert!(
+            harness.query_by_label(language.endonym()).is_some(),
+            "{language}"
+        );
+    }
+    harness.get_by_label("Deutsch").click();
+    harness.run_steps(3);
+    let title = words(Language::German).get("welcome-title");
+    assert!(
+        harness.query_by_label(&title).is_some(),
+        "the welcome in German"
+    );
+    drop(harness);
+    assert_eq!(app.layout().language.as_deref(), Some("de"));
+}
