@@ -570,3 +570,16 @@ save-as-save = speichern
 save-as-cancel = abbrechen
 save-as-what-table = die Tabelle (CSV)
 save-as-what-plots = die Diagramme (PNG)
+
+## The paradox curves
+
+paradox-ratio-joints = c1/c2
+paradox-ratio-external = c_ext l^3 / c (äußere / innere)
+paradox-ratio-roller-mass = nu = m3/m
+paradox-curve-damping = Dämpfung g2 = { $level }
+paradox-curve-speed = V = { $speed } m/s
+paradox-curve-all-speeds = { $speeds }: eine Kurve, die erste kritische Last hängt nicht von V ab
+paradox-reference-undamped = ungedämpft
+paradox-reference-massless = nu = 0: die ideale Folgelast
+paradox-reference = { $name }: p = { $load }
+paradox-reference-above = { $name }: p = { $load } (über der Achse)

@@ -566,3 +566,16 @@ save-as-save = save
 save-as-cancel = cancel
 save-as-what-table = the table (CSV)
 save-as-what-plots = the plots (PNG)
+
+## The paradox curves
+
+paradox-ratio-joints = c1/c2
+paradox-ratio-external = c_ext l^3 / c (external / internal)
+paradox-ratio-roller-mass = nu = m3/m
+paradox-curve-damping = damping g2 = { $level }
+paradox-curve-speed = V = { $speed } m/s
+paradox-curve-all-speeds = { $speeds }: one curve, the first critical load does not depend on V
+paradox-reference-undamped = undamped
+paradox-reference-massless = nu = 0: the ideal follower
+paradox-reference = { $name }: p = { $load }
+paradox-reference-above = { $name }: p = { $load } (above the axis)

@@ -570,3 +570,16 @@ save-as-save = guardar
 save-as-cancel = cancelar
 save-as-what-table = la tabla (CSV)
 save-as-what-plots = los gráficos (PNG)
+
+## The paradox curves
+
+paradox-ratio-joints = c1/c2
+paradox-ratio-external = c_ext l^3 / c (externo / interno)
+paradox-ratio-roller-mass = nu = m3/m
+paradox-curve-damping = amortiguamiento g2 = { $level }
+paradox-curve-speed = V = { $speed } m/s
+paradox-curve-all-speeds = { $speeds }: una curva, la primera carga crítica no depende de V
+paradox-reference-undamped = sin amortiguamiento
+paradox-reference-massless = nu = 0: la seguidora ideal
+paradox-reference = { $name }: p = { $load }
+paradox-reference-above = { $name }: p = { $load } (por encima del eje)

@@ -570,3 +570,16 @@ save-as-save = enregistrer
 save-as-cancel = annuler
 save-as-what-table = le tableau (CSV)
 save-as-what-plots = les graphiques (PNG)
+
+## The paradox curves
+
+paradox-ratio-joints = c1/c2
+paradox-ratio-external = c_ext l^3 / c (externe / interne)
+paradox-ratio-roller-mass = nu = m3/m
+paradox-curve-damping = amortissement g2 = { $level }
+paradox-curve-speed = V = { $speed } m/s
+paradox-curve-all-speeds = { $speeds } : une courbe, la première charge critique ne dépend pas de V
+paradox-reference-undamped = sans amortissement
+paradox-reference-massless = nu = 0 : la suiveuse idéale
+paradox-reference = { $name } : p = { $load }
+paradox-reference-above = { $name } : p = { $load } (au-dessus de l'axe)

@@ -570,3 +570,16 @@ save-as-save = salva
 save-as-cancel = annulla
 save-as-what-table = la tabella (CSV)
 save-as-what-plots = i grafici (PNG)
+
+## The paradox curves
+
+paradox-ratio-joints = c1/c2
+paradox-ratio-external = c_ext l^3 / c (esterno / interno)
+paradox-ratio-roller-mass = nu = m3/m
+paradox-curve-damping = smorzamento g2 = { $level }
+paradox-curve-speed = V = { $speed } m/s
+paradox-curve-all-speeds = { $speeds }: una curva, il primo carico critico non dipende da V
+paradox-reference-undamped = non smorzata
+paradox-reference-massless = nu = 0: la follower ideale
+paradox-reference = { $name }: p = { $load }
+paradox-reference-above = { $name }: p = { $load } (sopra l'asse)

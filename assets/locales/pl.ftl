@@ -578,3 +578,16 @@ save-as-save = zapisz
 save-as-cancel = anuluj
 save-as-what-table = tabelę (CSV)
 save-as-what-plots = wykresy (PNG)
+
+## The paradox curves
+
+paradox-ratio-joints = c1/c2
+paradox-ratio-external = c_ext l^3 / c (zewnętrzne / wewnętrzne)
+paradox-ratio-roller-mass = nu = m3/m
+paradox-curve-damping = tłumienie g2 = { $level }
+paradox-curve-speed = V = { $speed } m/s
+paradox-curve-all-speeds = { $speeds }: jedna krzywa, pierwsze obciążenie krytyczne nie zależy od V
+paradox-reference-undamped = bez tłumienia
+paradox-reference-massless = nu = 0: idealna siła śledząca
+paradox-reference = { $name }: p = { $load }
+paradox-reference-above = { $name }: p = { $load } (nad osią)

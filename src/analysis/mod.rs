@@ -33,8 +33,9 @@ pub use map::{
     default_map_axis,
 };
 pub use paradox::{
-    Curves, DampingKind, curves as paradox_curves, first_instability, first_loss_of_stability,
-    flutter_load_damped, flutter_load_external, own_point, swept_ratio,
+    CurveName, Curves, DampingKind, ReferenceName, SweptRatio, curves as paradox_curves,
+    first_instability, first_loss_of_stability, flutter_load_damped, flutter_load_external,
+    own_point, swept_ratio,
 };
 pub use peaks::Peaks;
 pub use pencil::{AffinePencil, Spectrum, spectrum};

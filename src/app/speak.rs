@@ -117,6 +117,11 @@ mod tests {
                 "welcome-locus",
                 "welcome-try",
                 "hint-first-launch",
+                "paradox-ratio-joints",
+                "paradox-ratio-external",
+                "paradox-ratio-roller-mass",
+                "paradox-reference-undamped",
+                "paradox-reference-massless",
             ]
             .map(str::to_owned),
         );

@@ -3,8 +3,8 @@
 //! the undamped (or massless) reference dashed, and the model's own point.
 
 use super::spec::{Entry, Ink, Mark, OffView, Plot, Size, Swatch, Ticks, View, Weight};
-use crate::analysis::Curves;
-use crate::format::load_text;
+use crate::analysis::{CurveName, Curves, ReferenceName, SweptRatio};
+use crate::format::{load_text, number_text};
 use crate::i18n::Words;
 use crate::tr;
 
@@ -25,6 +25,45 @@ pub struct Paradox<'a> {
 }
 
 impl Paradox<'_> {
+    /// A curve's name in the legend's language.
+    fn curve_name(&self, name: &CurveName) -> String {
+        let words = self.words;
+        let speed = |v: f64| tr!(words, "paradox-curve-speed", speed = number_text(v));
+        match name {
+            CurveName::DampingLevel(level) => {
+                tr!(words, "paradox-curve-damping", level = number_text(*level))
+            }
+            CurveName::BandSpeed(v) => speed(*v),
+            CurveName::AllBandSpeeds(speeds) => tr!(
+                words,
+                "paradox-curve-all-speeds",
+                speeds = speeds
+                    .iter()
+                    .map(|&v| speed(v))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        }
+    }
+
+    /// The reference line's name in the legend, with its load, and said to
+    /// lie above the axis unless `within` (the second answer of
+    /// [`crate::analysis::Curves::fitted_top`]).
+    fn reference_label(&self, within: bool) -> Option<String> {
+        let words = self.words;
+        let (name, p) = self.curves.reference.as_ref()?;
+        let name = words.get(match name {
+            ReferenceName::Undamped => "paradox-reference-undamped",
+            ReferenceName::MasslessRoller => "paradox-reference-massless",
+        });
+        let load = load_text(*p);
+        Some(if within {
+            tr!(words, "paradox-reference", name = name, load = load)
+        } else {
+            tr!(words, "paradox-reference-above", name = name, load = load)
+        })
+    }
+
     /// The plot, fitted to the curves and the model's point (the reference
     /// line only when it lies near them: [`Curves::fitted_top`]); `None`
     /// when the curves have no extent along the ratio.
@@ -75,7 +114,15 @@ impl Paradox<'_> {
         }
         Some(Plot {
             id: "paradox",
-            x_label: tr!(self.words, "axis-log-scale", axis = curves.x_label),
+            x_label: tr!(
+                self.words,
+                "axis-log-scale",
+                axis = self.words.get(match curves.ratio {
+                    SweptRatio::JointDampers => "paradox-ratio-joints",
+                    SweptRatio::ExternalOverInternal => "paradox-ratio-external",
+                    SweptRatio::RollerMass => "paradox-ratio-roller-mass",
+                })
+            ),
             y_label: tr!(self.words, "axis-first-critical-load"),
             x_ticks: Ticks::Decades,
             view: View::Ranges {
@@ -96,10 +143,10 @@ impl Paradox<'_> {
             .lines
             .iter()
             .enumerate()
-            .map(|(k, (name, _))| Entry::new(Swatch::Line(Ink::Series(k)), name.clone()))
+            .map(|(k, (name, _))| Entry::new(Swatch::Line(Ink::Series(k)), self.curve_name(name)))
             .collect();
         let (_, reference_within) = curves.fitted_top(self.here.map(|h| h[1]));
-        if let Some(name) = curves.reference_label(reference_within) {
+        if let Some(name) = self.reference_label(reference_within) {
             entries.push(Entry::new(Swatch::Dashed(Ink::Reference), name));
         }
         if let Some([_, p]) = self.here {
@@ -109,5 +156,48 @@ impl Paradox<'_> {
             ));
         }
         entries
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::i18n::{Language, words};
+
+    /// The legend names each curve and the reference in the language
+    /// asked for, and says when the reference lies above the axis.
+    #[test]
+    fn the_legend_names_the_curves_and_the_reference_in_its_language() {
+        let curves = Curves {
+            ratio: SweptRatio::RollerMass,
+            lines: vec![(
+                CurveName::AllBandSpeeds(vec![0.01, 0.1, 1.0]),
+                vec![[-2.0, 0.01], [0.0, 0.02]],
+            )],
+            reference: Some((ReferenceName::MasslessRoller, 2.0858)),
+            note: None,
+        };
+        let legend = |language| {
+            let paradox = Paradox {
+                curves: &curves,
+                here: None,
+                words: words(language),
+            };
+            paradox
+                .legend()
+                .into_iter()
+                .map(|e| e.text)
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(
+            legend(Language::English),
+            [
+                "V = 0.01 m/s, V = 0.1 m/s, V = 1 m/s: one curve, the first critical load does not depend on V",
+                "nu = 0: the ideal follower: p = 2.0858 (above the axis)",
+            ]
+        );
+        let french = legend(Language::French);
+        assert!(french[0].contains("ne dépend pas de V"), "{french:?}");
+        assert!(french[1].ends_with("(au-dessus de l'axe)"), "{french:?}");
     }
 }

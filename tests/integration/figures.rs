@@ -259,7 +259,7 @@ fn map_figure_draws_each_cell_in_its_state_and_the_boundaries_on_the_critical_lo
 fn paradox_figure_names_the_undamped_load_and_draws_it_at_its_height() {
     let m = model("ziegler-1952", &["c1=0.001", "c2=0.001"]);
     let data = ParadoxData::new(&m, DampingKind::Joints);
-    let (_, undamped) = data.curves.reference.clone().expect("the undamped load");
+    let (_, undamped) = data.curves.reference.expect("the undamped load");
     assert!((undamped - (3.5 - 2f64.sqrt())).abs() < 1e-9);
     let here = data.here.expect("the model's own point");
     assert!(here.0.abs() < 1e-12, "c1/c2 = 1 is log10 0");

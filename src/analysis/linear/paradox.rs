@@ -123,15 +123,6 @@ pub enum DampingKind {
 }
 
 impl DampingKind {
-    /// The x axis's quantity, for the axis and the menu.
-    #[must_use]
-    pub fn ratio_name(self) -> &'static str {
-        match self {
-            Self::Joints => "c1/c2",
-            Self::External => "c_ext l^3 / c (external / internal)",
-        }
-    }
-
     /// The current model's ratio, when it has this kind of damping.
     #[must_use]
     pub fn ratio(self, model: &Model) -> f64 {
@@ -181,13 +172,46 @@ pub fn own_point(
         .map(|p| [x.log10(), p])
 }
 
+/// What a curve is, for its name in a legend (in the legend's language).
+#[derive(Clone, Debug, PartialEq)]
+pub enum CurveName {
+    /// Damping at level `g2`.
+    DampingLevel(f64),
+    /// The band at this speed, in m/s.
+    BandSpeed(f64),
+    /// One curve for all these band speeds: the first critical load does
+    /// not depend on V.
+    AllBandSpeeds(Vec<f64>),
+}
+
+/// What the reference line is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ReferenceName {
+    /// The column without damping.
+    Undamped,
+    /// The massless roller: the ideal follower force.
+    MasslessRoller,
+}
+
+/// The ratio swept along the curves.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum SweptRatio {
+    /// c1/c2.
+    #[default]
+    JointDampers,
+    /// External drag over internal damping.
+    ExternalOverInternal,
+    /// The roller's mass, nu = m3/m.
+    RollerMass,
+}
+
 /// What the explorer draws: curves of the first critical load against
 /// log10 of the swept ratio, and the undamped (or massless) reference.
 #[derive(Clone, Debug, Default)]
 pub struct Curves {
-    pub x_label: &'static str,
-    pub lines: Vec<(String, Vec<[f64; 2]>)>,
-    pub reference: Option<(String, f64)>,
+    pub ratio: SweptRatio,
+    pub lines: Vec<(CurveName, Vec<[f64; 2]>)>,
+    pub reference: Option<(ReferenceName, f64)>,
     /// Why there is nothing to draw, if so.
     pub note: Option<String>,
 }
@@ -195,10 +219,10 @@ pub struct Curves {
 impl Curves {
     /// Curves with `reference`; with a note instead when no line has a point.
     fn new(
-        x_label: &'static str,
-        lines: Vec<(String, Vec<[f64; 2]>)>,
+        ratio: SweptRatio,
+        lines: Vec<(CurveName, Vec<[f64; 2]>)>,
         failures: Vec<Option<String>>,
-        reference: Option<(String, f64)>,
+        reference: Option<(ReferenceName, f64)>,
         load_max: f64,
     ) -> Self {
         let note = lines
@@ -206,7 +230,7 @@ impl Curves {
             .all(|(_, points)| points.is_empty())
             .then(|| empty_reason(failures, load_max));
         Self {
-            x_label,
+            ratio,
             lines,
             reference,
             note,
@@ -232,19 +256,6 @@ impl Curves {
             Some((_, p)) if curves <= 0.0 || p <= REFERENCE_REACH * curves => (curves.max(p), true),
             _ => (curves, self.reference.is_none()),
         }
-    }
-
-    /// The reference line's name in a legend, with its load, and said to
-    /// lie above the axis unless `within` (the second answer of
-    /// `fitted_top`).
-    #[must_use]
-    pub fn reference_label(&self, within: bool) -> Option<String> {
-        let (name, p) = self.reference.as_ref()?;
-        Some(format!(
-            "{name}: p = {}{}",
-            crate::format::load_text(*p),
-            if within { "" } else { " (above the axis)" }
-        ))
     }
 }
 
@@ -329,17 +340,18 @@ pub fn curves(model: &Model, kind: DampingKind, threads: usize, cancel: &AtomicB
                             first_on(&externally_damped(model, ratio, level)?)
                         }
                     });
-                    (
-                        (format!("damping g2 = {}", number_text(level)), points),
-                        failure,
-                    )
+                    ((CurveName::DampingLevel(level), points), failure)
                 })
                 .unzip();
+            let ratio = match kind {
+                DampingKind::Joints => SweptRatio::JointDampers,
+                DampingKind::External => SweptRatio::ExternalOverInternal,
+            };
             Curves::new(
-                kind.ratio_name(),
+                ratio,
                 lines,
                 failures,
-                undamped.map(|p| ("undamped".to_owned(), p)),
+                undamped.map(|p| (ReferenceName::Undamped, p)),
                 load_max,
             )
         }
@@ -361,29 +373,32 @@ pub fn curves(model: &Model, kind: DampingKind, threads: usize, cancel: &AtomicB
                             .map_err(|e| e.to_string())?;
                         first_on(&m).map_err(|e| e.to_string())
                     });
-                    ((format!("V = {} m/s", number_text(speed)), points), failure)
+                    ((speed, points), failure)
                 })
                 .unzip();
-            let lines = merge_if_one_curve(lines, "the first critical load does not depend on V");
             Curves::new(
-                "nu = m3/m",
-                lines,
+                SweptRatio::RollerMass,
+                merge_if_one_curve(lines),
                 failures,
-                massless.map(|p| ("nu = 0: the ideal follower".to_owned(), p)),
+                massless.map(|p| (ReferenceName::MasslessRoller, p)),
                 load_max,
             )
         }
     }
 }
 
-/// `lines`, or the one curve they all draw (the same points, loads within
-/// [`SAME_CURVE`]) under a name that lists them and says `why`.
-fn merge_if_one_curve(
-    lines: Vec<(String, Vec<[f64; 2]>)>,
-    why: &str,
-) -> Vec<(String, Vec<[f64; 2]>)> {
+/// The band speeds' `lines`, each named by its speed, or the one curve
+/// they all draw (the same points, loads within [`SAME_CURVE`]) named by
+/// them all.
+fn merge_if_one_curve(lines: Vec<(f64, Vec<[f64; 2]>)>) -> Vec<(CurveName, Vec<[f64; 2]>)> {
+    let by_speed = |lines: Vec<(f64, Vec<[f64; 2]>)>| {
+        lines
+            .into_iter()
+            .map(|(speed, points)| (CurveName::BandSpeed(speed), points))
+            .collect()
+    };
     let Some((_, first)) = lines.first() else {
-        return lines;
+        return by_speed(lines);
     };
     let same = |points: &Vec<[f64; 2]>| {
         points.len() == first.len()
@@ -392,12 +407,11 @@ fn merge_if_one_curve(
             })
     };
     if lines.len() < 2 || first.is_empty() || !lines.iter().all(|(_, points)| same(points)) {
-        return lines;
+        return by_speed(lines);
     }
-    let names: Vec<&str> = lines.iter().map(|(name, _)| name.as_str()).collect();
-    let name = format!("{}: one curve, {why}", names.join(", "));
+    let speeds = lines.iter().map(|(speed, _)| *speed).collect();
     let points = first.clone();
-    vec![(name, points)]
+    vec![(CurveName::AllBandSpeeds(speeds), points)]
 }
 
 #[cfg(test)]
@@ -424,13 +438,16 @@ mod tests {
         );
         assert_eq!(curves.lines.len(), 1, "{:?}", curves.lines);
         let (name, points) = &curves.lines[0];
-        assert!(name.contains("does not depend on V"), "{name}");
+        assert!(
+            matches!(name, CurveName::AllBandSpeeds(v) if v.len() == 3),
+            "{name:?}"
+        );
         assert_eq!(points.len(), POINTS);
         let apart = vec![
-            ("a".to_owned(), vec![[0.0, 1.0], [1.0, 2.0]]),
-            ("b".to_owned(), vec![[0.0, 1.0], [1.0, 2.001]]),
+            (0.1, vec![[0.0, 1.0], [1.0, 2.0]]),
+            (1.0, vec![[0.0, 1.0], [1.0, 2.001]]),
         ];
-        assert_eq!(merge_if_one_curve(apart, "same").len(), 2);
+        assert_eq!(merge_if_one_curve(apart).len(), 2);
     }
 
     /// A stopped band has no linear analysis: the panel says so instead of
@@ -483,7 +500,6 @@ mod tests {
         // the plot's height, and its name says no more.
         let (top, within) = curves.fitted_top(None);
         assert!(within && top >= undamped, "{top}");
-        assert!(!curves.reference_label(within).unwrap().contains("above"));
     }
 
     /// The plain roller's curves stand far below the massless roller's
@@ -506,12 +522,6 @@ mod tests {
         let massless = curves.reference.as_ref().unwrap().1;
         assert!(massless > REFERENCE_REACH * highest, "{massless} {highest}");
         assert_eq!(curves.fitted_top(None), (highest, false));
-        let label = curves.reference_label(false).unwrap();
-        assert!(label.ends_with("(above the axis)"), "{label}");
-        assert!(
-            label.contains(&crate::format::load_text(massless)),
-            "{label}"
-        );
         assert!(curves.fitted_top(Some(2.0 * highest)).0 >= 2.0 * highest);
     }
 }
