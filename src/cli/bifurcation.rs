@@ -5,6 +5,7 @@
 
 use std::io::Write;
 use std::sync::atomic::AtomicBool;
+use zieglerlab::i18n::Language;
 
 use anyhow::Result;
 use clap::ValueEnum;
@@ -35,6 +36,10 @@ enum Format {
 pub struct Args {
     #[command(flatten)]
     model: ModelArgs,
+    /// The language of a PNG's axes and legend (`--format png`): en, de,
+    /// it, pl, es or fr.
+    #[arg(long, value_name = "CODE", default_value = "en", value_parser = super::headless::language_parser())]
+    lang: Language,
     /// The loads, load:MIN:MAX:N (N evenly spaced, ends included). Cycles
     /// are followed from every flutter onset in this range.
     #[arg(long, allow_hyphen_values = true)]
@@ -140,7 +145,10 @@ pub fn run(args: &Args) -> Result<()> {
         let data = figure_data(&pencil, (lo, hi), &branches, &rows)?;
         let rendered = render(
             &Content::Bifurcation(&data),
-            &Page::default(),
+            &Page {
+                language: args.lang,
+                ..Page::default()
+            },
             figure::Format::Png,
         )?;
         let out = args

@@ -3,6 +3,7 @@
 
 use std::str::FromStr;
 use std::sync::atomic::{AtomicBool, AtomicUsize};
+use zieglerlab::i18n::Language;
 
 use anyhow::Result;
 use clap::ValueEnum;
@@ -82,6 +83,10 @@ impl FromStr for AxisArg {
 pub struct Args {
     #[command(flatten)]
     model: ModelArgs,
+    /// The language of a PNG's axes and legend (`--format png`): en, de,
+    /// it, pl, es or fr.
+    #[arg(long, value_name = "CODE", default_value = "en", value_parser = super::headless::language_parser())]
+    lang: Language,
     /// The load axis, load:MIN:MAX:N (N evenly spaced loads, ends included).
     #[arg(long, allow_hyphen_values = true)]
     x: AxisArg,
@@ -133,7 +138,11 @@ pub fn run(args: &Args) -> Result<()> {
         Format::Png => {
             // The same figure as `figure --kind map`, at its default page.
             let data = MapData { spec, rows };
-            let rendered = render(&Content::Map(&data), &Page::default(), figure::Format::Png)?;
+            let page = Page {
+                language: args.lang,
+                ..Page::default()
+            };
+            let rendered = render(&Content::Map(&data), &page, figure::Format::Png)?;
             write_atomically(out, |file| file.write_all(&rendered.bytes))?;
         }
     }

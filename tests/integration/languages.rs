@@ -225,7 +225,7 @@ fn a_lesson_speaks_the_window_s_language() {
 }
 
 /// A figure's axes and legend in the language asked for; English unless
-/// asked, whatever the system's.
+/// asked, whatever the system's; so too a map's PNG.
 #[test]
 fn a_figure_speaks_the_language_asked_for() {
     let dir = tempfile::tempdir().unwrap();
@@ -262,6 +262,35 @@ fn a_figure_speaks_the_language_asked_for() {
     assert!(!german.contains("stable to flutter"));
     let english = figure(None);
     assert!(english.contains("stable to flutter"), "English by default");
+    // A map's PNG too.
+    let map = |lang: &str| {
+        let out = dir.path().join(format!("map-{lang}.png"));
+        let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_zieglerlab"));
+        command.args([
+            "map",
+            "--preset",
+            "tabletop",
+            "--x",
+            "load:0:8:8",
+            "--y",
+            "c2:0:0.1:4",
+            "--format",
+            "png",
+            "--lang",
+            lang,
+            "--out",
+        ]);
+        command.arg(&out);
+        let output = output_within(
+            &mut command,
+            std::time::Duration::from_mins(5),
+            "map",
+            "the binary runs",
+        );
+        assert!(output.status.success(), "{output:?}");
+        std::fs::read(out).unwrap()
+    };
+    assert_ne!(map("de"), map("en"), "the map's key in German");
 }
 
 /// The first launch's welcome offers every language before anything else
