@@ -5,7 +5,6 @@
 
 use std::io::Write;
 use std::sync::atomic::AtomicBool;
-use zieglerlab::i18n::Language;
 
 use anyhow::Result;
 use clap::ValueEnum;
@@ -36,10 +35,8 @@ enum Format {
 pub struct Args {
     #[command(flatten)]
     model: ModelArgs,
-    /// The language of a PNG's axes and legend (`--format png`): en, de,
-    /// it, pl, es or fr.
-    #[arg(long, value_name = "CODE", default_value = "en", value_parser = super::headless::language_parser())]
-    lang: Language,
+    #[command(flatten)]
+    lang: super::headless::FigureLanguage,
     /// The loads, load:MIN:MAX:N (N evenly spaced, ends included). Cycles
     /// are followed from every flutter onset in this range.
     #[arg(long, allow_hyphen_values = true)]
@@ -146,7 +143,7 @@ pub fn run(args: &Args) -> Result<()> {
         let rendered = render(
             &Content::Bifurcation(&data),
             &Page {
-                language: args.lang,
+                language: args.lang.language,
                 ..Page::default()
             },
             figure::Format::Png,

@@ -4,7 +4,6 @@
 
 use anyhow::Result;
 use clap::ValueEnum;
-use zieglerlab::i18n::Language;
 
 use zieglerlab::analysis::{BRACKET_SAMPLES, DampingKind, RowResult, default_map_axis, load_grid};
 use zieglerlab::figure::{Analysed, Content, Format, MapData, Page, ParadoxData, analyse, render};
@@ -70,10 +69,8 @@ pub struct Args {
     /// Dots per inch of a PNG.
     #[arg(long, default_value_t = 300.0, allow_hyphen_values = true)]
     dpi: f64,
-    /// The language of the axes and the legends: en, de, it, pl, es or fr
-    /// (a paper's figure keeps English unless asked).
-    #[arg(long, value_name = "CODE", default_value = "en", value_parser = super::headless::language_parser())]
-    lang: Language,
+    #[command(flatten)]
+    lang: super::headless::FigureLanguage,
     /// Lower end of the loads (locus and re-im).
     #[arg(long, allow_hyphen_values = true)]
     load_min: Option<f64>,
@@ -153,7 +150,7 @@ impl Args {
                 .unwrap_or(self.width_mm * default_aspect(self.kind)),
             font_pt: self.font_pt,
             dpi: self.dpi,
-            language: self.lang,
+            language: self.lang.language,
         }
     }
 }

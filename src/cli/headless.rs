@@ -59,6 +59,16 @@ pub struct Look {
     pub lang: Option<Language>,
 }
 
+/// A figure's `--lang`: the language of its axes and legend, English
+/// unless asked (a paper's figure), whatever the system's.
+#[derive(clap::Args, Debug, Clone, Copy)]
+pub struct FigureLanguage {
+    /// The language of the figure's axes and legend: en, de, it, pl, es or
+    /// fr.
+    #[arg(long = "lang", value_name = "CODE", default_value = "en", value_parser = language_parser())]
+    pub language: Language,
+}
+
 /// The `--lang` values: the window's languages (and, unlisted, the
 /// pseudo-language of the layout tests).
 pub fn language_parser() -> impl clap::builder::TypedValueParser<Value = Language> {

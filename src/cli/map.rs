@@ -3,7 +3,6 @@
 
 use std::str::FromStr;
 use std::sync::atomic::{AtomicBool, AtomicUsize};
-use zieglerlab::i18n::Language;
 
 use anyhow::Result;
 use clap::ValueEnum;
@@ -83,10 +82,8 @@ impl FromStr for AxisArg {
 pub struct Args {
     #[command(flatten)]
     model: ModelArgs,
-    /// The language of a PNG's axes and legend (`--format png`): en, de,
-    /// it, pl, es or fr.
-    #[arg(long, value_name = "CODE", default_value = "en", value_parser = super::headless::language_parser())]
-    lang: Language,
+    #[command(flatten)]
+    lang: super::headless::FigureLanguage,
     /// The load axis, load:MIN:MAX:N (N evenly spaced loads, ends included).
     #[arg(long, allow_hyphen_values = true)]
     x: AxisArg,
@@ -139,7 +136,7 @@ pub fn run(args: &Args) -> Result<()> {
             // The same figure as `figure --kind map`, at its default page.
             let data = MapData { spec, rows };
             let page = Page {
-                language: args.lang,
+                language: args.lang.language,
                 ..Page::default()
             };
             let rendered = render(&Content::Map(&data), &page, figure::Format::Png)?;
