@@ -298,8 +298,8 @@ card-growth = Anwachsrate  { $rate } 1/s
     .tooltip = Anwachsrate: wie schnell die Bewegung wächst (positiv) oder abklingt (negativ), pro Sekunde: der Realteil des am weitesten rechts liegenden Eigenwerts
 card-growth-zero = Anwachsrate  0 (bis auf { $tolerance } 1/s)
 card-not-resolved = bei diesen Parametern nicht aufgelöst: siehe die Warnung unter der Last
-card-e-folding = e-Zeit  { $time }
-    .tooltip = e-Zeit: die Zeit, in der das Schwingen um den Faktor e = 2.72 wächst (1 / Anwachsrate)
+card-e-folding = Anwachszeit  { $time }
+    .tooltip = Anwachszeit: die Zeit, in der das Schwingen um den Faktor e = 2.72 wächst (1 / Anwachsrate)
 card-decay = Abklingzeit  { $time }
     .tooltip = Abklingzeit: die Zeit, in der das Schwingen um den Faktor e = 2.72 abnimmt
 card-neutral = neutral: kein Wachsen, kein Abklingen

@@ -298,8 +298,8 @@ card-growth = tasa de crecimiento  { $rate } 1/s
     .tooltip = tasa de crecimiento: lo rápido que el movimiento crece (positiva) o se amortigua (negativa), por segundo: la parte real del autovalor más a la derecha
 card-growth-zero = tasa de crecimiento  0 (dentro de { $tolerance } 1/s)
 card-not-resolved = no resuelto con estos parámetros: mira el aviso bajo la carga
-card-e-folding = tiempo de e-plegado  { $time }
-    .tooltip = tiempo de e-plegado: el tiempo en que la oscilación crece un factor e = 2.72 (1 / tasa de crecimiento)
+card-e-folding = tiempo de crecimiento e  { $time }
+    .tooltip = tiempo de crecimiento e: el tiempo en que la oscilación crece un factor e = 2.72 (1 / tasa de crecimiento)
 card-decay = tiempo de amortiguamiento  { $time }
     .tooltip = tiempo de amortiguamiento: el tiempo en que la oscilación se reduce un factor e = 2.72
 card-neutral = neutro: ni crecimiento ni amortiguamiento
