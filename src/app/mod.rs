@@ -161,14 +161,15 @@ impl ZieglerApp {
             text(SETTINGS_KEY).as_deref(),
             true,
         ));
-        let layout = text(LAYOUT_KEY).map(|layout| {
+        // The system's language, until a stored choice says otherwise.
+        app.state.speak(Language::system());
+        if let Some(layout) = text(LAYOUT_KEY) {
             let (layout, note) = Layout::read(&layout);
             if let Some(note) = note {
                 app.state.tell(Notice::warning(note));
             }
-            layout
-        });
-        app.arrange(layout.as_ref().unwrap_or(&Layout::default()));
+            app.arrange(&layout);
+        }
         app
     }
 
@@ -199,11 +200,11 @@ impl ZieglerApp {
     /// model (an overlay or a map axis it has not) is left out, and said.
     pub fn arrange(&mut self, layout: &Layout) {
         self.tab = layout.tab;
-        // The language chosen in the menu; else the system's, not a choice.
+        // The language chosen in the menu, if one was.
         match layout.language.as_deref().map(Language::from_code) {
             Some(Ok(language)) => self.apply(Action::Language(language)),
             Some(Err(why)) => self.state.tell(Notice::warning(format!("{why}"))),
-            None => self.state.speak(Language::system()),
+            None => {}
         }
         if let Some(name) = &layout.overlay {
             match name.parse::<PresetId>() {

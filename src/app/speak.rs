@@ -117,6 +117,7 @@ mod tests {
                 "welcome-locus",
                 "welcome-try",
                 "hint-first-launch",
+                "legend-transition",
                 "paradox-ratio-joints",
                 "paradox-ratio-external",
                 "paradox-ratio-roller-mass",

@@ -19,7 +19,7 @@ use fluent_bundle::{FluentArgs, FluentResource};
 
 pub use fluent_bundle::FluentValue;
 pub use language::{Language, UnknownLanguage};
-pub use terms::{duration_words, state_name, transition_text};
+pub use terms::{duration_words, state_name, transition_in, transition_text};
 
 /// The message file of each language, as shipped: English is the source.
 const SOURCES: [(Language, &str); 6] = [
@@ -164,13 +164,13 @@ impl Words {
     /// The message formatted, from this language's file or else English's;
     /// an id in neither is shown as itself (the tests see that none is).
     fn format(&'static self, id: &str, args: Option<&FluentArgs>) -> Cow<'static, str> {
-        let from = if self.has(id) {
-            self
-        } else {
-            words(Language::English)
+        let english = words(Language::English);
+        let found = match self.pattern(id) {
+            Some(pattern) => Some((self, pattern)),
+            None => english.pattern(id).map(|pattern| (english, pattern)),
         };
-        match from.pattern(id) {
-            Some(pattern) => {
+        match found {
+            Some((from, pattern)) => {
                 let mut errors = Vec::new();
                 from.bundle.format_pattern(pattern, args, &mut errors)
             }

@@ -16,9 +16,16 @@ pub fn state_name(words: &'static Words, state: State) -> String {
 /// A critical load in words: "p = 2.5417: stable -> flutter".
 #[must_use]
 pub fn transition_text(words: &'static Words, t: &Transition) -> String {
+    transition_in(words, "transition", t)
+}
+
+/// A critical load in the message `id`, whose placeables are its `load`
+/// and the states it goes `from` and `to`.
+#[must_use]
+pub fn transition_in(words: &'static Words, id: &str, t: &Transition) -> String {
     tr!(
         words,
-        "transition",
+        id,
         load = load_text(t.load),
         from = state_name(words, t.from),
         to = state_name(words, t.to)

@@ -9,8 +9,8 @@ use super::spec::{
 };
 use super::view::{deciding_extent, versus_load_extent};
 use crate::analysis::{C64, Locus, State, Transition};
-use crate::format::{load_text, number_text};
-use crate::i18n::{Words, state_name, transition_text};
+use crate::format::number_text;
+use crate::i18n::{Words, state_name, transition_in, transition_text};
 use crate::tr;
 
 /// One model's locus and what was found on it.
@@ -440,13 +440,7 @@ impl Loci<'_> {
         entries.extend(transitions.iter().take(MOST_LEGEND_LOADS).map(|t| {
             Entry::new(
                 mark(Ink::State(t.to)),
-                tr!(
-                    words,
-                    "legend-transition",
-                    load = load_text(t.load),
-                    from = state_name(words, t.from),
-                    to = state_name(words, t.to)
-                ),
+                transition_in(words, "legend-transition", t),
             )
         }));
         let more = transitions.len().saturating_sub(MOST_LEGEND_LOADS);
