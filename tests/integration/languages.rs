@@ -140,6 +140,26 @@ fn the_language_menu_switches_the_window() {
     );
 }
 
+/// The binary run on `args`, then `--out DIR/NAME`, with the locale
+/// variables `env` set and every other one unset: the file it wrote.
+fn written_by(dir: &std::path::Path, name: &str, args: &[&str], env: &[(&str, &str)]) -> Vec<u8> {
+    let out = dir.join(name);
+    let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_zieglerlab"));
+    command.args(args).arg("--out").arg(&out);
+    for var in ["LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"] {
+        command.env_remove(var);
+    }
+    command.envs(env.iter().copied());
+    let output = output_within(
+        &mut command,
+        std::time::Duration::from_mins(5),
+        name,
+        "the binary runs",
+    );
+    assert!(output.status.success(), "{name}: {output:?}");
+    std::fs::read(out).unwrap()
+}
+
 /// A picture from the command line: with `--lang`, or in the system's
 /// language (`LANG` when `LC_ALL` is unset; English when `LC_ALL=C`
 /// overrides it).
@@ -147,27 +167,11 @@ fn the_language_menu_switches_the_window() {
 fn pictures_speak_the_language_asked_for_or_the_system_s() {
     let dir = tempfile::tempdir().unwrap();
     let picture = |name: &str, lang: Option<&str>, env: &[(&str, &str)]| {
-        let out = dir.path().join(format!("{name}.png"));
-        let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_zieglerlab"));
-        command.args([
-            "snapshot", "--preset", "tabletop", "--size", "1024x768", "--out",
-        ]);
-        command.arg(&out);
+        let mut args = vec!["snapshot", "--preset", "tabletop", "--size", "1024x768"];
         if let Some(lang) = lang {
-            command.args(["--lang", lang]);
+            args.extend(["--lang", lang]);
         }
-        for var in ["LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"] {
-            command.env_remove(var);
-        }
-        command.envs(env.iter().copied());
-        let output = output_within(
-            &mut command,
-            std::time::Duration::from_mins(5),
-            name,
-            "the binary runs",
-        );
-        assert!(output.status.success(), "{name}: {output:?}");
-        std::fs::read(out).unwrap()
+        written_by(dir.path(), &format!("{name}.png"), &args, env)
     };
     let german = picture("de", Some("de"), &[]);
     let english = picture("en", Some("en"), &[]);
@@ -230,29 +234,13 @@ fn a_lesson_speaks_the_window_s_language() {
 fn a_figure_speaks_the_language_asked_for() {
     let dir = tempfile::tempdir().unwrap();
     let figure = |lang: Option<&str>| {
-        let out = dir.path().join(format!("{}.svg", lang.unwrap_or("none")));
-        let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_zieglerlab"));
-        command.args([
-            "figure",
-            "--preset",
-            "ziegler-1952",
-            "--kind",
-            "re-im",
-            "--out",
-        ]);
-        command.arg(&out);
+        let mut args = vec!["figure", "--preset", "ziegler-1952", "--kind", "re-im"];
         if let Some(lang) = lang {
-            command.args(["--lang", lang]);
+            args.extend(["--lang", lang]);
         }
-        command.env("LANG", "de_DE.UTF-8").env_remove("LC_ALL");
-        let output = output_within(
-            &mut command,
-            std::time::Duration::from_mins(5),
-            "figure",
-            "the binary runs",
-        );
-        assert!(output.status.success(), "{output:?}");
-        std::fs::read_to_string(out).unwrap()
+        let name = format!("{}.svg", lang.unwrap_or("none"));
+        let svg = written_by(dir.path(), &name, &args, &[("LANG", "de_DE.UTF-8")]);
+        String::from_utf8(svg).unwrap()
     };
     let german = figure(Some("de"));
     assert!(
@@ -264,9 +252,7 @@ fn a_figure_speaks_the_language_asked_for() {
     assert!(english.contains("stable to flutter"), "English by default");
     // A map's PNG too.
     let map = |lang: &str| {
-        let out = dir.path().join(format!("map-{lang}.png"));
-        let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_zieglerlab"));
-        command.args([
+        let args = [
             "map",
             "--preset",
             "tabletop",
@@ -278,17 +264,8 @@ fn a_figure_speaks_the_language_asked_for() {
             "png",
             "--lang",
             lang,
-            "--out",
-        ]);
-        command.arg(&out);
-        let output = output_within(
-            &mut command,
-            std::time::Duration::from_mins(5),
-            "map",
-            "the binary runs",
-        );
-        assert!(output.status.success(), "{output:?}");
-        std::fs::read(out).unwrap()
+        ];
+        written_by(dir.path(), &format!("map-{lang}.png"), &args, &[])
     };
     assert_ne!(map("de"), map("en"), "the map's key in German");
 }
