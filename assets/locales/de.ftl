@@ -492,6 +492,9 @@ locus-none-why = Keine Wurzelortskurve für diese Parameter: { $why }.
 locus-title = Wurzelortskurve, p = { $from } bis { $to }
 map-rows = Zeilen { $done } von { $total }
 map-grey-rows = graue Zeilen haben keine Analyse: { $why }
+map-empty-range = der Kartenbereich { $lo } bis { $hi } ist leer
+map-no-thread = kein Thread für die Karte: { $why }
+map-stopped = die Karte wurde angehalten: { $why }
 map-axis = Last p über
     .tooltip = der zweite Parameter der Karte (sein Bereich unten startet die Karte neu)
 map-from = von
@@ -504,6 +507,10 @@ paradox-computing = die Flatterlasten werden berechnet, während die Dämpfung v
 paradox-joints = Die Flatterlast mit Gelenkdämpfern c1 = (c1/c2) c2, wenn das Dämpfungsniveau g2 = c2 / sqrt(k m l^2) gegen null geht: Der Grenzwert hängt vom Verhältnis ab und liegt unter der ungedämpften Last (Ziegler-Paradoxon).
 paradox-external = Die Flatterlast mit gleichen Gelenkdämpfern c1 = c2 = c (innere Dämpfung) und dem Widerstand c_ext = (c_ext l^3 / c) c / l^3 längs der Stäbe (äußere Dämpfung), wenn das Niveau g2 = c / sqrt(k m l^2) gegen null geht: Auch äußere Dämpfung destabilisiert, und der Grenzwert hängt vom Verhältnis ab.
 paradox-no-extent = die Kurven haben keine Ausdehnung entlang des Verhältnisses
+paradox-no-thread = kein Thread für die Kurven: { $why }
+paradox-dead-load = Eine Totlast (eta = 0) ist konservativ: Sie flattert nie, also gibt es kein Paradoxon zu zeigen.
+paradox-stable-throughout = Keine Kurve zu zeichnen: Bei jedem gezeigten Verhältnis bleibt die Säule bis p = { $end } stabil.
+paradox-failed = Keine Kurve zu zeichnen: { $why }.
 paradox-kind = verschwindende Dämpfung:
 paradox-kind-joints = Gelenkdämpfer
     .tooltip = die Gelenkdämpfer c1 und c2 im Verhältnis c1/c2
@@ -583,3 +590,142 @@ paradox-reference-undamped = ungedämpft
 paradox-reference-massless = nu = 0: die ideale Folgelast
 paradox-reference = { $name }: p = { $load }
 paradox-reference-above = { $name }: p = { $load } (über der Achse)
+
+## Refused values and the engine's failures
+
+refused-value = { $subject } = { $value }: { $allowed }
+refused-not-a-number = „{ $text }“ ist keine Zahl
+refused-unknown-preset = unbekannte Vorgabe „{ $name }“; die Vorgaben sind: { $known }
+refused-unknown-key = unbekannter Schlüssel „{ $key }“; die Schlüssel sind: { $known }
+refused-malformed = „{ $text }“ ist nicht Schlüssel=Wert mit einer Zahl (z. B. load=2.5): { $reason }
+refused-conflict = { $first } und { $second } setzen dieselbe Größe; nur eines angeben
+allowed-finite = muss eine endliche Zahl sein
+allowed-positive = muss > 0 sein
+allowed-non-negative = muss >= 0 sein
+allowed-key-range = muss eine endliche Zahl { $range } { $unit } sein
+allowed-key-count = muss eine ganze Zahl { $range } sein
+allowed-between = muss zwischen { $min } und { $key } = { $max } liegen
+allowed-rods = muss eine ganze Zahl von 2 bis { $most } sein
+allowed-eta-range = muss zwischen 0 (Totlast) und 1 (Folgelast) liegen
+allowed-frictionless-band = muss > 0 sein: Ohne Reibung übt das Band überhaupt keine Last aus (für eine unbelastete Säule die Last auf 0 setzen)
+allowed-friction-too-small = zu klein: Die Last p = { $load } bräuchte eine Normalkraft R = P / mu jenseits jeder Zahl
+allowed-beyond-analysis = jenseits dessen, was die Analyse quadrieren kann (Größen { $smallest } bis { $largest })
+allowed-makes-beyond-analysis = bringt { $what } jenseits dessen, was die Analyse quadrieren kann (Größen { $smallest } bis { $largest })
+allowed-masses-too-unequal = die Massen sind zu ungleich: Die Determinante der Massenmatrix liegt unter 1e-12 ihrer Größenordnung, also entscheidet die Rundung über die Bewegung (z. B. eine Spitzenmasse oder Rolle über etwa dem 1e12-Fachen der Stäbe)
+allowed-mass-missing = die Säule braucht Masse jenseits des Gelenks A (Stab 2, Spitze oder Rolle) und Masse oder Trägheit, die sich mit Stab 1 allein bewegt; die Massenmatrix ist singulär
+allowed-chain-massless = eine Kette braucht Masse oder Trägheit auf jeder Kopie von Stab 2 (m2 oder I2 > 0): Mit masselosem Stab 2 ist die Massenmatrix der Kette singulär
+allowed-needs-damped-joint2 = braucht ein gedämpftes Gelenk 2: zuerst c2 > 0 (oder die Dämpfungsstufe) setzen
+allowed-infinite-damper-ratio = c2 = 0 bei c1 > 0: Das zu haltende Verhältnis c1/c2 ist unendlich; zuerst c2 > 0 setzen
+allowed-band-at-rest = muss für die lineare Analyse > 0 sein: Bei V = 0 ist die Coulombsche Reibung um die Ruhelage nicht differenzierbar (Haftgleiten)
+allowed-roller-has-no-eta = die Rolle hat kein eta: Die Reibung des Bandes gibt die Richtung der Kraft vor, gegen das Gleiten am Kontakt, und ihr Winkel delta zu Stab 2 ist ein Ergebnis der Bewegung, kein Parameter
+allowed-state-length = muss 2 (Stäbe + 1) sein: die Winkel, der Spin und ihre Geschwindigkeiten
+allowed-time-step = muss ein Zeitschritt in (0, 1] s sein
+quantity-load-force = die Last P
+quantity-load-p = die Last p = P l/k
+quantity-inertia-o = die Trägheit um O
+quantity-inertia-coupling = die Koppelträgheit
+quantity-inertia-a = die Trägheit um A
+quantity-stiffness-k1 = die Steifigkeit k1
+quantity-stiffness-k2 = die Steifigkeit k2
+quantity-damper-c1 = der Dämpfer c1
+quantity-damper-c2 = der Dämpfer c2
+quantity-drag = der Widerstand c_ext l^3
+quantity-slip-damping = die Gleitdämpfung mu R l^2 / V
+quantity-spin-inertia = die Drehträgheit der Rolle m3 r^2 / 2
+quantity-mass-matrix = die Massenmatrix
+quantity-damper-ratio = c1/c2
+quantity-damping-level = damping
+quantity-mass-ratio = mass_ratio
+quantity-drag-ratio = c_ext l^3/c
+quantity-state-length = die Länge des Zustands
+quantity-time-step = dt
+engine-too-stiff = die rapier-Engine kann diese Säule bei dt = { $step } s nicht integrieren: Ihre Federn und Dämpfer erreichen Raten von { $rate } 1/s, die dt < { $need } s brauchen; die Referenz-Engine verwenden
+engine-rapier-world = die rapier2d-Welt ließ sich für diese Säule nicht aufbauen (ihre Gelenke wurden abgelehnt); die Referenz-Engine verwenden
+analysis-not-converged = die Eigenwertiteration konvergierte bei der Last p = { $load } nicht
+ramp-refused-end = { $end } = { $value }: muss eine Last p >= 0 sein
+ramp-refused-rate = Rampenrate = { $value }: muss eine positive Last pro Sekunde sein
+ramp-refused-too-slow = Rampenrate = { $value }: muss mindestens { $slowest } Last pro Sekunde sein (langsamer bewegte sich die Last tagelang nicht sichtbar)
+ramp-refused-too-long = die Rampe von { $from } bis { $to } mit { $rate } pro Sekunde dauert { $secs } s simulierte Zeit; höchstens { $most } s (etwa vier Monate): eine schnellere Rate oder nähere Enden
+ramp-refused-model = { $end } = { $value }: { $why }
+
+## Messages that frame another's (a file system's, a thread's) words
+
+notice-ramp-refused = Rampe: { $why }
+notice-ramp-stopped = Rampe angehalten: { $why }
+notice-map-point-refused = Karte: { $why }
+notice-overlay-unavailable = Überlagerung nicht verfügbar: { $why }
+notice-table-not-saved = nicht gespeichert: { $why }
+notice-no-locus = für diese Parameter gibt es keine Wurzelortskurve
+notice-no-thread = nicht gespeichert: kein Thread zum Schreiben ({ $why })
+notice-saved-lines = { $count ->
+    [one] { $count } Zeile
+   *[other] { $count } Zeilen
+} in { $path } gespeichert
+notice-write-failed = nicht gespeichert: { $why }
+notice-plots-saved = die Diagramme in { $path } gespeichert
+notice-plots-not-saved = die Diagramme nicht gespeichert: { $why }
+notice-recording-failed = Aufnahme fehlgeschlagen: { $why }
+notice-layout-not-saved = Fensteranordnung nicht gespeichert: { $why }
+notice-stored-overlay = die gespeicherte Überlagerung { $name } ist keine Vorgabe; keine Überlagerung
+notice-stored-map-axis = die gespeicherte Kartenachse wird nicht verwendet: { $why }
+notice-stored-language = die gespeicherte Sprache wird nicht verwendet: { $why }
+notice-lesson-refused = Lektion { $name }: { $why }
+notice-lesson-not-opened = Lektion nicht geöffnet: { $why }
+notice-reset-closed-lesson = alles zurückgesetzt: Die Lektion „{ $title }“ ist geschlossen (im Lektionsmenü wieder öffnen)
+
+## The post-critical tab's notes
+
+cycles-computing = die Grenzzyklen werden von jedem Flattereinsatz an verfolgt ...
+cycles-none = keine Grenzzyklen: { $why }
+cycles-no-onset = kein Flattereinsatz im Bereich der Lastleiste: keine Grenzzyklen
+cycles-chain-too-long = eine Kette aus { $rods } Stäben zu verfolgen dauert im Fenster zu lange (8 Stäbe brauchen auf zwei Kernen etwa 18 s, und die Arbeit wächst schneller als die Zahl der Stäbe); `zieglerlab bifurcation` berechnet ihre Zyklen auf der Kommandozeile
+cycles-no-thread = kein Thread für die Zyklen: { $why }
+cycles-branch = { $name }: { $onset } Einsatz bei p = { $at }; der Zweig endete: { $end }
+cycles-onset-soft = weicher
+cycles-onset-hard = harter
+cycles-no-branch = Flattereinsatz bei p = { $at }: { $why }
+cycles-no-branch-reversible = keine Dämpfung, eine reversible Säule: kein Grenzzyklus zu verfolgen
+cycles-no-branch-degenerate = der erste Ljapunow-Koeffizient ist im Rahmen seiner Genauigkeit null; Zyklen nicht verfolgt
+cycles-no-branch-not-converged = das Schießverfahren konvergierte nahe dem Einsatz nicht; keine Zyklen
+cycles-end-left-range = hat den Lastbereich verlassen
+cycles-end-large-amplitude = die Amplitude eines Winkels überschritt { $most } rad (die Säule schwingt herum)
+cycles-end-long-period = die Periode wuchs über das { $most }-Fache der Periode am Einsatz
+cycles-end-lost = das Schießverfahren konvergierte jenseits von p = { $load } nicht
+cycles-end-stick-slip = der Kontakt der Rolle nähert sich jenseits von p = { $load } dem Haften auf dem Band (Haftgleiten: Die Reibung ist dort nicht glatt)
+cycles-end-unresolved = die Zyklen jenseits von p = { $load } sind nicht aufgelöst (trivialer Multiplikator weicht um mehr als { $tolerance } von 1 ab)
+cycles-end-point-limit = { $most } Zyklen berechnet
+cycles-end-cancelled = auf Wunsch angehalten
+
+## Why the stability along the locus is not resolved (shown on hover)
+
+not-resolved-mode-span = die Stabilität ist nicht aufgelöst: Bei p = { $load } reichen die Moden von { $fastest } 1/s bis { $slowest } 1/s, ein Verhältnis über { $span }, also bleiben die Anwachsraten der langsamen Moden der Rundung überlassen (eine Mode, die weit schneller ist als die anderen, etwa der Spin einer Rolle mit winziger Masse nu)
+not-resolved-slow-mode-lost = die Stabilität ist nicht aufgelöst: Bei p = { $load } reichen die Moden von { $scale } 1/s bis { $slowest } 1/s, also gehen Anwachsraten unter { $tolerance } 1/s in der Rundung verloren (das Modell ist nahe einem singulären Grenzfall: ein sehr langsames Band V oder sehr große Dämpfung)
+not-resolved-methods-disagree = die Stabilität ist nicht aufgelöst: Bei p = { $load } sind sich die verfolgten Wurzeln und die Schur-Zerlegung über den Zustand uneins (die Rundung entscheidet: eine Mode, die weit schneller ist als die anderen, etwa der Spin einer Rolle mit winziger Masse nu); die gezeigten kritischen Lasten können falsch sein oder fehlen
+not-resolved-rounding-decides = die Stabilität ist nicht aufgelöst: Für p von { $low } bis { $high } liegen die Anwachsraten zwischen 1e-12 und 1e-10 der Frequenzskala, wo die Rundung über den Zustand entscheidet (eine Rolle mit winziger Masse nu, deren schwaches Flattern proportional zu nu wächst, oder ein sehr langsames Band V); die gezeigten kritischen Lasten können verschoben sein oder fehlen
+not-resolved-refinement-cut = die Wurzelortskurve wurde nur bis p = { $load } verfeinert: Dahinter sind die Zweige nur an den gleichmäßig verteilten Lasten abgetastet, also kann ein Fenster eines anderen Zustands fehlen, das schmaler ist als ihr Abstand (die Grenze der Verfeinerung für Zeit und Speicher wurde erreicht)
+
+## The stored state's check before the window opens (a damaged store)
+
+store-zoom = der Zoomfaktor { $zoom } (erlaubt 0.2 bis 5)
+store-geometry = die Fenstergeometrie { $width } x { $height } Punkte bei Skalierung { $scale }
+store-unreadable = der gespeicherte Zustand ließ sich nicht lesen ({ $why }); eine Kopie liegt unter { $copy }; es wird mit den Voreinstellungen begonnen
+store-unreadable-uncopied = ließ sich weder lesen ({ $why }) noch kopieren ({ $error })
+store-moved = der gespeicherte Zustand { $path } { $why }; er wird nach { $aside } verschoben, und die Voreinstellungen gelten
+store-not-moved = der gespeicherte Zustand { $path } { $why } und ließ sich nicht beiseiteschieben ({ $error }); Einstellungen werden nicht gespeichert
+store-folder-not-made = Einstellungen werden nicht gespeichert: Der Ordner { $folder } lässt sich nicht anlegen ({ $error })
+store-folder-full = Einstellungen werden nicht gespeichert: Der Ordner { $folder } nimmt keine neue Datei auf ({ $error })
+store-not-writable = Einstellungen werden nicht gespeichert: { $path } lässt sich nicht schreiben ({ $error })
+store-is-folder = ist ein Ordner
+store-is-device = ist ein Gerät, eine Pipe oder ein Socket
+store-too-large = enthält { $bytes } Bytes (höchstens { $most } werden gelesen)
+store-entry = { $why } (eframes Eintrag „{ $key }“)
+store-ignored = gespeicherter Zustand: ignoriert { $what }
+store-ignored-not-rewritten = gespeicherter Zustand: ignoriert { $what } (die Datei ließ sich nicht neu schreiben: { $error })
+store-settings-unreadable = die gespeicherten Einstellungen ließen sich nicht lesen
+store-original-kept = das Original liegt unter { $copy }
+store-original-lost = vom Original ließ sich keine Kopie behalten ({ $error })
+store-settings-partly = gespeicherte Einstellungen: ignoriert { $what }; der Rest bleibt
+store-settings-ignored = gespeicherte Einstellungen ignoriert ({ $why }); es wird mit den Voreinstellungen begonnen
+layout-ignored = gespeicherte Fensteranordnung ignoriert ({ $why }); die Standardanordnung gilt
+notice-paste-unreadable = eingefügte Einstellungen nicht verstanden, nichts geändert: { $why }
+notice-paste-refused = eingefügte Einstellungen abgelehnt, nichts geändert: { $why }

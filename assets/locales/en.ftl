@@ -488,6 +488,9 @@ locus-none-why = No root locus for these parameters: { $why }.
 locus-title = root locus, p = { $from } to { $to }
 map-rows = rows { $done } of { $total }
 map-grey-rows = grey rows have no analysis: { $why }
+map-empty-range = map range { $lo } to { $hi } is empty
+map-no-thread = no thread for the map: { $why }
+map-stopped = the map stopped: { $why }
 map-axis = load p against
     .tooltip = the map's second parameter (its range below restarts the map)
 map-from = from
@@ -500,6 +503,10 @@ paradox-computing = computing the flutter loads as the damping vanishes ...
 paradox-joints = The flutter load with joint dampers c1 = (c1/c2) c2 as the damping level g2 = c2 / sqrt(k m l^2) goes to zero: the limit depends on the ratio and lies below the undamped load (Ziegler's paradox).
 paradox-external = The flutter load with equal joint dampers c1 = c2 = c (internal damping) and drag c_ext = (c_ext l^3 / c) c / l^3 along the rods (external damping) as the level g2 = c / sqrt(k m l^2) goes to zero: external damping destabilizes too, and the limit depends on the ratio.
 paradox-no-extent = the curves have no extent along the ratio
+paradox-no-thread = no thread for the curves: { $why }
+paradox-dead-load = A dead load (eta = 0) is conservative: it never flutters, so there is no paradox to show.
+paradox-stable-throughout = No curve to draw: at every ratio shown the column keeps its stability up to p = { $end }.
+paradox-failed = No curve to draw: { $why }.
 paradox-kind = damping that vanishes:
 paradox-kind-joints = joint dampers
     .tooltip = the joint dampers c1 and c2 in the ratio c1/c2
@@ -579,3 +586,145 @@ paradox-reference-undamped = undamped
 paradox-reference-massless = nu = 0: the ideal follower
 paradox-reference = { $name }: p = { $load }
 paradox-reference-above = { $name }: p = { $load } (above the axis)
+
+## Refused values and the engine's failures
+## (refused-value: "{ $subject } = { $value }: { $allowed }", with one of the
+## allowed-* texts; quantity-* name what is not a parameter's symbol)
+
+refused-value = { $subject } = { $value }: { $allowed }
+refused-not-a-number = '{ $text }' is not a number
+refused-unknown-preset = unknown preset '{ $name }'; the presets are: { $known }
+refused-unknown-key = unknown key '{ $key }'; the keys are: { $known }
+refused-malformed = '{ $text }' is not key=value with a number (e.g. load=2.5): { $reason }
+refused-conflict = { $first } and { $second } both set the same quantity; give only one
+allowed-finite = must be a finite number
+allowed-positive = must be > 0
+allowed-non-negative = must be >= 0
+allowed-key-range = must be a finite number { $range } { $unit }
+allowed-key-count = must be a whole number { $range }
+allowed-between = must lie between { $min } and { $key } = { $max }
+allowed-rods = must be a whole number from 2 to { $most }
+allowed-eta-range = must lie between 0 (dead load) and 1 (follower force)
+allowed-frictionless-band = must be > 0: without friction the band exerts no load at all (set the load to 0 for an unloaded column)
+allowed-friction-too-small = too small: the load p = { $load } would need the normal force R = P / mu beyond every number
+allowed-beyond-analysis = beyond what the analysis can square (sizes { $smallest } to { $largest })
+allowed-makes-beyond-analysis = makes { $what } beyond what the analysis can square (sizes { $smallest } to { $largest })
+allowed-masses-too-unequal = the masses are too unequal: the determinant of the mass matrix is below 1e-12 of its scale, so rounding decides the motion (e.g. a tip mass or roller over about 1e12 times the rods')
+allowed-mass-missing = the column needs mass beyond the joint A (rod 2, tip or roller) and mass or inertia that moves with rod 1 on its own; the mass matrix is singular
+allowed-chain-massless = a chain needs mass or inertia on every copy of rod 2 (m2 or I2 > 0): with rod 2 massless the chain's mass matrix is singular
+allowed-needs-damped-joint2 = needs a damped joint 2: set c2 > 0 (or the damping level) first
+allowed-infinite-damper-ratio = c2 = 0 with c1 > 0: the ratio c1/c2 to hold is infinite; set c2 > 0 first
+allowed-band-at-rest = must be > 0 for the linear analysis: at V = 0 Coulomb friction is not differentiable about rest (stick-slip)
+allowed-roller-has-no-eta = the roller has no eta: the band's friction sets the force's direction, against the contact's slip, and its angle delta from rod 2 is an outcome of the motion, not a parameter
+allowed-state-length = must be 2 (rods + 1): the angles, the spin and their rates
+allowed-time-step = must be a time step in (0, 1] s
+quantity-load-force = the load P
+quantity-load-p = the load p = P l/k
+quantity-inertia-o = the inertia about O
+quantity-inertia-coupling = the coupling inertia
+quantity-inertia-a = the inertia about A
+quantity-stiffness-k1 = the stiffness k1
+quantity-stiffness-k2 = the stiffness k2
+quantity-damper-c1 = the damper c1
+quantity-damper-c2 = the damper c2
+quantity-drag = the drag c_ext l^3
+quantity-slip-damping = the slip damping mu R l^2 / V
+quantity-spin-inertia = the roller's spin inertia m3 r^2 / 2
+quantity-mass-matrix = mass matrix
+quantity-damper-ratio = c1/c2
+quantity-damping-level = damping
+quantity-mass-ratio = mass_ratio
+quantity-drag-ratio = c_ext l^3/c
+quantity-state-length = the state's length
+quantity-time-step = dt
+engine-too-stiff = the rapier engine cannot integrate this column at dt = { $step } s: its springs and dampers reach rates of { $rate } 1/s, which need dt < { $need } s; use the reference engine
+engine-rapier-world = the rapier2d world could not be built for this column (its joints were refused); use the reference engine
+analysis-not-converged = the eigenvalue iteration did not converge at load p = { $load }
+ramp-refused-end = { $end } = { $value }: must be a load p >= 0
+ramp-refused-rate = ramp rate = { $value }: must be a positive load per second
+ramp-refused-too-slow = ramp rate = { $value }: must be at least { $slowest } load per second (slower, the load would not move visibly within days)
+ramp-refused-too-long = ramp from { $from } to { $to } at { $rate } per second takes { $secs } s of simulated time; at most { $most } s (about four months): a faster rate or nearer ends
+ramp-refused-model = { $end } = { $value }: { $why }
+
+## Messages that frame another's (a file system's, a thread's) words
+
+notice-ramp-refused = ramp: { $why }
+notice-ramp-stopped = ramp stopped: { $why }
+notice-map-point-refused = map: { $why }
+notice-overlay-unavailable = overlay unavailable: { $why }
+notice-table-not-saved = not saved: { $why }
+notice-no-locus = there is no root locus for these parameters
+notice-no-thread = not saved: no thread to write with ({ $why })
+notice-saved-lines = saved { $count ->
+    [one] { $count } line
+   *[other] { $count } lines
+} to { $path }
+notice-write-failed = not saved: { $why }
+notice-plots-saved = saved the plots to { $path }
+notice-plots-not-saved = the plots not saved: { $why }
+notice-recording-failed = recording failed: { $why }
+notice-layout-not-saved = window layout not saved: { $why }
+notice-stored-overlay = the stored overlay { $name } is not a preset; no overlay
+notice-stored-map-axis = the stored map axis is not used: { $why }
+notice-stored-language = the stored language is not used: { $why }
+notice-lesson-refused = lesson { $name }: { $why }
+notice-lesson-not-opened = lesson not opened: { $why }
+notice-reset-closed-lesson = reset all: the lesson "{ $title }" is closed (open it again from the lessons menu)
+
+## The post-critical tab's notes: each onset and where its branch of
+## cycles ended
+
+cycles-computing = following the limit cycles from each flutter onset ...
+cycles-none = no limit cycles: { $why }
+cycles-no-onset = no flutter onset in the load bar's range: no limit cycles
+cycles-chain-too-long = a chain of { $rods } rods takes too long to follow in the window (8 rods take about 18 s on two cores, and the work grows faster than the number of rods); `zieglerlab bifurcation` computes its cycles from the command line
+cycles-no-thread = no thread for the cycles: { $why }
+cycles-branch = { $name }: { $onset } onset at p = { $at }; the branch ended: { $end }
+cycles-onset-soft = soft
+cycles-onset-hard = hard
+cycles-no-branch = flutter onset at p = { $at }: { $why }
+cycles-no-branch-reversible = no damping, a reversible column: no limit cycle to follow
+cycles-no-branch-degenerate = the first Lyapunov coefficient is zero within its accuracy; cycles not followed
+cycles-no-branch-not-converged = the shooting did not converge next to the onset; no cycles
+cycles-end-left-range = left the load range
+cycles-end-large-amplitude = an angle's amplitude passed { $most } rad (the column swings round)
+cycles-end-long-period = the period grew past { $most } times the onset's
+cycles-end-lost = the shooting did not converge past p = { $load }
+cycles-end-stick-slip = the roller's contact nears sticking on the band past p = { $load } (stick-slip: the friction is not smooth there)
+cycles-end-unresolved = the cycles past p = { $load } are not resolved (trivial multiplier off 1 by more than { $tolerance })
+cycles-end-point-limit = { $most } cycles computed
+cycles-end-cancelled = stopped on request
+
+## Why the stability along the locus is not resolved (shown on hover)
+
+not-resolved-mode-span = the stability is not resolved: at p = { $load } the modes span { $fastest } 1/s to { $slowest } 1/s, a ratio beyond { $span }, so the slow modes' growth rates are left to rounding (a mode far faster than the others, such as the spin of a roller of tiny mass nu)
+not-resolved-slow-mode-lost = the stability is not resolved: at p = { $load } the modes span { $scale } 1/s to { $slowest } 1/s, so growth rates below { $tolerance } 1/s are lost to rounding (the model is near a singular limit: a very slow band V, or very large damping)
+not-resolved-methods-disagree = the stability is not resolved: at p = { $load } the tracked roots and the Schur decomposition disagree on the state (rounding decides it: a mode far faster than the others, such as the spin of a roller of tiny mass nu); the critical loads shown may be spurious or missing
+not-resolved-rounding-decides = the stability is not resolved: for p from { $low } to { $high } the growth rates lie between 1e-12 and 1e-10 of the frequency scale, where rounding decides the state (a roller of tiny mass nu, whose weak flutter grows in proportion to nu, or a very slow band V); the critical loads shown may be misplaced or missing
+not-resolved-refinement-cut = the root locus was refined only up to p = { $load }: beyond it the branches are sampled at the evenly spaced loads alone, so a window of another state narrower than their spacing may be missing (the refinement's bound on time and memory was reached)
+
+## The stored state's check before the window opens (a damaged store)
+
+store-zoom = the zoom factor { $zoom } (allowed 0.2 to 5)
+store-geometry = the window geometry { $width } x { $height } points at scale { $scale }
+store-unreadable = the stored state could not be read ({ $why }); a copy is kept at { $copy }; starting from the defaults
+store-unreadable-uncopied = could not be read ({ $why }) nor copied ({ $error })
+store-moved = the stored state { $path } { $why }; it is moved to { $aside } and the defaults are used
+store-not-moved = the stored state { $path } { $why } and could not be moved aside ({ $error }); settings will not be saved
+store-folder-not-made = settings will not be saved: the folder { $folder } cannot be made ({ $error })
+store-folder-full = settings will not be saved: the folder { $folder } takes no new file ({ $error })
+store-not-writable = settings will not be saved: { $path } cannot be written ({ $error })
+store-is-folder = is a folder
+store-is-device = is a device, a pipe or a socket
+store-too-large = holds { $bytes } bytes (at most { $most } are read)
+store-entry = { $why } (eframe's '{ $key }' entry)
+store-ignored = stored state: ignored { $what }
+store-ignored-not-rewritten = stored state: ignored { $what } (the file could not be rewritten: { $error })
+store-settings-unreadable = the stored settings could not be read
+store-original-kept = the original is kept at { $copy }
+store-original-lost = no copy of the original could be kept ({ $error })
+store-settings-partly = stored settings: ignored { $what }; kept the rest
+store-settings-ignored = stored settings ignored ({ $why }); starting from the defaults
+layout-ignored = stored window layout ignored ({ $why }); the default layout is used
+notice-paste-unreadable = pasted settings not understood, nothing changed: { $why }
+notice-paste-refused = pasted settings refused, nothing changed: { $why }

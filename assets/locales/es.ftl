@@ -492,6 +492,9 @@ locus-none-why = No hay lugar de las raíces para estos parámetros: { $why }.
 locus-title = lugar de las raíces, p = de { $from } a { $to }
 map-rows = filas { $done } de { $total }
 map-grey-rows = las filas grises no tienen análisis: { $why }
+map-empty-range = el rango del mapa de { $lo } a { $hi } está vacío
+map-no-thread = no hay hilo para el mapa: { $why }
+map-stopped = el mapa se detuvo: { $why }
 map-axis = carga p frente a
     .tooltip = el segundo parámetro del mapa (su intervalo de abajo reinicia el mapa)
 map-from = de
@@ -504,6 +507,10 @@ paradox-computing = calculando las cargas de flameo a medida que el amortiguamie
 paradox-joints = La carga de flameo con amortiguadores en las articulaciones c1 = (c1/c2) c2 cuando el nivel de amortiguamiento g2 = c2 / sqrt(k m l^2) tiende a cero: el límite depende de la relación y queda por debajo de la carga sin amortiguamiento (paradoja de Ziegler).
 paradox-external = La carga de flameo con amortiguadores iguales en las articulaciones c1 = c2 = c (amortiguamiento interno) y resistencia c_ext = (c_ext l^3 / c) c / l^3 a lo largo de las barras (amortiguamiento externo) cuando el nivel g2 = c / sqrt(k m l^2) tiende a cero: el amortiguamiento externo también desestabiliza, y el límite depende de la relación.
 paradox-no-extent = las curvas no tienen extensión a lo largo de la relación
+paradox-no-thread = no hay hilo para las curvas: { $why }
+paradox-dead-load = Una carga muerta (eta = 0) es conservativa: nunca flamea, así que no hay paradoja que mostrar.
+paradox-stable-throughout = No hay curva que dibujar: en cada relación mostrada la columna conserva su estabilidad hasta p = { $end }.
+paradox-failed = No hay curva que dibujar: { $why }.
 paradox-kind = amortiguamiento que desaparece:
 paradox-kind-joints = amortiguadores en las articulaciones
     .tooltip = los amortiguadores de las articulaciones c1 y c2 en la relación c1/c2
@@ -583,3 +590,142 @@ paradox-reference-undamped = sin amortiguamiento
 paradox-reference-massless = nu = 0: la seguidora ideal
 paradox-reference = { $name }: p = { $load }
 paradox-reference-above = { $name }: p = { $load } (por encima del eje)
+
+## Refused values and the engine's failures
+
+refused-value = { $subject } = { $value }: { $allowed }
+refused-not-a-number = '{ $text }' no es un número
+refused-unknown-preset = preajuste desconocido '{ $name }'; los preajustes son: { $known }
+refused-unknown-key = clave desconocida '{ $key }'; las claves son: { $known }
+refused-malformed = '{ $text }' no es clave=valor con un número (p. ej. load=2.5): { $reason }
+refused-conflict = { $first } y { $second } fijan la misma magnitud; indique solo una
+allowed-finite = debe ser un número finito
+allowed-positive = debe ser > 0
+allowed-non-negative = debe ser >= 0
+allowed-key-range = debe ser un número finito { $range } { $unit }
+allowed-key-count = debe ser un número entero { $range }
+allowed-between = debe estar entre { $min } y { $key } = { $max }
+allowed-rods = debe ser un número entero de 2 a { $most }
+allowed-eta-range = debe estar entre 0 (carga muerta) y 1 (fuerza seguidora)
+allowed-frictionless-band = debe ser > 0: sin rozamiento la banda no ejerce carga alguna (para una columna sin carga, ponga la carga a 0)
+allowed-friction-too-small = demasiado pequeño: la carga p = { $load } necesitaría una fuerza normal R = P / mu más allá de todo número
+allowed-beyond-analysis = más allá de lo que el análisis puede elevar al cuadrado (magnitudes de { $smallest } a { $largest })
+allowed-makes-beyond-analysis = lleva { $what } más allá de lo que el análisis puede elevar al cuadrado (magnitudes de { $smallest } a { $largest })
+allowed-masses-too-unequal = las masas son demasiado desiguales: el determinante de la matriz de masas está por debajo de 1e-12 de su escala, así que el redondeo decide el movimiento (p. ej. una masa en la punta o un rodillo de más de unas 1e12 veces la de las barras)
+allowed-mass-missing = la columna necesita masa más allá de la articulación A (barra 2, punta o rodillo) y masa o inercia que se mueva solo con la barra 1; la matriz de masas es singular
+allowed-chain-massless = una cadena necesita masa o inercia en cada copia de la barra 2 (m2 o I2 > 0): con la barra 2 sin masa la matriz de masas de la cadena es singular
+allowed-needs-damped-joint2 = necesita una articulación 2 amortiguada: fije antes c2 > 0 (o el nivel de amortiguamiento)
+allowed-infinite-damper-ratio = c2 = 0 con c1 > 0: la relación c1/c2 que mantener es infinita; fije antes c2 > 0
+allowed-band-at-rest = debe ser > 0 para el análisis lineal: con V = 0 el rozamiento de Coulomb no es derivable en torno al reposo (stick-slip)
+allowed-roller-has-no-eta = el rodillo no tiene eta: el rozamiento de la banda da la dirección de la fuerza, contra el deslizamiento en el contacto, y su ángulo delta respecto de la barra 2 es un resultado del movimiento, no un parámetro
+allowed-state-length = debe ser 2 (barras + 1): los ángulos, el giro y sus velocidades
+allowed-time-step = debe ser un paso de tiempo en (0, 1] s
+quantity-load-force = la carga P
+quantity-load-p = la carga p = P l/k
+quantity-inertia-o = la inercia respecto de O
+quantity-inertia-coupling = la inercia de acoplamiento
+quantity-inertia-a = la inercia respecto de A
+quantity-stiffness-k1 = la rigidez k1
+quantity-stiffness-k2 = la rigidez k2
+quantity-damper-c1 = el amortiguador c1
+quantity-damper-c2 = el amortiguador c2
+quantity-drag = el arrastre c_ext l^3
+quantity-slip-damping = el amortiguamiento de deslizamiento mu R l^2 / V
+quantity-spin-inertia = la inercia de giro del rodillo m3 r^2 / 2
+quantity-mass-matrix = la matriz de masas
+quantity-damper-ratio = c1/c2
+quantity-damping-level = damping
+quantity-mass-ratio = mass_ratio
+quantity-drag-ratio = c_ext l^3/c
+quantity-state-length = la longitud del estado
+quantity-time-step = dt
+engine-too-stiff = el motor rapier no puede integrar esta columna con dt = { $step } s: sus resortes y amortiguadores alcanzan tasas de { $rate } 1/s, que necesitan dt < { $need } s; use el motor de referencia
+engine-rapier-world = no se pudo construir el mundo rapier2d para esta columna (sus articulaciones fueron rechazadas); use el motor de referencia
+analysis-not-converged = la iteración de autovalores no convergió con la carga p = { $load }
+ramp-refused-end = { $end } = { $value }: debe ser una carga p >= 0
+ramp-refused-rate = ritmo de la rampa = { $value }: debe ser una carga positiva por segundo
+ramp-refused-too-slow = ritmo de la rampa = { $value }: debe ser al menos { $slowest } de carga por segundo (más lento, la carga no se movería visiblemente en días)
+ramp-refused-too-long = la rampa de { $from } a { $to } a { $rate } por segundo tarda { $secs } s de tiempo simulado; como mucho { $most } s (unos cuatro meses): un ritmo mayor o extremos más cercanos
+ramp-refused-model = { $end } = { $value }: { $why }
+
+## Messages that frame another's (a file system's, a thread's) words
+
+notice-ramp-refused = rampa: { $why }
+notice-ramp-stopped = rampa detenida: { $why }
+notice-map-point-refused = mapa: { $why }
+notice-overlay-unavailable = superposición no disponible: { $why }
+notice-table-not-saved = no guardado: { $why }
+notice-no-locus = no hay lugar de las raíces para estos parámetros
+notice-no-thread = no guardado: no hay hilo para escribir ({ $why })
+notice-saved-lines = { $count ->
+    [one] guardada { $count } línea
+   *[other] guardadas { $count } líneas
+} en { $path }
+notice-write-failed = no guardado: { $why }
+notice-plots-saved = gráficas guardadas en { $path }
+notice-plots-not-saved = gráficas no guardadas: { $why }
+notice-recording-failed = la grabación falló: { $why }
+notice-layout-not-saved = disposición de la ventana no guardada: { $why }
+notice-stored-overlay = la superposición guardada { $name } no es un preajuste; sin superposición
+notice-stored-map-axis = no se usa el eje del mapa guardado: { $why }
+notice-stored-language = no se usa el idioma guardado: { $why }
+notice-lesson-refused = lección { $name }: { $why }
+notice-lesson-not-opened = lección no abierta: { $why }
+notice-reset-closed-lesson = todo restablecido: la lección "{ $title }" está cerrada (ábrala de nuevo desde el menú de lecciones)
+
+## The post-critical tab's notes
+
+cycles-computing = siguiendo los ciclos límite desde cada inicio del flameo ...
+cycles-none = no hay ciclos límite: { $why }
+cycles-no-onset = ningún inicio del flameo en el rango de la barra de carga: no hay ciclos límite
+cycles-chain-too-long = una cadena de { $rods } barras tarda demasiado en seguirse en la ventana (8 barras tardan unos 18 s en dos núcleos, y el trabajo crece más deprisa que el número de barras); `zieglerlab bifurcation` calcula sus ciclos desde la línea de órdenes
+cycles-no-thread = no hay hilo para los ciclos: { $why }
+cycles-branch = { $name }: inicio { $onset } en p = { $at }; la rama terminó: { $end }
+cycles-onset-soft = suave
+cycles-onset-hard = brusco
+cycles-no-branch = inicio del flameo en p = { $at }: { $why }
+cycles-no-branch-reversible = sin amortiguamiento, una columna reversible: ningún ciclo límite que seguir
+cycles-no-branch-degenerate = el primer coeficiente de Liapunov es cero dentro de su precisión; ciclos no seguidos
+cycles-no-branch-not-converged = el método de disparo no convergió cerca del inicio; no hay ciclos
+cycles-end-left-range = salió del rango de cargas
+cycles-end-large-amplitude = la amplitud de un ángulo superó { $most } rad (la columna da la vuelta)
+cycles-end-long-period = el periodo creció más de { $most } veces el del inicio
+cycles-end-lost = el método de disparo no convergió más allá de p = { $load }
+cycles-end-stick-slip = el contacto del rodillo se acerca a adherirse a la banda más allá de p = { $load } (stick-slip: allí el rozamiento no es suave)
+cycles-end-unresolved = los ciclos más allá de p = { $load } no están resueltos (multiplicador trivial alejado de 1 más de { $tolerance })
+cycles-end-point-limit = { $most } ciclos calculados
+cycles-end-cancelled = detenido a petición
+
+## Why the stability along the locus is not resolved (shown on hover)
+
+not-resolved-mode-span = la estabilidad no está resuelta: en p = { $load } los modos van de { $fastest } 1/s a { $slowest } 1/s, una relación mayor que { $span }, así que las tasas de crecimiento de los modos lentos quedan al redondeo (un modo mucho más rápido que los demás, como el giro de un rodillo de masa nu diminuta)
+not-resolved-slow-mode-lost = la estabilidad no está resuelta: en p = { $load } los modos van de { $scale } 1/s a { $slowest } 1/s, así que las tasas de crecimiento por debajo de { $tolerance } 1/s se pierden en el redondeo (el modelo está cerca de un límite singular: una banda V muy lenta o un amortiguamiento muy grande)
+not-resolved-methods-disagree = la estabilidad no está resuelta: en p = { $load } las raíces seguidas y la descomposición de Schur no coinciden en el estado (lo decide el redondeo: un modo mucho más rápido que los demás, como el giro de un rodillo de masa nu diminuta); las cargas críticas mostradas pueden ser espurias o faltar
+not-resolved-rounding-decides = la estabilidad no está resuelta: para p de { $low } a { $high } las tasas de crecimiento están entre 1e-12 y 1e-10 de la escala de frecuencias, donde el redondeo decide el estado (un rodillo de masa nu diminuta, cuyo débil flameo crece en proporción a nu, o una banda V muy lenta); las cargas críticas mostradas pueden estar desplazadas o faltar
+not-resolved-refinement-cut = el lugar de las raíces se refinó solo hasta p = { $load }: más allá las ramas se muestrean solo en las cargas equiespaciadas, así que puede faltar una ventana de otro estado más estrecha que su separación (se alcanzó el límite de tiempo y memoria del refinamiento)
+
+## The stored state's check before the window opens (a damaged store)
+
+store-zoom = el factor de zoom { $zoom } (se admite de 0.2 a 5)
+store-geometry = la geometría de la ventana { $width } x { $height } puntos a escala { $scale }
+store-unreadable = no se pudo leer el estado guardado ({ $why }); se guarda una copia en { $copy }; se empieza con los valores predeterminados
+store-unreadable-uncopied = no se pudo leer ({ $why }) ni copiar ({ $error })
+store-moved = el estado guardado { $path } { $why }; se traslada a { $aside } y se usan los valores predeterminados
+store-not-moved = el estado guardado { $path } { $why } y no se pudo apartar ({ $error }); los ajustes no se guardarán
+store-folder-not-made = los ajustes no se guardarán: no se puede crear la carpeta { $folder } ({ $error })
+store-folder-full = los ajustes no se guardarán: la carpeta { $folder } no admite archivos nuevos ({ $error })
+store-not-writable = los ajustes no se guardarán: no se puede escribir { $path } ({ $error })
+store-is-folder = es una carpeta
+store-is-device = es un dispositivo, una tubería o un socket
+store-too-large = contiene { $bytes } bytes (se leen como mucho { $most })
+store-entry = { $why } (entrada '{ $key }' de eframe)
+store-ignored = estado guardado: se ignora { $what }
+store-ignored-not-rewritten = estado guardado: se ignora { $what } (no se pudo reescribir el archivo: { $error })
+store-settings-unreadable = no se pudieron leer los ajustes guardados
+store-original-kept = el original se guarda en { $copy }
+store-original-lost = no se pudo guardar una copia del original ({ $error })
+store-settings-partly = ajustes guardados: se ignora { $what }; se mantiene el resto
+store-settings-ignored = ajustes guardados ignorados ({ $why }); se empieza con los valores predeterminados
+layout-ignored = disposición de ventana guardada ignorada ({ $why }); se usa la disposición predeterminada
+notice-paste-unreadable = ajustes pegados no entendidos, no ha cambiado nada: { $why }
+notice-paste-refused = ajustes pegados rechazados, no ha cambiado nada: { $why }

@@ -492,6 +492,9 @@ locus-none-why = Pas de lieu des racines pour ces paramètres : { $why }.
 locus-title = lieu des racines, p = { $from } à { $to }
 map-rows = lignes { $done } sur { $total }
 map-grey-rows = les lignes grises n'ont pas d'analyse : { $why }
+map-empty-range = la plage de la carte de { $lo } à { $hi } est vide
+map-no-thread = pas de fil d'exécution pour la carte : { $why }
+map-stopped = la carte s'est arrêtée : { $why }
 map-axis = charge p en fonction de
     .tooltip = le second paramètre de la carte (son intervalle ci-dessous relance la carte)
 map-from = de
@@ -504,6 +507,10 @@ paradox-computing = calcul des charges de flottement quand l'amortissement dispa
 paradox-joints = La charge de flottement avec des amortisseurs aux articulations c1 = (c1/c2) c2 quand le niveau d'amortissement g2 = c2 / sqrt(k m l^2) tend vers zéro : la limite dépend du rapport et se trouve sous la charge sans amortissement (paradoxe de Ziegler).
 paradox-external = La charge de flottement avec des amortisseurs égaux aux articulations c1 = c2 = c (amortissement interne) et une traînée c_ext = (c_ext l^3 / c) c / l^3 le long des barres (amortissement externe) quand le niveau g2 = c / sqrt(k m l^2) tend vers zéro : l'amortissement externe déstabilise aussi, et la limite dépend du rapport.
 paradox-no-extent = les courbes n'ont pas d'étendue selon le rapport
+paradox-no-thread = pas de fil d'exécution pour les courbes : { $why }
+paradox-dead-load = Une charge morte (eta = 0) est conservative : elle ne flotte jamais, donc il n'y a pas de paradoxe à montrer.
+paradox-stable-throughout = Pas de courbe à tracer : à chaque rapport montré la colonne reste stable jusqu'à p = { $end }.
+paradox-failed = Pas de courbe à tracer : { $why }.
 paradox-kind = amortissement qui disparaît :
 paradox-kind-joints = amortisseurs aux articulations
     .tooltip = les amortisseurs aux articulations c1 et c2 dans le rapport c1/c2
@@ -583,3 +590,142 @@ paradox-reference-undamped = sans amortissement
 paradox-reference-massless = nu = 0 : la suiveuse idéale
 paradox-reference = { $name } : p = { $load }
 paradox-reference-above = { $name } : p = { $load } (au-dessus de l'axe)
+
+## Refused values and the engine's failures
+
+refused-value = { $subject } = { $value } : { $allowed }
+refused-not-a-number = « { $text } » n'est pas un nombre
+refused-unknown-preset = préréglage inconnu « { $name } » ; les préréglages sont : { $known }
+refused-unknown-key = clé inconnue « { $key } » ; les clés sont : { $known }
+refused-malformed = « { $text } » n'est pas clé=valeur avec un nombre (p. ex. load=2.5) : { $reason }
+refused-conflict = { $first } et { $second } fixent la même grandeur ; n'en donner qu'une
+allowed-finite = doit être un nombre fini
+allowed-positive = doit être > 0
+allowed-non-negative = doit être >= 0
+allowed-key-range = doit être un nombre fini { $range } { $unit }
+allowed-key-count = doit être un nombre entier { $range }
+allowed-between = doit être compris entre { $min } et { $key } = { $max }
+allowed-rods = doit être un nombre entier de 2 à { $most }
+allowed-eta-range = doit être compris entre 0 (charge morte) et 1 (force suiveuse)
+allowed-frictionless-band = doit être > 0 : sans frottement la bande n'exerce aucune charge (pour une colonne non chargée, mettre la charge à 0)
+allowed-friction-too-small = trop petit : la charge p = { $load } exigerait une force normale R = P / mu au-delà de tout nombre
+allowed-beyond-analysis = au-delà de ce que l'analyse peut élever au carré (grandeurs de { $smallest } à { $largest })
+allowed-makes-beyond-analysis = porte { $what } au-delà de ce que l'analyse peut élever au carré (grandeurs de { $smallest } à { $largest })
+allowed-masses-too-unequal = les masses sont trop inégales : le déterminant de la matrice de masse est sous 1e-12 de son échelle, donc l'arrondi décide du mouvement (p. ex. une masse en tête ou un galet de plus d'environ 1e12 fois celle des barres)
+allowed-mass-missing = la colonne a besoin de masse au-delà de l'articulation A (barre 2, tête ou galet) et d'une masse ou inertie qui se meut avec la seule barre 1 ; la matrice de masse est singulière
+allowed-chain-massless = une chaîne a besoin de masse ou d'inertie sur chaque copie de la barre 2 (m2 ou I2 > 0) : avec une barre 2 sans masse, la matrice de masse de la chaîne est singulière
+allowed-needs-damped-joint2 = exige une articulation 2 amortie : fixer d'abord c2 > 0 (ou le niveau d'amortissement)
+allowed-infinite-damper-ratio = c2 = 0 avec c1 > 0 : le rapport c1/c2 à garder est infini ; fixer d'abord c2 > 0
+allowed-band-at-rest = doit être > 0 pour l'analyse linéaire : à V = 0 le frottement de Coulomb n'est pas dérivable autour du repos (stick-slip)
+allowed-roller-has-no-eta = le galet n'a pas d'eta : le frottement de la bande donne la direction de la force, contre le glissement au contact, et son angle delta avec la barre 2 est un résultat du mouvement, pas un paramètre
+allowed-state-length = doit valoir 2 (barres + 1) : les angles, la rotation et leurs vitesses
+allowed-time-step = doit être un pas de temps dans (0, 1] s
+quantity-load-force = la charge P
+quantity-load-p = la charge p = P l/k
+quantity-inertia-o = l'inertie autour de O
+quantity-inertia-coupling = l'inertie de couplage
+quantity-inertia-a = l'inertie autour de A
+quantity-stiffness-k1 = la raideur k1
+quantity-stiffness-k2 = la raideur k2
+quantity-damper-c1 = l'amortisseur c1
+quantity-damper-c2 = l'amortisseur c2
+quantity-drag = la traînée c_ext l^3
+quantity-slip-damping = l'amortissement de glissement mu R l^2 / V
+quantity-spin-inertia = l'inertie de rotation du galet m3 r^2 / 2
+quantity-mass-matrix = la matrice de masse
+quantity-damper-ratio = c1/c2
+quantity-damping-level = damping
+quantity-mass-ratio = mass_ratio
+quantity-drag-ratio = c_ext l^3/c
+quantity-state-length = la longueur de l'état
+quantity-time-step = dt
+engine-too-stiff = le moteur rapier ne peut pas intégrer cette colonne à dt = { $step } s : ses ressorts et amortisseurs atteignent des taux de { $rate } 1/s, qui exigent dt < { $need } s ; utiliser le moteur de référence
+engine-rapier-world = le monde rapier2d n'a pas pu être construit pour cette colonne (ses articulations ont été refusées) ; utiliser le moteur de référence
+analysis-not-converged = l'itération des valeurs propres n'a pas convergé à la charge p = { $load }
+ramp-refused-end = { $end } = { $value } : doit être une charge p >= 0
+ramp-refused-rate = vitesse de la rampe = { $value } : doit être une charge positive par seconde
+ramp-refused-too-slow = vitesse de la rampe = { $value } : doit valoir au moins { $slowest } de charge par seconde (plus lente, la charge ne bougerait pas visiblement pendant des jours)
+ramp-refused-too-long = la rampe de { $from } à { $to } à { $rate } par seconde prend { $secs } s de temps simulé ; au plus { $most } s (environ quatre mois) : une vitesse plus grande ou des bornes plus proches
+ramp-refused-model = { $end } = { $value } : { $why }
+
+## Messages that frame another's (a file system's, a thread's) words
+
+notice-ramp-refused = rampe : { $why }
+notice-ramp-stopped = rampe arrêtée : { $why }
+notice-map-point-refused = carte : { $why }
+notice-overlay-unavailable = superposition indisponible : { $why }
+notice-table-not-saved = non enregistré : { $why }
+notice-no-locus = il n'y a pas de lieu des racines pour ces paramètres
+notice-no-thread = non enregistré : pas de fil d'exécution pour écrire ({ $why })
+notice-saved-lines = { $count ->
+    [one] { $count } ligne enregistrée
+   *[other] { $count } lignes enregistrées
+} dans { $path }
+notice-write-failed = non enregistré : { $why }
+notice-plots-saved = graphiques enregistrés dans { $path }
+notice-plots-not-saved = graphiques non enregistrés : { $why }
+notice-recording-failed = l'enregistrement a échoué : { $why }
+notice-layout-not-saved = disposition de la fenêtre non enregistrée : { $why }
+notice-stored-overlay = la superposition enregistrée { $name } n'est pas un préréglage ; pas de superposition
+notice-stored-map-axis = l'axe de carte enregistré n'est pas utilisé : { $why }
+notice-stored-language = la langue enregistrée n'est pas utilisée : { $why }
+notice-lesson-refused = leçon { $name } : { $why }
+notice-lesson-not-opened = leçon non ouverte : { $why }
+notice-reset-closed-lesson = tout réinitialisé : la leçon « { $title } » est fermée (la rouvrir depuis le menu des leçons)
+
+## The post-critical tab's notes
+
+cycles-computing = suivi des cycles limites depuis chaque apparition du flottement ...
+cycles-none = pas de cycle limite : { $why }
+cycles-no-onset = aucune apparition du flottement dans la plage de la barre de charge : pas de cycle limite
+cycles-chain-too-long = une chaîne de { $rods } barres est trop longue à suivre dans la fenêtre (8 barres prennent environ 18 s sur deux cœurs, et le travail croît plus vite que le nombre de barres) ; `zieglerlab bifurcation` calcule ses cycles en ligne de commande
+cycles-no-thread = pas de fil d'exécution pour les cycles : { $why }
+cycles-branch = { $name } : apparition { $onset } à p = { $at } ; la branche s'est arrêtée : { $end }
+cycles-onset-soft = douce
+cycles-onset-hard = brutale
+cycles-no-branch = apparition du flottement à p = { $at } : { $why }
+cycles-no-branch-reversible = pas d'amortissement, une colonne réversible : aucun cycle limite à suivre
+cycles-no-branch-degenerate = le premier coefficient de Liapounov est nul à sa précision près ; cycles non suivis
+cycles-no-branch-not-converged = la méthode de tir n'a pas convergé près de l'apparition ; pas de cycle
+cycles-end-left-range = a quitté la plage de charges
+cycles-end-large-amplitude = l'amplitude d'un angle a dépassé { $most } rad (la colonne fait le tour)
+cycles-end-long-period = la période a dépassé { $most } fois celle de l'apparition
+cycles-end-lost = la méthode de tir n'a pas convergé au-delà de p = { $load }
+cycles-end-stick-slip = le contact du galet approche l'adhérence sur la bande au-delà de p = { $load } (stick-slip : le frottement n'y est pas lisse)
+cycles-end-unresolved = les cycles au-delà de p = { $load } ne sont pas résolus (multiplicateur trivial écarté de 1 de plus de { $tolerance })
+cycles-end-point-limit = { $most } cycles calculés
+cycles-end-cancelled = arrêté sur demande
+
+## Why the stability along the locus is not resolved (shown on hover)
+
+not-resolved-mode-span = la stabilité n'est pas résolue : à p = { $load } les modes vont de { $fastest } 1/s à { $slowest } 1/s, un rapport au-delà de { $span }, donc les taux de croissance des modes lents sont laissés à l'arrondi (un mode bien plus rapide que les autres, comme la rotation d'un galet de masse nu infime)
+not-resolved-slow-mode-lost = la stabilité n'est pas résolue : à p = { $load } les modes vont de { $scale } 1/s à { $slowest } 1/s, donc les taux de croissance sous { $tolerance } 1/s se perdent dans l'arrondi (le modèle est proche d'une limite singulière : une bande V très lente ou un très grand amortissement)
+not-resolved-methods-disagree = la stabilité n'est pas résolue : à p = { $load } les racines suivies et la décomposition de Schur divergent sur l'état (l'arrondi en décide : un mode bien plus rapide que les autres, comme la rotation d'un galet de masse nu infime) ; les charges critiques montrées peuvent être fausses ou manquer
+not-resolved-rounding-decides = la stabilité n'est pas résolue : pour p de { $low } à { $high } les taux de croissance sont entre 1e-12 et 1e-10 de l'échelle des fréquences, où l'arrondi décide de l'état (un galet de masse nu infime, dont le faible flottement croît en proportion de nu, ou une bande V très lente) ; les charges critiques montrées peuvent être déplacées ou manquer
+not-resolved-refinement-cut = le lieu des racines n'a été affiné que jusqu'à p = { $load } : au-delà, les branches ne sont échantillonnées qu'aux charges régulièrement espacées, donc une fenêtre d'un autre état plus étroite que leur espacement peut manquer (la limite de temps et de mémoire de l'affinage a été atteinte)
+
+## The stored state's check before the window opens (a damaged store)
+
+store-zoom = le facteur de zoom { $zoom } (permis de 0.2 à 5)
+store-geometry = la géométrie de fenêtre { $width } x { $height } points à l'échelle { $scale }
+store-unreadable = l'état enregistré n'a pas pu être lu ({ $why }) ; une copie est gardée dans { $copy } ; démarrage avec les valeurs par défaut
+store-unreadable-uncopied = n'a pu être ni lu ({ $why }) ni copié ({ $error })
+store-moved = l'état enregistré { $path } { $why } ; il est déplacé vers { $aside } et les valeurs par défaut s'appliquent
+store-not-moved = l'état enregistré { $path } { $why } et n'a pas pu être mis de côté ({ $error }) ; les réglages ne seront pas enregistrés
+store-folder-not-made = les réglages ne seront pas enregistrés : le dossier { $folder } ne peut pas être créé ({ $error })
+store-folder-full = les réglages ne seront pas enregistrés : le dossier { $folder } n'accepte aucun nouveau fichier ({ $error })
+store-not-writable = les réglages ne seront pas enregistrés : { $path } ne peut pas être écrit ({ $error })
+store-is-folder = est un dossier
+store-is-device = est un périphérique, un tube ou une socket
+store-too-large = contient { $bytes } octets (au plus { $most } sont lus)
+store-entry = { $why } (entrée « { $key } » d'eframe)
+store-ignored = état enregistré : ignoré { $what }
+store-ignored-not-rewritten = état enregistré : ignoré { $what } (le fichier n'a pas pu être réécrit : { $error })
+store-settings-unreadable = les réglages enregistrés n'ont pas pu être lus
+store-original-kept = l'original est gardé dans { $copy }
+store-original-lost = aucune copie de l'original n'a pu être gardée ({ $error })
+store-settings-partly = réglages enregistrés : ignoré { $what } ; le reste est gardé
+store-settings-ignored = réglages enregistrés ignorés ({ $why }) ; démarrage avec les valeurs par défaut
+layout-ignored = disposition de fenêtre enregistrée ignorée ({ $why }) ; la disposition par défaut s'applique
+notice-paste-unreadable = réglages collés non compris, rien n'a changé : { $why }
+notice-paste-refused = réglages collés refusés, rien n'a changé : { $why }

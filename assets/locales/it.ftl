@@ -492,6 +492,9 @@ locus-none-why = Nessun luogo delle radici per questi parametri: { $why }.
 locus-title = luogo delle radici, p = da { $from } a { $to }
 map-rows = righe { $done } di { $total }
 map-grey-rows = le righe grigie non hanno analisi: { $why }
+map-empty-range = l'intervallo della mappa da { $lo } a { $hi } è vuoto
+map-no-thread = nessun thread per la mappa: { $why }
+map-stopped = la mappa si è fermata: { $why }
 map-axis = carico p rispetto a
     .tooltip = il secondo parametro della mappa (il suo intervallo qui sotto riavvia la mappa)
 map-from = da
@@ -504,6 +507,10 @@ paradox-computing = calcolo dei carichi di flutter mentre lo smorzamento svanisc
 paradox-joints = Il carico di flutter con smorzatori nei giunti c1 = (c1/c2) c2 quando il livello di smorzamento g2 = c2 / sqrt(k m l^2) tende a zero: il limite dipende dal rapporto e sta sotto il carico non smorzato (paradosso di Ziegler).
 paradox-external = Il carico di flutter con smorzatori uguali nei giunti c1 = c2 = c (smorzamento interno) e resistenza c_ext = (c_ext l^3 / c) c / l^3 lungo le aste (smorzamento esterno) quando il livello g2 = c / sqrt(k m l^2) tende a zero: anche lo smorzamento esterno destabilizza, e il limite dipende dal rapporto.
 paradox-no-extent = le curve non hanno estensione lungo il rapporto
+paradox-no-thread = nessun thread per le curve: { $why }
+paradox-dead-load = Un carico fisso (eta = 0) è conservativo: non va mai in flutter, quindi non c'è paradosso da mostrare.
+paradox-stable-throughout = Nessuna curva da tracciare: a ogni rapporto mostrato la colonna resta stabile fino a p = { $end }.
+paradox-failed = Nessuna curva da tracciare: { $why }.
 paradox-kind = smorzamento che svanisce:
 paradox-kind-joints = smorzatori nei giunti
     .tooltip = gli smorzatori nei giunti c1 e c2 nel rapporto c1/c2
@@ -583,3 +590,142 @@ paradox-reference-undamped = non smorzata
 paradox-reference-massless = nu = 0: la follower ideale
 paradox-reference = { $name }: p = { $load }
 paradox-reference-above = { $name }: p = { $load } (sopra l'asse)
+
+## Refused values and the engine's failures
+
+refused-value = { $subject } = { $value }: { $allowed }
+refused-not-a-number = '{ $text }' non è un numero
+refused-unknown-preset = preimpostazione sconosciuta '{ $name }'; le preimpostazioni sono: { $known }
+refused-unknown-key = chiave sconosciuta '{ $key }'; le chiavi sono: { $known }
+refused-malformed = '{ $text }' non è chiave=valore con un numero (per es. load=2.5): { $reason }
+refused-conflict = { $first } e { $second } impostano la stessa grandezza; indicarne una sola
+allowed-finite = deve essere un numero finito
+allowed-positive = deve essere > 0
+allowed-non-negative = deve essere >= 0
+allowed-key-range = deve essere un numero finito { $range } { $unit }
+allowed-key-count = deve essere un numero intero { $range }
+allowed-between = deve essere compreso tra { $min } e { $key } = { $max }
+allowed-rods = deve essere un numero intero da 2 a { $most }
+allowed-eta-range = deve essere compreso tra 0 (carico fisso) e 1 (forza follower)
+allowed-frictionless-band = deve essere > 0: senza attrito il nastro non esercita alcun carico (per una colonna scarica impostare il carico a 0)
+allowed-friction-too-small = troppo piccolo: il carico p = { $load } richiederebbe una forza normale R = P / mu oltre ogni numero
+allowed-beyond-analysis = oltre ciò che l'analisi può elevare al quadrato (grandezze da { $smallest } a { $largest })
+allowed-makes-beyond-analysis = porta { $what } oltre ciò che l'analisi può elevare al quadrato (grandezze da { $smallest } a { $largest })
+allowed-masses-too-unequal = le masse sono troppo diverse: il determinante della matrice delle masse è sotto 1e-12 della sua scala, quindi l'arrotondamento decide il moto (per es. una massa in punta o una rotella oltre circa 1e12 volte quella delle aste)
+allowed-mass-missing = la colonna ha bisogno di massa oltre il giunto A (asta 2, punta o rotella) e di massa o inerzia che si muova con la sola asta 1; la matrice delle masse è singolare
+allowed-chain-massless = una catena ha bisogno di massa o inerzia su ogni copia dell'asta 2 (m2 o I2 > 0): con l'asta 2 priva di massa la matrice delle masse della catena è singolare
+allowed-needs-damped-joint2 = richiede un giunto 2 smorzato: impostare prima c2 > 0 (o il livello di smorzamento)
+allowed-infinite-damper-ratio = c2 = 0 con c1 > 0: il rapporto c1/c2 da mantenere è infinito; impostare prima c2 > 0
+allowed-band-at-rest = deve essere > 0 per l'analisi lineare: a V = 0 l'attrito coulombiano non è derivabile attorno alla quiete (stick-slip)
+allowed-roller-has-no-eta = la rotella non ha eta: l'attrito del nastro dà la direzione della forza, opposta allo strisciamento al contatto, e il suo angolo delta dall'asta 2 è un risultato del moto, non un parametro
+allowed-state-length = deve essere 2 (aste + 1): gli angoli, la rotazione e le loro velocità
+allowed-time-step = deve essere un passo temporale in (0, 1] s
+quantity-load-force = il carico P
+quantity-load-p = il carico p = P l/k
+quantity-inertia-o = l'inerzia attorno a O
+quantity-inertia-coupling = l'inerzia di accoppiamento
+quantity-inertia-a = l'inerzia attorno ad A
+quantity-stiffness-k1 = la rigidezza k1
+quantity-stiffness-k2 = la rigidezza k2
+quantity-damper-c1 = lo smorzatore c1
+quantity-damper-c2 = lo smorzatore c2
+quantity-drag = la resistenza c_ext l^3
+quantity-slip-damping = lo smorzamento di strisciamento mu R l^2 / V
+quantity-spin-inertia = l'inerzia di rotazione della rotella m3 r^2 / 2
+quantity-mass-matrix = la matrice delle masse
+quantity-damper-ratio = c1/c2
+quantity-damping-level = damping
+quantity-mass-ratio = mass_ratio
+quantity-drag-ratio = c_ext l^3/c
+quantity-state-length = la lunghezza dello stato
+quantity-time-step = dt
+engine-too-stiff = il motore rapier non può integrare questa colonna con dt = { $step } s: le sue molle e i suoi smorzatori raggiungono velocità di { $rate } 1/s, che richiedono dt < { $need } s; usare il motore di riferimento
+engine-rapier-world = non è stato possibile costruire il mondo rapier2d per questa colonna (i suoi giunti sono stati rifiutati); usare il motore di riferimento
+analysis-not-converged = l'iterazione degli autovalori non è andata a convergenza al carico p = { $load }
+ramp-refused-end = { $end } = { $value }: deve essere un carico p >= 0
+ramp-refused-rate = velocità della rampa = { $value }: deve essere un carico positivo al secondo
+ramp-refused-too-slow = velocità della rampa = { $value }: deve essere almeno { $slowest } di carico al secondo (più lento, il carico non si muoverebbe visibilmente per giorni)
+ramp-refused-too-long = la rampa da { $from } a { $to } a { $rate } al secondo richiede { $secs } s di tempo simulato; al massimo { $most } s (circa quattro mesi): una velocità maggiore o estremi più vicini
+ramp-refused-model = { $end } = { $value }: { $why }
+
+## Messages that frame another's (a file system's, a thread's) words
+
+notice-ramp-refused = rampa: { $why }
+notice-ramp-stopped = rampa fermata: { $why }
+notice-map-point-refused = mappa: { $why }
+notice-overlay-unavailable = sovrapposizione non disponibile: { $why }
+notice-table-not-saved = non salvato: { $why }
+notice-no-locus = non c'è luogo delle radici per questi parametri
+notice-no-thread = non salvato: nessun thread per scrivere ({ $why })
+notice-saved-lines = salvate { $count ->
+    [one] { $count } riga
+   *[other] { $count } righe
+} in { $path }
+notice-write-failed = non salvato: { $why }
+notice-plots-saved = grafici salvati in { $path }
+notice-plots-not-saved = grafici non salvati: { $why }
+notice-recording-failed = registrazione non riuscita: { $why }
+notice-layout-not-saved = disposizione della finestra non salvata: { $why }
+notice-stored-overlay = la sovrapposizione salvata { $name } non è una preimpostazione; nessuna sovrapposizione
+notice-stored-map-axis = l'asse della mappa salvato non è usato: { $why }
+notice-stored-language = la lingua salvata non è usata: { $why }
+notice-lesson-refused = lezione { $name }: { $why }
+notice-lesson-not-opened = lezione non aperta: { $why }
+notice-reset-closed-lesson = tutto azzerato: la lezione "{ $title }" è chiusa (riaprirla dal menu delle lezioni)
+
+## The post-critical tab's notes
+
+cycles-computing = si seguono i cicli limite da ogni insorgenza del flutter ...
+cycles-none = nessun ciclo limite: { $why }
+cycles-no-onset = nessuna insorgenza del flutter nell'intervallo della barra del carico: nessun ciclo limite
+cycles-chain-too-long = una catena di { $rods } aste richiede troppo tempo per essere seguita nella finestra (8 aste richiedono circa 18 s su due core, e il lavoro cresce più in fretta del numero di aste); `zieglerlab bifurcation` ne calcola i cicli dalla riga di comando
+cycles-no-thread = nessun thread per i cicli: { $why }
+cycles-branch = { $name }: insorgenza { $onset } a p = { $at }; il ramo è terminato: { $end }
+cycles-onset-soft = dolce
+cycles-onset-hard = brusca
+cycles-no-branch = insorgenza del flutter a p = { $at }: { $why }
+cycles-no-branch-reversible = nessuno smorzamento, una colonna reversibile: nessun ciclo limite da seguire
+cycles-no-branch-degenerate = il primo coefficiente di Ljapunov è nullo entro la sua accuratezza; cicli non seguiti
+cycles-no-branch-not-converged = il metodo di shooting non è andato a convergenza vicino all'insorgenza; nessun ciclo
+cycles-end-left-range = è uscito dall'intervallo dei carichi
+cycles-end-large-amplitude = l'ampiezza di un angolo ha superato { $most } rad (la colonna compie un giro)
+cycles-end-long-period = il periodo è cresciuto oltre { $most } volte quello dell'insorgenza
+cycles-end-lost = il metodo di shooting non è andato a convergenza oltre p = { $load }
+cycles-end-stick-slip = il contatto della rotella si avvicina all'aderenza sul nastro oltre p = { $load } (stick-slip: lì l'attrito non è liscio)
+cycles-end-unresolved = i cicli oltre p = { $load } non sono risolti (moltiplicatore banale lontano da 1 più di { $tolerance })
+cycles-end-point-limit = { $most } cicli calcolati
+cycles-end-cancelled = fermato su richiesta
+
+## Why the stability along the locus is not resolved (shown on hover)
+
+not-resolved-mode-span = la stabilità non è risolta: a p = { $load } i modi vanno da { $fastest } 1/s a { $slowest } 1/s, un rapporto oltre { $span }, quindi i tassi di crescita dei modi lenti sono lasciati all'arrotondamento (un modo molto più veloce degli altri, come la rotazione di una rotella di massa nu minima)
+not-resolved-slow-mode-lost = la stabilità non è risolta: a p = { $load } i modi vanno da { $scale } 1/s a { $slowest } 1/s, quindi i tassi di crescita sotto { $tolerance } 1/s si perdono nell'arrotondamento (il modello è vicino a un limite singolare: un nastro V molto lento o uno smorzamento molto grande)
+not-resolved-methods-disagree = la stabilità non è risolta: a p = { $load } le radici seguite e la decomposizione di Schur non concordano sullo stato (lo decide l'arrotondamento: un modo molto più veloce degli altri, come la rotazione di una rotella di massa nu minima); i carichi critici mostrati possono essere spuri o mancare
+not-resolved-rounding-decides = la stabilità non è risolta: per p da { $low } a { $high } i tassi di crescita stanno tra 1e-12 e 1e-10 della scala delle frequenze, dove l'arrotondamento decide lo stato (una rotella di massa nu minima, il cui debole flutter cresce in proporzione a nu, o un nastro V molto lento); i carichi critici mostrati possono essere spostati o mancare
+not-resolved-refinement-cut = il luogo delle radici è stato raffinato solo fino a p = { $load }: oltre, i rami sono campionati solo ai carichi equispaziati, quindi può mancare una finestra di un altro stato più stretta della loro spaziatura (è stato raggiunto il limite di tempo e memoria del raffinamento)
+
+## The stored state's check before the window opens (a damaged store)
+
+store-zoom = il fattore di zoom { $zoom } (ammesso da 0.2 a 5)
+store-geometry = la geometria della finestra { $width } x { $height } punti in scala { $scale }
+store-unreadable = non è stato possibile leggere lo stato salvato ({ $why }); una copia è conservata in { $copy }; si parte dai valori predefiniti
+store-unreadable-uncopied = non è stato possibile leggerlo ({ $why }) né copiarlo ({ $error })
+store-moved = lo stato salvato { $path } { $why }; viene spostato in { $aside } e si usano i valori predefiniti
+store-not-moved = lo stato salvato { $path } { $why } e non è stato possibile spostarlo ({ $error }); le impostazioni non saranno salvate
+store-folder-not-made = le impostazioni non saranno salvate: non è possibile creare la cartella { $folder } ({ $error })
+store-folder-full = le impostazioni non saranno salvate: la cartella { $folder } non accetta nuovi file ({ $error })
+store-not-writable = le impostazioni non saranno salvate: non è possibile scrivere { $path } ({ $error })
+store-is-folder = è una cartella
+store-is-device = è un dispositivo, una pipe o un socket
+store-too-large = contiene { $bytes } byte (se ne leggono al massimo { $most })
+store-entry = { $why } (voce '{ $key }' di eframe)
+store-ignored = stato salvato: ignorato { $what }
+store-ignored-not-rewritten = stato salvato: ignorato { $what } (non è stato possibile riscrivere il file: { $error })
+store-settings-unreadable = non è stato possibile leggere le impostazioni salvate
+store-original-kept = l'originale è conservato in { $copy }
+store-original-lost = non è stato possibile conservare una copia dell'originale ({ $error })
+store-settings-partly = impostazioni salvate: ignorato { $what }; il resto è mantenuto
+store-settings-ignored = impostazioni salvate ignorate ({ $why }); si parte dai valori predefiniti
+layout-ignored = disposizione della finestra salvata ignorata ({ $why }); si usa la disposizione predefinita
+notice-paste-unreadable = impostazioni incollate non comprese, nulla è cambiato: { $why }
+notice-paste-refused = impostazioni incollate rifiutate, nulla è cambiato: { $why }

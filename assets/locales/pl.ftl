@@ -500,6 +500,9 @@ locus-none-why = Brak linii pierwiastkowych dla tych parametrów: { $why }.
 locus-title = linie pierwiastkowe, p = od { $from } do { $to }
 map-rows = wiersze: { $done } z { $total }
 map-grey-rows = szare wiersze nie mają analizy: { $why }
+map-empty-range = zakres mapy od { $lo } do { $hi } jest pusty
+map-no-thread = brak wątku dla mapy: { $why }
+map-stopped = mapa zatrzymała się: { $why }
 map-axis = obciążenie p względem
     .tooltip = drugi parametr mapy (jego zakres poniżej uruchamia mapę od nowa)
 map-from = od
@@ -512,6 +515,10 @@ paradox-computing = obliczam obciążenia flatteru przy zanikającym tłumieniu 
 paradox-joints = Obciążenie flatteru z tłumikami w przegubach c1 = (c1/c2) c2, gdy poziom tłumienia g2 = c2 / sqrt(k m l^2) dąży do zera: granica zależy od stosunku i leży poniżej obciążenia bez tłumienia (paradoks Zieglera).
 paradox-external = Obciążenie flatteru z równymi tłumikami w przegubach c1 = c2 = c (tłumienie wewnętrzne) i oporem c_ext = (c_ext l^3 / c) c / l^3 wzdłuż prętów (tłumienie zewnętrzne), gdy poziom g2 = c / sqrt(k m l^2) dąży do zera: tłumienie zewnętrzne też destabilizuje, a granica zależy od stosunku.
 paradox-no-extent = krzywe nie mają rozpiętości wzdłuż stosunku
+paradox-no-thread = brak wątku dla krzywych: { $why }
+paradox-dead-load = Obciążenie martwe (eta = 0) jest zachowawcze: nigdy nie wywołuje flatteru, więc nie ma paradoksu do pokazania.
+paradox-stable-throughout = Brak krzywej do narysowania: przy każdym pokazanym stosunku kolumna pozostaje stateczna do p = { $end }.
+paradox-failed = Brak krzywej do narysowania: { $why }.
 paradox-kind = zanikające tłumienie:
 paradox-kind-joints = tłumiki w przegubach
     .tooltip = tłumiki w przegubach c1 i c2 w stosunku c1/c2
@@ -591,3 +598,144 @@ paradox-reference-undamped = bez tłumienia
 paradox-reference-massless = nu = 0: idealna siła śledząca
 paradox-reference = { $name }: p = { $load }
 paradox-reference-above = { $name }: p = { $load } (nad osią)
+
+## Refused values and the engine's failures
+
+refused-value = { $subject } = { $value }: { $allowed }
+refused-not-a-number = „{ $text }” nie jest liczbą
+refused-unknown-preset = nieznane ustawienie „{ $name }”; ustawienia to: { $known }
+refused-unknown-key = nieznany klucz „{ $key }”; klucze to: { $known }
+refused-malformed = „{ $text }” nie jest postaci klucz=wartość z liczbą (np. load=2.5): { $reason }
+refused-conflict = { $first } i { $second } ustawiają tę samą wielkość; podaj tylko jedno
+allowed-finite = musi być liczbą skończoną
+allowed-positive = musi być > 0
+allowed-non-negative = musi być >= 0
+allowed-key-range = musi być liczbą skończoną { $range } { $unit }
+allowed-key-count = musi być liczbą całkowitą { $range }
+allowed-between = musi leżeć między { $min } a { $key } = { $max }
+allowed-rods = musi być liczbą całkowitą od 2 do { $most }
+allowed-eta-range = musi leżeć między 0 (obciążenie martwe) a 1 (siła śledząca)
+allowed-frictionless-band = musi być > 0: bez tarcia taśma nie wywiera żadnego obciążenia (dla nieobciążonej kolumny ustaw obciążenie na 0)
+allowed-friction-too-small = za mały: obciążenie p = { $load } wymagałoby siły normalnej R = P / mu poza wszelką liczbą
+allowed-beyond-analysis = poza tym, co analiza może podnieść do kwadratu (wielkości od { $smallest } do { $largest })
+allowed-makes-beyond-analysis = wyprowadza { $what } poza to, co analiza może podnieść do kwadratu (wielkości od { $smallest } do { $largest })
+allowed-masses-too-unequal = masy są zbyt nierówne: wyznacznik macierzy mas jest poniżej 1e-12 jej skali, więc o ruchu decyduje zaokrąglenie (np. masa na wierzchołku lub rolka ponad około 1e12 razy cięższa od prętów)
+allowed-mass-missing = kolumna potrzebuje masy za przegubem A (pręt 2, wierzchołek lub rolka) oraz masy lub bezwładności poruszającej się z samym prętem 1; macierz mas jest osobliwa
+allowed-chain-massless = łańcuch potrzebuje masy lub bezwładności na każdej kopii pręta 2 (m2 lub I2 > 0): przy nieważkim pręcie 2 macierz mas łańcucha jest osobliwa
+allowed-needs-damped-joint2 = wymaga tłumionego przegubu 2: najpierw ustaw c2 > 0 (lub poziom tłumienia)
+allowed-infinite-damper-ratio = c2 = 0 przy c1 > 0: stosunek c1/c2 do utrzymania jest nieskończony; najpierw ustaw c2 > 0
+allowed-band-at-rest = musi być > 0 dla analizy liniowej: przy V = 0 tarcie Coulomba nie jest różniczkowalne wokół spoczynku (stick-slip)
+allowed-roller-has-no-eta = rolka nie ma eta: tarcie taśmy wyznacza kierunek siły, przeciwny do poślizgu w styku, a jej kąt delta względem pręta 2 jest wynikiem ruchu, nie parametrem
+allowed-state-length = musi wynosić 2 (pręty + 1): kąty, obrót i ich prędkości
+allowed-time-step = musi być krokiem czasowym w (0, 1] s
+quantity-load-force = obciążenie P
+quantity-load-p = obciążenie p = P l/k
+quantity-inertia-o = bezwładność względem O
+quantity-inertia-coupling = bezwładność sprzężenia
+quantity-inertia-a = bezwładność względem A
+quantity-stiffness-k1 = sztywność k1
+quantity-stiffness-k2 = sztywność k2
+quantity-damper-c1 = tłumik c1
+quantity-damper-c2 = tłumik c2
+quantity-drag = opór c_ext l^3
+quantity-slip-damping = tłumienie poślizgu mu R l^2 / V
+quantity-spin-inertia = bezwładność obrotu rolki m3 r^2 / 2
+quantity-mass-matrix = macierz mas
+quantity-damper-ratio = c1/c2
+quantity-damping-level = damping
+quantity-mass-ratio = mass_ratio
+quantity-drag-ratio = c_ext l^3/c
+quantity-state-length = długość stanu
+quantity-time-step = dt
+engine-too-stiff = silnik rapier nie może całkować tej kolumny przy dt = { $step } s: jej sprężyny i tłumiki osiągają szybkości { $rate } 1/s, które wymagają dt < { $need } s; użyj silnika odniesienia
+engine-rapier-world = nie udało się zbudować świata rapier2d dla tej kolumny (jej przeguby zostały odrzucone); użyj silnika odniesienia
+analysis-not-converged = iteracja wartości własnych nie zbiegła się przy obciążeniu p = { $load }
+ramp-refused-end = { $end } = { $value }: musi być obciążeniem p >= 0
+ramp-refused-rate = tempo rampy = { $value }: musi być dodatnim obciążeniem na sekundę
+ramp-refused-too-slow = tempo rampy = { $value }: musi wynosić co najmniej { $slowest } obciążenia na sekundę (wolniej obciążenie nie poruszałoby się widocznie przez całe dni)
+ramp-refused-too-long = rampa od { $from } do { $to } w tempie { $rate } na sekundę trwa { $secs } s czasu symulowanego; najwyżej { $most } s (około czterech miesięcy): szybsze tempo lub bliższe końce
+ramp-refused-model = { $end } = { $value }: { $why }
+
+## Messages that frame another's (a file system's, a thread's) words
+
+notice-ramp-refused = rampa: { $why }
+notice-ramp-stopped = rampa zatrzymana: { $why }
+notice-map-point-refused = mapa: { $why }
+notice-overlay-unavailable = nakładka niedostępna: { $why }
+notice-table-not-saved = nie zapisano: { $why }
+notice-no-locus = dla tych parametrów nie ma linii pierwiastkowych
+notice-no-thread = nie zapisano: brak wątku do zapisu ({ $why })
+notice-saved-lines = zapisano { $count ->
+    [one] { $count } wiersz
+    [few] { $count } wiersze
+    [many] { $count } wierszy
+   *[other] { $count } wiersza
+} w { $path }
+notice-write-failed = nie zapisano: { $why }
+notice-plots-saved = zapisano wykresy w { $path }
+notice-plots-not-saved = wykresów nie zapisano: { $why }
+notice-recording-failed = nagrywanie nie powiodło się: { $why }
+notice-layout-not-saved = nie zapisano układu okna: { $why }
+notice-stored-overlay = zapisana nakładka { $name } nie jest ustawieniem; bez nakładki
+notice-stored-map-axis = zapisana oś mapy nie jest używana: { $why }
+notice-stored-language = zapisany język nie jest używany: { $why }
+notice-lesson-refused = lekcja { $name }: { $why }
+notice-lesson-not-opened = nie otwarto lekcji: { $why }
+notice-reset-closed-lesson = zresetowano wszystko: lekcja „{ $title }” jest zamknięta (otwórz ją ponownie z menu lekcji)
+
+## The post-critical tab's notes
+
+cycles-computing = śledzenie cykli granicznych od każdego początku flatteru ...
+cycles-none = brak cykli granicznych: { $why }
+cycles-no-onset = brak początku flatteru w zakresie paska obciążenia: brak cykli granicznych
+cycles-chain-too-long = śledzenie łańcucha { $rods } prętów trwa w oknie zbyt długo (8 prętów zajmuje około 18 s na dwóch rdzeniach, a praca rośnie szybciej niż liczba prętów); `zieglerlab bifurcation` oblicza jego cykle z wiersza poleceń
+cycles-no-thread = brak wątku dla cykli: { $why }
+cycles-branch = { $name }: { $onset } początek przy p = { $at }; gałąź zakończyła się: { $end }
+cycles-onset-soft = łagodny
+cycles-onset-hard = gwałtowny
+cycles-no-branch = początek flatteru przy p = { $at }: { $why }
+cycles-no-branch-reversible = brak tłumienia, kolumna odwracalna: brak cyklu granicznego do śledzenia
+cycles-no-branch-degenerate = pierwszy współczynnik Lapunowa jest zerowy w granicach swojej dokładności; cykli nie śledzono
+cycles-no-branch-not-converged = metoda strzałów nie zbiegła się w pobliżu początku; brak cykli
+cycles-end-left-range = wyszła poza zakres obciążeń
+cycles-end-large-amplitude = amplituda kąta przekroczyła { $most } rad (kolumna obraca się dookoła)
+cycles-end-long-period = okres wzrósł ponad { $most } razy okres na początku
+cycles-end-lost = metoda strzałów nie zbiegła się powyżej p = { $load }
+cycles-end-stick-slip = styk rolki zbliża się do przylgnięcia do taśmy powyżej p = { $load } (stick-slip: tarcie nie jest tam gładkie)
+cycles-end-unresolved = cykle powyżej p = { $load } nie są rozstrzygnięte (trywialny mnożnik odbiega od 1 o więcej niż { $tolerance })
+cycles-end-point-limit = obliczono { $most } cykli
+cycles-end-cancelled = zatrzymano na żądanie
+
+## Why the stability along the locus is not resolved (shown on hover)
+
+not-resolved-mode-span = stateczność nie jest rozstrzygnięta: przy p = { $load } postacie drgań sięgają od { $fastest } 1/s do { $slowest } 1/s, stosunek ponad { $span }, więc szybkości narastania wolnych postaci zależą od zaokrągleń (postać znacznie szybsza od innych, jak obrót rolki o znikomej masie nu)
+not-resolved-slow-mode-lost = stateczność nie jest rozstrzygnięta: przy p = { $load } postacie drgań sięgają od { $scale } 1/s do { $slowest } 1/s, więc szybkości narastania poniżej { $tolerance } 1/s giną w zaokrągleniach (model jest blisko granicy osobliwej: bardzo wolna taśma V lub bardzo duże tłumienie)
+not-resolved-methods-disagree = stateczność nie jest rozstrzygnięta: przy p = { $load } śledzone pierwiastki i rozkład Schura nie zgadzają się co do stanu (rozstrzyga zaokrąglenie: postać znacznie szybsza od innych, jak obrót rolki o znikomej masie nu); pokazane obciążenia krytyczne mogą być pozorne lub może ich brakować
+not-resolved-rounding-decides = stateczność nie jest rozstrzygnięta: dla p od { $low } do { $high } szybkości narastania leżą między 1e-12 a 1e-10 skali częstości, gdzie o stanie decyduje zaokrąglenie (rolka o znikomej masie nu, której słaby flatter rośnie proporcjonalnie do nu, lub bardzo wolna taśma V); pokazane obciążenia krytyczne mogą być przesunięte lub może ich brakować
+not-resolved-refinement-cut = linie pierwiastkowe zagęszczono tylko do p = { $load }: dalej gałęzie są próbkowane jedynie w równo rozłożonych obciążeniach, więc może brakować okna innego stanu węższego niż ich odstęp (osiągnięto limit czasu i pamięci zagęszczania)
+
+## The stored state's check before the window opens (a damaged store)
+
+store-zoom = współczynnik powiększenia { $zoom } (dozwolone od 0.2 do 5)
+store-geometry = geometria okna { $width } x { $height } punktów w skali { $scale }
+store-unreadable = nie udało się odczytać zapisanego stanu ({ $why }); kopia jest w { $copy }; start z ustawieniami domyślnymi
+store-unreadable-uncopied = nie dał się odczytać ({ $why }) ani skopiować ({ $error })
+store-moved = zapisany stan { $path } { $why }; zostaje przeniesiony do { $aside } i obowiązują ustawienia domyślne
+store-not-moved = zapisany stan { $path } { $why } i nie dał się przenieść ({ $error }); ustawienia nie będą zapisywane
+store-folder-not-made = ustawienia nie będą zapisywane: nie można utworzyć folderu { $folder } ({ $error })
+store-folder-full = ustawienia nie będą zapisywane: folder { $folder } nie przyjmuje nowego pliku ({ $error })
+store-not-writable = ustawienia nie będą zapisywane: nie można zapisać { $path } ({ $error })
+store-is-folder = jest folderem
+store-is-device = jest urządzeniem, potokiem lub gniazdem
+store-too-large = zawiera { $bytes } bajtów (czyta się najwyżej { $most })
+store-entry = { $why } (wpis „{ $key }” eframe)
+store-ignored = zapisany stan: pominięto { $what }
+store-ignored-not-rewritten = zapisany stan: pominięto { $what } (nie udało się zapisać pliku na nowo: { $error })
+store-settings-unreadable = nie udało się odczytać zapisanych ustawień
+store-original-kept = oryginał jest w { $copy }
+store-original-lost = nie udało się zachować kopii oryginału ({ $error })
+store-settings-partly = zapisane ustawienia: pominięto { $what }; reszta zachowana
+store-settings-ignored = pominięto zapisane ustawienia ({ $why }); start z ustawieniami domyślnymi
+layout-ignored = pominięto zapisany układ okna ({ $why }); obowiązuje układ domyślny
+notice-paste-unreadable = wklejonych ustawień nie zrozumiano, nic nie zmieniono: { $why }
+notice-paste-refused = wklejone ustawienia odrzucono, nic nie zmieniono: { $why }

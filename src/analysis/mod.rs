@@ -21,7 +21,8 @@ pub use critical::{
 };
 pub use crossing::{Transition, stability_ranges};
 pub use cycles::{
-    Branch, BranchEnd, Cycle, MAX_AMPLITUDE_RAD, NoBranch, Onset, cycle_branches, cycles_at,
+    Branch, BranchEnd, Cycle, MAX_AMPLITUDE_RAD, MAX_PERIOD_GROWTH, MAX_POINTS, NoBranch, Onset,
+    TRIVIAL_TOLERANCE, cycle_branches, cycles_at,
 };
 pub use hopf::{Derivatives, Hopf, HopfKind, NoHopf, Steps as HopfSteps, hopf_at, is_hopf};
 pub use locus::{
@@ -33,15 +34,15 @@ pub use map::{
     default_map_axis,
 };
 pub use paradox::{
-    CurveName, Curves, DampingKind, ReferenceName, SweptRatio, curves as paradox_curves,
+    CurveName, Curves, DampingKind, NoCurve, ReferenceName, SweptRatio, curves as paradox_curves,
     first_instability, first_loss_of_stability, flutter_load_damped, flutter_load_external,
     own_point, swept_ratio,
 };
 pub use peaks::Peaks;
 pub use pencil::{AffinePencil, Spectrum, spectrum};
-pub use resolution::resolution_warning;
+pub use resolution::{NotResolved, resolution_warning};
 pub use roots::{Poly, aberth};
-pub use stability::{RELATIVE_TOLERANCE, Stability, State, classify};
+pub use stability::{LARGEST_MODE_SPAN, RELATIVE_TOLERANCE, Stability, State, classify};
 
 use crate::model::{ModelError, Shown};
 

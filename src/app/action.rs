@@ -31,10 +31,10 @@ pub enum Action {
         key: Key,
         value: f64,
     },
-    /// Text typed for a parameter that is not a value, and why.
+    /// A value typed for a parameter that was not taken, and why.
     Refuse {
         key: Key,
-        why: String,
+        why: Refusal,
     },
     /// The field went back to the applied value: its refusal is dropped.
     ClearRefusal(Key),
@@ -95,6 +95,29 @@ pub enum Action {
     DismissHint,
     /// Closes the first launch's welcome for good.
     CloseWelcome,
+}
+
+/// Why a value typed in a field was not taken: kept as data, worded in the
+/// language of the moment beside the field.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Refusal {
+    /// The text reads as no number.
+    NotANumber(String),
+    /// The model refuses the number.
+    Model(crate::model::ModelError),
+}
+
+impl Refusal {
+    /// The refusal in `words`' language.
+    #[must_use]
+    pub fn words(&self, words: &'static crate::i18n::Words) -> String {
+        match self {
+            Self::NotANumber(text) => {
+                crate::tr!(words, "refused-not-a-number", text = text.as_str())
+            }
+            Self::Model(error) => crate::i18n::model_error(words, error),
+        }
+    }
 }
 
 /// A table the window can save.

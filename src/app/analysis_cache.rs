@@ -22,7 +22,7 @@ pub struct Analysis {
     /// The stability ranges `(from, to, state)` that cover the slider's range.
     pub ranges: Vec<(f64, f64, State)>,
     /// Why the transitions cannot be trusted, when they cannot.
-    pub warning: Option<String>,
+    pub warning: Option<crate::analysis::NotResolved>,
     /// Each flutter onset (stable to flutter) with its Hopf criticality, or
     /// why there is none (see [`hopf_at`]); `None` where it failed.
     pub onsets: Vec<(f64, Option<Result<Hopf, NoHopf>>)>,

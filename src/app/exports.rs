@@ -76,18 +76,23 @@ impl Exports {
         path: PathBuf,
         ctx: &egui::Context,
     ) -> Option<Notice> {
-        let text = match table_csv(table, state) {
-            Ok(text) => text,
-            Err(why) => return Some(Notice::error(format!("not saved: {why}"))),
+        let words = state.words();
+        let Some(text) = table_csv(table, state) else {
+            let why = tr!(words, "notice-no-locus");
+            return Some(Notice::error(tr!(
+                words,
+                "notice-table-not-saved",
+                why = why
+            )));
         };
         let ctx = ctx.clone();
         let started = self.writes.request(path, move |path, _, send| {
-            send(write(&text, path));
+            send(write(&text, path, words));
             ctx.request_repaint();
         });
         started
             .err()
-            .map(|error| Notice::error(format!("not saved: no thread to write with ({error})")))
+            .map(|error| Notice::error(tr!(words, "notice-no-thread", why = error.to_string())))
     }
 
     /// Waits for the file being written (tests).
@@ -97,32 +102,30 @@ impl Exports {
     }
 }
 
-/// The table's text as the window shows it now.
-///
-/// # Errors
-/// No root locus for these parameters.
-pub fn table_csv(table: Table, state: &AppState) -> Result<String, &'static str> {
+/// The table's text as the window shows it now; `None` when it is the
+/// root locus and these parameters have none.
+#[must_use]
+pub fn table_csv(table: Table, state: &AppState) -> Option<String> {
     match table {
-        Table::History => Ok(history_csv(
+        Table::History => Some(history_csv(
             state.model().column.rods,
             state.history().samples(),
         )),
-        Table::Locus => state
-            .analysis()
-            .map(|analysis| locus_csv(&analysis.locus))
-            .ok_or("there is no root locus for these parameters"),
+        Table::Locus => state.analysis().map(|analysis| locus_csv(&analysis.locus)),
     }
 }
 
-/// Writes `text` to `path`, and says how it went.
-fn write(text: &str, path: &Path) -> Notice {
+/// Writes `text` to `path`, and says how it went in `words`' language (the
+/// file system's own reason as it gives it).
+fn write(text: &str, path: &Path, words: &'static crate::i18n::Words) -> Notice {
     match crate::files::write_atomically(path, |w| w.write_all(text.as_bytes())) {
-        Ok(()) => Notice::info(format!(
-            "saved {} lines to {}",
-            text.lines().count(),
-            path.display()
+        Ok(()) => Notice::info(tr!(
+            words,
+            "notice-saved-lines",
+            count = text.lines().count(),
+            path = path.display().to_string()
         )),
-        Err(error) => Notice::error(error.to_string()),
+        Err(error) => Notice::error(tr!(words, "notice-write-failed", why = error.to_string())),
     }
 }
 

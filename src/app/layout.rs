@@ -39,13 +39,7 @@ impl Layout {
     pub fn read(text: &str) -> (Self, Option<String>) {
         match ron::from_str(text) {
             Ok(layout) => (layout, None),
-            Err(error) => (
-                Self::default(),
-                Some(format!(
-                    "stored window layout ignored ({}); the default layout is used",
-                    error.code
-                )),
-            ),
+            Err(error) => (Self::default(), Some(error.code.to_string())),
         }
     }
 }

@@ -155,17 +155,24 @@ impl ZieglerApp {
     #[must_use]
     pub fn from_storage(storage: Option<&dyn eframe::Storage>) -> Self {
         let text = |key| storage.and_then(|s| s.get_string(key));
+        let layout = text(LAYOUT_KEY).map(|layout| Layout::read(&layout));
+        // The language chosen in the menu, else the system's: what starting
+        // says is said in it.
+        let language = layout
+            .as_ref()
+            .and_then(|(layout, _)| layout.language.as_deref())
+            .and_then(|code| Language::from_code(code).ok())
+            .unwrap_or_else(Language::system);
         // The stored column's analysis off the UI thread: a long chain
         // opens at once.
         let mut app = Self::with_state(AppState::from_stored_text_analysed(
             text(SETTINGS_KEY).as_deref(),
             true,
+            language,
         ));
-        // The system's language, until a stored choice says otherwise.
-        app.state.speak(Language::system());
-        if let Some(layout) = text(LAYOUT_KEY) {
-            let (layout, note) = Layout::read(&layout);
-            if let Some(note) = note {
+        if let Some((layout, why)) = layout {
+            if let Some(why) = why {
+                let note = tr!(app.state.words(), "layout-ignored", why = why);
                 app.state.tell(Notice::warning(note));
             }
             app.arrange(&layout);
@@ -203,14 +210,20 @@ impl ZieglerApp {
         // The language chosen in the menu, if one was.
         match layout.language.as_deref().map(Language::from_code) {
             Some(Ok(language)) => self.apply(Action::Language(language)),
-            Some(Err(why)) => self.state.tell(Notice::warning(format!("{why}"))),
+            Some(Err(why)) => self.state.tell(Notice::warning(tr!(
+                self.state.words(),
+                "notice-stored-language",
+                why = why.to_string()
+            ))),
             None => {}
         }
         if let Some(name) = &layout.overlay {
             match name.parse::<PresetId>() {
                 Ok(id) => self.apply(Action::Overlay(Some(id))),
-                Err(_) => self.state.tell(Notice::warning(format!(
-                    "stored overlay {name} is not a preset; no overlay"
+                Err(_) => self.state.tell(Notice::warning(tr!(
+                    self.state.words(),
+                    "notice-stored-overlay",
+                    name = name.as_str()
                 ))),
             }
         }
@@ -219,8 +232,13 @@ impl ZieglerApp {
             if let Some(map) = self.tabs.get_mut::<tabs::MapPanel>()
                 && let Err(why) = map.choose_axis(&model, (name, *lo, *hi))
             {
-                self.state
-                    .tell(Notice::warning(format!("stored map axis not used: {why}")));
+                let words = self.state.words();
+                let why = why.words(words);
+                self.state.tell(Notice::warning(tr!(
+                    words,
+                    "notice-stored-map-axis",
+                    why = why
+                )));
             }
         }
     }
@@ -375,9 +393,11 @@ impl ZieglerApp {
                 let text = recorded.text(self.state.words());
                 self.state.say(Notice::info(text));
             }
-            Some(Err(why)) => self
-                .state
-                .say(Notice::error(format!("recording failed: {why}"))),
+            Some(Err(why)) => self.state.say(Notice::error(tr!(
+                self.state.words(),
+                "notice-recording-failed",
+                why = why.to_string()
+            ))),
             None => {}
         }
         if self.view_generation != self.state.view_generation() {
@@ -561,9 +581,11 @@ impl eframe::App for ZieglerApp {
         storage.set_string(SETTINGS_KEY, self.state.settings().to_text());
         match ron::to_string(&self.layout()) {
             Ok(text) => storage.set_string(LAYOUT_KEY, text),
-            Err(error) => self
-                .state
-                .say(Notice::error(format!("window layout not saved: {error}"))),
+            Err(error) => self.state.say(Notice::error(tr!(
+                self.state.words(),
+                "notice-layout-not-saved",
+                why = error.to_string()
+            ))),
         }
     }
 }

@@ -66,8 +66,16 @@ impl PanelPicture {
             return None;
         };
         let notice = match write_cut(&image, *rect, *pixels_per_point, path) {
-            Ok(()) => Notice::info(format!("saved the plots to {}", path.display())),
-            Err(why) => Notice::error(format!("the plots not saved: {why}")),
+            Ok(()) => Notice::info(crate::tr!(
+                ctx.words(),
+                "notice-plots-saved",
+                path = path.display().to_string()
+            )),
+            Err(why) => Notice::error(crate::tr!(
+                ctx.words(),
+                "notice-plots-not-saved",
+                why = why.clone()
+            )),
         };
         self.shot = None;
         Some(notice)

@@ -24,6 +24,7 @@ pub use lesson::LessonRun;
 pub use overlay::Overlay;
 pub use ramp::{RampRun, VISIBLE_FRACTION};
 
+use super::action::Refusal;
 use super::analysis_cache::Analysis;
 use super::history::History;
 use super::notice::Notice;
@@ -97,8 +98,9 @@ pub struct AppState {
     current: Option<(Model, Spectrum)>,
     /// The last thing to tell the user.
     notice: Option<Notice>,
-    /// Each field's refused value: why, by key, until a value for it is taken.
-    refused: Vec<(Key, String)>,
+    /// Each field's refused value: why, by key, until a value for it is
+    /// taken (kept as data: worded in the language of the moment).
+    refused: Vec<(Key, Refusal)>,
     history: History,
     /// The column's eigenvalues measured from the run, refreshed about once a
     /// simulated second.
@@ -146,7 +148,7 @@ impl AppState {
     /// # Errors
     /// Settings that make no valid simulation.
     pub fn new(settings: Settings) -> Result<Self, SimError> {
-        Self::started(settings, None)
+        Self::started(settings, None, Language::default())
     }
 
     /// [`AppState::new`] with the analysis computed off the UI thread from
@@ -155,18 +157,22 @@ impl AppState {
     ///
     /// # Errors
     /// Settings that make no valid simulation.
-    pub fn new_analysing_in_background(settings: Settings) -> Result<Self, SimError> {
-        Self::started(settings, Some(crate::app::jobs::Jobs::new("analysis")))
+    pub fn new_analysing_in_background(
+        settings: Settings,
+        language: Language,
+    ) -> Result<Self, SimError> {
+        let worker = crate::app::jobs::Jobs::new("analysis");
+        Self::started(settings, Some(worker), language)
     }
 
     /// The state with `settings`, its analysis asked of `worker` (computed
-    /// here without one).
+    /// here without one), speaking `language` (what starting says, too).
     fn started(
         mut settings: Settings,
         worker: Option<analysis::AnalysisJobs>,
+        language: Language,
     ) -> Result<Self, SimError> {
-        // A new state speaks English until told otherwise.
-        let (sim, notice) = start(&mut settings, i18n::words(Language::default()))?;
+        let (sim, notice) = start(&mut settings, i18n::words(language))?;
         let mut state = Self {
             settings,
             sim,
@@ -193,7 +199,7 @@ impl AppState {
             view_generation: 0,
             held: false,
             lesson: None,
-            language: Language::default(),
+            language,
             language_chosen: false,
         };
         state.refresh_analysis();
@@ -286,13 +292,14 @@ impl AppState {
         i18n::words(self.language)
     }
 
-    /// Why the last value typed for `key` was refused, if it was.
+    /// Why the last value typed for `key` was refused, if it was, in the
+    /// window's language.
     #[must_use]
-    pub fn refusal(&self, key: Key) -> Option<&str> {
+    pub fn refusal(&self, key: Key) -> Option<String> {
         self.refused
             .iter()
             .find(|(k, _)| *k == key)
-            .map(|(_, why)| why.as_str())
+            .map(|(_, why)| why.words(self.words()))
     }
 
     /// The achieved speed when the run falls behind the chosen one.
@@ -340,7 +347,7 @@ impl AppState {
         let (bar_before, load_before) = (self.load_max(), self.settings.model.load_p());
         match self.set_parameter(key, value) {
             Ok(()) => self.clear_refusal(key),
-            Err(why) => self.refuse(key, why.to_string()),
+            Err(why) => self.refuse(key, Refusal::Model(why)),
         }
         if key == Key::Rods && self.load_max() != bar_before && load_before > 0.0 {
             self.scale_load_with_the_bar(bar_before, load_before);
@@ -367,13 +374,13 @@ impl AppState {
                 "notice-rods-load-kept",
                 rods = self.settings.model.column.rods,
                 load = crate::format::load_text(load_before),
-                why = why.to_string()
+                why = i18n::model_error(self.words(), &why)
             ))),
         }
     }
 
-    /// Refuses text typed for `key` that is not a value at all, saying why.
-    fn refuse(&mut self, key: Key, why: String) {
+    /// Keeps why a value typed for `key` was refused, to say beside it.
+    fn refuse(&mut self, key: Key, why: Refusal) {
         self.clear_refusal(key);
         self.refused.push((key, why));
     }
@@ -450,7 +457,7 @@ impl AppState {
     fn set_engine(&mut self, engine: EngineKind) {
         match self.sim.restart_from(engine, self.sim.state()) {
             Ok(()) => self.settings.engine = engine,
-            Err(error) => self.say(Notice::error(error.to_string())),
+            Err(error) => self.say(Notice::error(i18n::sim_error(self.words(), &error))),
         }
     }
 
@@ -464,7 +471,7 @@ impl AppState {
     fn check_and_set_model(&mut self, model: Model) {
         match ValidModel::new(model) {
             Ok(valid) => self.set_model(valid),
-            Err(error) => self.say(Notice::error(error.to_string())),
+            Err(error) => self.say(Notice::error(i18n::model_error(self.words(), &error))),
         }
     }
 
@@ -513,7 +520,7 @@ impl AppState {
                     self.set_overlay(Some(id));
                 }
             }
-            Err(error) => self.say(Notice::error(error.to_string())),
+            Err(error) => self.say(Notice::error(i18n::sim_error(self.words(), &error))),
         }
     }
 
@@ -522,7 +529,11 @@ impl AppState {
     fn set_map_point(&mut self, axis: &Axis, load: f64, value: f64) {
         match axis.apply(&self.settings.model, value) {
             Ok(model) => self.check_and_set_model(model.at_load(load)),
-            Err(error) => self.say(Notice::error(format!("map: {error}"))),
+            Err(error) => self.say(Notice::error(crate::tr!(
+                self.words(),
+                "notice-map-point-refused",
+                why = i18n::model_error(self.words(), &error)
+            ))),
         }
     }
 

@@ -8,6 +8,8 @@ use std::path::{Path, PathBuf};
 
 use super::SETTINGS_KEY;
 use crate::format::Shown;
+use crate::i18n::Words;
+use crate::tr;
 
 /// The zoom factors egui's own settings offer.
 const ZOOM_RANGE: std::ops::RangeInclusive<f64> = 0.2..=5.0;
@@ -25,11 +27,11 @@ fn number_after(text: &str, key: &str) -> Option<f64> {
 }
 
 /// Why an entry of eframe's store must not reach the window, if it must not.
-fn harmful(key: &str, value: &str) -> Option<String> {
+fn harmful(key: &str, value: &str, words: &'static Words) -> Option<String> {
     match key {
         "egui" => number_after(value, "zoom_factor:")
             .filter(|zoom| !ZOOM_RANGE.contains(zoom))
-            .map(|zoom| format!("the zoom factor {} (allowed 0.2 to 5)", Shown(zoom))),
+            .map(|zoom| tr!(words, "store-zoom", zoom = Shown(zoom).to_string())),
         "window" => {
             let size = value
                 .find("inner_size_points:")
@@ -45,11 +47,12 @@ fn harmful(key: &str, value: &str) -> Option<String> {
                 && scale.is_finite()
                 && scale > 0.0;
             (!sound).then(|| {
-                format!(
-                    "the window geometry {} x {} points at scale {}",
-                    Shown(width),
-                    Shown(height),
-                    Shown(scale)
+                tr!(
+                    words,
+                    "store-geometry",
+                    width = Shown(width).to_string(),
+                    height = Shown(height).to_string(),
+                    scale = Shown(scale).to_string()
                 )
             })
         }
@@ -90,15 +93,23 @@ fn keep_copy(path: &Path) -> std::io::Result<PathBuf> {
 /// What to say of a store that could not be read (`why`): a copy of it is
 /// kept beside, or, where none can be made, the store is moved aside so
 /// the autosave cannot overwrite what nobody has a copy of.
-fn unreadable(path: &Path, why: &str) -> String {
+fn unreadable(path: &Path, why: &str, words: &'static Words) -> String {
     match keep_copy(path) {
-        Ok(copy) => format!(
-            "the stored state could not be read ({why}); a copy is kept at {}; starting from the defaults",
-            copy.display()
+        Ok(copy) => tr!(
+            words,
+            "store-unreadable",
+            why = why,
+            copy = copy.display().to_string()
         ),
         Err(copy_error) => move_aside(
             path,
-            &format!("could not be read ({why}) nor copied ({copy_error})"),
+            &tr!(
+                words,
+                "store-unreadable-uncopied",
+                why = why,
+                error = copy_error.to_string()
+            ),
+            words,
         ),
     }
 }
@@ -110,45 +121,55 @@ const MOST_STORE_BYTES: u64 = 16 << 20;
 /// Moves `path` aside (a folder, a pipe, a device, or a file too large to
 /// be the app's store), so that eframe neither blocks on reading it nor
 /// fails to write the settings. Says what was done.
-fn move_aside(path: &Path, why: &str) -> String {
+fn move_aside(path: &Path, why: &str, words: &'static Words) -> String {
     let aside = beside(path, "unusable");
     match std::fs::rename(path, &aside) {
-        Ok(()) => format!(
-            "the stored state {} {why}; it is moved to {} and the defaults are used",
-            path.display(),
-            aside.display()
+        Ok(()) => tr!(
+            words,
+            "store-moved",
+            path = path.display().to_string(),
+            why = why,
+            aside = aside.display().to_string()
         ),
-        Err(error) => format!(
-            "the stored state {} {why} and could not be moved aside ({error}); settings will not be saved",
-            path.display()
+        Err(error) => tr!(
+            words,
+            "store-not-moved",
+            path = path.display().to_string(),
+            why = why,
+            error = error.to_string()
         ),
     }
 }
 
 /// Whether the settings can be saved at `path`: the folder takes a new
 /// file and an existing store is writable. Says why not, if not.
-fn unwritable(path: &Path) -> Option<String> {
+fn unwritable(path: &Path, words: &'static Words) -> Option<String> {
     let folder = path.parent().unwrap_or_else(|| Path::new("."));
     // On a first launch the folder is not there yet: eframe makes it.
     if let Err(error) = std::fs::create_dir_all(folder) {
-        return Some(format!(
-            "settings will not be saved: the folder {} cannot be made ({error})",
-            folder.display()
+        return Some(tr!(
+            words,
+            "store-folder-not-made",
+            folder = folder.display().to_string(),
+            error = error.to_string()
         ));
     }
     if let Err(error) = tempfile::NamedTempFile::new_in(folder) {
-        return Some(format!(
-            "settings will not be saved: the folder {} takes no new file ({})",
-            folder.display(),
-            std::io::Error::from(error.kind())
+        return Some(tr!(
+            words,
+            "store-folder-full",
+            folder = folder.display().to_string(),
+            error = std::io::Error::from(error.kind()).to_string()
         ));
     }
     if let Err(error) = std::fs::OpenOptions::new().append(true).open(path)
         && error.kind() != std::io::ErrorKind::NotFound
     {
-        return Some(format!(
-            "settings will not be saved: {} cannot be written ({error})",
-            path.display()
+        return Some(tr!(
+            words,
+            "store-not-writable",
+            path = path.display().to_string(),
+            error = error.to_string()
         ));
     }
     None
@@ -156,11 +177,11 @@ fn unwritable(path: &Path) -> Option<String> {
 
 /// Checks and repairs eframe's store at `path` (`app.ron`) before eframe
 /// reads it: what it holds, and that it can be written. Returns what the
-/// user should be told, if anything.
+/// user should be told, if anything, in `words`' language.
 #[must_use]
-pub fn check_stored_file(path: &Path) -> Option<String> {
-    let read = check_stored_entries(path);
-    let write = unwritable(path);
+pub fn check_stored_file(path: &Path, words: &'static Words) -> Option<String> {
+    let read = check_stored_entries(path, words);
+    let write = unwritable(path, words);
     match (read, write) {
         (Some(read), Some(write)) => Some(format!("{read}; {write}")),
         (read, write) => read.or(write),
@@ -168,42 +189,42 @@ pub fn check_stored_file(path: &Path) -> Option<String> {
 }
 
 /// Checks and repairs the entries of eframe's store at `path`.
-fn check_stored_entries(path: &Path) -> Option<String> {
+fn check_stored_entries(path: &Path, words: &'static Words) -> Option<String> {
     let metadata = std::fs::metadata(path).ok()?;
     if !metadata.is_file() {
         let kind = if metadata.is_dir() {
-            "is a folder"
+            tr!(words, "store-is-folder")
         } else {
-            "is a device, a pipe or a socket"
+            tr!(words, "store-is-device")
         };
-        return Some(move_aside(path, kind));
+        return Some(move_aside(path, &kind, words));
     }
     if metadata.len() > MOST_STORE_BYTES {
-        return Some(move_aside(
-            path,
-            &format!(
-                "holds {} bytes (at most {MOST_STORE_BYTES} are read)",
-                metadata.len()
-            ),
-        ));
+        let why = tr!(
+            words,
+            "store-too-large",
+            bytes = metadata.len().to_string(),
+            most = MOST_STORE_BYTES.to_string()
+        );
+        return Some(move_aside(path, &why, words));
     }
     // Bytes that are not UTF-8 (a Latin-1 edit, binary junk) make eframe
     // start from nothing and autosave over the file: kept first.
     let text = match crate::files::read_text(path, MOST_STORE_BYTES) {
         Ok(text) => text,
-        Err(error) => return Some(unreadable(path, &error.why)),
+        Err(error) => return Some(unreadable(path, &error.why, words)),
     };
     let mut entries: BTreeMap<String, String> = match ron::from_str(&text) {
         Ok(entries) => entries,
-        Err(error) => return Some(unreadable(path, &error.to_string())),
+        Err(error) => return Some(unreadable(path, &error.to_string(), words)),
     };
     let harmful_entries: Vec<(String, String)> = entries
         .iter()
-        .filter_map(|(key, value)| harmful(key, value).map(|why| (key.clone(), why)))
+        .filter_map(|(key, value)| harmful(key, value, words).map(|why| (key.clone(), why)))
         .collect();
     let dropped: Vec<String> = harmful_entries
         .iter()
-        .map(|(key, why)| format!("{why} (eframe's '{key}' entry)"))
+        .map(|(key, why)| tr!(words, "store-entry", why = why.as_str(), key = key.as_str()))
         .collect();
     let settings_unreadable = entries
         .get(SETTINGS_KEY)
@@ -226,19 +247,25 @@ fn check_stored_entries(path: &Path) -> Option<String> {
                 .map_err(|e| e.why)
             });
         note.push(match written {
-            Ok(()) => format!("stored state: ignored {}", dropped.join(", ")),
-            Err(error) => format!(
-                "stored state: ignored {} (the file could not be rewritten: {error})",
-                dropped.join(", ")
+            Ok(()) => tr!(words, "store-ignored", what = dropped.join(", ")),
+            Err(error) => tr!(
+                words,
+                "store-ignored-not-rewritten",
+                what = dropped.join(", "),
+                error = error
             ),
         });
     }
     if settings_unreadable {
-        note.push("the stored settings could not be read".to_owned());
+        note.push(tr!(words, "store-settings-unreadable"));
     }
     match copy {
-        Ok(copy) => note.push(format!("the original is kept at {}", copy.display())),
-        Err(error) => note.push(format!("no copy of the original could be kept ({error})")),
+        Ok(copy) => note.push(tr!(
+            words,
+            "store-original-kept",
+            copy = copy.display().to_string()
+        )),
+        Err(error) => note.push(tr!(words, "store-original-lost", error = error.to_string())),
     }
     Some(note.join("; "))
 }
@@ -246,6 +273,10 @@ fn check_stored_entries(path: &Path) -> Option<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn english() -> &'static Words {
+        crate::i18n::words(crate::i18n::Language::English)
+    }
 
     fn store(dir: &Path, text: &str) -> PathBuf {
         std::fs::create_dir_all(dir).unwrap();
@@ -277,7 +308,7 @@ mod tests {
     fn a_sound_file_is_left_alone() {
         let dir = dir("sound");
         let path = store(&dir, &file("1.0", WINDOW));
-        assert_eq!(check_stored_file(&path), None);
+        assert_eq!(check_stored_file(&path, english()), None);
         assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1);
         std::fs::remove_dir_all(&dir).unwrap();
     }
@@ -294,7 +325,7 @@ mod tests {
             let dir = dir("bad");
             let original = file(zoom, window);
             let path = store(&dir, &original);
-            let note = check_stored_file(&path).unwrap();
+            let note = check_stored_file(&path, english()).unwrap();
             assert!(note.starts_with("stored state: ignored"), "{note}");
             let repaired: BTreeMap<String, String> =
                 ron::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
@@ -315,7 +346,7 @@ mod tests {
     fn an_unreadable_file_is_copied_aside_and_said_so() {
         let dir = dir("garbage");
         let path = store(&dir, "{\"zieglerlab-settings\": \"(preset:");
-        let note = check_stored_file(&path).unwrap();
+        let note = check_stored_file(&path, english()).unwrap();
         assert!(
             note.contains("could not be read") && note.contains("a copy is kept at"),
             "{note}"
@@ -344,7 +375,7 @@ mod tests {
             std::fs::create_dir_all(&dir).unwrap();
             let path = dir.join("app.ron");
             std::fs::write(&path, &bytes).unwrap();
-            let note = check_stored_file(&path).unwrap();
+            let note = check_stored_file(&path, english()).unwrap();
             assert!(
                 note.contains("could not be read (it is not UTF-8")
                     && note.contains("a copy is kept at"),
@@ -388,11 +419,11 @@ mod tests {
                 let made = std::process::Command::new("mkfifo").arg(&path).status();
                 assert!(made.unwrap().success());
             }
-            let note = check_stored_file(&path).unwrap();
+            let note = check_stored_file(&path, english()).unwrap();
             assert!(note.contains("moved to"), "{note}");
             assert!(!path.exists(), "{kind}: moved away");
             assert_eq!(
-                check_stored_file(&path),
+                check_stored_file(&path, english()),
                 None,
                 "{kind}: nothing left to say"
             );
@@ -405,7 +436,7 @@ mod tests {
     fn a_first_launch_has_nothing_to_say() {
         let dir = dir("first");
         let path = dir.join("zieglerlab").join("app.ron");
-        assert_eq!(check_stored_file(&path), None);
+        assert_eq!(check_stored_file(&path, english()), None);
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

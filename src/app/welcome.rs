@@ -87,9 +87,12 @@ pub fn welcome_ui(ctx: &egui::Context, state: &AppState, actions: &mut Actions, 
                 {
                     match Lesson::read(text, &Tab::ids()) {
                         Ok(lesson) => actions.push(Action::LessonOpen(Box::new(lesson))),
-                        Err(error) => actions.push(Action::Say(super::notice::Notice::error(
-                            format!("lesson {name}: {error}"),
-                        ))),
+                        Err(error) => actions.push(Action::Say(super::notice::Notice::error(tr!(
+                            words,
+                            "notice-lesson-refused",
+                            name = name,
+                            why = error.to_string()
+                        )))),
                     }
                     actions.push(Action::CloseWelcome);
                 }

@@ -72,7 +72,11 @@ pub fn run(renderer: Renderer) -> eframe::Result {
     // they are checked first, so a bad one cannot crash every launch.
     let notice = eframe::storage_dir(APP_ID)
         .map(|dir| dir.join("app.ron"))
-        .and_then(|path| store_check::check_stored_file(&path));
+        .and_then(|path| {
+            // Before the store is read: the system's language.
+            let words = crate::i18n::words(crate::i18n::Language::system());
+            store_check::check_stored_file(&path, words)
+        });
     eframe::run_native(
         APP_ID,
         options(renderer, [1280.0, 800.0]),

@@ -53,7 +53,7 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
     let transitions = critical_loads_along(&pencil, &bracket)?;
     let warning = resolution_warning(&pencil, &bracket)?;
     if let Some(warning) = &warning {
-        eprintln!("warning: {}", printable(warning));
+        eprintln!("warning: {}", printable(&warning.to_string()));
     }
     // Where rounding decides the states, the changes it makes are noise
     // (thousands, for a roller of mass nu = 1e-50): none is listed as if it
@@ -79,7 +79,7 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
             "beck_loads": transitions.iter().map(|t| model.beck_load(t.load)).collect::<Vec<_>>(),
             "resolved": warning.is_none(),
             "transitions_not_listed": unlisted,
-            "warning": warning,
+            "warning": warning.map(|w| w.to_string()),
         });
         writeln!(out, "{}", serde_json::to_string_pretty(&value)?)?;
         return Ok(());

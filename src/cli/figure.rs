@@ -199,7 +199,7 @@ pub fn run(args: &Args) -> Result<()> {
                     progress.suspend(|| {
                         eprintln!(
                             "warning: {name}: {}; no critical load is drawn and no range tinted",
-                            printable(warning)
+                            printable(&warning.to_string())
                         );
                     });
                 }

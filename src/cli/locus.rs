@@ -76,7 +76,7 @@ pub fn run(args: &Args, out: &mut impl Write) -> Result<()> {
         )?;
     }
     if let Some(warning) = resolution_warning(&pencil, &locus)? {
-        eprintln!("warning: {}", printable(&warning));
+        eprintln!("warning: {}", printable(&warning.to_string()));
     }
     Ok(())
 }

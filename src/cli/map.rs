@@ -273,7 +273,7 @@ pub fn warn_if_unresolved(spec: &MapSpec, rows: &[&Row], y_name: &str) -> Result
             eprintln!(
                 "warning: at {y_name} = {}: {}",
                 Shown(row.value),
-                printable(&warning)
+                printable(&warning.to_string())
             );
             break;
         }

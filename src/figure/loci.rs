@@ -25,7 +25,7 @@ pub struct Analysed {
     /// The moving eigenvalues at each transition's load.
     pub at_transitions: Vec<Vec<C64>>,
     /// Why the states are not resolved over the range, if they are not.
-    pub warning: Option<String>,
+    pub warning: Option<crate::analysis::NotResolved>,
 }
 
 /// `model`'s locus from `load_min` to `load_max` on the loads `critical`

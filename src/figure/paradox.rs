@@ -43,7 +43,7 @@ where
     DB::ErrorType: 'static,
 {
     if let Some(note) = &data.curves.note {
-        return Err(FigureError::Empty(note.clone()));
+        return Err(FigureError::Empty(note.to_string()));
     }
     let paradox = Paradox {
         curves: &data.curves,

@@ -9,6 +9,7 @@
 
 mod language;
 mod pseudo;
+mod refusals;
 mod terms;
 
 use std::borrow::Cow;
@@ -19,6 +20,10 @@ use fluent_bundle::{FluentArgs, FluentResource};
 
 pub use fluent_bundle::FluentValue;
 pub use language::{Language, UnknownLanguage};
+pub use refusals::{
+    allowed_words, analysis_error, model_error, not_resolved_words, quantity_words, ramp_error,
+    sim_error,
+};
 pub use terms::{duration_words, state_name, transition_in, transition_text};
 
 /// The message file of each language, as shipped: English is the source.

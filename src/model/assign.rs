@@ -1,10 +1,10 @@
 //! `key=value` read and applied to a model: each key checked, the keys put
 //! in the order that sets the load last, the result validated.
 
-use super::ModelError;
 use super::keys::{Key, KeySpec, Sign};
-use super::params::{Model, analysis_range_text};
+use super::params::Model;
 use super::valid::ValidModel;
+use super::{Allowed, ModelError};
 
 /// A parsed `key=value`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -101,7 +101,7 @@ pub fn apply_assignments(
             return Err(ModelError::invalid(
                 spec.key,
                 value,
-                &format!("makes {what} {}", analysis_range_text()),
+                Allowed::MakesBeyondAnalysis(what),
             ));
         }
     }
@@ -109,12 +109,6 @@ pub fn apply_assignments(
 }
 
 fn check_sign(spec: &KeySpec, value: f64) -> Result<(), ModelError> {
-    let allowed = match spec.sign {
-        Sign::Count(..) => format!("must be a whole number {}", spec.range),
-        Sign::Positive | Sign::NonNegative => {
-            format!("must be a finite number {} {}", spec.range, spec.unit)
-        }
-    };
     #[expect(clippy::cast_precision_loss, reason = "small counts")]
     let ok = value.is_finite()
         && match spec.sign {
@@ -127,7 +121,11 @@ fn check_sign(spec: &KeySpec, value: f64) -> Result<(), ModelError> {
     if ok {
         Ok(())
     } else {
-        Err(ModelError::invalid(spec.key, value, allowed.trim_end()))
+        Err(ModelError::invalid(
+            spec.key,
+            value,
+            Allowed::KeyRange(spec.key),
+        ))
     }
 }
 

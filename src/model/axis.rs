@@ -5,7 +5,7 @@
 use super::assign::{Assignment, apply_assignments};
 use super::key_table::KEYS;
 use super::keys::Key;
-use super::{Model, ModelError};
+use super::{Allowed, Model, ModelError, Quantity};
 
 /// The name of the damper-ratio axis, `c1/c2` (the damping level held).
 pub const DAMPER_RATIO: &str = "c1/c2";
@@ -96,7 +96,7 @@ impl Axis {
         let mut out = *model;
         match self {
             Self::MassRatio => {
-                non_negative(MASS_RATIO, value)?;
+                non_negative(Quantity::MassRatio, value)?;
                 let m1 = value * mass_beyond_joint(model);
                 return Self::Key(Key::M1).apply(model, m1);
             }
@@ -104,26 +104,26 @@ impl Axis {
                 apply_assignments(&mut out, &[Assignment { key: *key, value }])?;
             }
             Self::DamperRatio => {
-                non_negative(DAMPER_RATIO, value)?;
+                non_negative(Quantity::DamperRatio, value)?;
                 let c2 = out.column.c2_nms_per_rad;
                 if c2 <= 0.0 {
                     return Err(ModelError::invalid(
-                        DAMPER_RATIO,
+                        Quantity::DamperRatio,
                         value,
-                        "needs a damped joint 2: set c2 > 0 (or the damping level) first",
+                        Allowed::NeedsDampedJoint2,
                     ));
                 }
                 out.column.c1_nms_per_rad = value * c2;
             }
             Self::DampingLevel => {
-                non_negative(DAMPING_LEVEL, value)?;
+                non_negative(Quantity::DampingLevel, value)?;
                 let Some(beta) =
                     ratio(model).or((model.column.c1_nms_per_rad == 0.0).then_some(1.0))
                 else {
                     return Err(ModelError::invalid(
-                        DAMPING_LEVEL,
+                        Quantity::DampingLevel,
                         value,
-                        "c2 = 0 with c1 > 0: the ratio c1/c2 to hold is infinite; set c2 > 0 first",
+                        Allowed::InfiniteDamperRatio,
                     ));
                 };
                 let c2 = value * damping_scale(model);
@@ -137,15 +137,11 @@ impl Axis {
 }
 
 /// Refuses a value of a derived axis that is negative or not finite.
-fn non_negative(axis: &'static str, value: f64) -> Result<(), ModelError> {
+fn non_negative(axis: Quantity, value: f64) -> Result<(), ModelError> {
     if value.is_finite() && value >= 0.0 {
         Ok(())
     } else {
-        Err(ModelError::invalid(
-            axis,
-            value,
-            "must be a finite number >= 0",
-        ))
+        Err(ModelError::invalid(axis, value, Allowed::NonNegative))
     }
 }
 

@@ -479,11 +479,9 @@ impl Key {
     /// Why the key is not a parameter of `model`, where that needs saying
     /// (beyond listing the keys that are).
     #[must_use]
-    pub fn why_absent(self, model: &Model) -> Option<&'static str> {
+    pub fn why_absent(self, model: &Model) -> Option<super::Allowed> {
         match self {
-            Self::Eta if model.roller().is_some() => Some(
-                "the roller has no eta: the band's friction sets the force's direction, against the contact's slip, and its angle delta from rod 2 is an outcome of the motion, not a parameter",
-            ),
+            Self::Eta if model.roller().is_some() => Some(super::Allowed::RollerHasNoEta),
             _ => None,
         }
     }

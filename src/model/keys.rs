@@ -159,6 +159,12 @@ pub struct KeySpec {
 }
 
 impl KeySpec {
+    /// Whether the key counts (a whole number), rather than measures.
+    #[must_use]
+    pub const fn counts(&self) -> bool {
+        matches!(self.sign, Sign::Count(..))
+    }
+
     /// Whether the key exists for this model's load.
     #[must_use]
     pub fn applies_to(&self, model: &Model) -> bool {

@@ -84,7 +84,7 @@ pub fn linearize(model: &impl AsValid) -> Result<LinearModel, ModelError> {
         return Err(ModelError::invalid(
             super::Key::V,
             roller.band_speed_m_per_s,
-            "must be > 0 for the linear analysis: at V = 0 Coulomb friction is not differentiable about rest (stick-slip)",
+            super::Allowed::BandAtRest,
         ));
     }
     // A massless roller is linearized as the ideal follower column it equals.

@@ -5,6 +5,7 @@
 //! how every number is checked; code comments cite them by section.
 #![doc = include_str!("physics.md")]
 
+mod allowed;
 mod assign;
 mod axis;
 mod chain;
@@ -23,6 +24,7 @@ mod valid;
 mod validate;
 
 pub use crate::format::Shown;
+pub use allowed::{Allowed, Quantity};
 pub use assign::{Assignment, apply_assignments, parse_assignment};
 pub use axis::{Axis, DAMPER_RATIO, DAMPING_LEVEL, MASS_RATIO};
 pub use chain::{
@@ -50,14 +52,14 @@ pub use valid::{AsValid, ValidModel};
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Subject {
     Key(Key),
-    Derived(&'static str),
+    Derived(Quantity),
 }
 
 impl std::fmt::Display for Subject {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Self::Key(key) => f.write_str(key.name()),
-            Self::Derived(what) => f.write_str(what),
+            Self::Derived(what) => f.write_str(what.name()),
         }
     }
 }
@@ -68,8 +70,8 @@ impl From<Key> for Subject {
     }
 }
 
-impl From<&'static str> for Subject {
-    fn from(what: &'static str) -> Self {
+impl From<Quantity> for Subject {
+    fn from(what: Quantity) -> Self {
         Self::Derived(what)
     }
 }
@@ -81,7 +83,7 @@ pub enum ModelError {
     Invalid {
         subject: Subject,
         value: f64,
-        allowed: String,
+        allowed: Allowed,
     },
     #[error("unknown preset '{name}'; the presets are: {known}")]
     UnknownPreset { name: String, known: String },
@@ -107,7 +109,7 @@ impl ModelError {
             Self::Invalid {
                 subject: Subject::Derived(what),
                 ..
-            } => Some(what),
+            } => Some(what.name()),
             Self::UnknownKey { key, .. } => Some(key),
             Self::UnknownPreset { .. } | Self::Malformed { .. } => None,
         }
@@ -126,11 +128,11 @@ impl ModelError {
         }
     }
 
-    pub(crate) fn invalid(subject: impl Into<Subject>, value: f64, allowed: &str) -> Self {
+    pub(crate) fn invalid(subject: impl Into<Subject>, value: f64, allowed: Allowed) -> Self {
         Self::Invalid {
             subject: subject.into(),
             value,
-            allowed: allowed.to_owned(),
+            allowed,
         }
     }
 }

@@ -1,5 +1,6 @@
 //! The column's physical parameters in SI units (their checks: `validate.rs`).
 
+use super::allowed::Quantity;
 use serde::{Deserialize, Serialize};
 
 /// One rigid rod of the column: its own mass distribution, reduced to what the
@@ -322,20 +323,20 @@ impl Model {
     /// The analysis squares such numbers (norms, the characteristic
     /// polynomial), so larger ones would overflow to infinity on screen.
     #[must_use]
-    pub fn beyond_analysis(&self) -> Option<(&'static str, f64)> {
+    pub fn beyond_analysis(&self) -> Option<(Quantity, f64)> {
         let inertia = self.inertia();
         let mut quantities = vec![
-            ("the load P", self.follower_force_n()),
-            ("the load p = P l/k", self.load_p()),
-            ("the inertia about O", inertia.a_kg_m2),
-            ("the coupling inertia", inertia.b_kg_m2),
-            ("the inertia about A", inertia.c_kg_m2),
-            ("the stiffness k1", self.column.k1_nm_per_rad),
-            ("the stiffness k2", self.column.k2_nm_per_rad),
-            ("the damper c1", self.column.c1_nms_per_rad),
-            ("the damper c2", self.column.c2_nms_per_rad),
+            (Quantity::LoadForce, self.follower_force_n()),
+            (Quantity::LoadP, self.load_p()),
+            (Quantity::InertiaO, inertia.a_kg_m2),
+            (Quantity::InertiaCoupling, inertia.b_kg_m2),
+            (Quantity::InertiaA, inertia.c_kg_m2),
+            (Quantity::StiffnessK1, self.column.k1_nm_per_rad),
+            (Quantity::StiffnessK2, self.column.k2_nm_per_rad),
+            (Quantity::DamperC1, self.column.c1_nms_per_rad),
+            (Quantity::DamperC2, self.column.c2_nms_per_rad),
             (
-                "the drag c_ext l^3",
+                Quantity::Drag,
                 self.column.drag_ns_per_m2
                     * self
                         .column
@@ -350,7 +351,7 @@ impl Model {
         {
             let l = self.column.rod1.length_m.max(self.column.rod2.length_m);
             quantities.push((
-                "the slip damping mu R l^2 / V",
+                Quantity::SlipDamping,
                 roller.friction_force_n() / roller.band_speed_m_per_s * l * l,
             ));
         }
@@ -359,7 +360,7 @@ impl Model {
         let spin_underflows = self.roller().is_some_and(|r| r.mass_kg > 0.0)
             && inertia.spin_kg_m2 < 1.0 / LARGEST_DERIVED;
         if spin_underflows {
-            return Some(("the roller's spin inertia m3 r^2 / 2", inertia.spin_kg_m2));
+            return Some((Quantity::SpinInertia, inertia.spin_kg_m2));
         }
         quantities
             .into_iter()
@@ -370,11 +371,3 @@ impl Model {
 /// The largest size of a derived quantity the analysis accepts: its square
 /// and products of two such stay far inside double precision.
 pub const LARGEST_DERIVED: f64 = 1e150;
-
-/// What [`Model::beyond_analysis`] allows, in words for a refusal.
-pub(crate) fn analysis_range_text() -> String {
-    format!(
-        "beyond what the analysis can square (sizes {:e} to {LARGEST_DERIVED:e})",
-        1.0 / LARGEST_DERIVED
-    )
-}

@@ -32,7 +32,7 @@ impl ValidModel {
             return Err(ModelError::invalid(
                 Key::Load,
                 p,
-                "must be a finite number >= 0",
+                super::Allowed::NonNegative,
             ));
         }
         let model = self.0.at_load(p);
@@ -45,17 +45,14 @@ impl ValidModel {
             return Err(ModelError::invalid(
                 Key::Mu,
                 roller.mu,
-                &format!(
-                    "too small: the load p = {} would need the normal force R = P / mu beyond every number",
-                    crate::format::Shown(p)
-                ),
+                super::Allowed::FrictionTooSmall { load_p: p },
             ));
         }
         if let Some((what, value)) = model.beyond_analysis() {
             return Err(ModelError::invalid(
                 what,
                 value,
-                &super::params::analysis_range_text(),
+                super::Allowed::BeyondAnalysis,
             ));
         }
         Ok(Self(model))

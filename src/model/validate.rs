@@ -5,7 +5,8 @@
 use super::MAX_RODS;
 use super::ModelError;
 use super::keys::Key;
-use super::params::{Column, Load, Model, Roller, analysis_range_text};
+use super::params::{Column, Load, Model, Roller};
+use super::{Allowed, Quantity};
 
 impl Model {
     /// Checks every parameter and the mass matrix; the error names the parameter.
@@ -29,7 +30,7 @@ impl Model {
             return Err(ModelError::invalid(
                 Key::Rods,
                 rods as f64,
-                &format!("must be a whole number from 2 to {MAX_RODS}"),
+                Allowed::Rods { most: MAX_RODS },
             ));
         }
         for (rod, [length, mass, inertia, com]) in [
@@ -52,11 +53,7 @@ impl Model {
                 non_negative(Key::P, force_n)?;
                 finite(Key::Eta, eta)?;
                 if !(0.0..=1.0).contains(&eta) {
-                    return Err(ModelError::invalid(
-                        Key::Eta,
-                        eta,
-                        "must lie between 0 (dead load) and 1 (follower force)",
-                    ));
+                    return Err(ModelError::invalid(Key::Eta, eta, Allowed::EtaRange));
                 }
             }
             Load::Roller(roller) => {
@@ -72,11 +69,7 @@ impl Model {
                 positive(Key::RollerRadius, radius_m)?;
                 within(Key::RollerRadius, radius_m, 0.0, rod2.length_m, Key::L2)?;
                 if mu == 0.0 {
-                    return Err(ModelError::invalid(
-                        Key::Mu,
-                        mu,
-                        "must be > 0: without friction the band exerts no load at all (use load=0 for an unloaded column)",
-                    ));
+                    return Err(ModelError::invalid(Key::Mu, mu, Allowed::FrictionlessBand));
                 }
                 positive(Key::Mu, mu)?;
                 non_negative(Key::NormalForce, normal_force_n)?;
@@ -84,7 +77,7 @@ impl Model {
             }
         }
         if let Some((what, value)) = self.beyond_analysis() {
-            return Err(ModelError::invalid(what, value, &analysis_range_text()));
+            return Err(ModelError::invalid(what, value, Allowed::BeyondAnalysis));
         }
         self.check_mass_matrix(rods)
     }
@@ -105,11 +98,11 @@ impl Model {
             let why = if own_rod1 > 0.0 && beyond > 0.0 {
                 // Both rods carry mass, but one mass outweighs the rest so
                 // far that rounding leaves the other's inertia no digits.
-                "the masses are too unequal: the determinant of the mass matrix is below 1e-12 of its scale, so rounding decides the motion (e.g. a tip mass or roller over about 1e12 times the rods')"
+                Allowed::MassesTooUnequal
             } else {
-                "the column needs mass beyond the joint A (rod 2, tip or roller) and mass or inertia that moves with rod 1 on its own; the mass matrix is singular"
+                Allowed::MassMissing
             };
-            return Err(ModelError::invalid("mass matrix", det, why));
+            return Err(ModelError::invalid(Quantity::MassMatrix, det, why));
         }
         if rods > 2 {
             // Every copy of rod 2 must carry mass or inertia of its own: the
@@ -124,7 +117,7 @@ impl Model {
                 return Err(ModelError::invalid(
                     Key::Rods,
                     rods as f64,
-                    "a chain needs mass or inertia on every copy of rod 2 (m2 or I2 > 0): with rod 2 massless the chain's mass matrix is singular",
+                    Allowed::ChainMassless,
                 ));
             }
         }
@@ -136,7 +129,7 @@ fn finite(key: Key, value: f64) -> Result<(), ModelError> {
     if value.is_finite() {
         Ok(())
     } else {
-        Err(ModelError::invalid(key, value, "must be a finite number"))
+        Err(ModelError::invalid(key, value, Allowed::Finite))
     }
 }
 
@@ -145,7 +138,7 @@ fn positive(key: Key, value: f64) -> Result<(), ModelError> {
     if value > 0.0 {
         Ok(())
     } else {
-        Err(ModelError::invalid(key, value, "must be > 0"))
+        Err(ModelError::invalid(key, value, Allowed::Positive))
     }
 }
 
@@ -154,7 +147,7 @@ fn non_negative(key: Key, value: f64) -> Result<(), ModelError> {
     if value >= 0.0 {
         Ok(())
     } else {
-        Err(ModelError::invalid(key, value, "must be >= 0"))
+        Err(ModelError::invalid(key, value, Allowed::NonNegative))
     }
 }
 
@@ -167,11 +160,7 @@ fn within(key: Key, value: f64, min: f64, max: f64, max_key: Key) -> Result<(), 
         Err(ModelError::invalid(
             key,
             value,
-            &format!(
-                "must lie between {} and {max_key} = {}",
-                crate::format::Shown(min),
-                crate::format::Shown(max)
-            ),
+            Allowed::Between { min, max, max_key },
         ))
     }
 }

@@ -10,13 +10,13 @@ mod sweep;
 
 pub use identify::identify;
 pub use observe::{Observables, observe};
-pub use ramp::{Ramp, RampError};
+pub use ramp::{LONGEST_RAMP_SECS, Ramp, RampError, SLOWEST_RATE_P_PER_S};
 pub use reference::{Advance, MAX_STEPS_PER_ADVANCE, Reference};
 pub use sweep::{FLOOR_KICK_RAD, START_KICK_RAD, SweepStep, SweepTimes, sweep};
 
 use crate::model::{
-    AsValid, Model, ModelError, StateVec, StateView, StateViewMut, ValidModel, chain_mass_matrix,
-    joint_matrices, joints_m, rest_state, state_derivative, state_len,
+    Allowed, AsValid, Model, ModelError, Quantity, StateVec, StateView, StateViewMut, ValidModel,
+    chain_mass_matrix, joint_matrices, joints_m, rest_state, state_derivative, state_len,
 };
 use std::ops::ControlFlow;
 
@@ -137,9 +137,9 @@ pub enum SimError {
     Model(#[from] ModelError),
     #[error("{what} = {}: {allowed}", crate::model::Shown(*.value))]
     Bad {
-        what: &'static str,
+        what: Quantity,
         value: f64,
-        allowed: &'static str,
+        allowed: Allowed,
     },
     #[error(
         "the rapier engine cannot integrate this column at dt = {step_secs:.3e} s: its springs and dampers reach rates of {rate_per_s:.3e} 1/s, which need dt < {:.3e} s; use the reference engine",
@@ -161,7 +161,7 @@ impl SimError {
     pub fn parameter(&self) -> Option<&str> {
         match self {
             Self::Model(error) => error.parameter(),
-            Self::Bad { what, .. } => Some(what),
+            Self::Bad { what, .. } => Some(what.name()),
             Self::TooStiffForRapier { .. } => Some("dt"),
             Self::RapierWorld => None,
         }
@@ -272,16 +272,16 @@ impl Simulation {
         if x0.len() != state_len(model.column.rods) {
             #[expect(clippy::cast_precision_loss, reason = "a state's length")]
             return Err(SimError::Bad {
-                what: "the state's length",
+                what: Quantity::StateLength,
                 value: x0.len() as f64,
-                allowed: "must be 2 (rods + 1): the angles, the spin and their rates",
+                allowed: Allowed::StateLength,
             });
         }
         if !(step_secs.is_finite() && step_secs > 0.0 && step_secs <= 1.0) {
             return Err(SimError::Bad {
-                what: "dt",
+                what: Quantity::TimeStep,
                 value: step_secs,
-                allowed: "must be a time step in (0, 1] s",
+                allowed: Allowed::TimeStep,
             });
         }
         let engine = match kind {

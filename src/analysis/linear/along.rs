@@ -7,7 +7,7 @@ use super::critical::critical_loads_along;
 use super::crossing::{Transition, stability_ranges};
 use super::locus::Locus;
 use super::pencil::AffinePencil;
-use super::resolution::resolution_warning;
+use super::resolution::{NotResolved, resolution_warning};
 use super::stability::{State, classify};
 use crate::analysis::AnalysisError;
 
@@ -20,7 +20,7 @@ pub struct AlongLoad {
     pub ranges: Vec<(f64, f64, State)>,
     /// Why the transitions cannot be trusted, when they cannot
     /// ([`resolution_warning`]).
-    pub warning: Option<String>,
+    pub warning: Option<NotResolved>,
 }
 
 /// What becomes of the states where rounding decides them.

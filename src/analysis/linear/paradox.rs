@@ -84,9 +84,9 @@ pub fn flutter_load_external(
 fn externally_damped(model: &Model, ratio: f64, level: f64) -> Result<Model, AnalysisError> {
     if !(ratio.is_finite() && ratio >= 0.0) {
         return Err(crate::model::ModelError::invalid(
-            "c_ext l^3/c",
+            crate::model::Quantity::DragRatio,
             ratio,
-            "must be a finite number >= 0",
+            crate::model::Allowed::NonNegative,
         )
         .into());
     }
@@ -213,7 +213,34 @@ pub struct Curves {
     pub lines: Vec<(CurveName, Vec<[f64; 2]>)>,
     pub reference: Option<(ReferenceName, f64)>,
     /// Why there is nothing to draw, if so.
-    pub note: Option<String>,
+    pub note: Option<NoCurve>,
+}
+
+/// Why the explorer has no curve to draw; its `Display` says it in English.
+#[derive(Clone, Debug, PartialEq)]
+pub enum NoCurve {
+    /// A dead load never flutters: no paradox.
+    DeadLoad,
+    /// No point of any curve loses its stability up to `load_max`.
+    StableThroughout { load_max: f64 },
+    /// The first failure met on the curves.
+    Failed(AnalysisError),
+}
+
+impl std::fmt::Display for NoCurve {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::DeadLoad => f.write_str(
+                "A dead load (eta = 0) is conservative: it never flutters, so there is no paradox to show.",
+            ),
+            Self::StableThroughout { load_max } => write!(
+                f,
+                "No curve to draw: at every ratio shown the column keeps its stability up to p = {}.",
+                number_text(*load_max)
+            ),
+            Self::Failed(error) => write!(f, "No curve to draw: {error}."),
+        }
+    }
 }
 
 impl Curves {
@@ -221,7 +248,7 @@ impl Curves {
     fn new(
         ratio: SweptRatio,
         lines: Vec<(CurveName, Vec<[f64; 2]>)>,
-        failures: Vec<Option<String>>,
+        failures: Vec<Option<AnalysisError>>,
         reference: Option<(ReferenceName, f64)>,
         load_max: f64,
     ) -> Self {
@@ -267,11 +294,11 @@ pub const REFERENCE_REACH: f64 = 3.0;
 /// `decades`, leaving out values where the column never loses stability or
 /// cannot be analysed (the first such reason is returned with them). Stops
 /// computing (the rest left out) once `cancel` is set.
-fn curve<E: std::fmt::Display>(
+fn curve(
     decades: (f64, f64),
     cancel: &AtomicBool,
-    load_at: impl Fn(f64) -> Result<Option<f64>, E>,
-) -> (Vec<[f64; 2]>, Option<String>) {
+    load_at: impl Fn(f64) -> Result<Option<f64>, AnalysisError>,
+) -> (Vec<[f64; 2]>, Option<AnalysisError>) {
     #[expect(clippy::cast_precision_loss, reason = "point counts")]
     let step = (decades.1 - decades.0) / (POINTS - 1) as f64;
     let mut failure = None;
@@ -283,7 +310,7 @@ fn curve<E: std::fmt::Display>(
             match load_at(10f64.powf(e)) {
                 Ok(load) => load.map(|p| [e, p]),
                 Err(error) => {
-                    failure.get_or_insert_with(|| error.to_string());
+                    failure.get_or_insert(error);
                     None
                 }
             }
@@ -294,16 +321,15 @@ fn curve<E: std::fmt::Display>(
 
 /// Why a plot with no point at all is empty: the first failure, or that
 /// no point loses stability below `load_max`.
-fn empty_reason(failures: impl IntoIterator<Item = Option<String>>, load_max: f64) -> String {
-    failures.into_iter().flatten().next().map_or_else(
-        || {
-            format!(
-                "No curve to draw: at every ratio shown the column keeps its stability up to p = {}.",
-                number_text(load_max)
-            )
-        },
-        |error| format!("No curve to draw: {error}."),
-    )
+fn empty_reason(
+    failures: impl IntoIterator<Item = Option<AnalysisError>>,
+    load_max: f64,
+) -> NoCurve {
+    failures
+        .into_iter()
+        .flatten()
+        .next()
+        .map_or(NoCurve::StableThroughout { load_max }, NoCurve::Failed)
 }
 
 /// The explorer's curves for `model` (its load and the swept parameters are
@@ -320,10 +346,7 @@ pub fn curves(model: &Model, kind: DampingKind, threads: usize, cancel: &AtomicB
     let first = |m: &Model| first_on(m).ok().flatten();
     match model.load {
         Load::Follower { eta: 0.0, .. } => Curves {
-            note: Some(
-                "A dead load (eta = 0) is conservative: it never flutters, so there is no paradox to show."
-                    .to_owned(),
-            ),
+            note: Some(NoCurve::DeadLoad),
             ..Curves::default()
         },
         Load::Follower { .. } => {
@@ -336,9 +359,7 @@ pub fn curves(model: &Model, kind: DampingKind, threads: usize, cancel: &AtomicB
                 .map(|&level| {
                     let (points, failure) = curve(RATIO_DECADES, cancel, |ratio| match kind {
                         DampingKind::Joints => first_on(&damped(model, ratio, level)?),
-                        DampingKind::External => {
-                            first_on(&externally_damped(model, ratio, level)?)
-                        }
+                        DampingKind::External => first_on(&externally_damped(model, ratio, level)?),
                     });
                     ((CurveName::DampingLevel(level), points), failure)
                 })
@@ -365,13 +386,9 @@ pub fn curves(model: &Model, kind: DampingKind, threads: usize, cancel: &AtomicB
                 .iter()
                 .map(|&speed| {
                     let (points, failure) = curve(NU_DECADES, cancel, |nu| {
-                        let m = Axis::Key(Key::V)
-                            .apply(model, speed)
-                            .map_err(|e| e.to_string())?;
-                        let m = Axis::Key(Key::Nu)
-                            .apply(&m, nu)
-                            .map_err(|e| e.to_string())?;
-                        first_on(&m).map_err(|e| e.to_string())
+                        let m = Axis::Key(Key::V).apply(model, speed)?;
+                        let m = Axis::Key(Key::Nu).apply(&m, nu)?;
+                        first_on(&m)
                     });
                     ((speed, points), failure)
                 })
@@ -460,7 +477,7 @@ mod tests {
             1,
             &AtomicBool::new(false),
         );
-        let note = curves.note.unwrap();
+        let note = curves.note.unwrap().to_string();
         assert!(note.contains("V = 0"), "{note}");
     }
 

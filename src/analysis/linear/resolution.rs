@@ -18,8 +18,88 @@ const NEAR_DOUBLE_ROOT: f64 = 1e-3;
 /// slowest mode's |lambda| for a growth rate of that mode to be told from zero.
 const SLOWEST_MODE_FRACTION: f64 = 1e-3;
 
-/// Whether the stability along `locus` can be trusted, and if not, why, in
-/// words for the user. Two checks, both on what is already computed:
+/// Why the stability along a locus cannot be trusted (each with where);
+/// its `Display` says it in English, for the command line.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum NotResolved {
+    /// The modes span more than [`LARGEST_MODE_SPAN`] at `load`.
+    ModeSpan {
+        load: f64,
+        fastest_per_s: f64,
+        slowest_per_s: f64,
+    },
+    /// The classification's tolerance is not well below the slowest mode.
+    SlowModeLost {
+        load: f64,
+        scale_per_s: f64,
+        slowest_per_s: f64,
+        tolerance_per_s: f64,
+    },
+    /// The tracked roots and the Schur decomposition disagree at `load`.
+    MethodsDisagree { load: f64 },
+    /// From `low` to `high` the growth rates lie where rounding decides.
+    RoundingDecides { low: f64, high: f64 },
+    /// The refinement stopped at `load` (its bound on time and memory).
+    RefinementCut { load: f64 },
+}
+
+impl NotResolved {
+    /// A short stable id (for message catalogues).
+    #[must_use]
+    pub const fn id(&self) -> &'static str {
+        match self {
+            Self::ModeSpan { .. } => "mode-span",
+            Self::SlowModeLost { .. } => "slow-mode-lost",
+            Self::MethodsDisagree { .. } => "methods-disagree",
+            Self::RoundingDecides { .. } => "rounding-decides",
+            Self::RefinementCut { .. } => "refinement-cut",
+        }
+    }
+}
+
+impl std::fmt::Display for NotResolved {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match *self {
+            Self::ModeSpan {
+                load,
+                fastest_per_s: fastest,
+                slowest_per_s: slowest,
+            } => write!(
+                f,
+                "the stability is not resolved: at p = {} the modes span {fastest:.1e} 1/s to {slowest:.1e} 1/s, a ratio beyond {LARGEST_MODE_SPAN:.0e}, so the slow modes' growth rates are left to rounding (a mode far faster than the others, such as the spin of a roller of tiny mass nu)",
+                load_text(load)
+            ),
+            Self::SlowModeLost {
+                load,
+                scale_per_s,
+                slowest_per_s: slowest,
+                tolerance_per_s: tolerance,
+            } => write!(
+                f,
+                "the stability is not resolved: at p = {} the modes span {scale_per_s:.0e} 1/s to {slowest:.1e} 1/s, so growth rates below {tolerance:.1e} 1/s are lost to rounding (the model is near a singular limit: a very slow band V, or very large damping)",
+                load_text(load)
+            ),
+            Self::MethodsDisagree { load } => write!(
+                f,
+                "the stability is not resolved: at p = {} the tracked roots and the Schur decomposition disagree on the state (rounding decides it: a mode far faster than the others, such as the spin of a roller of tiny mass nu); the critical loads shown may be spurious or missing",
+                load_text(load)
+            ),
+            Self::RoundingDecides { low, high } => write!(
+                f,
+                "the stability is not resolved: for p from {} to {} the growth rates lie between 1e-12 and 1e-10 of the frequency scale, where rounding decides the state (a roller of tiny mass nu, whose weak flutter grows in proportion to nu, or a very slow band V); the critical loads shown may be misplaced or missing",
+                load_text(low),
+                load_text(high)
+            ),
+            Self::RefinementCut { load } => write!(
+                f,
+                "the root locus was refined only up to p = {}: beyond it the branches are sampled at the evenly spaced loads alone, so a window of another state narrower than their spacing may be missing (the refinement's bound on time and memory was reached; use a narrower range)",
+                load_text(load)
+            ),
+        }
+    }
+}
+
+/// Whether the stability along `locus` can be trusted, and if not, why. Two checks, both on what is already computed:
 /// - the tolerance of the classification (1e-10 of the frequency scale, which
 ///   a very stiff mode such as the roller's spin relaxation at a tiny band
 ///   speed V inflates) must be well below the slowest mode;
@@ -40,7 +120,7 @@ const SLOWEST_MODE_FRACTION: f64 = 1e-3;
 pub fn resolution_warning(
     pencil: &AffinePencil,
     locus: &Locus,
-) -> Result<Option<String>, AnalysisError> {
+) -> Result<Option<NotResolved>, AnalysisError> {
     let (Some(&first), Some(&last)) = (locus.loads.first(), locus.loads.last()) else {
         return Ok(None);
     };
@@ -55,17 +135,19 @@ pub fn resolution_warning(
     let tolerance = RELATIVE_TOLERANCE * spectrum.scale_per_s;
     let (fastest, slowest) = mode_span(&spectrum.eigenvalues);
     if beyond_resolution(&spectrum.eigenvalues) {
-        return Ok(Some(format!(
-            "the stability is not resolved: at p = {} the modes span {fastest:.1e} 1/s to {slowest:.1e} 1/s, a ratio beyond {LARGEST_MODE_SPAN:.0e}, so the slow modes' growth rates are left to rounding (a mode far faster than the others, such as the spin of a roller of tiny mass nu)",
-            load_text(stiffest)
-        )));
+        return Ok(Some(NotResolved::ModeSpan {
+            load: stiffest,
+            fastest_per_s: fastest,
+            slowest_per_s: slowest,
+        }));
     }
     if slowest.is_finite() && tolerance > SLOWEST_MODE_FRACTION * slowest {
-        return Ok(Some(format!(
-            "the stability is not resolved: at p = {} the modes span {:.0e} 1/s to {slowest:.1e} 1/s, so growth rates below {tolerance:.1e} 1/s are lost to rounding (the model is near a singular limit: a very slow band V, or very large damping)",
-            load_text(stiffest),
-            spectrum.scale_per_s
-        )));
+        return Ok(Some(NotResolved::SlowModeLost {
+            load: stiffest,
+            scale_per_s: spectrum.scale_per_s,
+            slowest_per_s: slowest,
+            tolerance_per_s: tolerance,
+        }));
     }
     let samples: Vec<Sample> = (0..locus.loads.len())
         .map(|i| {
@@ -101,24 +183,17 @@ pub fn resolution_warning(
         .map(|i| locus.loads[i])
         .collect();
     if let Some(p) = methods_disagree(pencil, locus, &samples)? {
-        return Ok(Some(format!(
-            "the stability is not resolved: at p = {} the tracked roots and the Schur decomposition disagree on the state (rounding decides it: a mode far faster than the others, such as the spin of a roller of tiny mass nu); the critical loads shown may be spurious or missing",
-            load_text(p)
-        )));
+        return Ok(Some(NotResolved::MethodsDisagree { load: p }));
     }
     let (Some(low), Some(high)) = (undecided.first(), undecided.last()) else {
-        return Ok(locus.refinement_cut_at.map(|p| {
-            format!(
-                "the root locus was refined only up to p = {}: beyond it the branches are sampled at the evenly spaced loads alone, so a window of another state narrower than their spacing may be missing (the refinement's bound on time and memory was reached; use a narrower range)",
-                load_text(p)
-            )
-        }));
+        return Ok(locus
+            .refinement_cut_at
+            .map(|load| NotResolved::RefinementCut { load }));
     };
-    Ok(Some(format!(
-        "the stability is not resolved: for p from {} to {} the growth rates lie between 1e-12 and 1e-10 of the frequency scale, where rounding decides the state (a roller of tiny mass nu, whose weak flutter grows in proportion to nu, or a very slow band V); the critical loads shown may be misplaced or missing",
-        load_text(*low),
-        load_text(*high)
-    )))
+    Ok(Some(NotResolved::RoundingDecides {
+        low: *low,
+        high: *high,
+    }))
 }
 
 /// Samples compared between the two eigenvalue paths: evenly spaced ones,

@@ -99,7 +99,7 @@ pub fn classify_with(eigenvalues: &[C64], scale_per_s: f64, relative_tolerance: 
 
 /// Beyond this ratio of the fastest to the slowest mode, rounding of the
 /// fast one (about 1e-16 of it) reaches the slow ones' growth rates.
-pub(crate) const LARGEST_MODE_SPAN: f64 = 1e12;
+pub const LARGEST_MODE_SPAN: f64 = 1e12;
 
 /// The largest and the smallest nonzero size of `eigenvalues`, in 1/s.
 pub(crate) fn mode_span(eigenvalues: &[C64]) -> (f64, f64) {

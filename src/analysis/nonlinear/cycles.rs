@@ -190,11 +190,14 @@ impl Branch {
     /// "soft" or "hard": how flutter sets in at the branch's onset.
     #[must_use]
     pub fn onset_word(&self) -> &'static str {
-        if self.hopf().first_lyapunov < 0.0 {
-            "soft"
-        } else {
-            "hard"
-        }
+        if self.soft() { "soft" } else { "hard" }
+    }
+
+    /// Whether the onset is soft (a negative first Lyapunov coefficient:
+    /// the cycles grow from zero), not hard.
+    #[must_use]
+    pub fn soft(&self) -> bool {
+        self.hopf().first_lyapunov < 0.0
     }
 
     /// The branch's name in tables: `cycle-1`, `cycle-2`, ... in the

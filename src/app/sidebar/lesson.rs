@@ -64,7 +64,11 @@ impl LessonSection {
         };
         match reading.answer.try_recv() {
             Ok(Ok(lesson)) => actions.push(Action::LessonOpen(Box::new(lesson))),
-            Ok(Err(error)) => actions.push(Action::Say(Notice::error(error.to_string()))),
+            Ok(Err(error)) => actions.push(Action::Say(Notice::error(tr!(
+                ctx.words(),
+                "notice-lesson-not-opened",
+                why = error.to_string()
+            )))),
             Err(std::sync::mpsc::TryRecvError::Empty) => {
                 ctx.request_repaint_after(std::time::Duration::from_millis(50));
                 return;

@@ -163,7 +163,7 @@ fn notes(
         notes.push(Note {
             text: tr!(words, "not-resolved"),
             color: theme.warning,
-            more: Some(warning.clone()),
+            more: Some(crate::i18n::not_resolved_words(words, warning)),
         });
     }
     notes

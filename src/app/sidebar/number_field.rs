@@ -10,7 +10,7 @@ use std::collections::HashMap;
 
 use eframe::egui;
 
-use crate::app::action::{Action, Actions};
+use crate::app::action::{Action, Actions, Refusal};
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::number_text;
@@ -31,17 +31,12 @@ fn field_id(key: Key) -> egui::Id {
 }
 
 /// What the text of a field asks for when it is committed.
-fn parse(text: &str) -> Result<f64, NotANumber> {
+fn parse(text: &str) -> Result<f64, Refusal> {
     let trimmed = text.trim();
     trimmed
         .parse::<f64>()
-        .map_err(|_| NotANumber(trimmed.to_owned()))
+        .map_err(|_| Refusal::NotANumber(trimmed.to_owned()))
 }
-
-/// Text committed in a field that reads as no number.
-#[derive(Debug, PartialEq, thiserror::Error)]
-#[error("'{0}' is not a number")]
-struct NotANumber(String);
 
 impl NumberFields {
     /// Forgets the drafts of fields that neither have focus nor hold a
@@ -97,10 +92,7 @@ impl NumberFields {
             // on (see `prune`). A pass egui reruns asks only once.
             actions.push_once(match parse(&text) {
                 Ok(value) => Action::Enter { key, value },
-                Err(why) => Action::Refuse {
-                    key,
-                    why: why.to_string(),
-                },
+                Err(why) => Action::Refuse { key, why },
             });
             self.drafts.insert(key, text);
         } else if response.has_focus() {
@@ -119,16 +111,18 @@ pub fn refusal_ui(ui: &mut egui::Ui, state: &AppState, theme: &Theme, key: Key) 
 
 #[cfg(test)]
 mod tests {
-    use super::parse;
+    use super::{Refusal, parse};
+    use crate::i18n::{Language, words};
 
     #[test]
     fn typed_text_is_a_number_or_says_why_not() {
         assert_eq!(parse(" 0.2 "), Ok(0.2));
         assert_eq!(parse("1e-3"), Ok(1e-3));
+        let en = words(Language::English);
         assert_eq!(
-            parse("0.2.1").unwrap_err().to_string(),
+            parse("0.2.1").unwrap_err().words(en),
             "'0.2.1' is not a number"
         );
-        assert_eq!(parse("").unwrap_err().to_string(), "'' is not a number");
+        assert_eq!(parse(""), Err(Refusal::NotANumber(String::new())));
     }
 }

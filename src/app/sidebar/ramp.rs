@@ -100,7 +100,7 @@ impl View for RampSection {
                 }
             });
             if let Err(why) = &ramp {
-                ui.colored_label(theme.error, why.to_string());
+                ui.colored_label(theme.error, crate::i18n::ramp_error(words, why));
             }
             if let Some(run) = state.ramp() {
                 let doing = if run.finished() {

@@ -55,9 +55,10 @@ impl AppState {
     pub(super) fn reset_all(&mut self) {
         let preset = self.settings.preset;
         if let Some(run) = self.lesson.take() {
-            self.say(Notice::info(format!(
-                "reset all: the lesson \"{}\" is closed (open it again from the lessons menu)",
-                run.lesson.title
+            self.say(Notice::info(crate::tr!(
+                self.words(),
+                "notice-reset-closed-lesson",
+                title = run.lesson.title.as_str()
             )));
         }
         self.ramp = None;

@@ -125,7 +125,16 @@ impl AppState {
             Err(error) => {
                 self.overlay = None;
                 self.overlay_wanted = None;
-                self.say(Notice::error(format!("overlay unavailable: {error}")));
+                let words = self.words();
+                let why = match &error {
+                    OverlayError::Model(error) => crate::i18n::model_error(words, error),
+                    OverlayError::Analysis(error) => crate::i18n::analysis_error(words, error),
+                };
+                self.say(Notice::error(crate::tr!(
+                    words,
+                    "notice-overlay-unavailable",
+                    why = why
+                )));
             }
         }
     }

@@ -4,8 +4,10 @@
 
 use super::AppState;
 use crate::app::notice::Notice;
+use crate::i18n;
 use crate::model::{Key, Model};
 use crate::sim::{Observables, Ramp};
+use crate::tr;
 
 /// The motion is called visible when the tip is off its straight position
 /// by this fraction of the column's length, all its rods (5%: 25 px of a
@@ -78,12 +80,15 @@ impl AppState {
     /// Starts `ramp`: the load goes to its start and moves on as the run
     /// does; the run starts if it was paused.
     pub(super) fn start_ramp(&mut self, ramp: Ramp) {
+        let words = self.words();
         if let Err(why) = ramp.check_for(&self.settings.model) {
-            self.say(Notice::error(format!("ramp: {why}")));
+            let why = i18n::ramp_error(words, &why);
+            self.say(Notice::error(tr!(words, "notice-ramp-refused", why = why)));
             return;
         }
         if let Err(why) = self.set_parameter(Key::Load, ramp.from_p) {
-            self.say(Notice::error(format!("ramp: {why}")));
+            let why = i18n::model_error(words, &why);
+            self.say(Notice::error(tr!(words, "notice-ramp-refused", why = why)));
             return;
         }
         let visible_now = visible(&self.settings.model, &self.sim.observe());
@@ -126,7 +131,12 @@ impl AppState {
             && let Err(why) = self.set_parameter(Key::Load, next)
         {
             self.ramp = None;
-            self.say(Notice::error(format!("ramp stopped: {why}")));
+            let why = i18n::model_error(self.words(), &why);
+            self.say(Notice::error(tr!(
+                self.words(),
+                "notice-ramp-stopped",
+                why = why
+            )));
         }
     }
 }

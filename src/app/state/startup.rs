@@ -5,6 +5,8 @@ use super::AppState;
 use crate::app::notice::Notice;
 use crate::app::settings::Settings;
 use crate::app::settings_text::read;
+use crate::i18n::Language;
+use crate::tr;
 
 impl AppState {
     /// The state from settings stored as text (RON, as eframe writes them):
@@ -12,34 +14,42 @@ impl AppState {
     /// defaults, and a notice names them.
     #[must_use]
     pub fn from_stored_text(text: Option<&str>) -> Self {
-        Self::from_stored_text_analysed(text, false)
+        Self::from_stored_text_analysed(text, false, Language::English)
     }
 
     /// [`AppState::from_stored_text`], the analysis of the stored column
-    /// computed off the UI thread when `in_background` (the window's start).
+    /// computed off the UI thread when `in_background` (the window's start),
+    /// speaking `language` (what reading the settings says, too).
     #[must_use]
-    pub fn from_stored_text_analysed(text: Option<&str>, in_background: bool) -> Self {
+    pub fn from_stored_text_analysed(
+        text: Option<&str>,
+        in_background: bool,
+        language: Language,
+    ) -> Self {
         let Some(text) = text else {
-            return Self::first_launch();
+            let mut state = Self::first_launch();
+            state.speak(language);
+            return state;
         };
+        let words = crate::i18n::words(language);
         let (settings, note) = match read(text) {
             Ok(read) if read.ignored.is_empty() => (read.settings, None),
             Ok(read) => {
-                let note = format!(
-                    "stored settings: ignored {}; kept the rest",
-                    read.ignored.join(", ")
-                );
+                let what = read.ignored.join(", ");
+                let note = tr!(words, "store-settings-partly", what = what);
                 (read.settings, Some(Notice::warning(note)))
             }
             Err(error) => (
                 Settings::default(),
-                Some(Notice::warning(format!(
-                    "stored settings ignored ({error}); starting from the defaults"
+                Some(Notice::warning(tr!(
+                    words,
+                    "store-settings-ignored",
+                    why = error.to_string()
                 ))),
             ),
         };
         let started = if in_background {
-            Self::new_analysing_in_background(settings)
+            Self::new_analysing_in_background(settings, language)
         } else {
             Self::new(settings)
         };
@@ -47,12 +57,16 @@ impl AppState {
             Ok(state) => state,
             Err(error) => {
                 let mut state = Self::defaults();
-                state.say(Notice::warning(format!(
-                    "stored settings ignored ({error}); starting from the defaults"
+                state.speak(language);
+                state.say(Notice::warning(tr!(
+                    words,
+                    "store-settings-ignored",
+                    why = crate::i18n::sim_error(words, &error)
                 )));
                 return state;
             }
         };
+        state.speak(language);
         if let Some(note) = note {
             // The note first: what was read comes before what starting did.
             let started = state.notice().cloned();
@@ -95,8 +109,10 @@ impl AppState {
                 return;
             }
             Err(error) => {
-                self.say(Notice::error(format!(
-                    "pasted settings not understood, nothing changed: {error}"
+                self.say(Notice::error(crate::tr!(
+                    self.words(),
+                    "notice-paste-unreadable",
+                    why = error.to_string()
                 )));
                 return;
             }
@@ -107,8 +123,11 @@ impl AppState {
         match self.take_settings(settings) {
             Ok(()) => self.say(Notice::info(crate::tr!(self.words(), "notice-pasted"))),
             Err(error) => {
-                self.say(Notice::error(format!(
-                    "pasted settings refused, nothing changed: {error}"
+                let why = crate::i18n::sim_error(self.words(), &error);
+                self.say(Notice::error(crate::tr!(
+                    self.words(),
+                    "notice-paste-refused",
+                    why = why
                 )));
             }
         }

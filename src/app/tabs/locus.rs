@@ -49,7 +49,11 @@ impl View for LocusTab {
             ui.colored_label(
                 theme.warning,
                 match state.analysis_failure() {
-                    Some(error) => tr!(words, "locus-none-why", why = error.to_string()),
+                    Some(error) => tr!(
+                        words,
+                        "locus-none-why",
+                        why = crate::i18n::analysis_error(words, error)
+                    ),
                     None => tr!(words, "locus-none"),
                 },
             );

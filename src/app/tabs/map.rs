@@ -73,6 +73,28 @@ pub enum MapError {
     Stopped(AnalysisError),
 }
 
+impl MapError {
+    /// The error in `words`' language.
+    #[must_use]
+    pub fn words(&self, words: &'static crate::i18n::Words) -> String {
+        use crate::i18n::{analysis_error, model_error};
+        match self {
+            Self::Axis(error) => model_error(words, error),
+            Self::EmptyRange { lo, hi } => tr!(
+                words,
+                "map-empty-range",
+                lo = crate::format::Shown(*lo).to_string(),
+                hi = crate::format::Shown(*hi).to_string()
+            ),
+            Self::Grid(error) => analysis_error(words, error),
+            Self::NoThread(error) => tr!(words, "map-no-thread", why = error.to_string()),
+            Self::Stopped(error) => {
+                tr!(words, "map-stopped", why = analysis_error(words, error))
+            }
+        }
+    }
+}
+
 /// What the map's job sends: a row as it is done, or why the map stopped.
 type RowMessage = Result<(usize, RowResult), AnalysisError>;
 
@@ -270,7 +292,7 @@ impl MapPanel {
             ui.ctx().request_repaint();
         }
         if let Some(error) = &job.error {
-            ui.colored_label(theme.error, error.to_string());
+            ui.colored_label(theme.error, error.words(ui.words()));
         }
         if done < total {
             #[expect(clippy::cast_precision_loss, reason = "row counts")]
@@ -285,7 +307,11 @@ impl MapPanel {
         if let Some(reason) = job.rows.iter().flatten().find_map(|r| r.as_ref().err()) {
             ui.colored_label(
                 theme.warning,
-                tr!(ui.words(), "map-grey-rows", why = reason.to_string()),
+                tr!(
+                    ui.words(),
+                    "map-grey-rows",
+                    why = crate::i18n::analysis_error(ui.words(), reason)
+                ),
             );
         }
         if job.stale || job.grid.is_none() {

@@ -10,7 +10,7 @@ use crate::tr;
 use eframe::egui;
 
 use super::{TabSpec, TabView, save_buttons};
-use crate::analysis::{Curves, DampingKind, own_point, paradox_curves};
+use crate::analysis::{Curves, DampingKind, NoCurve, own_point, paradox_curves};
 use crate::app::View;
 use crate::app::action::Actions;
 use crate::app::jobs::Jobs;
@@ -46,8 +46,9 @@ pub const TAB: TabSpec = TabSpec {
 pub struct ParadoxPanel {
     /// The curves being computed, newest parameters first.
     jobs: Jobs<CurveKey, Curves>,
-    /// The newest curves received, and what they are for.
-    curves: Option<(CurveKey, Curves)>,
+    /// The newest curves received (or why no thread could compute them),
+    /// and what they are for.
+    curves: Option<(CurveKey, Result<Curves, String>)>,
     /// Which damping of a column with a tip force vanishes.
     kind: DampingKind,
     /// The current model's own point, and the model and kind it is for.
@@ -94,20 +95,14 @@ impl ParadoxPanel {
             ));
         });
         if let Err(error) = started {
-            self.curves = Some((
-                key,
-                Curves {
-                    note: Some(format!("no thread for the curves: {error}")),
-                    ..Curves::default()
-                },
-            ));
+            self.curves = Some((key, Err(error.to_string())));
         }
     }
 
     /// Takes the curves that came in; the newest are kept.
     fn receive(&mut self) {
         if let Some(newest) = self.jobs.drain().last() {
-            self.curves = Some(newest);
+            self.curves = Some((newest.0, Ok(newest.1)));
         }
     }
 
@@ -155,8 +150,18 @@ impl ParadoxPanel {
             });
             return;
         };
+        let curves = match curves {
+            Ok(curves) => curves,
+            Err(why) => {
+                ui.colored_label(
+                    theme.warning,
+                    tr!(words, "paradox-no-thread", why = why.as_str()),
+                );
+                return;
+            }
+        };
         if let Some(note) = &curves.note {
-            ui.colored_label(theme.warning, note);
+            ui.colored_label(theme.warning, no_curve_words(words, note));
             return;
         }
         ui.label(match (model.load, self.kind) {
@@ -238,6 +243,23 @@ const FALLING_SHARE: f64 = 0.5;
 /// whether they fall toward zero as nu -> 0 (with drag along the rods they
 /// stay flat, and a caption that always said "goes to zero" contradicted
 /// them).
+/// Why there is no curve, in `words`' language.
+fn no_curve_words(words: &'static Words, note: &NoCurve) -> String {
+    match note {
+        NoCurve::DeadLoad => tr!(words, "paradox-dead-load"),
+        NoCurve::StableThroughout { load_max } => tr!(
+            words,
+            "paradox-stable-throughout",
+            end = number_text(*load_max)
+        ),
+        NoCurve::Failed(error) => tr!(
+            words,
+            "paradox-failed",
+            why = crate::i18n::analysis_error(words, error)
+        ),
+    }
+}
+
 fn roller_caption(curves: &Curves, words: &'static Words) -> String {
     let intro = tr!(words, "paradox-roller");
     // Each line's load at its smallest and at its largest mass (x is log10 nu).

@@ -11,18 +11,24 @@ use std::sync::atomic::AtomicBool;
 use eframe::egui;
 
 use super::{TabSpec, TabView, save_buttons};
-use crate::analysis::{Branch, Onset, State, cycle_branches};
+use crate::analysis::{
+    AnalysisError, Branch, BranchEnd, MAX_AMPLITUDE_RAD, MAX_PERIOD_GROWTH, MAX_POINTS, NoBranch,
+    Onset, State, TRIVIAL_TOLERANCE, cycle_branches,
+};
 use crate::app::View;
 use crate::app::action::Actions;
 use crate::app::history::{HISTORY_SECS, History};
 use crate::app::jobs::Jobs;
 use crate::app::plot_draw::{legend_ui, plot_ui};
 use crate::app::plot_frame::Fit;
+use crate::app::speak::Speak as _;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::load_text;
+use crate::i18n::Words;
 use crate::model::Model;
 use crate::plot::bifurcation::{self, Present};
+use crate::tr;
 
 pub const TAB: TabSpec = TabSpec {
     tab: super::Tab::PostCritical,
@@ -40,7 +46,28 @@ const WINDOW_MAX_RODS: usize = 8;
 type DiagramKey = (Model, f64);
 
 /// The branches found, or why there are none.
-type Diagram = Result<Vec<Onset>, String>;
+type Diagram = Result<Vec<Onset>, NoDiagram>;
+
+/// Why the window has no branches of cycles to draw.
+#[derive(Debug)]
+enum NoDiagram {
+    /// A chain longer than [`WINDOW_MAX_RODS`].
+    TooLong {
+        rods: usize,
+    },
+    Analysis(AnalysisError),
+    NoThread(String),
+}
+
+impl NoDiagram {
+    fn words(&self, words: &'static Words) -> String {
+        match self {
+            Self::TooLong { rods } => tr!(words, "cycles-chain-too-long", rods = *rods),
+            Self::Analysis(error) => crate::i18n::analysis_error(words, error),
+            Self::NoThread(why) => tr!(words, "cycles-no-thread", why = why.as_str()),
+        }
+    }
+}
 
 /// The panel and its diagram.
 pub struct PostCriticalPanel {
@@ -70,18 +97,16 @@ impl PostCriticalPanel {
         let started = self.jobs.request(key, |(model, load_max), cancel, send| {
             let rods = model.column.rods;
             if rods > WINDOW_MAX_RODS {
-                send(Err(format!(
-                    "a chain of {rods} rods takes too long to follow in the window (8 rods take about 18 s on two cores, and the work grows faster than the number of rods); `zieglerlab bifurcation` computes its cycles from the command line"
-                )));
+                send(Err(NoDiagram::TooLong { rods }));
                 return;
             }
             let found = cycle_branches(model, 0.0, *load_max, cancel.flag());
             if !cancel.requested() {
-                send(found.map_err(|error| error.to_string()));
+                send(found.map_err(NoDiagram::Analysis));
             }
         });
         if let Err(error) = started {
-            self.diagram = Some((key, Err(format!("no thread for the cycles: {error}"))));
+            self.diagram = Some((key, Err(NoDiagram::NoThread(error.to_string()))));
         }
     }
 
@@ -114,18 +139,19 @@ impl View for PostCriticalPanel {
             ui.ctx().request_repaint();
             ui.horizontal(|ui| {
                 ui.spinner();
-                ui.label("following the limit cycles from each flutter onset ...");
+                ui.label(tr!(ui.words(), "cycles-computing"));
             });
             return;
         };
         let onsets = match diagram {
             Ok(onsets) => onsets,
             Err(why) => {
-                ui.colored_label(theme.warning, format!("no limit cycles: {why}"));
+                let why = why.words(state.words());
+                ui.colored_label(theme.warning, tr!(state.words(), "cycles-none", why = why));
                 return;
             }
         };
-        for line in notes(onsets) {
+        for line in notes(onsets, state.words()) {
             ui.label(egui::RichText::new(line).small());
         }
         self.fit.bar_ui(ui, state.for_picture(), |ui| {
@@ -218,26 +244,80 @@ fn live_swing(history: &History, branches: &[&Branch], load: f64) -> Option<f64>
         .reduce(f64::max)
 }
 
-/// One line per flutter onset: soft or hard, and where its branch ended.
-fn notes(onsets: &[Onset]) -> Vec<String> {
+/// One line per flutter onset: soft or hard, and where its branch ended,
+/// in `words`' language.
+fn notes(onsets: &[Onset], words: &'static Words) -> Vec<String> {
     if onsets.is_empty() {
-        return vec!["no flutter onset in the load bar's range: no limit cycles".to_owned()];
+        return vec![tr!(words, "cycles-no-onset")];
     }
     onsets
         .iter()
         .map(|onset| {
             let at = load_text(onset.load);
             match &onset.branch {
-                Ok(branch) => format!(
-                    "{}: {} onset at p = {at}; the branch ended: {}",
-                    branch.name(),
-                    branch.onset_word(),
-                    branch.end
+                Ok(branch) => tr!(
+                    words,
+                    "cycles-branch",
+                    name = branch.name(),
+                    onset = if branch.soft() {
+                        tr!(words, "cycles-onset-soft")
+                    } else {
+                        tr!(words, "cycles-onset-hard")
+                    },
+                    at = at,
+                    end = end_words(words, branch.end)
                 ),
-                Err(why) => format!("flutter onset at p = {at}: {why}"),
+                Err(why) => tr!(
+                    words,
+                    "cycles-no-branch",
+                    at = at,
+                    why = no_branch_words(words, why)
+                ),
             }
         })
         .collect()
+}
+
+/// Why a branch's continuation stopped, in `words`' language.
+fn end_words(words: &'static Words, end: BranchEnd) -> String {
+    match end {
+        BranchEnd::LeftRange => tr!(words, "cycles-end-left-range"),
+        BranchEnd::LargeAmplitude => tr!(
+            words,
+            "cycles-end-large-amplitude",
+            most = MAX_AMPLITUDE_RAD.to_string()
+        ),
+        BranchEnd::LongPeriod => tr!(
+            words,
+            "cycles-end-long-period",
+            most = MAX_PERIOD_GROWTH.to_string()
+        ),
+        BranchEnd::Lost { load } => tr!(words, "cycles-end-lost", load = load_text(load)),
+        BranchEnd::StickSlip { load } => {
+            tr!(words, "cycles-end-stick-slip", load = load_text(load))
+        }
+        BranchEnd::Unresolved { load } => tr!(
+            words,
+            "cycles-end-unresolved",
+            load = load_text(load),
+            tolerance = format!("{TRIVIAL_TOLERANCE:e}")
+        ),
+        BranchEnd::PointLimit => tr!(
+            words,
+            "cycles-end-point-limit",
+            most = MAX_POINTS.to_string()
+        ),
+        BranchEnd::Cancelled => tr!(words, "cycles-end-cancelled"),
+    }
+}
+
+/// Why no branch was followed from an onset, in `words`' language.
+fn no_branch_words(words: &'static Words, why: &NoBranch) -> String {
+    match why {
+        NoBranch::Reversible => tr!(words, "cycles-no-branch-reversible"),
+        NoBranch::Degenerate => tr!(words, "cycles-no-branch-degenerate"),
+        NoBranch::NotConverged => tr!(words, "cycles-no-branch-not-converged"),
+    }
 }
 
 #[cfg(test)]
@@ -288,7 +368,7 @@ mod tests {
             (swing / cycle.largest_amplitude_rad() - 1.0).abs() < 1e-4,
             "{swing} vs {cycle:?}"
         );
-        let notes = notes(&onsets);
+        let notes = notes(&onsets, crate::i18n::words(crate::i18n::Language::English));
         assert!(
             notes[0].starts_with("cycle-1: soft onset at p = 1.9143"),
             "{notes:?}"
@@ -310,7 +390,10 @@ mod tests {
             let (got, diagram) = panel.diagram.as_ref().unwrap();
             assert_eq!(*got, key);
             match diagram {
-                Err(why) => assert!(too_long && why.contains("chain of 12 rods"), "{why}"),
+                Err(why) => assert!(
+                    too_long && matches!(why, NoDiagram::TooLong { rods: 12 }),
+                    "{why:?}"
+                ),
                 Ok(onsets) => assert!(!too_long && onsets[0].branch.is_ok()),
             }
         }
