@@ -675,15 +675,15 @@ notice-reset-closed-lesson = alles zurückgesetzt: Die Lektion „{ $title }“ 
 
 ## The post-critical tab's notes
 
-cycles-computing = die Grenzzyklen werden von jedem Flattereinsatz an verfolgt ...
+cycles-computing = die Grenzzyklen werden von jedem Flatterbeginn an verfolgt ...
 cycles-none = keine Grenzzyklen: { $why }
-cycles-no-onset = kein Flattereinsatz im Bereich der Lastleiste: keine Grenzzyklen
+cycles-no-onset = kein Flatterbeginn im Bereich der Lastleiste: keine Grenzzyklen
 cycles-chain-too-long = eine Kette aus { $rods } Stäben zu verfolgen dauert im Fenster zu lange (8 Stäbe brauchen auf zwei Kernen etwa 18 s, und die Arbeit wächst schneller als die Zahl der Stäbe); `zieglerlab bifurcation` berechnet ihre Zyklen auf der Kommandozeile
 cycles-no-thread = kein Thread für die Zyklen: { $why }
 cycles-branch = { $name }: { $onset } Einsatz bei p = { $at }; der Zweig endete: { $end }
 cycles-onset-soft = weicher
 cycles-onset-hard = harter
-cycles-no-branch = Flattereinsatz bei p = { $at }: { $why }
+cycles-no-branch = Flatterbeginn bei p = { $at }: { $why }
 cycles-no-branch-reversible = keine Dämpfung, eine reversible Säule: kein Grenzzyklus zu verfolgen
 cycles-no-branch-degenerate = der erste Ljapunow-Koeffizient ist im Rahmen seiner Genauigkeit null; Zyklen nicht verfolgt
 cycles-no-branch-not-converged = das Schießverfahren konvergierte nahe dem Einsatz nicht; keine Zyklen

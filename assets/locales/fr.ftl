@@ -675,15 +675,15 @@ notice-reset-closed-lesson = tout réinitialisé : la leçon « { $title } » es
 
 ## The post-critical tab's notes
 
-cycles-computing = suivi des cycles limites depuis chaque apparition du flottement ...
+cycles-computing = suivi des cycles limites depuis chaque début du flottement ...
 cycles-none = pas de cycle limite : { $why }
-cycles-no-onset = aucune apparition du flottement dans la plage de la barre de charge : pas de cycle limite
+cycles-no-onset = aucun début du flottement dans la plage de la barre de charge : pas de cycle limite
 cycles-chain-too-long = une chaîne de { $rods } barres est trop longue à suivre dans la fenêtre (8 barres prennent environ 18 s sur deux cœurs, et le travail croît plus vite que le nombre de barres) ; `zieglerlab bifurcation` calcule ses cycles en ligne de commande
 cycles-no-thread = pas de fil d'exécution pour les cycles : { $why }
 cycles-branch = { $name } : apparition { $onset } à p = { $at } ; la branche s'est arrêtée : { $end }
 cycles-onset-soft = douce
 cycles-onset-hard = brutale
-cycles-no-branch = apparition du flottement à p = { $at } : { $why }
+cycles-no-branch = début du flottement à p = { $at } : { $why }
 cycles-no-branch-reversible = pas d'amortissement, une colonne réversible : aucun cycle limite à suivre
 cycles-no-branch-degenerate = le premier coefficient de Liapounov est nul à sa précision près ; cycles non suivis
 cycles-no-branch-not-converged = la méthode de tir n'a pas convergé près de l'apparition ; pas de cycle

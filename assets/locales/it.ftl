@@ -675,15 +675,15 @@ notice-reset-closed-lesson = tutto azzerato: la lezione "{ $title }" è chiusa (
 
 ## The post-critical tab's notes
 
-cycles-computing = si seguono i cicli limite da ogni insorgenza del flutter ...
+cycles-computing = si seguono i cicli limite da ogni inizio del flutter ...
 cycles-none = nessun ciclo limite: { $why }
-cycles-no-onset = nessuna insorgenza del flutter nell'intervallo della barra del carico: nessun ciclo limite
+cycles-no-onset = nessun inizio del flutter nell'intervallo della barra del carico: nessun ciclo limite
 cycles-chain-too-long = una catena di { $rods } aste richiede troppo tempo per essere seguita nella finestra (8 aste richiedono circa 18 s su due core, e il lavoro cresce più in fretta del numero di aste); `zieglerlab bifurcation` ne calcola i cicli dalla riga di comando
 cycles-no-thread = nessun thread per i cicli: { $why }
 cycles-branch = { $name }: insorgenza { $onset } a p = { $at }; il ramo è terminato: { $end }
 cycles-onset-soft = dolce
 cycles-onset-hard = brusca
-cycles-no-branch = insorgenza del flutter a p = { $at }: { $why }
+cycles-no-branch = inizio del flutter a p = { $at }: { $why }
 cycles-no-branch-reversible = nessuno smorzamento, una colonna reversibile: nessun ciclo limite da seguire
 cycles-no-branch-degenerate = il primo coefficiente di Ljapunov è nullo entro la sua accuratezza; cicli non seguiti
 cycles-no-branch-not-converged = il metodo di shooting non è andato a convergenza vicino all'insorgenza; nessun ciclo

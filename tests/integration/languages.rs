@@ -140,6 +140,45 @@ fn the_language_menu_switches_the_window() {
     );
 }
 
+/// A value refused in a field is said in the window's language, and in
+/// the new one once the language changes (the refusal is kept as data):
+/// the same reason, word for word, as the library words it.
+#[test]
+fn a_refusal_beside_a_field_follows_the_language() {
+    use zieglerlab::model::{Allowed, Key, ModelError, Subject};
+    let refusal = |language| {
+        let why = zieglerlab::i18n::model_error(
+            words(language),
+            &ModelError::Invalid {
+                subject: Subject::Key(Key::Nu),
+                value: -1.0,
+                allowed: Allowed::KeyRange(Key::Nu),
+            },
+        );
+        zieglerlab::i18n::words(language).with(
+            "refused",
+            &[("why", zieglerlab::i18n::FluentValue::from(why))],
+        )
+    };
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.apply(Action::Language(Language::Polish));
+    let mut harness = crate::app_input::harness_at(&mut app, [1024.0, 768.0]);
+    crate::app_input::type_into(&mut harness, "nu", "-1");
+    harness.key_press(eframe::egui::Key::Enter);
+    harness.run_steps(2);
+    let polish = refusal(Language::Polish);
+    assert!(polish.contains("musi być"), "{polish}");
+    harness.get_by_label(&polish);
+    harness.get_by_label("język: Polski").click();
+    harness.run_steps(2);
+    harness.get_by_label("Deutsch").click();
+    harness.run_steps(3);
+    let german = refusal(Language::German);
+    assert!(german.contains("muss"), "{german}");
+    harness.get_by_label(&german);
+    assert!(harness.query_by_label(&polish).is_none());
+}
+
 /// The binary run on `args`, then `--out DIR/NAME`, with the locale
 /// variables `env` set and every other one unset: the file it wrote.
 fn written_by(dir: &std::path::Path, name: &str, args: &[&str], env: &[(&str, &str)]) -> Vec<u8> {
