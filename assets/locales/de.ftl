@@ -729,3 +729,6 @@ store-settings-ignored = gespeicherte Einstellungen ignoriert ({ $why }); es wir
 layout-ignored = gespeicherte Fensteranordnung ignoriert ({ $why }); die Standardanordnung gilt
 notice-paste-unreadable = eingefügte Einstellungen nicht verstanden, nichts geändert: { $why }
 notice-paste-refused = eingefügte Einstellungen abgelehnt, nichts geändert: { $why }
+notice-analysis-unavailable = Analyse nicht verfügbar: { $why }
+notice-lesson-step = Lektionsschritt { $step }: { $why }
+notice-lesson = Lektion: { $why }

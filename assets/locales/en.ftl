@@ -728,3 +728,6 @@ store-settings-ignored = stored settings ignored ({ $why }); starting from the d
 layout-ignored = stored window layout ignored ({ $why }); the default layout is used
 notice-paste-unreadable = pasted settings not understood, nothing changed: { $why }
 notice-paste-refused = pasted settings refused, nothing changed: { $why }
+notice-analysis-unavailable = analysis unavailable: { $why }
+notice-lesson-step = lesson step { $step }: { $why }
+notice-lesson = lesson: { $why }

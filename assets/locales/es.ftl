@@ -729,3 +729,6 @@ store-settings-ignored = ajustes guardados ignorados ({ $why }); se empieza con 
 layout-ignored = disposición de ventana guardada ignorada ({ $why }); se usa la disposición predeterminada
 notice-paste-unreadable = ajustes pegados no entendidos, no ha cambiado nada: { $why }
 notice-paste-refused = ajustes pegados rechazados, no ha cambiado nada: { $why }
+notice-analysis-unavailable = análisis no disponible: { $why }
+notice-lesson-step = paso { $step } de la lección: { $why }
+notice-lesson = lección: { $why }

@@ -729,3 +729,6 @@ store-settings-ignored = réglages enregistrés ignorés ({ $why }) ; démarrage
 layout-ignored = disposition de fenêtre enregistrée ignorée ({ $why }) ; la disposition par défaut s'applique
 notice-paste-unreadable = réglages collés non compris, rien n'a changé : { $why }
 notice-paste-refused = réglages collés refusés, rien n'a changé : { $why }
+notice-analysis-unavailable = analyse indisponible : { $why }
+notice-lesson-step = étape { $step } de la leçon : { $why }
+notice-lesson = leçon : { $why }

@@ -729,3 +729,6 @@ store-settings-ignored = impostazioni salvate ignorate ({ $why }); si parte dai 
 layout-ignored = disposizione della finestra salvata ignorata ({ $why }); si usa la disposizione predefinita
 notice-paste-unreadable = impostazioni incollate non comprese, nulla è cambiato: { $why }
 notice-paste-refused = impostazioni incollate rifiutate, nulla è cambiato: { $why }
+notice-analysis-unavailable = analisi non disponibile: { $why }
+notice-lesson-step = passo { $step } della lezione: { $why }
+notice-lesson = lezione: { $why }

@@ -739,3 +739,6 @@ store-settings-ignored = pominięto zapisane ustawienia ({ $why }); start z usta
 layout-ignored = pominięto zapisany układ okna ({ $why }); obowiązuje układ domyślny
 notice-paste-unreadable = wklejonych ustawień nie zrozumiano, nic nie zmieniono: { $why }
 notice-paste-refused = wklejone ustawienia odrzucono, nic nie zmieniono: { $why }
+notice-analysis-unavailable = analiza niedostępna: { $why }
+notice-lesson-step = krok lekcji { $step }: { $why }
+notice-lesson = lekcja: { $why }

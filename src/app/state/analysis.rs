@@ -133,7 +133,12 @@ impl AppState {
             Err(error) => {
                 // No stale plots: the old locus belongs to other parameters.
                 self.analysis = None;
-                self.say(Notice::error(format!("analysis unavailable: {error}")));
+                let why = crate::i18n::analysis_error(self.words(), &error);
+                self.say(Notice::error(crate::tr!(
+                    self.words(),
+                    "notice-analysis-unavailable",
+                    why = why
+                )));
                 self.analysis_failure = Some((key, error));
             }
         }

@@ -276,6 +276,7 @@ impl AppState {
     /// from any ramp, a finished one too), speed, overlay, tab and run. A
     /// step that only reveals keeps the ramp and its marks.
     fn step_actions(&mut self) -> Vec<Action> {
+        let words = self.words();
         let Some(run) = &mut self.lesson else {
             return Vec::new();
         };
@@ -291,9 +292,12 @@ impl AppState {
                     preset: column.preset,
                     model: column.model,
                 },
-                Err((index, error)) => {
-                    Action::Say(Notice::error(format!("lesson step {}: {error}", index + 1)))
-                }
+                Err((index, error)) => Action::Say(Notice::error(crate::tr!(
+                    words,
+                    "notice-lesson-step",
+                    step = index + 1,
+                    why = crate::i18n::model_error(words, &error)
+                ))),
             });
         }
         actions.extend(step.speed.map(Action::Speed));
@@ -301,7 +305,10 @@ impl AppState {
         if let Some(name) = &step.tab {
             // Read against the registry: a name it has not was refused then.
             actions.push(Tab::named(name).map_or_else(
-                |why| Action::Say(Notice::error(format!("lesson: {why}"))),
+                |why| {
+                    let why = why.to_string();
+                    Action::Say(Notice::error(crate::tr!(words, "notice-lesson", why = why)))
+                },
                 Action::Tab,
             ));
         }
@@ -312,7 +319,11 @@ impl AppState {
             // standard small disturbance, whatever the class did before.
             Some(Run::Ramp { from, to, rate }) => match Ramp::new(from, to, rate) {
                 Ok(ramp) => actions.extend([Command::Reset.into(), Action::RampStart(ramp)]),
-                Err(error) => actions.push(Action::Say(Notice::error(format!("lesson: {error}")))),
+                Err(error) => actions.push(Action::Say(Notice::error(crate::tr!(
+                    words,
+                    "notice-lesson",
+                    why = crate::i18n::ramp_error(words, &error)
+                )))),
             },
             None => {}
         }
