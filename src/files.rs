@@ -234,13 +234,18 @@ pub fn write_atomically(
 /// open it, refused by its mode or owner.
 #[must_use]
 pub fn protected(out: &Path) -> Option<String> {
+    protected_by(out)
+        .map(|e| format!("the file exists and may not be written ({e}); it is left as it was"))
+}
+
+/// [`protected`]'s refusal as the system gave it, for a caller to word.
+#[must_use]
+pub fn protected_by(out: &Path) -> Option<std::io::Error> {
     if !std::fs::metadata(out).is_ok_and(|m| m.is_file()) {
         return None;
     }
     match std::fs::File::options().write(true).open(out) {
-        Err(e) if e.kind() == std::io::ErrorKind::PermissionDenied => Some(format!(
-            "the file exists and may not be written ({e}); it is left as it was"
-        )),
+        Err(e) if e.kind() == std::io::ErrorKind::PermissionDenied => Some(e),
         _ => None,
     }
 }

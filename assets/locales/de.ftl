@@ -577,6 +577,11 @@ save-as-save = speichern
 save-as-cancel = abbrechen
 save-as-what-table = die Tabelle (CSV)
 save-as-what-plots = die Diagramme (PNG)
+save-as-no-path = einen Dateipfad eingeben
+save-as-no-folder = sein Ordner existiert nicht
+save-as-folder = das ist ein Ordner: einen Dateinamen darin eingeben
+save-as-pipe = das ist eine Pipe oder ein Gerät, keine Datei: einen Dateipfad eingeben
+save-as-protected = die Datei existiert und darf nicht geschrieben werden ({ $why }); sie bleibt, wie sie ist
 
 ## The paradox curves
 

@@ -573,6 +573,11 @@ save-as-save = save
 save-as-cancel = cancel
 save-as-what-table = the table (CSV)
 save-as-what-plots = the plots (PNG)
+save-as-no-path = type a file's path
+save-as-no-folder = its folder does not exist
+save-as-folder = it is a folder: type a file's name in it
+save-as-pipe = it is a pipe or a device, not a file: type a file's path
+save-as-protected = the file exists and may not be written ({ $why }); it is left as it was
 
 ## The paradox curves
 

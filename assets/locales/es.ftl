@@ -577,6 +577,11 @@ save-as-save = guardar
 save-as-cancel = cancelar
 save-as-what-table = la tabla (CSV)
 save-as-what-plots = los gráficos (PNG)
+save-as-no-path = escriba la ruta de un archivo
+save-as-no-folder = su carpeta no existe
+save-as-folder = es una carpeta: escriba en ella el nombre de un archivo
+save-as-pipe = es una tubería o un dispositivo, no un archivo: escriba la ruta de un archivo
+save-as-protected = el archivo existe y no se puede escribir ({ $why }); se deja como estaba
 
 ## The paradox curves
 

@@ -577,6 +577,11 @@ save-as-save = enregistrer
 save-as-cancel = annuler
 save-as-what-table = le tableau (CSV)
 save-as-what-plots = les graphiques (PNG)
+save-as-no-path = saisir le chemin d'un fichier
+save-as-no-folder = son dossier n'existe pas
+save-as-folder = c'est un dossier : saisir le nom d'un fichier dedans
+save-as-pipe = c'est un tube ou un périphérique, pas un fichier : saisir le chemin d'un fichier
+save-as-protected = le fichier existe et ne peut pas être écrit ({ $why }) ; il reste tel quel
 
 ## The paradox curves
 

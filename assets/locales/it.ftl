@@ -577,6 +577,11 @@ save-as-save = salva
 save-as-cancel = annulla
 save-as-what-table = la tabella (CSV)
 save-as-what-plots = i grafici (PNG)
+save-as-no-path = digitare il percorso di un file
+save-as-no-folder = la sua cartella non esiste
+save-as-folder = è una cartella: digitare il nome di un file al suo interno
+save-as-pipe = è una pipe o un dispositivo, non un file: digitare il percorso di un file
+save-as-protected = il file esiste e non può essere scritto ({ $why }); resta com'è
 
 ## The paradox curves
 

@@ -585,6 +585,11 @@ save-as-save = zapisz
 save-as-cancel = anuluj
 save-as-what-table = tabelę (CSV)
 save-as-what-plots = wykresy (PNG)
+save-as-no-path = wpisz ścieżkę pliku
+save-as-no-folder = jej folder nie istnieje
+save-as-folder = to jest folder: wpisz w nim nazwę pliku
+save-as-pipe = to jest potok lub urządzenie, nie plik: wpisz ścieżkę pliku
+save-as-protected = plik istnieje i nie wolno go zapisać ({ $why }); pozostaje bez zmian
 
 ## The paradox curves
 

@@ -174,8 +174,9 @@ impl Actions {
 }
 
 /// A named action of the user, in the order the keys help lists them (the
-/// order of [`COMMANDS`], checked when the program is compiled).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// order of [`COMMANDS`], checked when the program is compiled: a command
+/// without its row, or a row too many, does not compile).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, strum::EnumCount)]
 pub enum Command {
     PlayPause,
     LoadUp,
@@ -344,7 +345,7 @@ pub const FOCUS_KEYS: [&str; 9] = [
 ];
 
 /// Every command, one row each, in the keys help's order.
-pub const COMMANDS: [CommandSpec; 11] = {
+pub const COMMANDS: [CommandSpec; <Command as strum::EnumCount>::COUNT] = {
     use egui::Key;
     [
         row(Command::PlayPause, "play", &[Key::Space]),

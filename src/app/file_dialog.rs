@@ -6,9 +6,10 @@
 use super::speak::Speak as _;
 use crate::tr;
 use std::path::{Path, PathBuf};
-use std::sync::mpsc;
 
 use eframe::egui;
+
+use super::jobs::Jobs;
 
 /// How a dialog closed.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -27,11 +28,32 @@ pub const NOT_SAVED: &str = "notice-not-saved";
 /// zenity answers at once).
 const NO_DIALOG_SECS: f64 = 0.5;
 
+/// Where the window's choice of typed paths is kept in egui's context.
+fn typed_paths_id() -> egui::Id {
+    egui::Id::unique("zieglerlab-typed-paths")
+}
+
+/// Where the window asks for a path to save to.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum PathsAsked {
+    /// Of the desktop's dialog; typed in the window where none opens.
+    #[default]
+    OfTheDesktop,
+    /// Always typed in the window.
+    Typed,
+}
+
+/// From this frame on, paths are asked as `asked` says.
+pub fn install(ctx: &egui::Context, asked: PathsAsked) {
+    ctx.data_mut(|d| d.insert_temp(typed_paths_id(), asked == PathsAsked::Typed));
+}
+
 /// A dialog that may be open.
 #[derive(Default)]
 pub struct FileDialog {
-    /// The dialog's answer, and whether it came too fast to be a person's.
-    answer: Option<mpsc::Receiver<(Option<PathBuf>, bool)>>,
+    /// The dialog, on a job of its own: its answer, and whether it came
+    /// too fast to be a person's.
+    answer: Option<Jobs<(), (Option<PathBuf>, bool)>>,
     /// The file a save proposes (its folder and name), for a typed path.
     proposed: Option<PathBuf>,
     /// The path being typed where no save dialog opened.
@@ -73,20 +95,23 @@ impl FileDialog {
         if self.is_open() {
             return;
         }
-        let (send, answer) = mpsc::channel();
+        let typed = ctx.data(|d| d.get_temp(typed_paths_id())).unwrap_or(false);
         let ctx = ctx.clone();
-        let spawned = std::thread::Builder::new()
-            .name("file dialog".to_owned())
-            .spawn(move || {
+        let mut dialog = Jobs::new("file dialog");
+        let started = dialog.request((), move |(), _, send| {
+            if typed {
+                // As a desktop without a dialog answers: at once, nothing.
+                send((None, true));
+            } else {
                 let asked = std::time::Instant::now();
                 let chosen = ask();
-                let at_once = asked.elapsed().as_secs_f64() < NO_DIALOG_SECS;
-                // A window closed meanwhile has dropped the receiver.
-                let _ = send.send((chosen, at_once));
-                ctx.request_repaint();
-            });
-        if spawned.is_ok() {
-            self.answer = Some(answer);
+                send((chosen, asked.elapsed().as_secs_f64() < NO_DIALOG_SECS));
+            }
+            ctx.request_repaint();
+        });
+        // No thread: no dialog, as where the desktop has none.
+        if started.is_ok() {
+            self.answer = Some(dialog);
         }
     }
 
@@ -103,16 +128,20 @@ impl FileDialog {
         if let Some(typed) = self.typed.take() {
             return Some(typed);
         }
-        let receiver = self.answer.as_ref()?;
-        let closed = match receiver.try_recv() {
-            Ok((Some(chosen), _)) => Closed::Chosen(chosen),
-            Ok((None, true)) if self.proposed.is_some() => {
+        let dialog = self.answer.as_ref()?;
+        // Whether it was open before looking: a job that had ended had
+        // sent its answer, if it had one.
+        let busy = dialog.busy();
+        let message = dialog.drain().next();
+        let closed = match message {
+            Some(((), (Some(chosen), _))) => Closed::Chosen(chosen),
+            Some(((), (None, true))) if self.proposed.is_some() => {
                 self.answer = None;
                 self.typing = self.proposed.take().map(|p| p.display().to_string());
                 return None;
             }
-            Ok((None, _)) | Err(mpsc::TryRecvError::Disconnected) => Closed::NoneChosen,
-            Err(mpsc::TryRecvError::Empty) => return None,
+            None if busy => return None,
+            Some(((), (None, _))) | None => Closed::NoneChosen,
         };
         self.answer = None;
         self.proposed = None;
@@ -140,7 +169,7 @@ impl FileDialog {
                     .accessible_name(tr!(words, "save-as.path"));
                 let entered = edit.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
                 let file = PathBuf::from(path.trim());
-                let why_not = refusal(&file, path);
+                let why_not = refusal(&file, path, words);
                 if let Some(why) = &why_not {
                     ui.weak(why.as_str());
                 }
@@ -195,10 +224,13 @@ impl FileDialog {
     #[cfg(test)]
     #[must_use]
     pub(crate) fn answered(chosen: Option<PathBuf>) -> Self {
-        let (send, answer) = mpsc::channel();
-        let _ = send.send((chosen, false));
+        let mut dialog = Jobs::new("file dialog");
+        dialog
+            .request((), move |(), _, send| send((chosen, false)))
+            .expect("a thread");
+        dialog.wait();
         Self {
-            answer: Some(answer),
+            answer: Some(dialog),
             ..Self::default()
         }
     }
@@ -207,19 +239,18 @@ impl FileDialog {
 /// Why the typed `file` (typed as `text`) cannot be saved to, if it cannot:
 /// no name, no folder, a folder, a pipe or a device (a FIFO froze the
 /// window for good), or a file the user may not write.
-fn refusal(file: &Path, text: &str) -> Option<String> {
+fn refusal(file: &Path, text: &str, words: &'static crate::i18n::Words) -> Option<String> {
     if text.trim().is_empty() || file.file_name().is_none() {
-        return Some("type a file's path".to_owned());
+        return Some(tr!(words, "save-as-no-path"));
     }
     if !crate::files::folder_of(file).is_dir() {
-        return Some("its folder does not exist".to_owned());
+        return Some(tr!(words, "save-as-no-folder"));
     }
     match std::fs::metadata(file) {
-        Ok(m) if m.is_dir() => Some("it is a folder: type a file's name in it".to_owned()),
-        Ok(m) if !m.is_file() => {
-            Some("it is a pipe or a device, not a file: type a file's path".to_owned())
-        }
-        _ => crate::files::protected(file),
+        Ok(m) if m.is_dir() => Some(tr!(words, "save-as-folder")),
+        Ok(m) if !m.is_file() => Some(tr!(words, "save-as-pipe")),
+        _ => crate::files::protected_by(file)
+            .map(|e| tr!(words, "save-as-protected", why = e.to_string())),
     }
 }
 
@@ -253,10 +284,12 @@ mod tests {
         assert_eq!(dialog.answer(), Some(Closed::Chosen(PathBuf::from("/tmp"))));
         assert!(!dialog.is_open());
         assert_eq!(dialog.answer(), None);
-        let (send, answer) = mpsc::channel::<(Option<PathBuf>, bool)>();
-        drop(send);
+        // A dialog's job that ended with nothing sent (it panicked).
+        let mut ended = Jobs::new("file dialog");
+        ended.request((), |(), _, _| {}).unwrap();
+        ended.wait();
         let mut gone = FileDialog {
-            answer: Some(answer),
+            answer: Some(ended),
             ..FileDialog::default()
         };
         assert_eq!(gone.answer(), Some(Closed::NoneChosen));

@@ -1,5 +1,7 @@
-//! Work computed off the UI thread, one mechanism for all of it (the
-//! analysis of new parameters, the stability map, the paradox curves): each
+//! Work done off the UI thread, one mechanism for every thread the window
+//! starts (the analysis of new parameters, an overlay, the stability map,
+//! the paradox curves, the limit cycles, a recording's encoding, a table's
+//! writing, a lesson file's reading, the desktop's file dialog): each
 //! request is for a key; the newest request wins (the one before is
 //! cancelled, and the new one starts when its thread has ended, so a drag's
 //! restarts queue instead of running side by side); what a job finds comes
@@ -163,18 +165,21 @@ mod tests {
         let (started, has_started) = mpsc::channel::<()>();
         let gate = std::sync::Mutex::new(gate);
         // Job 1 says it started, holds until released, then counts while
-        // not cancelled.
+        // not cancelled, for ten seconds at most: were cancelling broken,
+        // the test would fail on its count, not hang.
+        let limit = std::time::Duration::from_secs(10);
         jobs.request(1, move |_, cancel, send| {
             started.send(()).unwrap();
-            gate.lock().unwrap().recv().unwrap();
+            gate.lock().unwrap().recv_timeout(limit).unwrap();
+            let since = std::time::Instant::now();
             let mut n = 0;
-            while !cancel.requested() && n < u64::MAX {
+            while !cancel.requested() && since.elapsed() < limit {
                 n += 1;
             }
             send(n);
         })
         .unwrap();
-        has_started.recv().unwrap();
+        has_started.recv_timeout(limit).expect("job 1 started");
         // Job 2 is overtaken before job 1 ends: it never starts.
         jobs.request(2, |_, _, send| send(2)).unwrap();
         jobs.request(3, |key, _, send| send(u64::from(*key) * 10))

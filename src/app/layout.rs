@@ -1,11 +1,16 @@
 //! What the user arranged and expects to find again at the next launch:
 //! the open tab, the overlay, the map's second axis and its range, the
-//! language chosen from the menu. Kept
+//! language chosen from the menu; and how the window takes it up. Kept
 //! apart from the settings, which describe a setup to share.
 
 use serde::{Deserialize, Serialize};
 
-use super::tabs::Tab;
+use super::action::Action;
+use super::notice::Notice;
+use super::tabs::{self, Tab};
+use crate::i18n::Language;
+use crate::model::PresetId;
+use crate::tr;
 
 /// The window's arrangement, as stored. Every field has a default, so a
 /// file from another version reads; a field that does not make sense for
@@ -40,6 +45,65 @@ impl Layout {
         match ron::from_str(text) {
             Ok(layout) => (layout, None),
             Err(error) => (Self::default(), Some(error.code.to_string())),
+        }
+    }
+}
+
+impl super::ZieglerApp {
+    /// The window's arrangement now, as it is stored.
+    #[must_use]
+    pub fn layout(&self) -> Layout {
+        Layout {
+            tab: self.tab,
+            overlay: self.state.overlay_choice().map(|id| id.name().to_owned()),
+            map_axis: self
+                .tabs
+                .get::<tabs::MapPanel>()
+                .and_then(tabs::MapPanel::axis_choice),
+            language: self
+                .state
+                .language_choice()
+                .map(|language| language.code().to_owned()),
+        }
+    }
+
+    /// Arranges the window as `layout` says; what does not fit the current
+    /// model (an overlay or a map axis it has not) is left out, and said.
+    pub fn arrange(&mut self, layout: &Layout) {
+        self.tab = layout.tab;
+        // The language chosen in the menu, if one was.
+        match layout.language.as_deref().map(Language::from_code) {
+            Some(Ok(language)) => self.apply(Action::Language(language)),
+            Some(Err(why)) => self.state.tell(Notice::warning(tr!(
+                self.state.words(),
+                "notice-stored-language",
+                why = why.to_string()
+            ))),
+            None => {}
+        }
+        if let Some(name) = &layout.overlay {
+            match name.parse::<PresetId>() {
+                Ok(id) => self.apply(Action::Overlay(Some(id))),
+                Err(_) => self.state.tell(Notice::warning(tr!(
+                    self.state.words(),
+                    "notice-stored-overlay",
+                    name = name.as_str()
+                ))),
+            }
+        }
+        if let Some((name, lo, hi)) = &layout.map_axis {
+            let model = *self.state.model();
+            if let Some(map) = self.tabs.get_mut::<tabs::MapPanel>()
+                && let Err(why) = map.choose_axis(&model, (name, *lo, *hi))
+            {
+                let words = self.state.words();
+                let why = why.words(words);
+                self.state.tell(Notice::warning(tr!(
+                    words,
+                    "notice-stored-map-axis",
+                    why = why
+                )));
+            }
         }
     }
 }

@@ -43,7 +43,6 @@ mod zoom;
 use eframe::egui::{self, RichText, vec2};
 
 use crate::i18n::Language;
-use crate::model::PresetId;
 use crate::sim::{SimError, Simulation};
 use crate::tr;
 use action::Actions;
@@ -116,6 +115,8 @@ pub struct ZieglerApp {
     cleared_to_panel_fill: bool,
     /// Every frame is drawn for a picture (the command line's).
     for_pictures: bool,
+    /// Where paths to save to are asked (see [`Self::type_paths`]).
+    paths_asked: file_dialog::PathsAsked,
 }
 
 impl ZieglerApp {
@@ -147,7 +148,15 @@ impl ZieglerApp {
             full_screen_asked: false,
             cleared_to_panel_fill: false,
             for_pictures: false,
+            paths_asked: file_dialog::PathsAsked::OfTheDesktop,
         }
+    }
+
+    /// Paths to save to are typed in the window's own field, never asked of
+    /// the desktop's dialog (which may not exist, or may block a test on
+    /// a desktop that has one): as where no dialog opens.
+    pub fn type_paths(&mut self) {
+        self.paths_asked = file_dialog::PathsAsked::Typed;
     }
 
     /// The app from eframe's stored settings, or the defaults (saying what
@@ -184,63 +193,6 @@ impl ZieglerApp {
     #[must_use]
     pub fn from_stored_text(text: Option<&str>) -> Self {
         Self::with_state(AppState::from_stored_text(text))
-    }
-
-    /// The window's arrangement now, as it is stored.
-    #[must_use]
-    pub fn layout(&self) -> Layout {
-        Layout {
-            tab: self.tab,
-            overlay: self.state.overlay_choice().map(|id| id.name().to_owned()),
-            map_axis: self
-                .tabs
-                .get::<tabs::MapPanel>()
-                .and_then(tabs::MapPanel::axis_choice),
-            language: self
-                .state
-                .language_choice()
-                .map(|language| language.code().to_owned()),
-        }
-    }
-
-    /// Arranges the window as `layout` says; what does not fit the current
-    /// model (an overlay or a map axis it has not) is left out, and said.
-    pub fn arrange(&mut self, layout: &Layout) {
-        self.tab = layout.tab;
-        // The language chosen in the menu, if one was.
-        match layout.language.as_deref().map(Language::from_code) {
-            Some(Ok(language)) => self.apply(Action::Language(language)),
-            Some(Err(why)) => self.state.tell(Notice::warning(tr!(
-                self.state.words(),
-                "notice-stored-language",
-                why = why.to_string()
-            ))),
-            None => {}
-        }
-        if let Some(name) = &layout.overlay {
-            match name.parse::<PresetId>() {
-                Ok(id) => self.apply(Action::Overlay(Some(id))),
-                Err(_) => self.state.tell(Notice::warning(tr!(
-                    self.state.words(),
-                    "notice-stored-overlay",
-                    name = name.as_str()
-                ))),
-            }
-        }
-        if let Some((name, lo, hi)) = &layout.map_axis {
-            let model = *self.state.model();
-            if let Some(map) = self.tabs.get_mut::<tabs::MapPanel>()
-                && let Err(why) = map.choose_axis(&model, (name, *lo, *hi))
-            {
-                let words = self.state.words();
-                let why = why.words(words);
-                self.state.tell(Notice::warning(tr!(
-                    words,
-                    "notice-stored-map-axis",
-                    why = why
-                )));
-            }
-        }
     }
 
     /// Draws every frame for a picture: no hints for the hand (how to drag,
@@ -293,6 +245,7 @@ impl ZieglerApp {
             self.apply(action);
         }
         speak::install(ctx, self.state.language());
+        file_dialog::install(ctx, self.paths_asked);
         if std::mem::take(&mut self.full_screen_asked) {
             let now = ctx.input(|i| i.viewport().fullscreen.unwrap_or(false));
             ctx.send_viewport_cmd(egui::ViewportCommand::Fullscreen(!now));

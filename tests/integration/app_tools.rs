@@ -133,6 +133,8 @@ fn in_projector_mode_every_tab_is_shown_once() {
 /// The app on its time histories after a second of the run, for a save.
 fn app_with_a_run() -> ZieglerApp {
     let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    // Whatever the desktop the tests run on: no dialog of its own.
+    app.type_paths();
     app.apply(Action::Tab(Tab::Histories));
     for _ in 0..60 {
         app.state_mut().advance(1.0 / 60.0);

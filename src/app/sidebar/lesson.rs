@@ -7,6 +7,7 @@ use crate::tr;
 use eframe::egui::{self, RichText};
 
 use crate::app::action::{Action, Actions, Command};
+use crate::app::jobs::Jobs;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::app::{Notice, View};
@@ -23,7 +24,9 @@ type BuiltIn = (&'static str, Result<Lesson, LessonError>);
 pub struct LessonSection {
     built_in: Option<(Language, Vec<BuiltIn>)>,
     path: String,
-    reading: Option<Reading>,
+    /// The lesson file being read and checked off the UI thread (a slow
+    /// disk or a large file never holds the window), by its path.
+    reading: Option<Jobs<String, Result<Lesson, LessonFileError>>>,
     /// The step whose reveal is shown (the lesson's title and the step's
     /// index), and for how many frames.
     revealed: Option<((String, usize), u32)>,
@@ -34,55 +37,52 @@ pub struct LessonSection {
 /// the scroll goes no further than needed.
 const SETTLED_FRAMES: u32 = 2;
 
-/// A lesson file read and checked off the UI thread: a slow disk or a
-/// large file never holds the window.
-struct Reading {
-    path: String,
-    answer: std::sync::mpsc::Receiver<Result<Lesson, LessonFileError>>,
-}
-
-impl Reading {
-    fn start(path: &str) -> Self {
-        let (send, answer) = std::sync::mpsc::channel();
-        let file = std::path::PathBuf::from(path);
-        std::thread::spawn(move || {
-            // The window may have closed meanwhile: nobody to tell.
-            let _ = send.send(Lesson::read_file(&file, &crate::app::Tab::ids()));
-        });
-        Self {
-            path: path.to_owned(),
-            answer,
-        }
-    }
-}
-
 impl LessonSection {
     /// Opens the file read, or says why not, once the reading is done.
     fn take_reading(&mut self, ctx: &egui::Context, actions: &mut Actions) {
         let Some(reading) = &self.reading else {
             return;
         };
-        match reading.answer.try_recv() {
-            Ok(Ok(lesson)) => actions.push(Action::LessonOpen(Box::new(lesson))),
-            Ok(Err(error)) => actions.push(Action::Say(Notice::error(tr!(
+        // Whether it was at work before looking: a job that had ended had
+        // sent what it would.
+        let busy = reading.busy();
+        match reading.drain().next() {
+            Some((_, Ok(lesson))) => actions.push(Action::LessonOpen(Box::new(lesson))),
+            Some((_, Err(error))) => actions.push(Action::Say(Notice::error(tr!(
                 ctx.words(),
                 "notice-lesson-not-opened",
                 why = error.to_string()
             )))),
-            Err(std::sync::mpsc::TryRecvError::Empty) => {
+            None if busy => {
                 ctx.request_repaint_after(std::time::Duration::from_millis(50));
                 return;
             }
-            Err(std::sync::mpsc::TryRecvError::Disconnected) => {
+            None => {
+                let path = reading.key().cloned().unwrap_or_default();
                 actions.push(Action::Say(Notice::error(tr!(
                     ctx.words(),
                     "lesson-reading-stopped",
-                    path = reading.path.clone()
+                    path = path
                 ))));
             }
         }
         self.reading = None;
     }
+}
+
+/// The lesson file at `path` read and checked on a job of its own.
+///
+/// # Errors
+/// The system gives no thread.
+fn start_reading(path: &str) -> std::io::Result<Jobs<String, Result<Lesson, LessonFileError>>> {
+    let mut reading = Jobs::new("lesson file");
+    reading.request(path.to_owned(), |path, _, send| {
+        send(Lesson::read_file(
+            std::path::Path::new(path),
+            &crate::app::Tab::ids(),
+        ));
+    })?;
+    Ok(reading)
 }
 
 impl View for LessonSection {
@@ -157,14 +157,21 @@ impl View for LessonSection {
                 )
                 .accessible_name(tr!(words, "lesson-file"))
                 .on_hover_text(tr!(words, "lesson-file.tooltip"));
-                if let Some(reading) = &self.reading {
-                    ui.weak(tr!(words, "lesson-reading", path = reading.path.clone()));
+                if let Some(path) = self.reading.as_ref().and_then(Jobs::key) {
+                    ui.weak(tr!(words, "lesson-reading", path = path.as_str()));
                 } else if ui
                     .button(tr!(words, "lesson-open"))
                     .on_hover_text(tr!(words, "lesson-open.tooltip"))
                     .clicked()
                 {
-                    self.reading = Some(Reading::start(self.path.trim()));
+                    match start_reading(self.path.trim()) {
+                        Ok(reading) => self.reading = Some(reading),
+                        Err(error) => actions.push(Action::Say(Notice::error(tr!(
+                            words,
+                            "notice-lesson-not-opened",
+                            why = error.to_string()
+                        )))),
+                    }
                 }
             });
         });

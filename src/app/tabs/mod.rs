@@ -42,7 +42,7 @@ pub struct TabSpec {
 }
 
 /// Every tab, in the tab bar's order.
-pub const TABS: [TabSpec; 5] = [
+pub const TABS: [TabSpec; <Tab as strum::EnumCount>::COUNT] = [
     locus::TAB,
     histories::TAB,
     map::TAB,
@@ -50,8 +50,9 @@ pub const TABS: [TabSpec; 5] = [
     postcritical::TAB,
 ];
 
-/// A tab of the window: its row in [`TABS`] says everything else.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+/// A tab of the window: its row in [`TABS`] says everything else (a tab
+/// without its row, or a row too many, does not compile).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, strum::EnumCount)]
 pub enum Tab {
     /// The root locus (the first tab, shown at launch).
     #[default]

@@ -50,11 +50,13 @@ fn a_stream_named_by_a_path_is_written_where_the_shell_opened_it() {
             .truncate(!append)
             .open(&results)
             .expect("the shell's file");
-        let status = std::process::Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
             .args(args)
             .stdout(file)
-            .status()
+            .spawn()
             .expect("runs");
+        let why = format!("{args:?}: no answer");
+        let status = super::wait_within(&mut child, std::time::Duration::from_mins(1), &why);
         assert!(status.success(), "{args:?}");
     };
     let alone = {
@@ -81,17 +83,30 @@ fn a_stream_named_by_a_path_is_written_where_the_shell_opened_it() {
     // A FIFO by its own path is a stream too: read as it is written.
     let fifo = folder.path().join("fifo");
     let made = std::process::Command::new("mkfifo").arg(&fifo).status();
-    assert!(made.expect("mkfifo").success());
-    let reader = {
+    assert!(
+        made.expect("mkfifo runs (coreutils: apt-get install coreutils)")
+            .success()
+    );
+    // The reader answers on a channel: were the FIFO replaced by a file,
+    // its open() would wait for a writer forever, and the test fails on
+    // the time limit instead of hanging.
+    let (send, read) = std::sync::mpsc::channel();
+    {
         let fifo = fifo.clone();
-        std::thread::spawn(move || std::fs::read_to_string(fifo).expect("read"))
-    };
-    let status = std::process::Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
-        .args(map(fifo.to_str().expect("a path")))
-        .status()
-        .expect("runs");
-    assert!(status.success());
-    assert_eq!(reader.join().expect("read"), alone);
+        std::thread::spawn(move || send.send(std::fs::read_to_string(fifo)));
+    }
+    let out = crate::common::output_within(
+        std::process::Command::new(env!("CARGO_BIN_EXE_zieglerlab"))
+            .args(map(fifo.to_str().expect("a path"))),
+        std::time::Duration::from_mins(1),
+        "map into a FIFO",
+        "the binary runs",
+    );
+    assert!(out.status.success());
+    let text = read
+        .recv_timeout(std::time::Duration::from_secs(10))
+        .expect("the FIFO's reader got the map (or the FIFO was replaced by a file)");
+    assert_eq!(text.expect("read"), alone);
     assert!(fifo.exists(), "the FIFO is not replaced by a file");
 }
 
