@@ -7,7 +7,8 @@ use crate::i18n::state_name;
 use crate::tr;
 use eframe::egui::{self, Align2, FontId, Rect, Sense, Stroke, pos2, vec2};
 
-use super::action::{Action, Actions, Command, keep_arrows, net_presses};
+use super::action::{Action, Actions, Command};
+use super::arrows::{keep_arrows, net_presses};
 use super::state::AppState;
 use super::theme::Theme;
 use crate::analysis::State;

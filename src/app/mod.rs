@@ -5,6 +5,7 @@
 
 mod action;
 mod analysis_cache;
+mod arrows;
 mod camera;
 mod exports;
 mod file_dialog;
@@ -34,6 +35,7 @@ mod sidebar;
 mod speak;
 mod state;
 mod store_check;
+mod tab;
 mod tabs;
 mod theme;
 mod welcome;

@@ -19,8 +19,8 @@ use super::theme::{Theme, color};
 use crate::analysis::{C64, State};
 use crate::format::number_text;
 use crate::plot::describe::describe;
-use crate::plot::map::CellGrid;
 use crate::plot::pattern;
+use crate::plot::spec::CellGrid;
 use crate::plot::spec::{Entry, Ink, Mark, OffView, Plot, Size, Swatch, Ticks, View, Weight};
 use crate::plot::view::{EdgeMark, Side, ViewRect, default_view, edge_marks};
 

@@ -5,7 +5,7 @@
 use eframe::egui::{self, Stroke};
 use egui_plot::{HLine, LineStyle, PlotPoint, PlotUi, VLine};
 
-use super::action::{keep_arrows, net_presses};
+use super::arrows::{keep_arrows, net_presses};
 use super::theme::Theme;
 
 /// The share of the view one arrow press pans by.

@@ -6,7 +6,8 @@ use super::speak::Speak as _;
 use crate::tr;
 use eframe::egui;
 
-use super::action::{Action, Actions, keep_arrows, net_presses};
+use super::action::{Action, Actions};
+use super::arrows::{keep_arrows, net_presses};
 use super::scene_words;
 use super::state::AppState;
 use super::theme::Theme;

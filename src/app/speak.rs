@@ -61,7 +61,7 @@ mod tests {
     use super::*;
     use crate::analysis::State;
     use crate::app::action::{Command, FOCUS_KEYS};
-    use crate::app::tabs::Tab;
+    use crate::app::tab::Tab;
     use crate::model::{KEYS, PresetId};
 
     /// The ids the window makes from names (a preset's, a key's, a tab's, a

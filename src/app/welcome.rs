@@ -7,7 +7,7 @@ use eframe::egui;
 use super::action::{Action, Actions};
 use super::speak::Speak as _;
 use super::state::AppState;
-use super::tabs::Tab;
+use super::tab::Tab;
 use super::theme::Theme;
 use crate::i18n::Language;
 use crate::lesson::{Lesson, built_in};

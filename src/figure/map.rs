@@ -10,7 +10,8 @@ use std::sync::Arc;
 use super::style::Ink;
 use super::{Drawn, FigureError, plots};
 use crate::analysis::{MapSpec, RowResult};
-use crate::plot::map::{CellGrid, StabilityMap};
+use crate::plot::map::StabilityMap;
+use crate::plot::spec::CellGrid;
 
 /// A computed map: what was asked and every row's answer.
 #[derive(Clone, Debug)]

@@ -11,7 +11,7 @@ use super::layout::{
 use super::style::{INK, Ink as PageInk, rgb, series_color, state_color, tint};
 use super::{Drawn, FigureError, drawing};
 use crate::analysis::State;
-use crate::plot::map::CellGrid;
+use crate::plot::spec::CellGrid;
 use crate::plot::spec::{Entry, Ink, Mark, Plot, Size, Swatch, Ticks, View, Weight};
 use crate::plot::view::default_view;
 use crate::plot::{Palette, pattern};

@@ -2,19 +2,12 @@
 //! explorer's): any key, or the joints' damper ratio c1/c2 or damping level
 //! with the other held.
 
+use super::allowed::Allowed;
 use super::assign::{Assignment, apply_assignments};
 use super::key_table::KEYS;
 use super::keys::Key;
-use super::{Allowed, Model, ModelError, Quantity};
-
-/// The name of the damper-ratio axis, `c1/c2` (the damping level held).
-pub const DAMPER_RATIO: &str = "c1/c2";
-/// The name of the mass-ratio axis: rod 1's mass (with what sits at A) over
-/// the mass beyond A (rod 2, tip, roller), which is held.
-pub const MASS_RATIO: &str = "mass_ratio";
-/// The name of the damping-level axis, `g2 = c2 / sqrt(k m l^2)` (physics.md
-/// section 7; the ratio c1/c2 held, 1 for an undamped column).
-pub const DAMPING_LEVEL: &str = "damping";
+use super::quantity::{DAMPER_RATIO, DAMPING_LEVEL, MASS_RATIO, Quantity};
+use super::{Model, ModelError};
 
 /// A swept parameter.
 #[derive(Clone, Debug, PartialEq, Eq)]

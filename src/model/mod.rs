@@ -18,15 +18,16 @@ mod loads;
 mod mass;
 mod params;
 mod presets;
+mod quantity;
 mod state;
 mod two_rods;
 mod valid;
 mod validate;
 
 pub use crate::format::Shown;
-pub use allowed::{Allowed, Quantity};
+pub use allowed::Allowed;
 pub use assign::{Assignment, apply_assignments, parse_assignment};
-pub use axis::{Axis, DAMPER_RATIO, DAMPING_LEVEL, MASS_RATIO};
+pub use axis::Axis;
 pub use chain::{
     TipResponse, chain_derivative, chain_energy_j, energy_j, state_derivative, tip_mobility,
     tip_response,
@@ -43,6 +44,8 @@ pub use loads::{
 pub use mass::{Inertia, chain_mass_matrix};
 pub use params::{Column, LARGEST_DERIVED, Load, MAX_RODS, Model, Rod, Roller, SpinInertia};
 pub use presets::{PRESETS, Preset, PresetId, preset};
+pub use quantity::Quantity;
+pub use quantity::{DAMPER_RATIO, DAMPING_LEVEL, MASS_RATIO};
 pub use state::{StateVec, StateView, StateViewMut, rest_state, state_len};
 pub use valid::{AsValid, ValidModel};
 

@@ -1,6 +1,6 @@
 //! The column's physical parameters in SI units (their checks: `validate.rs`).
 
-use super::allowed::Quantity;
+use super::quantity::Quantity;
 use serde::{Deserialize, Serialize};
 
 /// One rigid rod of the column: its own mass distribution, reduced to what the

@@ -8,22 +8,10 @@ use crate::tr;
 use std::sync::Arc;
 
 use super::map_words;
-use super::spec::{Entry, Ink, Mark, OffView, Plot, Size, Swatch, Ticks, View, Weight};
+use super::spec::{CellGrid, Entry, Ink, Mark, OffView, Plot, Size, Swatch, Ticks, View, Weight};
 use crate::analysis::{MapSpec, Row, RowResult, State, map_boundaries};
 use crate::format::number_text;
 use crate::model::Axis;
-
-/// The map's cells, one per load and row, the first row at the bottom:
-/// each its state and its colour's strength in [0, 1], `None` where the
-/// row has no analysis.
-#[derive(Clone, Debug, PartialEq)]
-pub struct CellGrid {
-    pub columns: usize,
-    pub rows: usize,
-    pub cells: Vec<Option<(State, f64)>>,
-    /// The growth or decay rate that takes the strongest colour, in 1/s.
-    pub largest_per_s: f64,
-}
 
 impl CellGrid {
     /// The cells of `rows` on `spec`'s grid: a row not computed yet takes

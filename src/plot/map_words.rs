@@ -2,7 +2,7 @@
 //! of the largest label-shaped box that the state's cells fill, or nowhere
 //! if no box of a readable size fits (the colour and the stripes still say).
 
-use super::map::CellGrid;
+use super::spec::CellGrid;
 use crate::analysis::State;
 
 /// A name's box at scale 1, as fractions of the map's width and height

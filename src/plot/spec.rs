@@ -5,8 +5,19 @@
 
 use std::sync::Arc;
 
-use super::map::CellGrid;
 use crate::analysis::State;
+
+/// The map's cells, one per load and row, the first row at the bottom:
+/// each its state and its colour's strength in [0, 1], `None` where the
+/// row has no analysis.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CellGrid {
+    pub columns: usize,
+    pub rows: usize,
+    pub cells: Vec<Option<(State, f64)>>,
+    /// The growth or decay rate that takes the strongest colour, in 1/s.
+    pub largest_per_s: f64,
+}
 
 /// Who looks at the plot: someone at the window, with the column moving
 /// and a load to point at, or a reader of a printed figure.

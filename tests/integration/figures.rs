@@ -11,8 +11,8 @@ use zieglerlab::figure::{
     Analysed, Content, Format, MapData, Page, ParadoxData, Rendered, analyse, render,
 };
 use zieglerlab::model::Axis;
-use zieglerlab::plot::map::CellGrid;
 use zieglerlab::plot::map_words::state_words;
+use zieglerlab::plot::spec::CellGrid;
 use zieglerlab::plot::{Palette, Rgb};
 
 /// The pixels of a PNG figure.

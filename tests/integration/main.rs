@@ -23,6 +23,7 @@ mod energy_balance;
 mod external_damping;
 mod figures;
 mod hopf;
+mod imports;
 mod jacobian;
 mod languages;
 mod layers;

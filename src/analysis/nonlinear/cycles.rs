@@ -37,61 +37,13 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::analysis::field::Field;
 use crate::analysis::hopf::{HopfPoint, Steps as HopfSteps, hopf_point};
-use crate::analysis::{AffinePencil, AnalysisError, C64, Hopf, HopfKind, critical_loads, is_hopf};
+use crate::analysis::{AffinePencil, AnalysisError, Hopf, HopfKind, critical_loads, is_hopf};
 use crate::format::load_text;
-use crate::model::{Model, StateVec};
+use crate::model::Model;
 
-use super::shooting::{Constraint, Shooting, Update, fastest_rate, trivial_index};
-
-/// One periodic orbit.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Cycle {
-    /// The load p.
-    pub load: f64,
-    pub period_secs: f64,
-    /// A point of the orbit, on the reduced state.
-    pub start: DVector<f64>,
-    /// The largest `|phi_i|` over the cycle, for each rod, in rad.
-    pub amplitude_rad: Vec<f64>,
-    /// The Floquet multipliers, largest modulus first.
-    pub multipliers: Vec<C64>,
-    /// Every multiplier but the trivial one inside the unit circle.
-    pub stable: bool,
-    /// The roller's smallest slip speed on the band over the cycle, m/s
-    /// (none without a roller).
-    pub closest_slip_m_per_s: Option<f64>,
-}
-
-impl Cycle {
-    /// The multiplier nearest 1 (the shift along the orbit): 1 to the
-    /// accuracy of the monodromy.
-    #[must_use]
-    pub fn trivial_multiplier(&self) -> C64 {
-        trivial_index(&self.multipliers).map_or(C64::new(f64::NAN, 0.0), |i| self.multipliers[i])
-    }
-
-    /// The cycle's start as a full state of `model` (the spin angle zero;
-    /// a massless roller's spin rate, which follows the rods, too).
-    #[must_use]
-    pub fn start_state(&self, model: &Model) -> StateVec {
-        Field::new(model).full_state(&self.start)
-    }
-
-    /// The largest amplitude of any rod's angle, rad.
-    #[must_use]
-    pub fn largest_amplitude_rad(&self) -> f64 {
-        self.amplitude_rad.iter().copied().fold(0.0, f64::max)
-    }
-
-    fn unknowns(&self) -> DVector<f64> {
-        let d = self.start.len();
-        DVector::from_fn(d + 2, |i, _| match i {
-            i if i < d => self.start[i],
-            i if i == d => self.period_secs,
-            _ => self.load,
-        })
-    }
-}
+pub use super::cycle::Cycle;
+use super::cycle::LOAD_SCALE_FLOOR;
+use super::shooting::{Constraint, Shooting, Update, fastest_rate};
 
 /// Why a branch's continuation stopped.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -234,8 +186,6 @@ const MAX_TURN_COS: f64 = 0.9;
 /// The first cycles' amplitudes, rad: small enough for the normal form to be
 /// a good first guess, large enough for a well conditioned shooting.
 const START_AMPLITUDES_RAD: [f64; 3] = [0.003, 0.006, 0.012];
-/// The smallest load the load's step is measured against.
-pub(in crate::analysis) const LOAD_SCALE_FLOOR: f64 = 1e-3;
 
 /// The size of each unknown `u = (x0, T, p)` that the continuation
 /// measures its steps in: the state as it is (rad, rad/s), the period in

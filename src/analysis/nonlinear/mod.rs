@@ -2,6 +2,7 @@
 //! derivatives, the Hopf points' normal form (soft or hard onset), and the
 //! limit cycles continued from them with their Floquet multipliers.
 
+mod cycle;
 pub(super) mod cycles;
 pub(super) mod field;
 pub(super) mod gauss;

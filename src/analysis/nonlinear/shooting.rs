@@ -5,7 +5,7 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use super::cycles::{Cycle, LOAD_SCALE_FLOOR};
+use super::cycle::{Cycle, LOAD_SCALE_FLOOR, trivial_index};
 use crate::analysis::C64;
 use crate::analysis::field::Field;
 use crate::analysis::gauss::{Monodromy, Stepper};
@@ -406,15 +406,6 @@ pub(in crate::analysis) fn converged(step: &DVector<f64>, u: &DVector<f64>, d: u
     step.rows(0, d).amax() <= NEWTON_TOLERANCE * state
         && step[d].abs() <= NEWTON_TOLERANCE * u[d].abs()
         && step[d + 1].abs() <= NEWTON_TOLERANCE * u[d + 1].abs().max(LOAD_SCALE_FLOOR)
-}
-
-/// Where the multiplier nearest 1 (the shift along the orbit) stands.
-pub(in crate::analysis) fn trivial_index(multipliers: &[C64]) -> Option<usize> {
-    multipliers
-        .iter()
-        .enumerate()
-        .min_by(|a, b| (a.1 - 1.0).norm().total_cmp(&(b.1 - 1.0).norm()))
-        .map(|(i, _)| i)
 }
 
 /// Eigenvalues of the monodromy, largest modulus first.

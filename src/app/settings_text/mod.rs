@@ -4,6 +4,7 @@
 //! whole model's fields) is still read, once, as a migration.
 
 mod entries;
+mod read;
 mod ron_migration;
 
 use std::fmt::Write as _;
@@ -11,35 +12,14 @@ use std::fmt::Write as _;
 use super::settings::Settings;
 use crate::format::clipped;
 use crate::model::{Assignment, Key, Model, PresetId, apply_assignments};
-use crate::sim::{EngineKind, SPEED_RANGE};
+use crate::sim::EngineKind;
 use entries::{Entry, Write, apply};
+use read::take_speed;
+pub use read::{MOST_SETTINGS_BYTES, Read, SettingsError};
 use ron_migration::read_ron;
-
-/// Settings read from text, and what was left at its default and why.
-#[derive(Debug)]
-pub struct Read {
-    pub settings: Settings,
-    pub ignored: Vec<String>,
-}
-
-/// Text that holds no settings at all.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-pub enum SettingsError {
-    #[error("not settings text: {0}")]
-    NotSettings(String),
-    #[error(
-        "the text holds {bytes} bytes; settings text is at most {MOST_SETTINGS_BYTES} (the longest the app writes is under 2000)"
-    )]
-    TooLong { bytes: usize },
-}
 
 /// The most characters of a line a message repeats.
 const MOST_LINE_CHARS: usize = 60;
-
-/// The longest settings text read, in bytes: every parameter changed is
-/// under 2 kB, so this is text of some other kind (and a reader bounded by
-/// it never keeps the window waiting).
-pub const MOST_SETTINGS_BYTES: usize = 16 * 1024;
 
 /// The most lines a message names as ignored; the rest are counted.
 const MOST_IGNORED_NAMED: usize = 10;
@@ -243,20 +223,6 @@ fn read_parameters(base: Model, mut entries: Vec<Entry>, ignored: &mut Vec<Strin
 
 /// The stage of the keys that set the load (`load`, `P`, `R`): the last.
 const LOAD_STAGE: u8 = 5;
-
-/// Takes a speed within [`SPEED_RANGE`], naming one outside it.
-pub(super) fn take_speed(settings: &mut Settings, speed: f64, ignored: &mut Vec<String>) {
-    if SPEED_RANGE.contains(&speed) {
-        settings.speed = speed;
-    } else {
-        ignored.push(format!(
-            "speed ({} is outside {} to {})",
-            crate::format::Shown(speed),
-            SPEED_RANGE.start(),
-            SPEED_RANGE.end()
-        ));
-    }
-}
 
 #[cfg(test)]
 mod tests {

@@ -5,7 +5,7 @@
 use super::{AppState, Settings};
 use crate::app::action::{Action, Command};
 use crate::app::notice::Notice;
-use crate::app::tabs::Tab;
+use crate::app::tab::Tab;
 use crate::i18n::{Language, Words};
 use crate::lesson::{Column, Lesson, Predict, Reveal, Run};
 use crate::sim::Ramp;

@@ -22,7 +22,8 @@ use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::number_text;
 use crate::model::{Axis, Model};
-use crate::plot::map::{CellGrid, StabilityMap};
+use crate::plot::map::StabilityMap;
+use crate::plot::spec::CellGrid;
 
 /// Cells along the load and along the second parameter.
 pub const MAP_LOADS: usize = 256;

@@ -1,7 +1,8 @@
 //! The tabs of the lower half of the window, in one registry ([`TABS`]):
 //! each tab is a file of its own with its [`TabSpec`], and the tab bar, the
 //! lessons' `tab`, the command line's `--panel`, the stored layout and the
-//! pictures all read the list. A new tab is one file and one line here.
+//! pictures all read the list. A new tab is one file, one line here, its
+//! variant in `app/tab.rs` and its words in each language.
 
 mod histories;
 mod locus;
@@ -11,6 +12,8 @@ mod paradox;
 mod postcritical;
 
 use std::any::Any;
+
+pub use super::tab::{Tab, UnknownName};
 
 use super::View;
 use super::action::{Action, Actions, Table};
@@ -50,19 +53,6 @@ pub const TABS: [TabSpec; <Tab as strum::EnumCount>::COUNT] = [
     postcritical::TAB,
 ];
 
-/// A tab of the window: its row in [`TABS`] says everything else (a tab
-/// without its row, or a row too many, does not compile).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, strum::EnumCount)]
-pub enum Tab {
-    /// The root locus (the first tab, shown at launch).
-    #[default]
-    Locus,
-    Histories,
-    Map,
-    Paradox,
-    PostCritical,
-}
-
 // Each row sits at its tab's place: `Tab::spec` indexes the table.
 const _: () = {
     let mut i = 0;
@@ -71,15 +61,6 @@ const _: () = {
         i += 1;
     }
 };
-
-/// A name that is none of those known (a tab, a panel).
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("unknown {what} '{name}': expected one of {known}")]
-pub struct UnknownName {
-    pub what: &'static str,
-    pub name: String,
-    pub known: String,
-}
 
 impl Tab {
     /// Every tab, in the tab bar's order.

@@ -6,7 +6,7 @@
 
 mod model;
 
-use super::{Read, SettingsError, take_speed};
+use super::read::{Read, SettingsError, take_speed};
 use crate::app::settings::Settings;
 use crate::model::PresetId;
 use model::{Fields, field, read_model};
