@@ -1,6 +1,7 @@
-//! Pictures of the app without a window: the panel and size arguments, and
-//! the headless renderer (wgpu on Mesa's CPU GL will do) with one clear
-//! error when there is none.
+//! Pictures of the app without a window: the arguments they share (the
+//! panel, size, scale, projector mode and language of a snapshot or a
+//! recording; the language of a figure), and the headless renderer (wgpu on
+//! Mesa's CPU GL will do) with one clear error when there is none.
 
 use std::str::FromStr;
 
@@ -144,9 +145,10 @@ impl Look {
 /// Renders `panel` of `app` headlessly with wgpu, `size` pixels at `scale`
 /// pixels per point: `frames` pictures, `before(app, i)` run before picture
 /// `i` and each picture handed to `each`. One renderer serves all the
-/// frames. The map's and the paradox's background work is completed before
-/// each picture of theirs, so a picture depends on the arguments alone. A missing renderer (no Mesa, no GPU) panics inside its setup:
-/// that becomes one clear error.
+/// frames. Every tab's background work (the map, the paradox curves, the
+/// limit cycles) is completed before each picture of it, so a picture
+/// depends on the arguments alone. A missing renderer (no Mesa, no GPU)
+/// panics inside its setup: that becomes one clear error.
 ///
 /// # Errors
 /// No renderer, a drawing that failed, or an error of `each`.

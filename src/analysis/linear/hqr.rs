@@ -4,6 +4,9 @@
 //! `elmhes` and `hqr`). For a long chain's undamped pencil this is a few
 //! times faster than a general Schur decomposition, which also builds the
 //! vectors' reflectors and guards every 3-vector norm against overflow.
+//! nalgebra's eigenvalue routine is not used here: it is that general
+//! decomposition (`Schur`, the vectors accumulated) and, without
+//! exceptional shifts, it stalls on a long chain's many imaginary pairs.
 
 use crate::analysis::C64;
 

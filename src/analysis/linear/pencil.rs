@@ -1,5 +1,9 @@
 //! Eigenvalues of the quadratic pencil `lambda^2 M + lambda D + K`, any number
 //! of degrees of freedom, and the pencil as an affine function of the load.
+//! nalgebra's QR iteration serves only companions up to order 6 (the two-rod
+//! columns, bit for bit as first computed): it has no exceptional shifts and
+//! stalls on a long chain's imaginary pairs, so larger pencils go to faer's
+//! (or, for an undamped chain, to `hqr`).
 
 use nalgebra::{DMatrix, linalg::Schur};
 
