@@ -282,8 +282,9 @@ impl ZieglerApp {
         self.state.advance(wall_secs);
     }
 
-    /// Computes the analysis, the stability map and the paradox curves of
-    /// the current parameters and waits until they are complete (for pictures and tests;
+    /// Computes the analysis of the current parameters and `tab`'s own
+    /// background work (the map's rows, the paradox curves, the limit
+    /// cycles) and waits until they are complete (for pictures and tests;
     /// the window never waits).
     pub fn complete_background_work(&mut self, tab: Tab) {
         self.state.settle_analysis();

@@ -78,7 +78,10 @@ fn radius(size: Size, theme: &Theme) -> f32 {
 
 /// The tint of a state's range.
 fn range_tint(state: State, theme: &Theme) -> Color32 {
-    theme.state_color(state).gamma_multiply(0.18)
+    #[expect(clippy::cast_possible_truncation, reason = "a share in [0, 1]")]
+    theme
+        .state_color(state)
+        .gamma_multiply(crate::plot::palette::Palette::RANGE_TINT as f32)
 }
 
 /// A legend as a row of text above the plots.

@@ -1,6 +1,8 @@
 //! What every plot of the app shares: axes whose tick labels stay readable
-//! at any size, and the view control of a tab (a "fit" button, how to zoom
-//! and pan, and a refit when what the plots show changes).
+//! at any size, curves drawn through the fewest points the screen resolves
+//! (Ramer-Douglas-Peucker in the view's pixels, once the view has settled),
+//! and the view control of a tab (a "fit" button, how to zoom and pan, and
+//! a refit when what the plots show changes).
 
 use super::speak::Speak as _;
 use crate::tr;

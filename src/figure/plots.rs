@@ -62,7 +62,7 @@ fn cell_color(state: State, strength: f64) -> RGBColor {
 
 /// The pale tint of a stability range.
 fn range_tint(state: State) -> RGBColor {
-    tint(state_color(state), 0.18)
+    tint(state_color(state), Palette::RANGE_TINT)
 }
 
 /// A legend entry's swatch on paper.

@@ -2,7 +2,7 @@
 //! words here (the command line's); the window words the same data in its
 //! language.
 
-use super::keys::{Key, Sign};
+use super::keys::Key;
 use super::params::LARGEST_DERIVED;
 use super::quantity::Quantity;
 use crate::format::Shown;
@@ -75,11 +75,10 @@ impl fmt::Display for Allowed {
             Self::NonNegative => f.write_str("must be >= 0"),
             Self::KeyRange(key) => {
                 let spec = key.spec();
-                let text = match spec.sign {
-                    Sign::Count(..) => format!("must be a whole number {}", spec.range),
-                    Sign::Positive | Sign::NonNegative => {
-                        format!("must be a finite number {} {}", spec.range, spec.unit)
-                    }
+                let text = if spec.counts() {
+                    format!("must be a whole number {}", spec.range)
+                } else {
+                    format!("must be a finite number {} {}", spec.range, spec.unit)
                 };
                 f.write_str(text.trim_end())
             }

@@ -212,6 +212,11 @@ impl Palette {
     /// The share of its state's colour in the faintest map cell.
     pub const FAINTEST_CELL: f64 = 0.55;
 
+    /// The share of its state's colour in the tint of a stability range
+    /// behind the plots (the rest is the background's): pale enough for
+    /// the curves over it to keep their contrast.
+    pub const RANGE_TINT: f64 = 0.18;
+
     /// The colour that stands for a stability state.
     #[must_use]
     pub const fn state(&self, state: State) -> Rgb {
