@@ -52,6 +52,7 @@ use speak::Speak as _;
 
 pub use crate::plot::view::{EdgeMark, Side, ViewRect};
 pub use action::{Action, Command};
+pub use analysis_cache::Analysis;
 pub use layout::Layout;
 pub use notice::{Level, Notice};
 pub use pace::{MAX_FRAME_SECS, MAX_STEPS_PER_FRAME};

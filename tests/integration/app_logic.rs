@@ -439,3 +439,33 @@ fn the_overlay_follows_on_the_analysis_thread() {
     assert_eq!(after, inline(0.3));
     assert_ne!(after, a_before, "a moves the overlay's critical loads");
 }
+
+/// The paradox tab finds the model's own point off the window's thread: in
+/// a window that never waits for its background work (no picture's wait),
+/// the legend names the point within frames, at the first critical load
+/// the app's analysis gives.
+#[test]
+fn the_paradox_tab_finds_the_model_s_point_in_the_background() {
+    let mut app = ZieglerApp::new(Settings::default()).unwrap();
+    app.state_mut().settle_analysis();
+    let expected = app
+        .state()
+        .analysis()
+        .and_then(zieglerlab::app::Analysis::first_instability)
+        .expect("the default column loses its stability");
+    app.apply(Action::Tab(zieglerlab::app::Tab::Paradox));
+    let label = format!(
+        "this model: p = {}",
+        zieglerlab::format::load_text(expected)
+    );
+    let mut harness = crate::app_input::harness_at(&mut app, [1280.0, 800.0]);
+    let start = std::time::Instant::now();
+    while harness.query_by_label(&label).is_none() {
+        assert!(
+            start.elapsed() < std::time::Duration::from_mins(2),
+            "no {label:?} after two minutes of frames"
+        );
+        harness.step();
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+}

@@ -26,6 +26,7 @@ impl Default for ParadoxPanel {
     fn default() -> Self {
         Self {
             jobs: Jobs::new("paradox curves"),
+            points: Jobs::new("paradox point"),
             curves: None,
             kind: DampingKind::default(),
             current: None,
@@ -51,7 +52,10 @@ pub struct ParadoxPanel {
     curves: Option<(CurveKey, Result<Curves, String>)>,
     /// Which damping of a column with a tip force vanishes.
     kind: DampingKind,
-    /// The current model's own point, and the model and kind it is for.
+    /// The current model's own point being found, off the window's thread
+    /// (a long chain's first critical load is a search of its own).
+    points: Jobs<CurveKey, Option<[f64; 2]>>,
+    /// The newest point found, and the model (at load 0) and kind it is for.
     current: Option<(CurveKey, Option<[f64; 2]>)>,
     /// Refits when the curves of other parameters arrive, and on "reset all".
     fit: Fit<(u64, CurveKey)>,
@@ -75,6 +79,16 @@ fn curve_key(model: &Model, kind: DampingKind) -> CurveKey {
         key.column.drag_ns_per_m2 = 0.0;
     }
     (key, kind)
+}
+
+/// The current model's first critical load as the app's analysis has it,
+/// if it is this model's: the analysis shown during a drag may be of the
+/// parameters before, and its load is not this model's point.
+fn known_load(state: &AppState) -> Option<f64> {
+    state
+        .analysis()
+        .filter(|analysis| *analysis.key == state.model().at_load(0.0))
+        .and_then(crate::app::analysis_cache::Analysis::first_instability)
 }
 
 impl ParadoxPanel {
@@ -106,26 +120,46 @@ impl ParadoxPanel {
         }
     }
 
-    /// Blocks until the curves are computed (for pictures and tests).
-    pub fn wait(&mut self, model: &Model) {
+    /// Blocks until the curves and the model's own point are computed
+    /// (for pictures and tests).
+    pub fn wait(&mut self, model: &Model, known: Option<f64>) {
         self.follow(model);
+        self.follow_point(model, known);
         self.jobs.wait();
+        self.points.wait();
         self.receive();
     }
 
-    /// The current model's point: its ratio (log10) and first critical
-    /// load. `known`: that load when the app's analysis has found it (it
-    /// covers a shorter range), so it is not searched for again.
-    fn current_point(&mut self, model: &Model, known: Option<f64>) -> Option<[f64; 2]> {
-        let key = model.at_load(0.0);
-        if let Some((cached, point)) = &self.current
-            && *cached == (key, self.kind)
-        {
-            return *point;
+    /// Starts finding the current model's point unless it is the newest
+    /// asked for. `known`: its first critical load when the app's analysis
+    /// has found it (it covers a shorter range), so it is not searched for
+    /// again.
+    fn follow_point(&mut self, model: &Model, known: Option<f64>) {
+        let key = (model.at_load(0.0), self.kind);
+        if self.points.key() == Some(&key) {
+            return;
         }
-        let point = own_point(&key, self.kind, known, crate::machine_threads());
-        self.current = Some(((key, self.kind), point));
-        point
+        let started = self.points.request(key, move |(model, kind), _, send| {
+            send(own_point(model, *kind, known, crate::machine_threads()));
+        });
+        if started.is_err() {
+            // No thread: no point drawn, rather than a stale one.
+            self.current = Some((key, None));
+        }
+    }
+
+    /// The current model's point (its ratio, log10, and first critical
+    /// load) once found; `None` while it is sought, and where it has none.
+    fn current_point(&mut self, model: &Model, known: Option<f64>) -> Option<[f64; 2]> {
+        self.follow_point(model, known);
+        if let Some(newest) = self.points.drain().last() {
+            self.current = Some(newest);
+        }
+        let key = (model.at_load(0.0), self.kind);
+        self.current
+            .as_ref()
+            .filter(|(k, _)| *k == key)
+            .and_then(|(_, point)| *point)
     }
 
     fn draw(
@@ -139,6 +173,9 @@ impl ParadoxPanel {
     ) {
         self.follow(model);
         let here = self.current_point(model, known);
+        if self.points.busy() {
+            ui.ctx().request_repaint();
+        }
         self.receive();
         let key = curve_key(model, self.kind);
         let words = ui.words();
@@ -191,19 +228,14 @@ impl ParadoxPanel {
 
 impl TabView for ParadoxPanel {
     fn complete_background_work(&mut self, state: &AppState) {
-        self.wait(state.model());
+        self.wait(state.model(), known_load(state));
     }
 }
 
 impl View for ParadoxPanel {
     fn ui(&mut self, ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, theme: &Theme) {
         let model = *state.model();
-        // The analysis shown during a drag may be of the parameters before:
-        // its load is not this model's point.
-        let known = state
-            .analysis()
-            .filter(|analysis| *analysis.key == model.at_load(0.0))
-            .and_then(crate::app::analysis_cache::Analysis::first_instability);
+        let known = known_load(state);
         self.generation = state.view_generation();
         if matches!(model.load, Load::Follower { eta, .. } if eta > 0.0) {
             self.kind_ui(ui);
