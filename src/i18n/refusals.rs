@@ -1,5 +1,6 @@
-//! The model's refusals and the engine's failures in a language: the data
-//! the lower layers return (what was refused, what it must be), worded.
+//! The lower layers' refusals, failures and warnings in a language: the
+//! data they return (what was refused and what it must be, why a run or an
+//! analysis failed, why the stability is not resolved), worded.
 
 use crate::analysis::{AnalysisError, LARGEST_MODE_SPAN, NotResolved};
 use crate::format::{Shown, load_text};
