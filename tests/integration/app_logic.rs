@@ -458,7 +458,12 @@ fn the_paradox_tab_finds_the_model_s_point_in_the_background() {
         "this model: p = {}",
         zieglerlab::format::load_text(expected)
     );
-    let mut harness = crate::app_input::harness_at(&mut app, [1280.0, 800.0]);
+    // Frames one by one: the curves' spinner repaints until they come, so
+    // the suite's `harness_at` (which runs until the window settles) would
+    // give up first.
+    let mut harness = egui_kittest::Harness::builder()
+        .with_size([1280.0, 800.0])
+        .build_ui(|ui| app.contents_ui(ui));
     let start = std::time::Instant::now();
     while harness.query_by_label(&label).is_none() {
         assert!(
