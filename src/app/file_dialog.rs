@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 
 use eframe::egui;
 
-use super::jobs::Jobs;
+use super::jobs::{Jobs, Reply};
 
 /// How a dialog closed.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -28,9 +28,9 @@ pub const NOT_SAVED: &str = "notice-not-saved";
 /// zenity answers at once).
 const NO_DIALOG_SECS: f64 = 0.5;
 
-/// Where the window's choice of typed paths is kept in egui's context.
-fn typed_paths_id() -> egui::Id {
-    egui::Id::unique("zieglerlab-typed-paths")
+/// Where the window's [`PathsAsked`] is kept in egui's context.
+fn paths_asked_id() -> egui::Id {
+    egui::Id::unique("zieglerlab-paths-asked")
 }
 
 /// Where the window asks for a path to save to.
@@ -45,7 +45,7 @@ pub enum PathsAsked {
 
 /// From this frame on, paths are asked as `asked` says.
 pub fn install(ctx: &egui::Context, asked: PathsAsked) {
-    ctx.data_mut(|d| d.insert_temp(typed_paths_id(), asked == PathsAsked::Typed));
+    ctx.data_mut(|d| d.insert_temp(paths_asked_id(), asked));
 }
 
 /// A dialog that may be open.
@@ -95,7 +95,7 @@ impl FileDialog {
         if self.is_open() {
             return;
         }
-        let typed = ctx.data(|d| d.get_temp(typed_paths_id())).unwrap_or(false);
+        let typed = ctx.data(|d| d.get_temp(paths_asked_id())) == Some(PathsAsked::Typed);
         let ctx = ctx.clone();
         let mut dialog = Jobs::new("file dialog");
         let started = dialog.request((), move |(), _, send| {
@@ -128,20 +128,15 @@ impl FileDialog {
         if let Some(typed) = self.typed.take() {
             return Some(typed);
         }
-        let dialog = self.answer.as_ref()?;
-        // Whether it was open before looking: a job that had ended had
-        // sent its answer, if it had one.
-        let busy = dialog.busy();
-        let message = dialog.drain().next();
-        let closed = match message {
-            Some(((), (Some(chosen), _))) => Closed::Chosen(chosen),
-            Some(((), (None, true))) if self.proposed.is_some() => {
+        let closed = match self.answer.as_ref()?.reply() {
+            Reply::Pending => return None,
+            Reply::Sent((Some(chosen), _)) => Closed::Chosen(chosen),
+            Reply::Sent((None, true)) if self.proposed.is_some() => {
                 self.answer = None;
                 self.typing = self.proposed.take().map(|p| p.display().to_string());
                 return None;
             }
-            None if busy => return None,
-            Some(((), (None, _))) | None => Closed::NoneChosen,
+            Reply::Sent((None, _)) | Reply::Ended => Closed::NoneChosen,
         };
         self.answer = None;
         self.proposed = None;

@@ -34,6 +34,15 @@ impl Cancel {
     }
 }
 
+/// What a job that sends one message has come to ([`Jobs::reply`]).
+pub enum Reply<M> {
+    /// At work, nothing sent yet.
+    Pending,
+    Sent(M),
+    /// Ended without a message (it panicked).
+    Ended,
+}
+
 /// The job under way (or done) for the newest key.
 struct Running<K> {
     key: K,
@@ -123,6 +132,18 @@ where
     /// Everything sent since the last call, oldest first.
     pub fn drain(&self) -> impl Iterator<Item = (K, M)> + '_ {
         self.receiver.try_iter()
+    }
+
+    /// What a job that sends one message (a dialog, a file read) has come
+    /// to. Whether it was at work is asked before looking: a job that had
+    /// ended had sent what it would.
+    pub fn reply(&self) -> Reply<M> {
+        let busy = self.busy();
+        match self.drain().next() {
+            Some((_, message)) => Reply::Sent(message),
+            None if busy => Reply::Pending,
+            None => Reply::Ended,
+        }
     }
 
     /// Whether the newest job's thread is still at work.

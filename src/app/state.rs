@@ -302,6 +302,13 @@ impl AppState {
             .map(|(_, why)| why.words(self.words()))
     }
 
+    /// Whether the last value typed for `key` was refused (without wording
+    /// why, as the fields ask every frame).
+    #[must_use]
+    pub fn is_refused(&self, key: Key) -> bool {
+        self.refused.iter().any(|(k, _)| *k == key)
+    }
+
     /// The achieved speed when the run falls behind the chosen one.
     #[must_use]
     pub fn lagging(&self) -> Option<f64> {

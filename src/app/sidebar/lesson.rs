@@ -7,7 +7,7 @@ use crate::tr;
 use eframe::egui::{self, RichText};
 
 use crate::app::action::{Action, Actions, Command};
-use crate::app::jobs::Jobs;
+use crate::app::jobs::{Jobs, Reply};
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::app::{Notice, View};
@@ -43,21 +43,18 @@ impl LessonSection {
         let Some(reading) = &self.reading else {
             return;
         };
-        // Whether it was at work before looking: a job that had ended had
-        // sent what it would.
-        let busy = reading.busy();
-        match reading.drain().next() {
-            Some((_, Ok(lesson))) => actions.push(Action::LessonOpen(Box::new(lesson))),
-            Some((_, Err(error))) => actions.push(Action::Say(Notice::error(tr!(
+        match reading.reply() {
+            Reply::Sent(Ok(lesson)) => actions.push(Action::LessonOpen(Box::new(lesson))),
+            Reply::Sent(Err(error)) => actions.push(Action::Say(Notice::error(tr!(
                 ctx.words(),
                 "notice-lesson-not-opened",
                 why = error.to_string()
             )))),
-            None if busy => {
+            Reply::Pending => {
                 ctx.request_repaint_after(std::time::Duration::from_millis(50));
                 return;
             }
-            None => {
+            Reply::Ended => {
                 let path = reading.key().cloned().unwrap_or_default();
                 actions.push(Action::Say(Notice::error(tr!(
                     ctx.words(),

@@ -45,7 +45,7 @@ impl NumberFields {
     pub fn prune(&mut self, ui: &egui::Ui, state: &AppState) {
         let focused = ui.memory(egui::Memory::focused);
         self.drafts
-            .retain(|&key, _| state.refusal(key).is_some() || focused == Some(field_id(key)));
+            .retain(|&key, _| state.is_refused(key) || focused == Some(field_id(key)));
     }
 
     /// The field of `key`, named `key` for screen readers and tests.
@@ -66,7 +66,7 @@ impl NumberFields {
             .get(&key)
             .cloned()
             .unwrap_or_else(|| applied_text.clone());
-        let refused = state.refusal(key).is_some();
+        let refused = state.is_refused(key);
         let mut edit = egui::TextEdit::singleline(&mut text)
             .id(field_id(key))
             .desired_width(FIELD_WIDTH)
