@@ -14,7 +14,7 @@ use linear::{
 };
 use nonlinear::{cycles, field, gauss, hopf, jet};
 
-pub use along::{AlongLoad, Unresolved};
+pub use along::{AlongLoad, Sampling, Unresolved};
 pub use critical::{
     BRACKET_SAMPLES, bracketing_locus, bracketing_locus_reporting, critical_loads,
     critical_loads_along, plotted_locus,

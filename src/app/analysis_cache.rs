@@ -3,8 +3,8 @@
 //! and the resolution warning, computed once per change of parameters.
 
 use crate::analysis::{
-    AffinePencil, AlongLoad, AnalysisError, BRACKET_SAMPLES, Hopf, HopfSteps, Locus, NoHopf, State,
-    Transition, Unresolved, first_loss_of_stability, hopf_at, is_hopf, locus,
+    AffinePencil, AlongLoad, AnalysisError, BRACKET_SAMPLES, Hopf, HopfSteps, Locus, NoHopf,
+    Sampling, State, Transition, Unresolved, first_loss_of_stability, hopf_at, is_hopf,
 };
 use crate::model::ValidModel;
 
@@ -28,21 +28,34 @@ pub struct Analysis {
     pub onsets: Vec<(f64, Option<Result<Hopf, NoHopf>>)>,
 }
 
+/// The window's root locus of `model` (its load ignored) over the load
+/// bar's range, the critical loads kept where rounding decides them (the
+/// load bar says so beside them): the analysis's and the overlay's.
+///
+/// # Errors
+/// As [`AlongLoad::of_model`].
+pub fn window_locus(model: &ValidModel) -> Result<(AffinePencil, AlongLoad), AnalysisError> {
+    AlongLoad::of_model(
+        model,
+        (0.0, model.load_bar_max_p()),
+        Sampling::Even(LOCUS_SAMPLES),
+        Unresolved::Kept,
+        crate::machine_threads(),
+    )
+}
+
 impl Analysis {
     pub(super) fn new(model: &ValidModel) -> Result<Self, AnalysisError> {
         let key = model.at_load(0.0)?;
-        let pencil = AffinePencil::new(&key)?.with_threads(crate::machine_threads());
-        let load_max = model.load_bar_max_p();
-        let AlongLoad {
-            locus,
-            transitions,
-            ranges,
-            warning,
-        } = AlongLoad::new(
-            &pencil,
-            locus(&pencil, 0.0, load_max, LOCUS_SAMPLES)?,
-            Unresolved::Kept,
-        )?;
+        let (
+            pencil,
+            AlongLoad {
+                locus,
+                transitions,
+                ranges,
+                warning,
+            },
+        ) = window_locus(&key)?;
         let onsets = transitions
             .iter()
             .filter(|t| is_hopf(t.from, t.to) && t.to == State::Flutter)

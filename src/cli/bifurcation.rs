@@ -11,12 +11,12 @@ use clap::ValueEnum;
 use serde_json::json;
 
 use zieglerlab::analysis::{
-    AffinePencil, Branch, Cycle, NoBranch, Onset, State, classify, critical_loads, cycle_branches,
-    cycles_at, stability_ranges,
+    AffinePencil, Branch, Cycle, NoBranch, Onset, State, classify, cycle_branches, cycles_at,
 };
-use zieglerlab::figure::{self, BifurcationData, Content, Page, render};
+use zieglerlab::figure::{self, Page, render};
 use zieglerlab::format::{Exact, Shown};
 use zieglerlab::model::Model;
+use zieglerlab::plot::bifurcation::BifurcationData;
 use zieglerlab::sim::{Status, SweepStep, SweepTimes, sweep};
 
 use super::map::{AxisArg, check_load_axis, load_axis_grid};
@@ -139,15 +139,9 @@ pub fn run(args: &Args) -> Result<()> {
         rows.extend(sweep_rows(&model, &pencil, &loads, args)?);
     }
     if args.format == Format::Png {
-        let data = figure_data(&pencil, (lo, hi), &branches, &rows)?;
-        let rendered = render(
-            &Content::Bifurcation(&data),
-            &Page {
-                language: args.lang.language,
-                ..Page::default()
-            },
-            figure::Format::Png,
-        )?;
+        let data = BifurcationData::new(&pencil, (lo, hi), &branches, sweep_steps(&rows))?;
+        let sheet = data.sheet(zieglerlab::i18n::words(args.lang.language));
+        let rendered = render(&sheet, &Page::default(), figure::Format::Png)?;
         let out = args
             .out
             .as_ref()
@@ -202,40 +196,17 @@ fn equilibrium_rows(pencil: &AffinePencil, loads: &[f64], rods: usize) -> Result
         .collect()
 }
 
-/// The figure's data: the straight column's stability over the range, the
-/// branches and the sweep's steps.
-fn figure_data(
-    pencil: &AffinePencil,
-    (lo, hi): (f64, f64),
-    onsets: &[Onset],
-    rows: &[Row],
-) -> Result<BifurcationData> {
-    let first = pencil.spectrum(lo)?;
-    let first = classify(&first.eigenvalues, first.scale_per_s).state;
-    let transitions = critical_loads(pencil, lo, hi)?;
-    let equilibrium = stability_ranges(&transitions, first, lo, hi)
-        .into_iter()
-        .map(|(from, to, state)| (from, to, state == State::Stable))
-        .collect();
+/// A sweep's steps among `rows`: `(load, largest angle, upward)`.
+fn sweep_steps(rows: &[Row]) -> Vec<(f64, f64, bool)> {
     let largest = |row: &Row| row.amplitude_rad.iter().copied().fold(0.0, f64::max);
-    let sweep = rows
-        .iter()
+    rows.iter()
         .filter(|row| row.branch.starts_with("sweep-"))
         .map(|row| (row.load, largest(row), row.branch == "sweep-up"))
-        .collect();
-    Ok(BifurcationData {
-        load_range: (lo, hi),
-        equilibrium,
-        branches: onsets
-            .iter()
-            .filter_map(|o| o.branch.clone().ok())
-            .collect(),
-        sweep,
-    })
+        .collect()
 }
 
 /// What was found at one flutter onset, on stderr.
-fn report(onset: f64, found: &Result<Branch, NoBranch>) {
+pub fn report(onset: f64, found: &Result<Branch, NoBranch>) {
     let at = Shown(onset);
     let line = match found {
         Ok(branch) => {

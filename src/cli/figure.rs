@@ -1,14 +1,25 @@
 //! `zieglerlab figure`: a figure for a paper (the root locus, Re and Im
-//! against the load, the stability map or the paradox curves) as SVG or PNG
-//! at a journal's size.
+//! against the load, the stability map, the paradox curves or the
+//! bifurcation diagram) as SVG or PNG at a journal's size.
 
 use anyhow::Result;
 use clap::ValueEnum;
 
-use zieglerlab::analysis::{BRACKET_SAMPLES, DampingKind, RowResult, default_map_axis, load_grid};
-use zieglerlab::figure::{Analysed, Content, Format, MapData, Page, ParadoxData, analyse, render};
+use std::sync::atomic::AtomicBool;
+
+use zieglerlab::analysis::{
+    AffinePencil, BRACKET_SAMPLES, DampingKind, RowResult, cycle_branches, default_map_axis,
+    load_grid,
+};
+use zieglerlab::figure::{FigureError, Format, Page, render};
 use zieglerlab::format::{Shown, number_text};
-use zieglerlab::model::PresetId;
+use zieglerlab::i18n::Words;
+use zieglerlab::model::{Model, PresetId};
+use zieglerlab::plot::bifurcation::BifurcationData;
+use zieglerlab::plot::locus::{Analysed, Loci, Part};
+use zieglerlab::plot::map::MapData;
+use zieglerlab::plot::paradox::ParadoxData;
+use zieglerlab::plot::spec::{Medium, Sheet};
 
 use super::map::{AxisArg, complete_rows, compute_rows, map_spec, warn_if_unresolved};
 use super::output::{check_output, write_atomically};
@@ -24,6 +35,9 @@ enum Kind {
     Map,
     /// The first critical load as the damping (or the roller's mass) vanishes.
     Paradox,
+    /// The limit cycles' largest angle against the load, with the straight
+    /// column's stability (as `bifurcation --format png` draws it).
+    Bifurcation,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -38,7 +52,7 @@ enum DampingArg {
 fn default_aspect(kind: Kind) -> f64 {
     match kind {
         Kind::ReIm => 1.1,
-        Kind::Locus | Kind::Map => 0.8,
+        Kind::Locus | Kind::Map | Kind::Bifurcation => 0.8,
         Kind::Paradox => 0.75,
     }
 }
@@ -71,11 +85,12 @@ pub struct Args {
     dpi: f64,
     #[command(flatten)]
     lang: super::headless::FigureLanguage,
-    /// Lower end of the loads (locus and re-im).
+    /// Lower end of the loads (locus, re-im and bifurcation).
     #[arg(long, allow_hyphen_values = true)]
     load_min: Option<f64>,
-    /// Upper end of the loads (locus and re-im) [default: the end of the
-    /// window's load bar: 8 for two rods, 8 (2/N)^2 for a chain of N].
+    /// Upper end of the loads (locus, re-im and bifurcation) [default: the
+    /// end of the window's load bar: 8 for two rods, 8 (2/N)^2 for a chain
+    /// of N].
     #[arg(long, allow_hyphen_values = true)]
     load_max: Option<f64>,
     /// The map's load axis, load:MIN:MAX:N [default: the load bar's range, 128 loads].
@@ -98,12 +113,15 @@ impl Args {
         let mut unused: Vec<&str> = Vec::new();
         let loads = self.load_min.is_some() || self.load_max.is_some();
         match self.kind {
-            Kind::Locus | Kind::ReIm => {
+            Kind::Locus | Kind::ReIm | Kind::Bifurcation => {
                 if self.x.is_some() || self.y.is_some() {
                     unused.push("--x/--y (the map's axes)");
                 }
                 if self.damping.is_some() {
                     unused.push("--damping (the paradox curves')");
+                }
+                if self.kind == Kind::Bifurcation && !self.overlay.is_empty() {
+                    unused.push("--overlay (locus and re-im only)");
                 }
             }
             Kind::Map | Kind::Paradox => {
@@ -150,7 +168,6 @@ impl Args {
                 .unwrap_or(self.width_mm * default_aspect(self.kind)),
             font_pt: self.font_pt,
             dpi: self.dpi,
-            language: self.lang.language,
         }
     }
 }
@@ -185,68 +202,14 @@ pub fn run(args: &Args) -> Result<()> {
     }
     page.check(format)?;
     let (preset, model) = args.model.build()?;
-    let rendered = match args.kind {
-        Kind::Locus | Kind::ReIm => {
-            let load_min = args.load_min.unwrap_or(0.0);
-            let load_max = args.load_max.unwrap_or_else(|| model.load_bar_max_p());
-            // The range is checked once, with the main model's words; the
-            // analysis has the rules of `critical` (at most 1e150).
-            load_grid(load_min, load_max, BRACKET_SAMPLES)?;
-            let progress = progress_bar(1 + args.overlay.len() as u64, "loci");
-            let each = |name: &str, model: &zieglerlab::model::Model| -> Result<Analysed> {
-                let analysed = analyse(name, model, load_min, load_max)?;
-                if let Some(warning) = &analysed.warning {
-                    progress.suspend(|| {
-                        eprintln!(
-                            "warning: {name}: {}; no critical load is drawn and no range tinted",
-                            printable(&warning.to_string())
-                        );
-                    });
-                }
-                progress.inc(1);
-                Ok(analysed)
-            };
-            let main = each(&preset.to_string(), &model)?;
-            let overlays = args
-                .overlay
-                .iter()
-                .map(|other| each(&other.to_string(), &other.model()))
-                .collect::<Result<Vec<_>>>()?;
-            progress.finish_and_clear();
-            let content = if args.kind == Kind::Locus {
-                Content::Locus {
-                    main: &main,
-                    overlays: &overlays,
-                }
-            } else {
-                Content::ReIm {
-                    main: &main,
-                    overlays: &overlays,
-                }
-            };
-            render(&content, &page, format)?
-        }
-        Kind::Map => {
-            let data = map_data(args, &model)?;
-            render(&Content::Map(&data), &page, format)?
-        }
-        Kind::Paradox => {
-            let kind = match args.damping {
-                Some(DampingArg::External) => DampingKind::External,
-                Some(DampingArg::Joints) | None => DampingKind::Joints,
-            };
-            if args.damping.is_some() && model.roller().is_some() {
-                anyhow::bail!(
-                    "--damping: the roller's curves sweep its mass ratio nu at three band speeds; leave --damping out"
-                );
-            }
-            // A long chain's curves take seconds (16 rods: 8 s).
-            let working = spinner("computing the first critical load at each ratio");
-            let data = ParadoxData::new(&model, kind);
-            working.finish_and_clear();
-            render(&Content::Paradox(&data), &page, format)?
-        }
+    let words = zieglerlab::i18n::words(args.lang.language);
+    let sheet = match args.kind {
+        Kind::Locus | Kind::ReIm => loci_sheet(args, &preset.to_string(), &model, words)?,
+        Kind::Map => map_data(args, &model)?.sheet(words),
+        Kind::Paradox => paradox_sheet(args, &model, words)?,
+        Kind::Bifurcation => bifurcation_sheet(args, &model, words)?,
     };
+    let rendered = render(&sheet, &page, format)?;
     for note in &rendered.notes {
         eprintln!("note: {}", printable(note));
     }
@@ -255,8 +218,95 @@ pub fn run(args: &Args) -> Result<()> {
     })
 }
 
+/// The loads the options ask for, checked with the rules of `critical`
+/// (at most 1e150).
+fn load_range(args: &Args, model: &Model) -> Result<(f64, f64)> {
+    let load_min = args.load_min.unwrap_or(0.0);
+    let load_max = args.load_max.unwrap_or_else(|| model.load_bar_max_p());
+    load_grid(load_min, load_max, BRACKET_SAMPLES)?;
+    Ok((load_min, load_max))
+}
+
+/// The root locus (`locus`) or Re and Im against the load (`re-im`) of
+/// `model`, named `name`, with the overlays behind it.
+fn loci_sheet(args: &Args, name: &str, model: &Model, words: &'static Words) -> Result<Sheet> {
+    let loads = load_range(args, model)?;
+    let progress = progress_bar(1 + args.overlay.len() as u64, "loci");
+    let each = |name: &str, model: &Model| -> Result<Analysed> {
+        let analysed = Analysed::new(name, model, loads, zieglerlab::machine_threads())?;
+        if let Some(warning) = &analysed.warning {
+            progress.suspend(|| {
+                eprintln!(
+                    "warning: {name}: {}; no critical load is drawn and no range tinted",
+                    printable(&warning.to_string())
+                );
+            });
+        }
+        progress.inc(1);
+        Ok(analysed)
+    };
+    let main = each(name, model)?;
+    let overlays = args
+        .overlay
+        .iter()
+        .map(|other| each(&other.to_string(), &other.model()))
+        .collect::<Result<Vec<_>>>()?;
+    progress.finish_and_clear();
+    let loci = Loci {
+        main: main.layer(),
+        others: overlays.iter().map(Analysed::layer).collect(),
+        medium: Medium::Paper,
+        words,
+    };
+    Ok(loci.sheet(if args.kind == Kind::Locus {
+        Part::Plane
+    } else {
+        Part::VersusLoad
+    }))
+}
+
+/// The paradox curves of `model` for the damping asked for.
+fn paradox_sheet(args: &Args, model: &Model, words: &'static Words) -> Result<Sheet> {
+    let kind = match args.damping {
+        Some(DampingArg::External) => DampingKind::External,
+        Some(DampingArg::Joints) | None => DampingKind::Joints,
+    };
+    if args.damping.is_some() && model.roller().is_some() {
+        anyhow::bail!(
+            "--damping: the roller's curves sweep its mass ratio nu at three band speeds; leave --damping out"
+        );
+    }
+    // A long chain's curves take seconds (16 rods: 8 s).
+    let working = spinner("computing the first critical load at each ratio");
+    let data = ParadoxData::new(model, kind, zieglerlab::machine_threads());
+    working.finish_and_clear();
+    if let Some(note) = &data.curves.note {
+        return Err(FigureError::Empty(note.to_string()).into());
+    }
+    let sheet = data.sheet(words);
+    if sheet.plots.is_empty() {
+        return Err(FigureError::Empty("the curves have no extent".to_owned()).into());
+    }
+    Ok(sheet)
+}
+
+/// The bifurcation diagram of `model` over the loads asked for: the
+/// branches of cycles from every flutter onset there, each said on
+/// standard error as `bifurcation` says it.
+fn bifurcation_sheet(args: &Args, model: &Model, words: &'static Words) -> Result<Sheet> {
+    let loads = load_range(args, model)?;
+    let pencil = AffinePencil::new(model)?.with_threads(zieglerlab::machine_threads());
+    let working = spinner("limit cycles: shooting and continuation");
+    let branches = cycle_branches(model, loads.0, loads.1, &AtomicBool::new(false))?;
+    working.finish_and_clear();
+    for onset in &branches {
+        super::bifurcation::report(onset.load, &onset.branch);
+    }
+    Ok(BifurcationData::new(&pencil, loads, &branches, Vec::new())?.sheet(words))
+}
+
 /// The map the options ask for, computed on every core.
-fn map_data(args: &Args, model: &zieglerlab::model::Model) -> Result<MapData> {
+fn map_data(args: &Args, model: &Model) -> Result<MapData> {
     // The defaults as the axes would be typed (an f64 reads back exactly).
     let x = match &args.x {
         Some(x) => x.clone(),

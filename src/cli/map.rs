@@ -13,8 +13,9 @@ use zieglerlab::analysis::{
 };
 use zieglerlab::model::{Axis, Key, Model, Shown};
 
-use zieglerlab::figure::{self, Content, MapData, Page, render};
+use zieglerlab::figure::{self, Page, render};
 use zieglerlab::format::Exact;
+use zieglerlab::plot::map::MapData;
 
 use super::output::{check_output, write_atomically};
 use super::{ModelArgs, printable, progress_bar};
@@ -134,12 +135,8 @@ pub fn run(args: &Args) -> Result<()> {
         }
         Format::Png => {
             // The same figure as `figure --kind map`, at its default page.
-            let data = MapData { spec, rows };
-            let page = Page {
-                language: args.lang.language,
-                ..Page::default()
-            };
-            let rendered = render(&Content::Map(&data), &page, figure::Format::Png)?;
+            let sheet = MapData { spec, rows }.sheet(zieglerlab::i18n::words(args.lang.language));
+            let rendered = render(&sheet, &Page::default(), figure::Format::Png)?;
             write_atomically(out, |file| file.write_all(&rendered.bytes))?;
         }
     }

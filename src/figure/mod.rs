@@ -1,47 +1,21 @@
-//! Figures for a paper: the root locus, Re and Im of the eigenvalues against
-//! the load, the stability map, the paradox curves and the limit cycles'
-//! bifurcation diagram, drawn with plotters
-//! at a journal's size and font size, as SVG (vector) or PNG.
+//! Figures for a paper: any plot's [`Sheet`] (the root locus, Re and Im of
+//! the eigenvalues against the load, the stability map, the paradox curves,
+//! the limit cycles' bifurcation diagram) drawn with plotters at a
+//! journal's size and font size, as SVG (vector) or PNG. What a figure
+//! shows is decided by the sheet's builder in [`crate::plot`]; this module
+//! lays out the page, styles each ink and sets the text.
 
-mod bifurcation;
 mod clip;
 mod glyphs;
 mod layout;
-mod loci;
-mod map;
-mod paradox;
 mod plots;
 mod style;
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-pub use bifurcation::BifurcationData;
-pub use loci::{Analysed, analyse};
-pub use map::MapData;
-pub use paradox::ParadoxData;
+use crate::plot::spec::Sheet;
 pub use style::Page;
-
-/// What a figure shows, with its data.
-pub enum Content<'a> {
-    /// The root locus in the complex plane, other models overlaid.
-    Locus {
-        main: &'a Analysed,
-        overlays: &'a [Analysed],
-    },
-    /// Re and Im of every eigenvalue against the load (the paper's Figs 3
-    /// and 8), other models overlaid.
-    ReIm {
-        main: &'a Analysed,
-        overlays: &'a [Analysed],
-    },
-    /// The stability map over the load and a second parameter.
-    Map(&'a MapData),
-    /// The first loss of stability against a damping ratio.
-    Paradox(&'a ParadoxData),
-    /// The limit cycles' amplitude against the load.
-    Bifurcation(&'a BifurcationData),
-}
 
 /// The file format, from the output's extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -113,17 +87,18 @@ fn drawing<T, E: std::fmt::Display>(result: Result<T, E>) -> Result<T, FigureErr
     result.map_err(|e| FigureError::Draw(e.to_string()))
 }
 
-/// What a drawing of one content kind gives back.
+/// What a drawing of a sheet gives back.
 pub(crate) struct Drawn {
     panels: Vec<Panel>,
     notes: Vec<String>,
 }
 
-/// `content` drawn on `page` as `format`.
+/// `sheet` drawn on `page` as `format`: its legend at the top, its plots
+/// stacked below, each as tall as the others.
 ///
 /// # Errors
-/// A page that cannot be drawn, no data, or the drawing failing.
-pub fn render(content: &Content<'_>, page: &Page, format: Format) -> Result<Rendered, FigureError> {
+/// A page that cannot be drawn, or the drawing failing.
+pub fn render(sheet: &Sheet, page: &Page, format: Format) -> Result<Rendered, FigureError> {
     style::register_fonts();
     let ink = page.ink(format)?;
     let (width, height) = ink.size_px;
@@ -132,7 +107,7 @@ pub fn render(content: &Content<'_>, page: &Page, format: Format) -> Result<Rend
             let mut svg = String::new();
             let drawn = {
                 let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
-                let drawn = draw(&root, content, &ink)?;
+                let drawn = draw(&root, sheet, &ink)?;
                 drawing(root.present())?;
                 drawn
             };
@@ -150,7 +125,7 @@ pub fn render(content: &Content<'_>, page: &Page, format: Format) -> Result<Rend
                     font: glyphs::font()?,
                 }
                 .into_drawing_area();
-                let drawn = draw(&root, content, &ink)?;
+                let drawn = draw(&root, sheet, &ink)?;
                 drawing(root.present())?;
                 drawn
             };
@@ -170,23 +145,17 @@ pub fn render(content: &Content<'_>, page: &Page, format: Format) -> Result<Rend
     }
 }
 
-/// Draws `content` on `root`, a white page.
+/// Draws `sheet` on `root`, a white page.
 fn draw<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
-    content: &Content<'_>,
+    sheet: &Sheet,
     ink: &style::Ink,
 ) -> Result<Drawn, FigureError>
 where
     DB::ErrorType: 'static,
 {
     drawing(root.fill(&WHITE))?;
-    match content {
-        Content::Locus { main, overlays } => loci::draw_plane(root, main, overlays, ink),
-        Content::ReIm { main, overlays } => loci::draw_versus_load(root, main, overlays, ink),
-        Content::Map(data) => map::draw(root, data, ink),
-        Content::Paradox(data) => paradox::draw(root, data, ink),
-        Content::Bifurcation(data) => bifurcation::draw(root, data, ink),
-    }
+    plots::draw(root, &sheet.legend, &sheet.plots, ink)
 }
 
 /// The SVG with its page size in millimetres (plotters writes its units),

@@ -2,7 +2,6 @@
 //! points, a PNG's dots per inch), the strokes and fonts in the page's units,
 //! and the palette's paper colours.
 
-use crate::i18n::{Language, Words};
 use plotters::style::{FontStyle, RGBColor, ShapeStyle, TextStyle};
 
 use super::{FigureError, Format};
@@ -30,8 +29,6 @@ pub struct Page {
     pub font_pt: f64,
     /// Dots per inch of a PNG (an SVG has no pixels).
     pub dpi: f64,
-    /// The language of the axes and the legends.
-    pub language: Language,
 }
 
 impl Default for Page {
@@ -42,7 +39,6 @@ impl Default for Page {
             height_mm: 68.0,
             font_pt: 8.0,
             dpi: 300.0,
-            language: Language::English,
         }
     }
 }
@@ -109,7 +105,6 @@ impl Page {
             per_pt,
             font_pt: self.font_pt,
             size_px,
-            words: crate::i18n::words(self.language),
         })
     }
 }
@@ -120,8 +115,6 @@ pub(super) struct Ink {
     per_pt: f64,
     font_pt: f64,
     pub size_px: (u32, u32),
-    /// The figure's words.
-    pub words: &'static Words,
 }
 
 impl Ink {

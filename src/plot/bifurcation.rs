@@ -5,10 +5,72 @@
 //! (dots up, rings down), in the window the current load, the onset a ramp
 //! saw and the running column's swing.
 
-use super::spec::{Entry, Ink, Mark, OffView, Plot, Size, Swatch, Ticks, View, Weight};
-use crate::analysis::{Branch, State};
+use super::spec::{Entry, Ink, Mark, OffView, Plot, Sheet, Size, Swatch, Ticks, View, Weight};
+use crate::analysis::{
+    AffinePencil, AnalysisError, Branch, Onset, State, classify, critical_loads, stability_ranges,
+};
 use crate::i18n::Words;
 use crate::tr;
+
+/// What a printed diagram shows, gathered as `bifurcation` and
+/// `figure --kind bifurcation` gather it.
+#[derive(Clone, Debug)]
+pub struct BifurcationData {
+    /// The load range drawn.
+    pub load_range: (f64, f64),
+    /// The straight column's stretches `(from, to, stable)`.
+    pub equilibrium: Vec<(f64, f64, bool)>,
+    /// The branches of cycles.
+    pub branches: Vec<Branch>,
+    /// A sweep's steps `(load, largest angle, upward)`, if one was run.
+    pub sweep: Vec<(f64, f64, bool)>,
+}
+
+impl BifurcationData {
+    /// The diagram over `load_range` of the column of `pencil`: the
+    /// straight column's stability there (its critical loads as `critical`
+    /// finds them), the branches followed from `onsets`, and `sweep`.
+    ///
+    /// # Errors
+    /// An eigenvalue computation that fails.
+    pub fn new(
+        pencil: &AffinePencil,
+        (lo, hi): (f64, f64),
+        onsets: &[Onset],
+        sweep: Vec<(f64, f64, bool)>,
+    ) -> Result<Self, AnalysisError> {
+        let first = pencil.spectrum(lo)?;
+        let first = classify(&first.eigenvalues, first.scale_per_s).state;
+        let transitions = critical_loads(pencil, lo, hi)?;
+        let equilibrium = stability_ranges(&transitions, first, lo, hi)
+            .into_iter()
+            .map(|(from, to, state)| (from, to, state == State::Stable))
+            .collect();
+        Ok(Self {
+            load_range: (lo, hi),
+            equilibrium,
+            branches: onsets
+                .iter()
+                .filter_map(|o| o.branch.clone().ok())
+                .collect(),
+            sweep,
+        })
+    }
+
+    /// The diagram's sheet on paper, in `words`.
+    #[must_use]
+    pub fn sheet(&self, words: &'static Words) -> Sheet {
+        Diagram {
+            load_range: self.load_range,
+            equilibrium: &self.equilibrium,
+            branches: self.branches.iter().collect(),
+            sweep: &self.sweep,
+            present: None,
+            words,
+        }
+        .sheet()
+    }
+}
 
 /// The window's present on the diagram.
 #[derive(Clone, Copy, Debug)]
@@ -42,10 +104,18 @@ impl Diagram<'_> {
         self.branches.iter().flat_map(|b| b.runs()).collect()
     }
 
+    /// The diagram and its legend.
+    #[must_use]
+    pub fn sheet(&self) -> Sheet {
+        Sheet {
+            legend: self.legend(),
+            plots: vec![self.plot()],
+        }
+    }
+
     /// The diagram: amplitudes up to a tenth above the largest
     /// (cycle, sweep or swing; a tenth of a radian where there is none).
-    #[must_use]
-    pub fn plot(&self) -> Plot {
+    fn plot(&self) -> Plot {
         let runs = self.runs();
         let highest = runs
             .iter()
@@ -139,8 +209,7 @@ impl Diagram<'_> {
     }
 
     /// The legend: what each line and marker drawn is.
-    #[must_use]
-    pub fn legend(&self) -> Vec<Entry> {
+    fn legend(&self) -> Vec<Entry> {
         let words = self.words;
         let flutter = Ink::State(State::Flutter);
         let runs = self.runs();

@@ -2,16 +2,19 @@
 //! and Re and Im of every eigenvalue against the load (the paper's Figs 3
 //! and 8), for the window (the present marked, the branches coloured by
 //! load) and for a printed figure (the critical loads marked, other models
-//! overlaid in series colours).
+//! overlaid in series colours); and a model's locus as a figure gathers it.
 
 use super::spec::{
-    Entry, FarLeft, Ink, Mark, Medium, OffView, Plot, Size, Swatch, Ticks, View, Weight,
+    Entry, FarLeft, Ink, Mark, Medium, OffView, Plot, Sheet, Size, Swatch, Ticks, View, Weight,
 };
 use super::view::{deciding_extent, versus_load_extent};
 use crate::analysis::{C64, Locus, State, Transition};
 use crate::format::number_text;
 use crate::i18n::{Words, state_name, transition_in, transition_text};
 use crate::tr;
+
+mod analysed;
+pub use analysed::Analysed;
 
 /// One model's locus and what was found on it.
 #[derive(Clone, Copy, Debug)]
@@ -34,20 +37,32 @@ pub struct Present<'a> {
     pub measured: Option<&'a [C64]>,
 }
 
-/// What the locus plots show: the main model, the models behind it (the
-/// window's one overlay, a figure's several), and for the window the present.
+/// What the locus plots show: the main model and the models behind it (the
+/// window's one overlay, a figure's several).
 #[derive(Clone, Debug)]
 pub struct Loci<'a> {
     pub main: Layer<'a>,
     pub others: Vec<Layer<'a>>,
-    /// `Some` in the window, `None` on paper.
-    pub present: Option<Present<'a>>,
+    /// The window (the present added by [`Present::mark`]) or paper.
+    pub medium: Medium,
     /// The language of the axes and the legends.
     pub words: &'static Words,
 }
 
+/// Which of the locus plots a sheet holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Part {
+    /// The complex plane.
+    Plane,
+    /// Re λ (top) and Im λ ≥ 0 (bottom) against the load.
+    VersusLoad,
+    /// All three, as the window's tab shows them.
+    All,
+}
+
 /// The plots' ids (their names for the views that keep state per plot,
 /// in no language).
+const PLANE: &str = "root locus";
 const RE: &str = "Re λ (1/s)";
 const IM: &str = "Im λ (rad/s)";
 
@@ -68,18 +83,31 @@ const DRAWN_GRID_POINTS: usize = 10_000;
 const MOST_LEGEND_LOADS: usize = 8;
 
 impl Loci<'_> {
-    fn medium(&self) -> Medium {
-        if self.present.is_some() {
-            Medium::Window
-        } else {
-            Medium::Paper
-        }
+    /// The plots `part` names with their legend: in the window the one
+    /// legend of the tab, on paper the figure's of the plane or of the
+    /// loads. The window's present is added by [`Present::mark`].
+    #[must_use]
+    pub fn sheet(&self, part: Part) -> Sheet {
+        let plots = match part {
+            Part::Plane => vec![self.plane()],
+            Part::VersusLoad => vec![self.versus_load(false), self.versus_load(true)],
+            Part::All => vec![
+                self.plane(),
+                self.versus_load(false),
+                self.versus_load(true),
+            ],
+        };
+        let legend = match self.medium {
+            Medium::Window => self.window_legend(),
+            Medium::Paper => self.paper_legend(part == Part::Plane),
+        };
+        Sheet { legend, plots }
     }
 
     /// The models in drawing order, each with its ink: the others behind,
     /// the main model in front.
     fn layers(&self) -> impl Iterator<Item = (&Layer<'_>, Ink)> {
-        let window = self.present.is_some();
+        let window = self.medium == Medium::Window;
         self.others
             .iter()
             .enumerate()
@@ -103,17 +131,16 @@ impl Loci<'_> {
     /// ones. On paper: open rings at the range's first load, the main
     /// model's eigenvalues at each critical load filled in the colour of
     /// the state entered.
-    #[must_use]
-    pub fn plane(&self) -> Plot {
+    fn plane(&self) -> Plot {
         let extent = self
             .layers()
             .map(|(layer, _)| deciding_extent(layer.locus))
             .fold((0.0, 0.0), |(re, im): (f64, f64), (r, i)| {
                 (re.max(r), im.max(i))
             });
-        let marks = match self.present {
-            Some(present) => self.window_plane_marks(present),
-            None => self.paper_plane_marks(),
+        let marks = match self.medium {
+            Medium::Window => self.window_plane_marks(),
+            Medium::Paper => self.paper_plane_marks(),
         };
         let far_left = self
             .layers()
@@ -137,7 +164,7 @@ impl Loci<'_> {
             })
             .collect();
         Plot {
-            id: "root locus",
+            id: PLANE,
             x_label: tr!(self.words, "axis-re"),
             y_label: tr!(self.words, "axis-im"),
             x_ticks: Ticks::Plain,
@@ -148,8 +175,8 @@ impl Loci<'_> {
     }
 
     /// The plane's marks in the window: the axis, the overlay's branches,
-    /// the main model's coloured by load, the present and the measured.
-    fn window_plane_marks(&self, present: Present<'_>) -> Vec<Mark> {
+    /// the main model's coloured by load.
+    fn window_plane_marks(&self) -> Vec<Mark> {
         let mut marks = Vec::new();
         marks.push(Mark::Vertical {
             x: 0.0,
@@ -169,22 +196,6 @@ impl Loci<'_> {
             }
         }
         marks.extend(self.banded_branches());
-        marks.push(Mark::Markers {
-            points: points(present.eigenvalues),
-            ink: Ink::Now,
-            size: Size::Regular,
-            filled: true,
-            off_view: OffView::EdgeMarked,
-        });
-        if let Some(measured) = present.measured {
-            marks.push(Mark::Markers {
-                points: points(measured),
-                ink: Ink::Measured,
-                size: Size::Large,
-                filled: false,
-                off_view: OffView::Hidden,
-            });
-        }
         marks
     }
 
@@ -270,11 +281,10 @@ impl Loci<'_> {
     /// drawn. Of Im the upper half only: the lower is its mirror image
     /// (conjugate pairs), and a chain's 32 branches in both halves were a
     /// blur.
-    #[must_use]
-    pub fn versus_load(&self, imaginary: bool) -> Plot {
+    fn versus_load(&self, imaginary: bool) -> Plot {
         let extent = versus_load_extent(self.layers().map(|(layer, _)| layer.locus), imaginary);
         let (p0, p1) = self.load_range();
-        let window = self.medium() == Medium::Window;
+        let window = self.medium == Medium::Window;
         let lowest = match (imaginary, window) {
             (false, _) => -1.1 * extent,
             (true, true) => -0.05 * extent,
@@ -330,15 +340,6 @@ impl Loci<'_> {
                 }
             }
         }
-        if let Some(present) = self.present {
-            marks.push(Mark::Vertical {
-                x: present.load,
-                name: tr!(self.words, "mark-load"),
-                ink: Ink::LoadLine,
-                weight: Weight::Regular,
-                dashed: false,
-            });
-        }
         let (id, label) = if imaginary {
             (IM, "axis-im")
         } else {
@@ -359,9 +360,9 @@ impl Loci<'_> {
     }
 
     /// The legend of the window's locus tab: what the colours, markers and
-    /// lines are, and the overlay's own critical loads.
-    #[must_use]
-    pub fn window_legend(&self) -> Vec<Entry> {
+    /// lines are, and the overlay's own critical loads (the measured
+    /// eigenvalues' entry is the present's, [`Present::mark`]).
+    fn window_legend(&self) -> Vec<Entry> {
         let words = self.words;
         let (min, max) = self.load_range();
         let scale = (0..8).map(|i| Ink::Along(f64::from(i) / 7.0)).collect();
@@ -380,12 +381,6 @@ impl Loci<'_> {
                 tr!(words, "legend-eigenvalues-now"),
             ),
         ];
-        if self.present.is_some_and(|p| p.measured.is_some()) {
-            entries.push(Entry::new(
-                Swatch::Marker(Ink::Measured, false),
-                tr!(words, "legend-measured"),
-            ));
-        }
         entries.push(Entry::new(
             Swatch::Line(Ink::LoadLine),
             tr!(words, "legend-current-load"),
@@ -413,8 +408,7 @@ impl Loci<'_> {
     /// against the load: each model's curve, the plane's open rings, the
     /// main model's critical loads (at most [`MOST_LEGEND_LOADS`], the rest
     /// counted) and, against the load, the states its ranges are tinted in.
-    #[must_use]
-    pub fn paper_legend(&self, plane: bool) -> Vec<Entry> {
+    fn paper_legend(&self, plane: bool) -> Vec<Entry> {
         let mark = |ink: Ink| {
             if plane {
                 Swatch::Marker(ink, true)
@@ -461,6 +455,60 @@ impl Loci<'_> {
     }
 }
 
+impl Present<'_> {
+    /// Adds the present to a window's `sheet` of the locus: the current
+    /// eigenvalues (marked on the edge when off the view) and the measured
+    /// ones on the plane, the current load on the plots against the load,
+    /// and the measured eigenvalues' legend entry after the current ones'.
+    /// The rest of the sheet depends on the analysis only, so the window
+    /// keeps it from frame to frame.
+    pub fn mark(&self, sheet: &mut Sheet, words: &'static Words) {
+        for plot in &mut sheet.plots {
+            if plot.id == PLANE {
+                plot.marks.push(Mark::Markers {
+                    points: points(self.eigenvalues),
+                    ink: Ink::Now,
+                    size: Size::Regular,
+                    filled: true,
+                    off_view: OffView::EdgeMarked,
+                });
+                if let Some(measured) = self.measured {
+                    plot.marks.push(Mark::Markers {
+                        points: points(measured),
+                        ink: Ink::Measured,
+                        size: Size::Large,
+                        filled: false,
+                        off_view: OffView::Hidden,
+                    });
+                }
+            } else {
+                plot.marks.push(Mark::Vertical {
+                    x: self.load,
+                    name: tr!(words, "mark-load"),
+                    ink: Ink::LoadLine,
+                    weight: Weight::Regular,
+                    dashed: false,
+                });
+            }
+        }
+        if self.measured.is_some() {
+            let now = Swatch::Marker(Ink::Now, true);
+            let after = sheet
+                .legend
+                .iter()
+                .position(|entry| entry.swatch == now)
+                .map_or(0, |i| i + 1);
+            sheet.legend.insert(
+                after,
+                Entry::new(
+                    Swatch::Marker(Ink::Measured, false),
+                    tr!(words, "legend-measured"),
+                ),
+            );
+        }
+    }
+}
+
 /// Eigenvalues as points of the plane.
 fn points(eigenvalues: &[C64]) -> Vec<[f64; 2]> {
     eigenvalues.iter().map(|z| [z.re, z.im]).collect()
@@ -497,93 +545,4 @@ fn fraction(load: f64, min: f64, max: f64) -> f64 {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::analysis::{AffinePencil, AlongLoad, Unresolved, plotted_locus};
-    use crate::model::PresetId;
-
-    /// The tinted ranges of a plot, in order.
-    fn ranges(plot: &Plot) -> Vec<(f64, f64, State)> {
-        plot.marks
-            .iter()
-            .filter_map(|mark| match mark {
-                Mark::Range { from, to, state } => Some((*from, *to, *state)),
-                _ => None,
-            })
-            .collect()
-    }
-
-    /// Ziegler's column (equal masses and springs, undamped) flutters at
-    /// p = 7/2 - sqrt 2 and diverges at 7/2 + sqrt 2. The window and a figure
-    /// of its locus hold the same eigenvalues in view, tint the same ranges,
-    /// bounded by those loads; the figure dashes a line at each, the window
-    /// draws the current load instead.
-    #[test]
-    fn the_window_and_a_figure_describe_the_same_locus() {
-        let model = PresetId::Ziegler1952.model();
-        let pencil = AffinePencil::new(&model).unwrap();
-        let locus = plotted_locus(&pencil, 0.0, model.load_bar_max_p()).unwrap();
-        let along = AlongLoad::new(&pencil, locus, Unresolved::Dropped).unwrap();
-        let layer = Layer {
-            name: "ziegler-1952",
-            locus: &along.locus,
-            transitions: &along.transitions,
-            ranges: &along.ranges,
-            at_transitions: &[],
-        };
-        let now = pencil.spectrum(1.0).unwrap().eigenvalues;
-        let paper = Loci {
-            main: layer,
-            others: Vec::new(),
-            present: None,
-            words: crate::i18n::words(crate::i18n::Language::English),
-        };
-        let window = Loci {
-            present: Some(Present {
-                load: 1.0,
-                eigenvalues: &now,
-                measured: None,
-            }),
-            ..paper.clone()
-        };
-        assert_eq!(paper.plane().view, window.plane().view);
-        let onsets = [
-            (3.5 - 2f64.sqrt(), State::Flutter),
-            (3.5 + 2f64.sqrt(), State::Divergence),
-        ];
-        for imaginary in [false, true] {
-            let (on_paper, on_screen) =
-                (paper.versus_load(imaginary), window.versus_load(imaginary));
-            let tinted = ranges(&on_paper);
-            assert_eq!(tinted, ranges(&on_screen));
-            assert_eq!(tinted.len(), 3);
-            for ((load, state), pair) in onsets.iter().zip(tinted.windows(2)) {
-                assert!((pair[0].1 - load).abs() < 1e-9 && pair[1].0 == pair[0].1);
-                assert_eq!(pair[1].2, *state);
-                assert!(on_paper.marks.iter().any(|mark| matches!(
-                    mark,
-                    Mark::Vertical { x, ink: Ink::State(s), dashed: true, .. }
-                        if (x - load).abs() < 1e-9 && s == state
-                )));
-            }
-            let current = |plot: &Plot| {
-                plot.marks.iter().any(|mark| {
-                    matches!(mark, Mark::Vertical { ink: Ink::LoadLine, x, .. } if *x == 1.0)
-                })
-            };
-            assert!(current(&on_screen) && !current(&on_paper));
-            let (View::Ranges { x: px, y: py }, View::Ranges { x: wx, y: wy }) =
-                (on_paper.view, on_screen.view)
-            else {
-                panic!("plots against the load have ranges");
-            };
-            assert_eq!((px, py.1), (wx, wy.1));
-        }
-        // The plane's view holds the eigenvalues at the flutter onset.
-        let View::Equal { extent } = window.plane().view else {
-            panic!("the plane has equal scales");
-        };
-        let at_onset = pencil.spectrum(onsets[0].0).unwrap().eigenvalues;
-        assert!(at_onset.iter().all(|z| z.im.abs() <= extent.1 + 1e-12));
-    }
-}
+mod tests;

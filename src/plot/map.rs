@@ -8,7 +8,9 @@ use crate::tr;
 use std::sync::Arc;
 
 use super::map_words;
-use super::spec::{CellGrid, Entry, Ink, Mark, OffView, Plot, Size, Swatch, Ticks, View, Weight};
+use super::spec::{
+    CellGrid, Entry, Ink, Mark, OffView, Plot, Sheet, Size, Swatch, Ticks, View, Weight,
+};
 use crate::analysis::{MapSpec, Row, RowResult, State, map_boundaries};
 use crate::format::number_text;
 use crate::model::Axis;
@@ -63,6 +65,29 @@ pub fn rate_strength(growth_per_s: f64, largest_per_s: f64) -> f64 {
         (growth_per_s.abs() / largest_per_s).sqrt().clamp(0.0, 1.0)
     } else {
         0.0
+    }
+}
+
+/// A computed map as a figure draws it: what was asked and every row's
+/// answer.
+#[derive(Clone, Debug)]
+pub struct MapData {
+    pub spec: MapSpec,
+    pub rows: Vec<Option<RowResult>>,
+}
+
+impl MapData {
+    /// The map's sheet on paper, in `words`.
+    #[must_use]
+    pub fn sheet(&self, words: &'static Words) -> Sheet {
+        StabilityMap {
+            spec: &self.spec,
+            rows: &self.rows,
+            grid: Arc::new(CellGrid::new(&self.spec, &self.rows)),
+            now: None,
+            words,
+        }
+        .sheet()
     }
 }
 
@@ -125,9 +150,17 @@ impl StabilityMap<'_> {
         ((p0 - hx, p1 + hx), (y0 - hy, y1 + hy))
     }
 
-    /// The map: the cells, the boundaries, the current point.
+    /// The map and its key.
     #[must_use]
-    pub fn plot(&self) -> Plot {
+    pub fn sheet(&self) -> Sheet {
+        Sheet {
+            legend: self.legend(),
+            plots: vec![self.plot()],
+        }
+    }
+
+    /// The map: the cells, the boundaries, the current point.
+    fn plot(&self) -> Plot {
         let (x, y) = self.extent();
         let mut marks = vec![Mark::Cells {
             x,
@@ -175,8 +208,7 @@ impl StabilityMap<'_> {
 
     /// The key: the states met, rows without analysis, the colours'
     /// strength, the critical loads and the current point.
-    #[must_use]
-    pub fn legend(&self) -> Vec<Entry> {
+    fn legend(&self) -> Vec<Entry> {
         let cells = &self.grid.cells;
         let mut entries: Vec<Entry> = [State::Stable, State::Flutter, State::Divergence]
             .into_iter()

@@ -2,10 +2,15 @@
 //! swept ratio on a log axis, one curve per damping level (or band speed),
 //! the undamped (or massless) reference dashed, and the model's own point.
 
-use super::spec::{Entry, Ink, Mark, OffView, Plot, Size, Swatch, Ticks, View, Weight};
-use crate::analysis::{CurveName, Curves, ReferenceName, SweptRatio};
+use std::sync::atomic::AtomicBool;
+
+use super::spec::{Entry, Ink, Mark, OffView, Plot, Sheet, Size, Swatch, Ticks, View, Weight};
+use crate::analysis::{
+    CurveName, Curves, DampingKind, ReferenceName, SweptRatio, own_point, paradox_curves,
+};
 use crate::format::{load_text, number_text};
 use crate::i18n::Words;
+use crate::model::Model;
 use crate::tr;
 
 /// The plot's height over its highest point.
@@ -14,6 +19,38 @@ const HEADROOM: f64 = 1.1;
 /// Room left and right of the curves, as a fraction of their extent (the
 /// first decade's label clear of the load axis's zero).
 const SIDE_ROOM: f64 = 0.02;
+
+/// The explorer's curves and the model's own point `[log10 ratio, load]`,
+/// gathered as a figure gathers them (the window's tab finds the same two
+/// in the background).
+#[derive(Clone, Debug)]
+pub struct ParadoxData {
+    pub curves: Curves,
+    pub here: Option<[f64; 2]>,
+}
+
+impl ParadoxData {
+    /// The curves of `model` for damping of `kind` (the roller's: its mass
+    /// ratio and band speed), and the model's own first critical load,
+    /// computed on `threads`.
+    #[must_use]
+    pub fn new(model: &Model, kind: DampingKind, threads: usize) -> Self {
+        let curves = paradox_curves(model, kind, threads, &AtomicBool::new(false));
+        let here = own_point(model, kind, None, threads);
+        Self { curves, here }
+    }
+
+    /// The curves' sheet in `words`.
+    #[must_use]
+    pub fn sheet(&self, words: &'static Words) -> Sheet {
+        Paradox {
+            curves: &self.curves,
+            here: self.here,
+            words,
+        }
+        .sheet()
+    }
+}
 
 /// The curves and the model's own point `[log10 ratio, load]`, if it has one.
 #[derive(Clone, Copy, Debug)]
@@ -64,11 +101,20 @@ impl Paradox<'_> {
         })
     }
 
+    /// The legend and the plot; no plot when the curves have no extent
+    /// along the ratio.
+    #[must_use]
+    pub fn sheet(&self) -> Sheet {
+        Sheet {
+            legend: self.legend(),
+            plots: self.plot().into_iter().collect(),
+        }
+    }
+
     /// The plot, fitted to the curves and the model's point (the reference
     /// line only when it lies near them: [`Curves::fitted_top`]); `None`
     /// when the curves have no extent along the ratio.
-    #[must_use]
-    pub fn plot(&self) -> Option<Plot> {
+    fn plot(&self) -> Option<Plot> {
         let curves = self.curves;
         let (x0, x1) = curves
             .lines
@@ -136,8 +182,7 @@ impl Paradox<'_> {
 
     /// The legend: each curve, the reference (said to lie above the axis
     /// when it is not drawn) and the model's own load.
-    #[must_use]
-    pub fn legend(&self) -> Vec<Entry> {
+    fn legend(&self) -> Vec<Entry> {
         let curves = self.curves;
         let mut entries: Vec<Entry> = curves
             .lines

@@ -204,3 +204,12 @@ pub struct FarLeft {
     pub x: f64,
     pub note: String,
 }
+
+/// What one view of a plot kind shows, in either medium: its legend and
+/// its plots. Every builder of [`super`] returns one; the window and the
+/// figures draw it as it is.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sheet {
+    pub legend: Vec<Entry>,
+    pub plots: Vec<Plot>,
+}

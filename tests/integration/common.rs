@@ -200,3 +200,32 @@ pub fn output_within(
         stderr: err_reader.join().unwrap().unwrap(),
     }
 }
+
+/// The analysis of `model` (named `name`) from load 0 to `load_max`, as a
+/// figure gathers it.
+pub fn analysed_to(
+    name: &str,
+    model: &Model,
+    load_max: f64,
+) -> Result<zieglerlab::plot::locus::Analysed, zieglerlab::analysis::AnalysisError> {
+    zieglerlab::plot::locus::Analysed::new(name, model, (0.0, load_max), 2)
+}
+
+/// A figure's sheet of the locus `part` of `main` with `overlays` behind,
+/// in English.
+pub fn paper_loci(
+    main: &zieglerlab::plot::locus::Analysed,
+    overlays: &[zieglerlab::plot::locus::Analysed],
+    part: zieglerlab::plot::locus::Part,
+) -> zieglerlab::plot::spec::Sheet {
+    zieglerlab::plot::locus::Loci {
+        main: main.layer(),
+        others: overlays
+            .iter()
+            .map(zieglerlab::plot::locus::Analysed::layer)
+            .collect(),
+        medium: zieglerlab::plot::spec::Medium::Paper,
+        words: zieglerlab::i18n::words(zieglerlab::i18n::Language::English),
+    }
+    .sheet(part)
+}

@@ -369,7 +369,8 @@ fn a_sweep_down_follows_the_stable_cycle_and_comes_to_rest_below_the_onset() {
 
 #[test]
 fn the_diagram_figure_draws_each_cycle_at_its_amplitude() {
-    use zieglerlab::figure::{BifurcationData, Content, Format, Page, render};
+    use zieglerlab::figure::{Format, Page, render};
+    use zieglerlab::plot::bifurcation::BifurcationData;
     let m = damped_ziegler();
     let branch = first_branch(&m, 1.6, 3.0);
     let onset = branch.hopf().load;
@@ -379,8 +380,8 @@ fn the_diagram_figure_draws_each_cycle_at_its_amplitude() {
         branches: vec![branch.clone()],
         sweep: Vec::new(),
     };
-    let rendered =
-        render(&Content::Bifurcation(&data), &Page::default(), Format::Png).expect("a figure");
+    let sheet = data.sheet(zieglerlab::i18n::words(zieglerlab::i18n::Language::English));
+    let rendered = render(&sheet, &Page::default(), Format::Png).expect("a figure");
     let image = image::load_from_memory(&rendered.bytes)
         .expect("a PNG")
         .to_rgb8();

@@ -5,13 +5,15 @@
 //! critical loads; the SVG has the page's size in millimetres and the words.
 
 use crate::cli::{run, stdout};
-use crate::common::{model, transitions};
+use crate::common::{analysed_to, model, paper_loci, transitions};
 use zieglerlab::analysis::{DampingKind, MapSpec, State, compute_map};
-use zieglerlab::figure::{
-    Analysed, Content, Format, MapData, Page, ParadoxData, Rendered, analyse, render,
-};
+use zieglerlab::figure::{Format, Page, Rendered, render};
+use zieglerlab::i18n::{Language, words};
 use zieglerlab::model::Axis;
+use zieglerlab::plot::locus::{Analysed, Part};
+use zieglerlab::plot::map::MapData;
 use zieglerlab::plot::map_words::state_words;
+use zieglerlab::plot::paradox::ParadoxData;
 use zieglerlab::plot::spec::CellGrid;
 use zieglerlab::plot::{Palette, Rgb};
 
@@ -69,7 +71,7 @@ fn is_deep(color: [u8; 3], state: State) -> bool {
 /// The analysis of a preset over the load bar's range.
 fn analysed(name: &str, sets: &[&str]) -> Analysed {
     let m = model(name, sets);
-    analyse(name, &m, 0.0, m.load_bar_max_p()).expect("an analysis")
+    analysed_to(name, &m, m.load_bar_max_p()).expect("an analysis")
 }
 
 #[test]
@@ -85,10 +87,7 @@ fn re_im_figure_marks_the_critical_loads_where_critical_finds_them() {
     }
     assert!((main.transitions[0].load - onset).abs() < 1e-10);
     let overlays = [analysed("uniform-rods", &[])];
-    let content = Content::ReIm {
-        main: &main,
-        overlays: &overlays,
-    };
+    let content = paper_loci(&main, &overlays, Part::VersusLoad);
     let page = Page::default();
     let png = render(&content, &page, Format::Png).unwrap();
     let image = pixels(&png);
@@ -148,10 +147,7 @@ fn locus_figure_puts_the_flutter_onset_on_the_imaginary_axis_at_its_frequency() 
         "{at_onset:?} vs ±{omega}i"
     );
     let rendered = render(
-        &Content::Locus {
-            main: &main,
-            overlays: &[],
-        },
+        &paper_loci(&main, &[], Part::Plane),
         &Page::default(),
         Format::Png,
     )
@@ -197,7 +193,8 @@ fn map_figure_draws_each_cell_in_its_state_and_the_boundaries_on_the_critical_lo
         spec: spec.clone(),
         rows: rows.into_inner().unwrap(),
     };
-    let rendered = render(&Content::Map(&data), &Page::default(), Format::Png).unwrap();
+    let sheet = data.sheet(words(Language::English));
+    let rendered = render(&sheet, &Page::default(), Format::Png).unwrap();
     let image = pixels(&rendered);
     let panel = &rendered.panels[0];
     let loads = spec.load_grid().unwrap();
@@ -258,12 +255,13 @@ fn map_figure_draws_each_cell_in_its_state_and_the_boundaries_on_the_critical_lo
 #[test]
 fn paradox_figure_names_the_undamped_load_and_draws_it_at_its_height() {
     let m = model("ziegler-1952", &["c1=0.001", "c2=0.001"]);
-    let data = ParadoxData::new(&m, DampingKind::Joints);
+    let data = ParadoxData::new(&m, DampingKind::Joints, 2);
     let (_, undamped) = data.curves.reference.expect("the undamped load");
     assert!((undamped - (3.5 - 2f64.sqrt())).abs() < 1e-9);
     let here = data.here.expect("the model's own point");
-    assert!(here.0.abs() < 1e-12, "c1/c2 = 1 is log10 0");
-    let rendered = render(&Content::Paradox(&data), &Page::default(), Format::Png).unwrap();
+    assert!(here[0].abs() < 1e-12, "c1/c2 = 1 is log10 0");
+    let sheet = data.sheet(words(Language::English));
+    let rendered = render(&sheet, &Page::default(), Format::Png).unwrap();
     let image = pixels(&rendered);
     let panel = &rendered.panels[0];
     // The reference is a black dashed line across the plot.
@@ -277,10 +275,10 @@ fn paradox_figure_names_the_undamped_load_and_draws_it_at_its_height() {
         })
         .count();
     assert!(black > 10, "{black} of 39 points on the undamped line");
-    let svg = render(&Content::Paradox(&data), &Page::default(), Format::Svg).unwrap();
+    let svg = render(&sheet, &Page::default(), Format::Svg).unwrap();
     let text = String::from_utf8(svg.bytes).unwrap();
     assert!(text.contains("undamped: p = 2.0858"));
-    assert!(text.contains(&format!("this model: p = {:.4}", here.1)));
+    assert!(text.contains(&format!("this model: p = {:.4}", here[1])));
 }
 
 #[test]
@@ -370,4 +368,47 @@ fn the_readme_figure_and_note_are_what_the_commands_make() {
     ]);
     assert_eq!(String::from_utf8_lossy(&said.stderr).trim_end(), shown);
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `figure --kind bifurcation` is the diagram `bifurcation --format png`
+/// draws, through the same sheet and page: byte for byte the same PNG,
+/// and the same onset said on stderr.
+#[test]
+fn the_bifurcation_figure_is_the_diagram_bifurcation_draws() {
+    let folder = tempfile::tempdir().unwrap();
+    let (figure, diagram) = (folder.path().join("f.png"), folder.path().join("d.png"));
+    let damped = [
+        "--preset",
+        "ziegler-1952",
+        "--set",
+        "c1=0.3",
+        "--set",
+        "c2=0.3",
+    ];
+    let mut args = vec!["figure"];
+    args.extend(damped);
+    args.extend([
+        "--kind",
+        "bifurcation",
+        "--load-min",
+        "1.6",
+        "--load-max",
+        "3",
+    ]);
+    args.extend(["--out", figure.to_str().unwrap()]);
+    let drawn = run(&args);
+    assert!(drawn.status.success(), "{drawn:?}");
+    let mut args = vec!["bifurcation"];
+    args.extend(damped);
+    args.extend(["--x", "load:1.6:3:8", "--format", "png"]);
+    args.extend(["--out", diagram.to_str().unwrap()]);
+    let computed = run(&args);
+    assert!(computed.status.success(), "{computed:?}");
+    assert_eq!(
+        std::fs::read(&figure).unwrap(),
+        std::fs::read(&diagram).unwrap()
+    );
+    let said = String::from_utf8_lossy(&drawn.stderr);
+    assert!(said.contains("cycle-1: soft onset at p = "), "{said}");
+    assert_eq!(said, String::from_utf8_lossy(&computed.stderr));
 }

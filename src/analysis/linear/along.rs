@@ -3,13 +3,14 @@
 //! critical loads found on it, the ranges of each state, and why they
 //! cannot be trusted where they cannot.
 
-use super::critical::critical_loads_along;
+use super::critical::{critical_loads_along, plotted_locus};
 use super::crossing::{Transition, stability_ranges};
-use super::locus::Locus;
+use super::locus::{Locus, locus};
 use super::pencil::AffinePencil;
 use super::resolution::{NotResolved, resolution_warning};
 use super::stability::{State, classify};
 use crate::analysis::AnalysisError;
+use crate::model::AsValid;
 
 /// What a locus says about stability along its loads.
 #[derive(Clone, Debug)]
@@ -34,7 +35,43 @@ pub enum Unresolved {
     Dropped,
 }
 
+/// Where the loads of a locus lie.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Sampling {
+    /// This many evenly spaced loads and the refinement's (the window's
+    /// load bar).
+    Even(usize),
+    /// [`plotted_locus`]'s: the loads `critical` brackets with (evenly
+    /// over the column's natural range, by decades beyond), every axis
+    /// crossing refined (a figure's).
+    Plotted,
+}
+
 impl AlongLoad {
+    /// The pipeline every root locus goes through: `model`'s pencil,
+    /// solving on `threads`, and the stability along its locus over
+    /// `loads`, sampled as `sampling` says.
+    ///
+    /// # Errors
+    /// A model the pencil refuses, a bad range, or an eigenvalue
+    /// computation that fails.
+    pub fn of_model(
+        model: &impl AsValid,
+        loads: (f64, f64),
+        sampling: Sampling,
+        unresolved: Unresolved,
+        threads: usize,
+    ) -> Result<(AffinePencil, Self), AnalysisError> {
+        let pencil = AffinePencil::new(model)?.with_threads(threads);
+        let (min, max) = loads;
+        let locus = match sampling {
+            Sampling::Even(samples) => locus(&pencil, min, max, samples)?,
+            Sampling::Plotted => plotted_locus(&pencil, min, max)?,
+        };
+        let along = Self::new(&pencil, locus, unresolved)?;
+        Ok((pencil, along))
+    }
+
     /// The stability of `pencil`'s model along `locus`.
     ///
     /// # Errors

@@ -2,10 +2,8 @@
 //! model's (the paper's Fig. 8 sets the ideal column beside the roller).
 
 use super::AppState;
-use crate::analysis::{
-    AffinePencil, AlongLoad, AnalysisError, Locus, Transition, Unresolved, locus,
-};
-use crate::app::analysis_cache::LOCUS_SAMPLES;
+use crate::analysis::{AlongLoad, AnalysisError, Locus, Transition};
+use crate::app::analysis_cache::window_locus;
 use crate::app::jobs::Jobs;
 use crate::app::notice::Notice;
 use crate::model::{Assignment, Key, ModelError, PresetId, apply_assignments};
@@ -45,17 +43,26 @@ fn build(id: PresetId, a: f64) -> Result<Overlay, OverlayError> {
             value: a,
         }],
     )?;
-    let pencil = AffinePencil::new(&valid)?.with_threads(crate::machine_threads());
-    let locus = locus(&pencil, 0.0, model.load_bar_max_p(), LOCUS_SAMPLES)?;
-    let AlongLoad {
-        locus, transitions, ..
-    } = AlongLoad::new(&pencil, locus, Unresolved::Kept)?;
+    let (
+        _,
+        AlongLoad {
+            locus, transitions, ..
+        },
+    ) = window_locus(&valid)?;
     Ok(Overlay {
         preset: id,
         a,
         locus,
         transitions,
     })
+}
+
+impl Overlay {
+    /// The group `a` the locus was computed with.
+    #[must_use]
+    pub fn a(&self) -> f64 {
+        self.a
+    }
 }
 
 impl AppState {

@@ -7,7 +7,6 @@ use crate::tr;
 use eframe::egui::{self, vec2};
 
 use super::{TabSpec, TabView, save_buttons};
-use crate::analysis::C64;
 use crate::app::View;
 use crate::app::action::{Actions, Table};
 use crate::app::plot_draw::{legend_ui, plot_ui};
@@ -15,8 +14,10 @@ use crate::app::plot_frame::Fit;
 use crate::app::state::AppState;
 use crate::app::theme::Theme;
 use crate::format::number_text;
+use crate::i18n::Language;
 use crate::model::{Model, PresetId};
-use crate::plot::locus::{Layer, Loci, Present};
+use crate::plot::locus::{Layer, Loci, Part, Present};
+use crate::plot::spec::{Medium, Sheet};
 
 pub const TAB: TabSpec = TabSpec {
     tab: super::Tab::Locus,
@@ -30,6 +31,8 @@ pub const TAB: TabSpec = TabSpec {
 #[derive(Default)]
 pub struct LocusTab {
     fit: Fit<(u64, Model, Option<PresetId>)>,
+    /// The sheet without the present, and what it was built for.
+    sheet: Option<(SheetKey, Sheet)>,
 }
 
 impl TabView for LocusTab {}
@@ -69,21 +72,23 @@ impl View for LocusTab {
             *analysis.key,
             overlay.map(|o| o.preset),
         ));
-        let current = state.current_eigenvalues();
-        let name = overlay_name(state);
-        let loci = loci(state, &current, name.as_deref());
-        let Some(loci) = loci else { return };
-        legend_ui(ui, &loci.window_legend(), theme);
+        let Some(sheet) = self.sheet(state) else {
+            return;
+        };
+        legend_ui(ui, &sheet.legend, theme);
         let width = ui.available_width();
         let height = ui.available_height();
+        let [plane, re, im] = &sheet.plots[..] else {
+            return;
+        };
         ui.horizontal(|ui| {
             ui.allocate_ui(vec2(0.42 * width, height), |ui| {
-                plot_ui(ui, &loci.plane(), refit, theme);
+                plot_ui(ui, plane, refit, theme);
             });
             ui.vertical(|ui| {
-                for imaginary in [false, true] {
+                for plot in [re, im] {
                     ui.allocate_ui(vec2(ui.available_width(), 0.5 * height - 4.0), |ui| {
-                        plot_ui(ui, &loci.versus_load(imaginary), refit, theme);
+                        plot_ui(ui, plot, refit, theme);
                     });
                 }
             });
@@ -111,50 +116,71 @@ impl LocusTab {
             from = number_text(loads.first().copied().unwrap_or(0.0)),
             to = number_text(loads.last().copied().unwrap_or(0.0))
         ));
-        let current = state.current_eigenvalues();
-        let name = overlay_name(state);
-        if let Some(loci) = loci(state, &current, name.as_deref()) {
-            plot_ui(ui, &loci.plane(), refit, theme);
+        if let Some(sheet) = self.sheet(state)
+            && let Some(plane) = sheet.plots.first()
+        {
+            plot_ui(ui, plane, refit, theme);
         }
+    }
+
+    /// The locus plots of `state`'s analysis with the overlay behind it and
+    /// the present marked; `None` without an analysis. What depends on the
+    /// analysis alone (up to 30,000 points for a long chain) is built once
+    /// per analysis, overlay and language and kept; each frame adds the
+    /// present to a copy.
+    fn sheet(&mut self, state: &AppState) -> Option<Sheet> {
+        let analysis = state.analysis()?;
+        let overlay = state.overlay();
+        let key = SheetKey {
+            model: *analysis.key,
+            overlay: overlay.map(|o| (o.preset, o.a())),
+            language: state.language(),
+        };
+        if self.sheet.as_ref().is_none_or(|(k, _)| *k != key) {
+            let name = overlay.map(|o| o.preset.to_string());
+            let main = Layer {
+                name: "",
+                locus: &analysis.locus,
+                transitions: &analysis.transitions,
+                ranges: &analysis.ranges,
+                at_transitions: &[],
+            };
+            let others = overlay
+                .zip(name.as_deref())
+                .map(|(o, name)| Layer {
+                    name,
+                    locus: &o.locus,
+                    transitions: &o.transitions,
+                    ranges: &[],
+                    at_transitions: &[],
+                })
+                .into_iter()
+                .collect();
+            let loci = Loci {
+                main,
+                others,
+                medium: Medium::Window,
+                words: state.words(),
+            };
+            self.sheet = Some((key, loci.sheet(Part::All)));
+        }
+        let mut sheet = self.sheet.as_ref()?.1.clone();
+        let current = state.current_eigenvalues();
+        Present {
+            load: state.model().load_p(),
+            eigenvalues: &current,
+            measured: state.measured(),
+        }
+        .mark(&mut sheet, state.words());
+        Some(sheet)
     }
 }
 
-/// The overlay's name, if one is drawn.
-fn overlay_name(state: &AppState) -> Option<String> {
-    state.overlay().map(|o| o.preset.to_string())
-}
-
-/// The locus plots of `state`'s analysis, the overlay (named `overlay`)
-/// behind it, the present marked; `None` without an analysis.
-fn loci<'a>(state: &'a AppState, current: &'a [C64], overlay: Option<&'a str>) -> Option<Loci<'a>> {
-    let analysis = state.analysis()?;
-    let main = Layer {
-        name: "",
-        locus: &analysis.locus,
-        transitions: &analysis.transitions,
-        ranges: &analysis.ranges,
-        at_transitions: &[],
-    };
-    let others = state
-        .overlay()
-        .zip(overlay)
-        .map(|(o, name)| Layer {
-            name,
-            locus: &o.locus,
-            transitions: &o.transitions,
-            ranges: &[],
-            at_transitions: &[],
-        })
-        .into_iter()
-        .collect();
-    Some(Loci {
-        main,
-        others,
-        present: Some(Present {
-            load: state.model().load_p(),
-            eigenvalues: current,
-            measured: state.measured(),
-        }),
-        words: state.words(),
-    })
+/// What the kept sheet was built for: the analysis (of the model at load
+/// 0), the overlay (its preset and group `a`) and the language.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct SheetKey {
+    model: Model,
+    overlay: Option<(PresetId, f64)>,
+    language: Language,
 }

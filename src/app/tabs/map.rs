@@ -323,14 +323,15 @@ impl MapPanel {
         self.fit
             .bar_ui(ui, for_picture, |ui| save_buttons(ui, None, actions));
         let spec = &job.spec;
-        let map = StabilityMap {
+        let sheet = StabilityMap {
             spec,
             rows: &job.rows,
             grid,
             now: Some([model.load_p(), spec.axis.get(model)]),
             words: ui.words(),
-        };
-        legend_ui(ui, &map.legend(), theme);
+        }
+        .sheet();
+        legend_ui(ui, &sheet.legend, theme);
         if !for_picture {
             readout_ui(ui, self.hovered.as_ref(), spec.axis.name(), theme);
         }
@@ -340,7 +341,7 @@ impl MapPanel {
             spec.axis_range,
             spec.load_range,
         ));
-        let response = plot_ui(ui, &map.plot(), refit, theme);
+        let response = plot_ui(ui, sheet.plots.first()?, refit, theme);
         let (click, double, pointer) = clicked(&response, spec);
         let hovered = pointer.and_then(|point| cell_at(spec, &job.rows, point.x, point.y));
         if hovered != self.hovered {

@@ -209,15 +209,16 @@ impl ParadoxPanel {
         self.fit
             .bar_ui(ui, for_picture, |ui| save_buttons(ui, None, actions));
         let refit = self.fit.refit((self.generation, *curves_key));
-        let paradox = Paradox {
+        let sheet = Paradox {
             curves,
             here,
             words,
-        };
-        legend_ui(ui, &paradox.legend(), theme);
-        match paradox.plot() {
+        }
+        .sheet();
+        legend_ui(ui, &sheet.legend, theme);
+        match sheet.plots.first() {
             Some(plot) => {
-                plot_ui(ui, &plot, refit, theme);
+                plot_ui(ui, plot, refit, theme);
             }
             None => {
                 ui.colored_label(theme.warning, tr!(words, "paradox-no-extent"));

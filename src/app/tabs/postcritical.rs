@@ -169,7 +169,7 @@ impl View for PostCriticalPanel {
         // the roller's branch (p = 0.0238 to 0.0441) was a sliver at the
         // left of a 0 to 8 axis.
         let reach = cycles_reach(&branches, key.1).unwrap_or(key.1.max(load));
-        let diagram = bifurcation::Diagram {
+        let sheet = bifurcation::Diagram {
             load_range: (0.0, reach),
             equilibrium: &equilibrium,
             branches,
@@ -180,9 +180,12 @@ impl View for PostCriticalPanel {
                 swing_rad: swing,
             }),
             words: state.words(),
-        };
-        legend_ui(ui, &diagram.legend(), theme);
-        plot_ui(ui, &diagram.plot(), refit, theme);
+        }
+        .sheet();
+        legend_ui(ui, &sheet.legend, theme);
+        for plot in &sheet.plots {
+            plot_ui(ui, plot, refit, theme);
+        }
     }
 }
 

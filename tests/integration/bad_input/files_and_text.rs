@@ -5,11 +5,13 @@
 //! changes of state that rounding makes, not listed as found.
 
 use crate::common::message_line;
+use crate::common::{analysed_to, paper_loci};
 use eframe::egui;
 use egui_kittest::kittest::Queryable as _;
 use zieglerlab::app::{Settings, ZieglerApp};
-use zieglerlab::figure::{Content, Format, Page, analyse, render};
+use zieglerlab::figure::{Format, Page, render};
 use zieglerlab::model::PresetId;
+use zieglerlab::plot::locus::Part;
 
 use crate::app_input::harness_at;
 use crate::app_tools::paste_from_clipboard;
@@ -120,7 +122,7 @@ fn a_stream_named_by_a_path_is_written_where_the_shell_opened_it() {
 #[test]
 fn figures_take_the_loads_and_the_range_rules_of_critical() {
     let beck = model("beck", &[]);
-    let wide = analyse("beck", &beck, 0.0, 1e6).expect("an analysis");
+    let wide = analysed_to("beck", &beck, 1e6).expect("an analysis");
     let found = zieglerlab::analysis::critical_loads(
         &zieglerlab::analysis::AffinePencil::new(&beck).unwrap(),
         0.0,
@@ -138,19 +140,15 @@ fn figures_take_the_loads_and_the_range_rules_of_critical() {
         assert_eq!(drawn.load, found.load);
     }
     assert!(wide.warning.is_none());
-    let content = Content::ReIm {
-        main: &wide,
-        overlays: &[],
-    };
+    let content = paper_loci(&wide, &[], Part::VersusLoad);
     let page = Page {
         width_mm: 85.0,
         height_mm: 93.5,
         font_pt: 8.0,
         dpi: 150.0,
-        ..Page::default()
     };
     render(&content, &page, Format::Png).expect("the legend fits");
-    let refused = analyse("beck", &beck, 0.0, 1e300).unwrap_err().to_string();
+    let refused = analysed_to("beck", &beck, 1e300).unwrap_err().to_string();
     assert!(
         refused.contains("load-max = 1e300: must be at most 1e150"),
         "{refused}"
@@ -160,7 +158,7 @@ fn figures_take_the_loads_and_the_range_rules_of_critical() {
         ("ziegler-1952", &["l2=1e74"][..]),
     ] {
         let m = model(name, sets);
-        let unresolved = analyse(name, &m, 0.0, m.load_bar_max_p()).expect("an analysis");
+        let unresolved = analysed_to(name, &m, m.load_bar_max_p()).expect("an analysis");
         assert!(unresolved.warning.is_some(), "{name}");
         assert!(unresolved.transitions.is_empty() && unresolved.ranges.is_empty());
         let folder = tempfile::tempdir().unwrap();
@@ -186,17 +184,13 @@ fn figures_take_the_loads_and_the_range_rules_of_critical() {
 #[test]
 fn a_page_too_small_for_its_legend_is_refused_with_one_that_fits() {
     let m = model("ziegler-1952", &[]);
-    let main = analyse("ziegler-1952", &m, 0.0, m.load_bar_max_p()).expect("an analysis");
-    let content = Content::ReIm {
-        main: &main,
-        overlays: &[],
-    };
+    let main = analysed_to("ziegler-1952", &m, m.load_bar_max_p()).expect("an analysis");
+    let content = paper_loci(&main, &[], Part::VersusLoad);
     let small = Page {
         width_mm: 30.0,
         height_mm: 30.0,
         font_pt: 8.0,
         dpi: 300.0,
-        ..Page::default()
     };
     let why = render(&content, &small, Format::Svg)
         .unwrap_err()
