@@ -27,7 +27,9 @@ use crate::analysis::{
     AffinePencil, MapSpec, compute_map, critical_loads, first_loss_of_stability, load_grid, locus,
 };
 use crate::app::{Action, Settings, Tab, ZieglerApp};
-use crate::model::{Assignment, Axis, Key, Model, PresetId, apply_assignments};
+use crate::model::{AsValid as _, Assignment, Axis, Key, Model, PresetId, apply_assignments};
+use crate::plot::locus::{Layer, Loci, Part, Present};
+use crate::plot::spec::Medium;
 use crate::sim::{DEFAULT_STEP_SECS, EngineKind, Simulation, initial_state};
 
 /// Loads of the benchmarked root loci, over the column's analysis range
@@ -72,6 +74,12 @@ pub struct Report {
     pub frame_ms_p99_paradox: f64,
     /// The `beck` preset (16 rods, reference engine), its load dragged: p99.
     pub frame_ms_p99_chain16: f64,
+    /// The locus tab's sheet of the `beck` preset (32 branches) built whole,
+    /// as every frame built it before the analysis's part was kept: ms.
+    pub locus_sheet_ms_chain16: f64,
+    /// The same sheet as a frame makes it now: the kept part copied and the
+    /// present added: ms.
+    pub locus_sheet_kept_ms_chain16: f64,
     /// The 256x256 roller map (load 0-8 against nu 0.005-1) on every core: ms.
     pub map_ms: f64,
     /// numpy's batched `eigvals` on the roller's 6x6 companion matrices at
@@ -150,6 +158,7 @@ pub fn run(frames: usize, window: bool) -> Result<Report> {
     let frame_ms_map = frame_times_ms(frames, Tab::Map)?;
     let frame_ms_paradox = frame_times_ms(frames, Tab::Paradox)?;
     let frame_ms_chain = chain_frame_times_ms(frames)?;
+    let (sheet_ms, kept_ms) = locus_sheet_ms_chain16()?;
     let locus_us = locus_us_per_load(&roller)?;
     let numpy_us = numpy_eig_us_per_pencil(&roller)?;
     let chain = chain32()?;
@@ -168,6 +177,8 @@ pub fn run(frames: usize, window: bool) -> Result<Report> {
         frame_ms_p99_map: quantile(&frame_ms_map, 0.99),
         frame_ms_p99_paradox: quantile(&frame_ms_paradox, 0.99),
         frame_ms_p99_chain16: quantile(&frame_ms_chain, 0.99),
+        locus_sheet_ms_chain16: sheet_ms,
+        locus_sheet_kept_ms_chain16: kept_ms,
         map_ms: map_ms()?,
         numpy_eig_us_per_pencil: numpy_us,
         locus_speedup_vs_numpy: numpy_us.map(|numpy| numpy / locus_us),
@@ -335,6 +346,52 @@ fn run_numpy(script: &str, input: &[u8]) -> Result<Option<String>> {
 
 fn pencil(id: PresetId) -> Result<AffinePencil> {
     Ok(AffinePencil::new(&id.model())?.with_threads(crate::machine_threads()))
+}
+
+/// The locus tab's sheet of the `beck` preset (16 rods: 32 branches, the
+/// window's locus of it) at half its load bar, ms: built whole with the
+/// present, and made as a frame makes it from the kept part (a copy, the
+/// present added). Medians of 50 each.
+///
+/// # Errors
+/// The preset's analysis failing (it should not).
+fn locus_sheet_ms_chain16() -> Result<(f64, f64)> {
+    let model = PresetId::Beck.model().into_valid()?;
+    let (pencil, along) = crate::app::window_locus(&model)?;
+    let words = crate::i18n::words(crate::i18n::Language::English);
+    let loci = Loci {
+        main: Layer {
+            name: "",
+            locus: &along.locus,
+            transitions: &along.transitions,
+            ranges: &along.ranges,
+            at_transitions: &[],
+        },
+        others: Vec::new(),
+        medium: Medium::Window,
+        words,
+    };
+    let load = 0.5 * model.load_bar_max_p();
+    let now = pencil.spectrum(load)?.eigenvalues;
+    let present = Present {
+        load,
+        eigenvalues: &now,
+        measured: None,
+    };
+    let whole = median_secs(50, || {
+        let mut sheet = loci.sheet(Part::All);
+        present.mark(&mut sheet, words);
+        black_box(sheet);
+        Ok(())
+    })?;
+    let kept = loci.sheet(Part::All);
+    let frame = median_secs(50, || {
+        let mut sheet = kept.clone();
+        present.mark(&mut sheet, words);
+        black_box(sheet);
+        Ok(())
+    })?;
+    Ok((whole * 1e3, frame * 1e3))
 }
 
 /// The median wall time of `repeats` calls of `f`, in s.

@@ -10,7 +10,7 @@ use eframe::egui::{self, Align2, FontId, Rect, Sense, Stroke, pos2, vec2};
 use super::action::{Action, Actions, Command};
 use super::arrows::{keep_arrows, net_presses};
 use super::state::AppState;
-use super::theme::Theme;
+use super::theme::{Theme, color};
 use crate::analysis::State;
 use crate::format::{load_text, number_text};
 use crate::model::Key;
@@ -140,7 +140,7 @@ pub fn load_bar_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, t
                     let tx = x(t.load);
                     painter.line_segment(
                         [pos2(tx, bar.top() - 3.0), pos2(tx, bar.bottom())],
-                        Stroke::new(1.5, theme.text),
+                        Stroke::new(1.5, color(theme.palette.text)),
                     );
                     let galley = painter.layout_no_wrap(
                         load_text(t.load),
@@ -155,14 +155,14 @@ pub fn load_bar_ui(ui: &mut egui::Ui, state: &AppState, actions: &mut Actions, t
                         painter.galley(
                             pos2(left, bar.top() - 3.0 - galley.size().y),
                             galley,
-                            theme.text,
+                            color(theme.palette.text),
                         );
                         free_from = left + width + 6.0;
                     }
                 }
             }
             None => {
-                painter.rect_filled(bar, 0.0, theme.no_data);
+                painter.rect_filled(bar, 0.0, color(theme.palette.no_data));
             }
         }
         scale_ui(&painter, bar, load_max, &font, theme);
@@ -186,7 +186,7 @@ fn scale_ui(painter: &egui::Painter, bar: Rect, load_max: f64, font: &FontId, th
         .layout_no_wrap(
             number_text(load_max * 0.987_654_3),
             font.clone(),
-            theme.axis,
+            color(theme.palette.axis),
         )
         .size()
         .x;
@@ -204,7 +204,7 @@ fn scale_ui(painter: &egui::Painter, bar: Rect, load_max: f64, font: &FontId, th
             Align2::CENTER_TOP,
             number_text(load),
             font.clone(),
-            theme.axis,
+            color(theme.palette.axis),
         );
     }
 }
@@ -361,13 +361,13 @@ fn range_ui(painter: &egui::Painter, r: Rect, state: State, font: &FontId, theme
                 .collect();
             painter.add(egui::Shape::convex_polygon(
                 points,
-                theme.background,
+                color(theme.palette.background),
                 Stroke::NONE,
             ));
         }
     }
     let name = state_name(painter.ctx().words(), state);
-    let galley = painter.layout_no_wrap(name, font.clone(), theme.background);
+    let galley = painter.layout_no_wrap(name, font.clone(), color(theme.palette.background));
     if galley.size().x + 12.0 <= r.width() && galley.size().y <= r.height() {
         let at = r.center() - 0.5 * galley.size();
         painter.rect_filled(
@@ -375,7 +375,7 @@ fn range_ui(painter: &egui::Painter, r: Rect, state: State, font: &FontId, theme
             2.0,
             fill,
         );
-        painter.galley(at, galley, theme.background);
+        painter.galley(at, galley, color(theme.palette.background));
     }
 }
 
@@ -393,7 +393,10 @@ fn marks_ui(painter: &egui::Painter, bar: Rect, state: &AppState, theme: &Theme)
         let theory = analysis
             .filter(|_| !state.answer_hidden())
             .and_then(crate::app::analysis_cache::Analysis::first_instability);
-        for (load, color) in [(theory, theme.text), (run.seen_at_p, theme.measured)] {
+        for (load, color) in [
+            (theory, color(theme.palette.text)),
+            (run.seen_at_p, color(theme.palette.measured)),
+        ] {
             if let Some(load) = load.filter(|&l| l <= load_max) {
                 painter.line_segment(
                     [pos2(x(load), bar.top()), pos2(x(load), bar.bottom())],
@@ -407,20 +410,24 @@ fn marks_ui(painter: &egui::Painter, bar: Rect, state: &AppState, theme: &Theme)
         painter.circle_stroke(
             pos2(x(predicted), bar.center().y),
             0.35 * bar_height,
-            Stroke::new(3.0 * theme.stroke_scale, theme.info),
+            Stroke::new(3.0 * theme.stroke_scale, color(theme.palette.info)),
         );
     }
     // The handle: a bar through the scale, and a knob.
     let hx = x(p);
     painter.line_segment(
         [pos2(hx, bar.top() - 4.0), pos2(hx, bar.bottom() + 4.0)],
-        Stroke::new(4.0 * theme.stroke_scale, theme.now),
+        Stroke::new(4.0 * theme.stroke_scale, color(theme.palette.now)),
     );
-    painter.circle_filled(pos2(hx, bar.center().y), 0.45 * bar_height, theme.now);
+    painter.circle_filled(
+        pos2(hx, bar.center().y),
+        0.45 * bar_height,
+        color(theme.palette.now),
+    );
     painter.circle_stroke(
         pos2(hx, bar.center().y),
         0.45 * bar_height,
-        Stroke::new(1.5, theme.background),
+        Stroke::new(1.5, color(theme.palette.background)),
     );
 }
 

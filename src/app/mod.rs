@@ -52,7 +52,7 @@ use speak::Speak as _;
 
 pub use crate::plot::view::{EdgeMark, Side, ViewRect};
 pub use action::{Action, Command};
-pub use analysis_cache::Analysis;
+pub use analysis_cache::{Analysis, window_locus};
 pub use layout::Layout;
 pub use notice::{Level, Notice};
 pub use pace::{MAX_FRAME_SECS, MAX_STEPS_PER_FRAME};
@@ -62,6 +62,7 @@ pub use plot_frame::VIEW_HINT;
 pub use state::{AppState, Settings};
 pub use tabs::Tab;
 pub use theme::Theme;
+use theme::color;
 pub use window::{Renderer, WindowFrames, run, time_window_frames};
 
 /// The key the settings are stored under.
@@ -426,7 +427,7 @@ impl ZieglerApp {
             if !tab_on_top {
                 scene::scene_ui(ui, &self.state, &mut self.actions, &mut self.scene, theme);
             } else if tab_hidden {
-                ui.colored_label(theme.info, tr!(ui.words(), "answer-hidden"));
+                ui.colored_label(color(theme.palette.info), tr!(ui.words(), "answer-hidden"));
             } else {
                 ui.set_clip_rect(scene_rect);
                 self.tab_rect = scene_rect;
@@ -438,7 +439,7 @@ impl ZieglerApp {
         if let Some(rect) = locus_rect {
             ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
                 if self.state.answer_hidden() {
-                    ui.colored_label(theme.info, tr!(ui.words(), "answer-hidden"));
+                    ui.colored_label(color(theme.palette.info), tr!(ui.words(), "answer-hidden"));
                 } else if let Some(locus) = self.tabs.get_mut::<tabs::LocusTab>() {
                     locus.complex_plane_ui(ui, &self.state, theme);
                 }
@@ -470,7 +471,7 @@ impl ZieglerApp {
             ui.label(
                 RichText::new(tr!(ui.words(), "answer-hidden-histories"))
                     .size(theme.text_size * 1.2)
-                    .color(theme.info),
+                    .color(color(theme.palette.info)),
             );
         } else {
             self.tab_rect = ui.available_rect_before_wrap();

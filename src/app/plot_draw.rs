@@ -41,19 +41,7 @@ pub struct LocusShown {
 
 /// `ink` in `theme`'s colours.
 fn ink_color(ink: &Ink, theme: &Theme) -> Color32 {
-    match ink {
-        Ink::Main => theme.text,
-        Ink::Series(k) => theme.curves[k % theme.curves.len()],
-        Ink::Overlay | Ink::Reference => theme.overlay,
-        Ink::State(state) => theme.state_color(*state),
-        Ink::Now => theme.now,
-        Ink::Measured => theme.measured,
-        Ink::LoadLine => theme.load_line,
-        Ink::Axis => theme.axis,
-        Ink::Along(t) => color(theme.palette.along(*t)),
-        Ink::Cell(state, strength) => cell_color(*state, *strength, theme),
-        Ink::NoData => theme.no_data,
-    }
+    color(theme.palette.ink(ink))
 }
 
 /// A line's width in points.
@@ -276,8 +264,8 @@ fn mark_ui<'a>(
             // Spaces pad the plate on both sides of the word.
             let word = egui::RichText::new(format!(" {text} "))
                 .size(theme.text_size)
-                .color(theme.text)
-                .background_color(theme.background.gamma_multiply(0.85));
+                .color(color(theme.palette.text))
+                .background_color(color(theme.palette.background).gamma_multiply(0.85));
             plot_ui.text(
                 Text::new("", PlotPoint::new(at[0], at[1]), word)
                     .id(("label", text))
@@ -288,12 +276,6 @@ fn mark_ui<'a>(
     None
 }
 
-/// A map cell's colour: its state's, fainter the slower it grows or
-/// decays (the palette's mix with the background).
-fn cell_color(state: State, strength: f64, theme: &Theme) -> Color32 {
-    color(theme.palette.cell(state, strength))
-}
-
 /// `grid` as an image, each cell a square of pixels (so a map of 128 cells
 /// a side is 1024 pixels), striped where the pattern says: the image's
 /// first row is the top, the grid's last.
@@ -301,7 +283,7 @@ fn cell_image(grid: &CellGrid, theme: &Theme) -> egui::ColorImage {
     let columns = grid.columns.max(1);
     let scale = (1024 / columns.max(grid.rows).max(1)).clamp(1, 8);
     let (width, height) = (columns * scale, grid.rows * scale);
-    let mut image = egui::ColorImage::filled([width, height], theme.no_data);
+    let mut image = egui::ColorImage::filled([width, height], color(theme.palette.no_data));
     // The pattern in fractions of the map's extent, as on paper.
     let spacing = 1.0 / pattern::MAP_STRIPES_PER_VIEW;
     #[expect(clippy::cast_precision_loss, reason = "pixel counts")]
@@ -311,7 +293,7 @@ fn cell_image(grid: &CellGrid, theme: &Theme) -> egui::ColorImage {
         let Some((state, strength)) = *cell else {
             continue;
         };
-        let fill = cell_color(state, strength, theme);
+        let fill = ink_color(&Ink::Cell(state, strength), theme);
         for row in (grid.rows - 1 - j) * scale..(grid.rows - j) * scale {
             for column in i * scale..(i + 1) * scale {
                 let on = pattern::striped(state)
@@ -320,7 +302,11 @@ fn cell_image(grid: &CellGrid, theme: &Theme) -> egui::ColorImage {
                         fraction(height - 1 - row, height),
                         spacing,
                     );
-                image.pixels[row * width + column] = if on { theme.background } else { fill };
+                image.pixels[row * width + column] = if on {
+                    color(theme.palette.background)
+                } else {
+                    fill
+                };
             }
         }
     }
@@ -390,7 +376,7 @@ fn edge_marks_ui(plot_ui: &mut egui_plot::PlotUi<'_>, marks: &[EdgeMark], theme:
             Points::new("", vec![[mark.at.re, mark.at.im]])
                 .shape(shape)
                 .radius(7.0 * theme.stroke_scale)
-                .color(theme.now)
+                .color(color(theme.palette.now))
                 .filled(true),
         );
         plot_ui.text(
@@ -399,7 +385,7 @@ fn edge_marks_ui(plot_ui: &mut egui_plot::PlotUi<'_>, marks: &[EdgeMark], theme:
                 PlotPoint::new(mark.at.re, mark.at.im),
                 egui::RichText::new(format!("    {}    ", mark.label)).strong(),
             )
-            .color(theme.now)
+            .color(color(theme.palette.now))
             .anchor(anchor),
         );
     }

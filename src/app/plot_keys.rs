@@ -6,7 +6,7 @@ use eframe::egui::{self, Stroke};
 use egui_plot::{HLine, LineStyle, PlotPoint, PlotUi, VLine};
 
 use super::arrows::{keep_arrows, net_presses};
-use super::theme::Theme;
+use super::theme::{Theme, color};
 
 /// The share of the view one arrow press pans by.
 const PAN_SHARE: f64 = 0.1;
@@ -65,7 +65,7 @@ pub fn keys_ui(plot_ui: &mut PlotUi<'_>, theme: &Theme) -> Option<PlotPoint> {
         plot_ui.zoom_bounds(egui::Vec2::splat(factor), centre);
     }
     // The cross at the centre: what Enter picks.
-    let stroke = Stroke::new(1.5 * theme.stroke_scale, theme.text);
+    let stroke = Stroke::new(1.5 * theme.stroke_scale, color(theme.palette.text));
     plot_ui.vline(
         VLine::new("", centre.x)
             .stroke(stroke)

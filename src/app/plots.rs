@@ -9,7 +9,7 @@ use egui_plot::{Line, Plot, PlotPoints};
 use super::history::History;
 use super::legend::{Swatch, legend_row};
 use super::plot_frame::{axes, refit_if};
-use super::theme::Theme;
+use super::theme::{Theme, color};
 
 /// The run's recent past: the angles and delta against time, the energies,
 /// and a phase portrait of rod 2.
@@ -27,11 +27,20 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, band: bool, refit: boo
         ui.vertical(|ui| {
             ui.allocate_ui(vec2(0.62 * width, 0.5 * height - 4.0), |ui| {
                 let mut legend = vec![
-                    (Swatch::Line(theme.series[0]), "φ1".to_owned()),
-                    (Swatch::Line(theme.series[1]), "φ2".to_owned()),
+                    (
+                        Swatch::Line(color(theme.palette.series[0])),
+                        "φ1".to_owned(),
+                    ),
+                    (
+                        Swatch::Line(color(theme.palette.series[1])),
+                        "φ2".to_owned(),
+                    ),
                 ];
                 if band {
-                    legend.push((Swatch::Line(theme.series[2]), tr!(words, "histories-delta")));
+                    legend.push((
+                        Swatch::Line(color(theme.palette.series[2])),
+                        tr!(words, "histories-delta"),
+                    ));
                 }
                 legend_row(ui, &legend);
                 // Symmetric about 0 and as high as a labelled grid step.
@@ -44,18 +53,27 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, band: bool, refit: boo
                 let half = crate::app::plot_frame::grid_ceil(widest);
                 let plot = Plot::new("angles").include_y(-half).include_y(half);
                 refit_if(axes(plot, "t (s)", "rad"), refit).show(ui, |plot_ui| {
-                    plot_ui.line(Line::new("φ1", series(&|o| o.phi1_rad)).color(theme.series[0]));
-                    plot_ui.line(Line::new("φ2", series(&|o| o.phi2_rad)).color(theme.series[1]));
+                    plot_ui.line(
+                        Line::new("φ1", series(&|o| o.phi1_rad))
+                            .color(color(theme.palette.series[0])),
+                    );
+                    plot_ui.line(
+                        Line::new("φ2", series(&|o| o.phi2_rad))
+                            .color(color(theme.palette.series[1])),
+                    );
                     if band {
-                        plot_ui
-                            .line(Line::new("δ", series(&|o| o.delta_rad)).color(theme.series[2]));
+                        plot_ui.line(
+                            Line::new("δ", series(&|o| o.delta_rad))
+                                .color(color(theme.palette.series[2])),
+                        );
                     }
                 });
             });
             ui.allocate_ui(vec2(0.62 * width, 0.5 * height - 4.0), |ui| {
-                let mut legend = vec![(Swatch::Line(theme.series[3]), energy.clone())];
+                let mut legend =
+                    vec![(Swatch::Line(color(theme.palette.series[3])), energy.clone())];
                 if band {
-                    legend.push((Swatch::Line(theme.series[4]), power.clone()));
+                    legend.push((Swatch::Line(color(theme.palette.series[4])), power.clone()));
                 }
                 legend_row(ui, &legend);
                 let plot = Plot::new("energy");
@@ -63,12 +81,12 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, band: bool, refit: boo
                 refit_if(axes(plot, "t (s)", units), refit).show(ui, |plot_ui| {
                     plot_ui.line(
                         Line::new(energy.as_str(), series(&|o| o.energy_j()))
-                            .color(theme.series[3]),
+                            .color(color(theme.palette.series[3])),
                     );
                     if band {
                         plot_ui.line(
                             Line::new(power.as_str(), series(&|o| o.band_power_w))
-                                .color(theme.series[4]),
+                                .color(color(theme.palette.series[4])),
                         );
                     }
                 });
@@ -81,8 +99,10 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, band: bool, refit: boo
                     .iter()
                     .map(|o| [o.phi2_rad, o.phi2_dot_rad_per_s])
                     .collect();
-                plot_ui
-                    .line(Line::new(tr!(words, "histories-rod-2"), points).color(theme.series[5]));
+                plot_ui.line(
+                    Line::new(tr!(words, "histories-rod-2"), points)
+                        .color(color(theme.palette.series[5])),
+                );
             });
         });
     });

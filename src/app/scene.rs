@@ -17,7 +17,7 @@ use super::camera::{Camera, FOLLOW_SECS, WorldBox, target};
 use super::grab::{GRAB_RADIUS, grab_angles};
 use super::scene_access;
 use super::state::{AppState, TRAIL_SECS};
-use super::theme::Theme;
+use super::theme::{Theme, color};
 use crate::model::Model;
 use crate::sim::{Observables, Status};
 
@@ -120,7 +120,7 @@ pub fn scene_ui(
             rect.left_bottom() + vec2(10.0, -10.0),
             Align2::LEFT_BOTTOM,
             tr!(ui.words(), "scene-drag-hint"),
-            theme.axis,
+            color(theme.palette.axis),
         );
     }
     // What was under the button when it went down (the drag starts a few
@@ -205,7 +205,7 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View, Option<Rect>)
     // The band covers the whole picture where there is one: a background
     // under it would only cost a CPU renderer a third of the scene's pixels.
     if model.roller().is_none() {
-        painter.rect_filled(rect, 0.0, theme.background);
+        painter.rect_filled(rect, 0.0, color(theme.palette.background));
     }
     let reach = model.column.reach_m();
     // The camera's box, with equal scales on both axes, centred.
@@ -239,7 +239,7 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View, Option<Rect>)
     trail_ui(&painter, theme, &view, trail);
     let angles_rad = &now.angles_rad;
     let last = joints.len() - 1;
-    let spring_stroke = Stroke::new(1.5 * s, theme.spring);
+    let spring_stroke = Stroke::new(1.5 * s, color(theme.palette.spring));
     let spring_size = view.px(0.06 * (model.column.rod1.length_m + model.column.rod2.length_m));
     for (i, angle) in angles_rad.iter().enumerate() {
         let bend = if i == 0 {
@@ -250,7 +250,7 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View, Option<Rect>)
         let [x, y] = joints[i];
         spring(&painter, view.to(x, y), spring_size, bend, spring_stroke);
     }
-    let rod = Stroke::new(5.0 * s, theme.rod);
+    let rod = Stroke::new(5.0 * s, color(theme.palette.rod));
     for pair in joints.windows(2) {
         painter.line_segment(
             [
@@ -261,7 +261,7 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View, Option<Rect>)
         );
     }
     for &[x, y] in &joints[..last] {
-        painter.circle_filled(view.to(x, y), 6.0 * s, theme.joint);
+        painter.circle_filled(view.to(x, y), 6.0 * s, color(theme.palette.joint));
     }
     let last_rod_rad = angles_rad[angles_rad.len() - 1];
     // The force arrows at a length of the first two rods.
@@ -285,7 +285,7 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View, Option<Rect>)
             above.right_bottom() + vec2(-4.0, 8.0),
             Align2::RIGHT_TOP,
             delta_text(now.delta_rad),
-            theme.friction,
+            color(theme.palette.friction),
         )
     });
     notes(&painter, theme, rect, status, now.stick_slip);
@@ -305,12 +305,12 @@ fn clamp(painter: &egui::Painter, theme: &Theme, view: &View, reach: f64) {
     let wall = 0.08 * reach;
     painter.line_segment(
         [view.to(0.0, -wall), view.to(0.0, wall)],
-        Stroke::new(3.0 * s, theme.rod),
+        Stroke::new(3.0 * s, color(theme.palette.rod)),
     );
     for k in 0..6 {
         let y = -wall + 2.0 * wall * f64::from(k) / 5.0;
         let hatch = [view.to(0.0, y), view.to(-0.04 * reach, y - 0.04 * reach)];
-        painter.line_segment(hatch, Stroke::new(1.5 * s, theme.rod));
+        painter.line_segment(hatch, Stroke::new(1.5 * s, color(theme.palette.rod)));
     }
 }
 
@@ -331,9 +331,9 @@ fn trail_ui(
         )]
         let alpha = ((1.0 - age).clamp(0.0, 1.0) * 220.0) as u8;
         let color = Color32::from_rgba_unmultiplied(
-            theme.trail.r(),
-            theme.trail.g(),
-            theme.trail.b(),
+            color(theme.palette.trail).r(),
+            color(theme.palette.trail).g(),
+            color(theme.palette.trail).b(),
             alpha,
         );
         let segment = [
@@ -368,10 +368,14 @@ fn forces(
         painter,
         tip,
         along(follower),
-        Stroke::new(2.0 * s, theme.follower),
+        Stroke::new(2.0 * s, color(theme.palette.follower)),
     );
     let unit = [force[0] / magnitude, force[1] / magnitude];
-    painter.arrow(tip, along(unit), Stroke::new(3.0 * s, theme.friction));
+    painter.arrow(
+        tip,
+        along(unit),
+        Stroke::new(3.0 * s, color(theme.palette.friction)),
+    );
     if model.roller().is_some() {
         // The angle delta drawn between the two directions, from the
         // follower direction to the force.
@@ -383,7 +387,10 @@ fn forces(
                 view.to(b[0] + r * angle.cos(), b[1] + r * angle.sin())
             })
             .collect();
-        painter.add(Shape::line(arc, Stroke::new(1.5 * s, theme.friction)));
+        painter.add(Shape::line(
+            arc,
+            Stroke::new(1.5 * s, color(theme.palette.friction)),
+        ));
     }
 }
 
@@ -411,8 +418,8 @@ fn roller_ui(
     ];
     painter.add(Shape::convex_polygon(
         outline,
-        theme.roller,
-        Stroke::new(1.5 * s, theme.roller_mark),
+        color(theme.palette.roller),
+        Stroke::new(1.5 * s, color(theme.palette.roller_mark)),
     ));
     for k in 0..8 {
         let angle = psi + TAU * f64::from(k) / 8.0;
@@ -421,7 +428,7 @@ fn roller_ui(
             let u = radius_m * angle.sin();
             painter.line_segment(
                 [corner(u, -half_thick), corner(u, half_thick)],
-                Stroke::new(2.0 * s, theme.roller_mark),
+                Stroke::new(2.0 * s, color(theme.palette.roller_mark)),
             );
         }
     }
@@ -432,10 +439,10 @@ fn notes(painter: &egui::Painter, theme: &Theme, rect: Rect, status: Status, sti
     let mut lines = Vec::new();
     let words = painter.ctx().words();
     if status != Status::Running {
-        lines.push((status_words(words, status), theme.error));
+        lines.push((status_words(words, status), color(theme.palette.error)));
     }
     if stick_slip {
-        lines.push((tr!(words, "scene-stick-slip"), theme.warning));
+        lines.push((tr!(words, "scene-stick-slip"), color(theme.palette.warning)));
     }
     for (i, (text, color)) in lines.into_iter().enumerate() {
         #[expect(clippy::cast_precision_loss, reason = "a handful of lines")]
@@ -476,14 +483,14 @@ fn band(
     // A pixel beyond the picture on every side (clipped): its edge is never
     // blended with what lies outside.
     let covered = Rect::from_two_pos(to(x0, y0), to(x1, y1)).union(rect.expand(1.0));
-    painter.rect_filled(covered, 0.0, theme.band);
+    painter.rect_filled(covered, 0.0, color(theme.palette.band));
     let spacing = 0.08 * reach;
     let offset = (-speed_m_per_s * t_secs).rem_euclid(spacing);
     let mut x = x0 + offset;
     while x < x1 {
         painter.line_segment(
             [to(x, y0), to(x, y1)],
-            Stroke::new(1.0 * s, theme.band_mark),
+            Stroke::new(1.0 * s, color(theme.palette.band_mark)),
         );
         x += spacing;
     }
@@ -500,7 +507,7 @@ fn band(
         .layout_no_wrap(
             text.clone(),
             FontId::proportional(theme.text_size),
-            theme.text,
+            color(theme.palette.text),
         )
         .size()
         .x;
@@ -516,7 +523,7 @@ fn band(
         rect.right_top() + vec2(-10.0, top),
         Align2::RIGHT_TOP,
         text,
-        theme.text,
+        color(theme.palette.text),
     )
 }
 
@@ -528,9 +535,9 @@ fn plate(
     at: Pos2,
     align: Align2,
     text: String,
-    color: Color32,
+    text_color: Color32,
 ) -> Rect {
-    let galley = painter.layout_no_wrap(text, FontId::proportional(theme.text_size), color);
+    let galley = painter.layout_no_wrap(text, FontId::proportional(theme.text_size), text_color);
     let inner = align.anchor_size(at, galley.size());
     // Kept inside the scene (a label beyond the tip may point out of it).
     let clip = painter.clip_rect().shrink(6.0);
@@ -539,8 +546,8 @@ fn plate(
         (clip.top() - inner.top()).max(0.0) + (clip.bottom() - inner.bottom()).min(0.0),
     );
     let inner = inner.translate(shift);
-    painter.rect_filled(inner.expand(4.0), 4.0, theme.background);
-    painter.galley(inner.min, galley, color);
+    painter.rect_filled(inner.expand(4.0), 4.0, color(theme.palette.background));
+    painter.galley(inner.min, galley, text_color);
     inner.expand(4.0)
 }
 

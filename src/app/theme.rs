@@ -1,6 +1,7 @@
-//! The window's themes: the palette's colours as egui draws them, with the
-//! strokes and text size of each; the projector theme (high contrast, large
-//! text, for a lecture hall) is just another value.
+//! The window's themes: a palette with the strokes and text size of each,
+//! and the palette's colours converted as egui draws them; the projector
+//! theme (high contrast, large text, for a lecture hall) is just another
+//! value.
 
 use eframe::egui::{self, Color32};
 
@@ -8,48 +9,12 @@ use super::notice::Level;
 use crate::analysis::State;
 use crate::plot::{Palette, Rgb};
 
-/// The palette of one theme.
+/// One theme: the palette's colours by meaning, the width of its strokes
+/// and the size of its text. Each view looks its colour up in the palette
+/// by meaning and converts it with [`color`]; nothing here copies it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Theme {
-    /// The colours as plain RGB, for what is computed from them (a ramp).
     pub palette: &'static Palette,
-    pub background: Color32,
-    pub rod: Color32,
-    pub joint: Color32,
-    pub spring: Color32,
-    pub roller: Color32,
-    pub roller_mark: Color32,
-    pub band: Color32,
-    pub band_mark: Color32,
-    pub friction: Color32,
-    pub follower: Color32,
-    pub trail: Color32,
-    pub text: Color32,
-    pub stable: Color32,
-    pub flutter: Color32,
-    pub divergence: Color32,
-    pub axis: Color32,
-    /// Markers of the present: the current eigenvalues, the current load on
-    /// the load bar, the current model's point on the map and the paradox plot.
-    pub now: Color32,
-    /// The current load as a line across the plots against the load.
-    pub load_line: Color32,
-    /// Eigenvalues measured from the run.
-    pub measured: Color32,
-    /// The overlaid model's locus, behind the current one.
-    pub overlay: Color32,
-    /// Cells and rows without data (not computed yet, or no analysis).
-    pub no_data: Color32,
-    /// Curves that are neither states nor the scene's objects, in order.
-    pub series: [Color32; 6],
-    /// The k-th curve of a plot (a damping level, an overlaid model).
-    pub curves: [Color32; 5],
-    /// Notices: something refused or failed.
-    pub error: Color32,
-    /// Notices and cautions: done, but not quite as asked, or not resolved.
-    pub warning: Color32,
-    /// Notices: done as asked.
-    pub info: Color32,
     /// Line width multiplier for strokes in the scene.
     pub stroke_scale: f32,
     /// Font size of body text.
@@ -58,79 +23,39 @@ pub struct Theme {
 
 impl Theme {
     /// The everyday theme, on egui's dark visuals.
-    pub const NORMAL: Self = Self::new(&Palette::NORMAL, 1.0, 14.0);
+    pub const NORMAL: Self = Self {
+        palette: &Palette::NORMAL,
+        stroke_scale: 1.0,
+        text_size: 14.0,
+    };
 
     /// High contrast and large text for a projector.
-    pub const PROJECTOR: Self = Self::new(&Palette::PROJECTOR, 1.8, 22.0);
-
-    /// The theme of `palette`'s colours, strokes `stroke_scale` times as
-    /// wide as the everyday ones and body text of `text_size` points.
-    const fn new(palette: &'static Palette, stroke_scale: f32, text_size: f32) -> Self {
-        let p = palette;
-        Self {
-            palette,
-            background: color(p.background),
-            rod: color(p.rod),
-            joint: color(p.joint),
-            spring: color(p.spring),
-            roller: color(p.roller),
-            roller_mark: color(p.roller_mark),
-            band: color(p.band),
-            band_mark: color(p.band_mark),
-            friction: color(p.friction),
-            follower: color(p.follower),
-            trail: color(p.trail),
-            text: color(p.text),
-            stable: color(p.stable),
-            flutter: color(p.flutter),
-            divergence: color(p.divergence),
-            axis: color(p.axis),
-            now: color(p.now),
-            load_line: color(p.load_line),
-            measured: color(p.measured),
-            overlay: color(p.overlay),
-            no_data: color(p.no_data),
-            error: color(p.error),
-            warning: color(p.warning),
-            info: color(p.info),
-            series: [
-                color(p.series[0]),
-                color(p.series[1]),
-                color(p.series[2]),
-                color(p.series[3]),
-                color(p.series[4]),
-                color(p.series[5]),
-            ],
-            curves: [
-                color(p.curves[0]),
-                color(p.curves[1]),
-                color(p.curves[2]),
-                color(p.curves[3]),
-                color(p.curves[4]),
-            ],
-            stroke_scale,
-            text_size,
-        }
-    }
+    pub const PROJECTOR: Self = Self {
+        palette: &Palette::PROJECTOR,
+        stroke_scale: 1.8,
+        text_size: 22.0,
+    };
 
     /// The colour that stands for a stability state.
     #[must_use]
     pub fn state_color(&self, state: State) -> Color32 {
-        match state {
-            State::Stable => self.stable,
-            State::Flutter => self.flutter,
-            State::Divergence => self.divergence,
-        }
+        let p = self.palette;
+        color(match state {
+            State::Stable => p.stable,
+            State::Flutter => p.flutter,
+            State::Divergence => p.divergence,
+        })
     }
 
     /// The colour of a notice of `level`.
     #[must_use]
     pub fn notice_color(&self, level: Level) -> Color32 {
-        match level {
-            Level::Info => self.info,
-            Level::Warning => self.warning,
-            Level::Error => self.error,
-        }
+        let p = self.palette;
+        color(match level {
+            Level::Info => p.info,
+            Level::Warning => p.warning,
+            Level::Error => p.error,
+        })
     }
 
     /// The ring round the control that has the keys: in the text's colour
@@ -138,14 +63,14 @@ impl Theme {
     /// projector too (egui's own controls and ours alike).
     #[must_use]
     pub fn focus_stroke(&self) -> egui::Stroke {
-        egui::Stroke::new(2.0 * self.stroke_scale, self.text)
+        egui::Stroke::new(2.0 * self.stroke_scale, color(self.palette.text))
     }
 
     /// Applies the theme's visuals and text size to the context.
     pub fn apply(&self, ctx: &egui::Context) {
         let mut visuals = egui::Visuals::dark();
-        visuals.panel_fill = self.background;
-        visuals.override_text_color = Some(self.text);
+        visuals.panel_fill = color(self.palette.background);
+        visuals.override_text_color = Some(color(self.palette.text));
         // egui draws a focused control as a pressed one: its ring is ours.
         visuals.widgets.active.bg_stroke = self.focus_stroke();
         visuals.selection.stroke.width = 2.0 * self.stroke_scale;

@@ -35,7 +35,7 @@ type Figure = fn(&Report) -> f64;
 
 /// The table: each line's JSON key, figure, unit, what was measured and the
 /// target, if there is one.
-const LINES: [(&str, Figure, &str, &str, Option<Target>); 21] = [
+const LINES: [(&str, Figure, &str, &str, Option<Target>); 23] = [
     (
         "locus_us_per_load",
         |r| r.locus_us_per_load,
@@ -119,6 +119,20 @@ const LINES: [(&str, Figure, &str, &str, Option<Target>); 21] = [
         "ms",
         "beck preset (16 rods, reference engine), load dragged: p99 (interactive: a 60 Hz frame)",
         Some(Target::AtMost(16.0)),
+    ),
+    (
+        "locus_sheet_ms_chain16",
+        |r| r.locus_sheet_ms_chain16,
+        "ms",
+        "beck's locus tab sheet built whole, as each frame built it before",
+        None,
+    ),
+    (
+        "locus_sheet_kept_ms_chain16",
+        |r| r.locus_sheet_kept_ms_chain16,
+        "ms",
+        "the same as a frame makes it now: kept part copied, present added",
+        None,
     ),
     (
         "map_ms",

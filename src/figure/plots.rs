@@ -8,7 +8,7 @@ use super::layout::{
     Chart, Swatch as PageSwatch, XTicks, chart, dashed, legend_above, line, marker_style, panel,
     plot_size,
 };
-use super::style::{INK, Ink as PageInk, rgb, series_color, state_color, tint};
+use super::style::{INK, Ink as PageInk, rgb, state_color, tint};
 use super::{Drawn, FigureError, drawing};
 use crate::analysis::State;
 use crate::plot::spec::CellGrid;
@@ -16,19 +16,11 @@ use crate::plot::spec::{Entry, Ink, Mark, Plot, Size, Swatch, Ticks, View, Weigh
 use crate::plot::view::default_view;
 use crate::plot::{Palette, pattern};
 
-/// `ink` on white paper.
+/// `ink` on white paper (a map cell's at one of [`CELL_LEVELS`]).
 fn ink_color(ink: &Ink) -> RGBColor {
-    match ink {
-        Ink::Main | Ink::Now | Ink::Reference => INK,
-        Ink::Series(k) => series_color(*k),
-        Ink::Overlay => series_color(0),
-        Ink::State(state) => state_color(*state),
-        Ink::Measured => rgb(Palette::PAPER.measured),
-        Ink::LoadLine => rgb(Palette::PAPER.load_line),
-        Ink::Axis => rgb(Palette::PAPER.axis),
-        Ink::Along(t) => rgb(Palette::PAPER.along(*t)),
-        Ink::Cell(state, strength) => cell_color(*state, *strength),
-        Ink::NoData => rgb(Palette::PAPER.no_data),
+    match *ink {
+        Ink::Cell(state, strength) => cell_color(state, strength),
+        _ => rgb(Palette::PAPER.ink(ink)),
     }
 }
 
@@ -57,7 +49,7 @@ const CELL_LEVELS: f64 = 8.0;
 /// A map cell's colour: its state's, paler the slower it grows or decays.
 fn cell_color(state: State, strength: f64) -> RGBColor {
     let level = (strength * CELL_LEVELS).round() / CELL_LEVELS;
-    rgb(Palette::PAPER.cell(state, level))
+    rgb(Palette::PAPER.ink(&Ink::Cell(state, level)))
 }
 
 /// The pale tint of a stability range.

@@ -189,12 +189,6 @@ pub(super) fn state_color(state: State) -> RGBColor {
     rgb(Palette::PAPER.state(state))
 }
 
-/// The colour of the k-th curve (an overlaid model, a damping level) on paper.
-pub(super) fn series_color(index: usize) -> RGBColor {
-    let curves = Palette::PAPER.curves;
-    rgb(curves[index % curves.len()])
-}
-
 /// `color` as a pale tint: mixed with white, `strength` in [0, 1] of it.
 pub(super) fn tint(color: RGBColor, strength: f64) -> RGBColor {
     #[expect(

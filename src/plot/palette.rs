@@ -1,6 +1,7 @@
 //! Every colour that carries meaning, as plain RGB named by what it stands
 //! for: the window's two themes read it, and the figures read it on paper.
 
+use super::spec::Ink;
 use crate::analysis::State;
 
 /// A colour as red, green and blue bytes (opaque).
@@ -46,6 +47,8 @@ pub struct Palette {
     pub measured: Rgb,
     /// The overlaid model's locus, behind the current one.
     pub overlay: Rgb,
+    /// A value drawn for comparison (the undamped load, dashed).
+    pub reference: Rgb,
     /// Cells and rows without data (not computed yet, or no analysis).
     pub no_data: Rgb,
     /// Curves that are neither states nor the scene's objects, in order.
@@ -117,6 +120,7 @@ impl Palette {
         load_line: ink::REDDISH_PURPLE,
         measured: ink::VIOLET,
         overlay: Rgb(120, 120, 120),
+        reference: Rgb(120, 120, 120),
         no_data: Rgb::gray(40),
         series: [
             ink::SKY_BLUE,
@@ -166,12 +170,15 @@ impl Palette {
     };
 
     /// A printed figure: black ink on white paper, states and curves that
-    /// read on white.
+    /// read on white; an overlaid model is the first of the curves, the
+    /// model's own point and a reference are in the ink.
     pub const PAPER: Self = Self {
         background: Rgb::WHITE,
         text: Rgb::BLACK,
         axis: Rgb::gray(128),
         now: Rgb::BLACK,
+        reference: Rgb::BLACK,
+        overlay: ink::SKY_BLUE,
         no_data: Rgb::gray(200),
         stable: ink::BLUE,
         flutter: ink::ORANGE,
@@ -186,6 +193,26 @@ impl Palette {
         along: &ALONG_ON_PAPER,
         ..Self::NORMAL
     };
+
+    /// The colour of what `ink` stands for, in this theme: the one mapping
+    /// of meaning to colour, which both renderers convert.
+    #[must_use]
+    pub fn ink(&self, ink: &Ink) -> Rgb {
+        match *ink {
+            Ink::Main => self.text,
+            Ink::Series(k) => self.curves[k % self.curves.len()],
+            Ink::Overlay => self.overlay,
+            Ink::Reference => self.reference,
+            Ink::State(state) => self.state(state),
+            Ink::Now => self.now,
+            Ink::Measured => self.measured,
+            Ink::LoadLine => self.load_line,
+            Ink::Axis => self.axis,
+            Ink::Along(t) => self.along(t),
+            Ink::Cell(state, strength) => self.cell(state, strength),
+            Ink::NoData => self.no_data,
+        }
+    }
 
     /// A stability map's cell: its state's colour mixed with the
     /// background, `strength` in [0, 1] from [`Self::FAINTEST_CELL`] of

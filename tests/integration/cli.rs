@@ -247,6 +247,8 @@ fn bench_json_has_every_figure() {
             "frame_ms_p99_map",
             "frame_ms_p99_paradox",
             "frame_ms_p99_chain16",
+            "locus_sheet_ms_chain16",
+            "locus_sheet_kept_ms_chain16",
             "map_ms",
             "numpy_eig_us_per_pencil",
             "locus_speedup_vs_numpy",

@@ -9,7 +9,7 @@ use eframe::egui::{self, RichText};
 use crate::app::action::{Action, Actions, Command};
 use crate::app::jobs::{Jobs, Reply};
 use crate::app::state::AppState;
-use crate::app::theme::Theme;
+use crate::app::theme::{Theme, color};
 use crate::app::{Notice, View};
 use crate::format::load_text;
 use crate::i18n::Language;
@@ -142,7 +142,7 @@ impl View for LessonSection {
                         }
                     }
                     Err(error) => {
-                        ui.colored_label(theme.error, format!("{name}: {error}"));
+                        ui.colored_label(color(theme.palette.error), format!("{name}: {error}"));
                     }
                 }
             }
@@ -196,7 +196,7 @@ fn step_ui(
     ui.label(&step.text);
     match &step.predict {
         Some(Predict::Load(prompt)) => {
-            ui.label(RichText::new(prompt).color(theme.info));
+            ui.label(RichText::new(prompt).color(color(theme.palette.info)));
             let mut load = run.predicted_load.unwrap_or(0.0);
             // The words and the value above the slider, the slider the
             // sidebar's width: beside it they ran past the sidebar's edge
@@ -226,7 +226,7 @@ fn step_ui(
             }
         }
         Some(Predict::Choice { prompt, answers }) => {
-            ui.label(RichText::new(prompt).color(theme.info));
+            ui.label(RichText::new(prompt).color(color(theme.palette.info)));
             for (i, answer) in answers.iter().enumerate() {
                 if ui.radio(run.chosen == Some(i), answer.as_str()).clicked() {
                     actions.push(Action::LessonChoose(i));
@@ -249,9 +249,9 @@ fn step_ui(
             // colour, a result of the theory in the text's: the words differ too.
             let text = RichText::new(result);
             ui.label(match run.verdict() {
-                Some(true) => text.color(theme.stable).strong(),
-                Some(false) => text.color(theme.warning),
-                None => text.color(theme.text),
+                Some(true) => text.color(color(theme.palette.stable)).strong(),
+                Some(false) => text.color(color(theme.palette.warning)),
+                None => text.color(color(theme.palette.text)),
             })
         });
     // The prediction beside the steps after it, but for the reveal of the

@@ -8,7 +8,7 @@ use crate::app::View;
 use crate::app::action::Actions;
 use crate::app::speak::Speak as _;
 use crate::app::state::{AppState, VISIBLE_FRACTION};
-use crate::app::theme::Theme;
+use crate::app::theme::{Theme, color};
 use crate::format::{load_text, number_text};
 use crate::i18n::Words;
 use crate::i18n::{state_name, transition_text};
@@ -132,7 +132,7 @@ fn notes(
                 load = number_text(p),
                 end = number_text(state.load_max())
             ),
-            theme.warning,
+            color(theme.palette.warning),
         ));
     }
     if state.answer_hidden() {
@@ -162,7 +162,7 @@ fn notes(
     if let Some(warning) = &analysis.warning {
         notes.push(Note {
             text: tr!(words, "not-resolved"),
-            color: theme.warning,
+            color: color(theme.palette.warning),
             more: Some(crate::i18n::not_resolved_words(words, warning)),
         });
     }
@@ -186,7 +186,7 @@ fn ramp_onset_notes(
     if let Some(theory) = theory {
         notes.push(Note::new(
             tr!(words, "ramp-theory", load = load_text(theory)),
-            theme.text,
+            color(theme.palette.text),
         ));
     }
     match seen {
@@ -199,13 +199,13 @@ fn ramp_onset_notes(
                 } else {
                     tr!(words, "ramp-seen", load = load, visible = visible)
                 },
-                color: theme.measured,
+                color: color(theme.palette.measured),
                 more: late.then(|| tr!(words, "ramp-seen-late.why")),
             });
         }
         None => notes.push(Note::new(
             tr!(words, "ramp-watching", visible = visible),
-            theme.text,
+            color(theme.palette.text),
         )),
     }
 }

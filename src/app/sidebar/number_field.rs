@@ -12,7 +12,7 @@ use eframe::egui;
 
 use crate::app::action::{Action, Actions, Refusal};
 use crate::app::state::AppState;
-use crate::app::theme::Theme;
+use crate::app::theme::{Theme, color};
 use crate::format::number_text;
 use crate::model::Key;
 
@@ -74,7 +74,7 @@ impl NumberFields {
             // on a projector read as another number.
             .clip_text(false);
         if refused {
-            edit = edit.text_color(theme.error);
+            edit = edit.text_color(color(theme.palette.error));
         }
         // The load by its word (the others by their symbols, a, nu, k1...).
         let name = if key == Key::Load {
@@ -105,7 +105,10 @@ impl NumberFields {
 /// The reason a typed value for `key` was refused, under its field.
 pub fn refusal_ui(ui: &mut egui::Ui, state: &AppState, theme: &Theme, key: Key) {
     if let Some(why) = state.refusal(key) {
-        ui.colored_label(theme.error, tr!(ui.words(), "refused", why = why));
+        ui.colored_label(
+            color(theme.palette.error),
+            tr!(ui.words(), "refused", why = why),
+        );
     }
 }
 

@@ -8,7 +8,7 @@ use eframe::egui;
 use crate::app::View;
 use crate::app::action::{Action, Actions};
 use crate::app::state::AppState;
-use crate::app::theme::Theme;
+use crate::app::theme::{Theme, color};
 use crate::format::{load_text, number_text};
 use crate::sim::Ramp;
 
@@ -100,7 +100,10 @@ impl View for RampSection {
                 }
             });
             if let Err(why) = &ramp {
-                ui.colored_label(theme.error, crate::i18n::ramp_error(words, why));
+                ui.colored_label(
+                    color(theme.palette.error),
+                    crate::i18n::ramp_error(words, why),
+                );
             }
             if let Some(run) = state.ramp() {
                 let doing = if run.finished() {

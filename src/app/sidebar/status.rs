@@ -8,7 +8,7 @@ use crate::app::View;
 use crate::app::action::Actions;
 use crate::app::speak::Speak as _;
 use crate::app::state::AppState;
-use crate::app::theme::Theme;
+use crate::app::theme::{Theme, color};
 use crate::format::{load_text, measured_text, number_text, percent_text, rate_text, secs_text};
 use crate::i18n::Words;
 use crate::i18n::{duration_words, state_name};
@@ -234,7 +234,7 @@ impl View for StatusSection {
             ui.label(
                 RichText::new(tr!(words, "card-hidden"))
                     .heading()
-                    .color(theme.info),
+                    .color(color(theme.palette.info)),
             );
             ui.weak(tr!(words, "card-hidden.why"));
             return;
@@ -242,7 +242,7 @@ impl View for StatusSection {
         let (Some(analysis), Some(spectrum)) = (state.analysis(), state.current_spectrum()) else {
             if let Some(error) = state.analysis_failure() {
                 ui.colored_label(
-                    theme.warning,
+                    color(theme.palette.warning),
                     tr!(words, "card-no-figures", why = error.to_string()),
                 );
             }
@@ -275,7 +275,10 @@ impl View for StatusSection {
                 .on_hover_text(tr!(words, "card-growth.tooltip"));
         }
         if analysis.warning.is_some() {
-            ui.colored_label(theme.warning, tr!(words, "card-not-resolved"));
+            ui.colored_label(
+                color(theme.palette.warning),
+                tr!(words, "card-not-resolved"),
+            );
         }
         match s.e_folding_secs() {
             Some(secs) => ui

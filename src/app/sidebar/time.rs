@@ -7,7 +7,7 @@ use crate::app::action::{Action, Actions, Command};
 use crate::app::speak::Speak as _;
 use crate::app::speak::status_words;
 use crate::app::state::AppState;
-use crate::app::theme::Theme;
+use crate::app::theme::{Theme, color};
 use crate::format::number_text;
 use crate::sim::{SPEED_RANGE, Status};
 use crate::tr;
@@ -69,7 +69,7 @@ impl View for TimeSection {
         ));
         if let Some(achieved) = state.lagging() {
             ui.colored_label(
-                theme.warning,
+                color(theme.palette.warning),
                 tr!(
                     words,
                     "run-lagging",

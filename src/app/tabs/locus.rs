@@ -12,7 +12,7 @@ use crate::app::action::{Actions, Table};
 use crate::app::plot_draw::{legend_ui, plot_ui};
 use crate::app::plot_frame::Fit;
 use crate::app::state::AppState;
-use crate::app::theme::Theme;
+use crate::app::theme::{Theme, color};
 use crate::format::number_text;
 use crate::i18n::Language;
 use crate::model::{Model, PresetId};
@@ -50,7 +50,7 @@ impl View for LocusTab {
                 return;
             }
             ui.colored_label(
-                theme.warning,
+                color(theme.palette.warning),
                 match state.analysis_failure() {
                     Some(error) => tr!(
                         words,

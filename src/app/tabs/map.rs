@@ -19,7 +19,7 @@ use crate::app::jobs::{Cancel, Jobs};
 use crate::app::plot_draw::{legend_ui, plot_ui};
 use crate::app::plot_frame::{Fit, SingleClick};
 use crate::app::state::AppState;
-use crate::app::theme::Theme;
+use crate::app::theme::{Theme, color};
 use crate::format::number_text;
 use crate::model::{Axis, Model};
 use crate::plot::map::StabilityMap;
@@ -293,7 +293,7 @@ impl MapPanel {
             ui.ctx().request_repaint();
         }
         if let Some(error) = &job.error {
-            ui.colored_label(theme.error, error.words(ui.words()));
+            ui.colored_label(color(theme.palette.error), error.words(ui.words()));
         }
         if done < total {
             #[expect(clippy::cast_precision_loss, reason = "row counts")]
@@ -307,7 +307,7 @@ impl MapPanel {
         }
         if let Some(reason) = job.rows.iter().flatten().find_map(|r| r.as_ref().err()) {
             ui.colored_label(
-                theme.warning,
+                color(theme.palette.warning),
                 tr!(
                     ui.words(),
                     "map-grey-rows",

@@ -17,7 +17,7 @@ use crate::app::jobs::Jobs;
 use crate::app::plot_draw::{legend_ui, plot_ui};
 use crate::app::plot_frame::Fit;
 use crate::app::state::AppState;
-use crate::app::theme::Theme;
+use crate::app::theme::{Theme, color};
 use crate::format::number_text;
 use crate::model::{Axis, Key, Load, Model};
 use crate::plot::paradox::Paradox;
@@ -191,14 +191,14 @@ impl ParadoxPanel {
             Ok(curves) => curves,
             Err(why) => {
                 ui.colored_label(
-                    theme.warning,
+                    color(theme.palette.warning),
                     tr!(words, "paradox-no-thread", why = why.as_str()),
                 );
                 return;
             }
         };
         if let Some(note) = &curves.note {
-            ui.colored_label(theme.warning, no_curve_words(words, note));
+            ui.colored_label(color(theme.palette.warning), no_curve_words(words, note));
             return;
         }
         ui.label(match (model.load, self.kind) {
@@ -221,7 +221,10 @@ impl ParadoxPanel {
                 plot_ui(ui, plot, refit, theme);
             }
             None => {
-                ui.colored_label(theme.warning, tr!(words, "paradox-no-extent"));
+                ui.colored_label(
+                    color(theme.palette.warning),
+                    tr!(words, "paradox-no-extent"),
+                );
             }
         }
     }

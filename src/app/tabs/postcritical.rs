@@ -23,7 +23,7 @@ use crate::app::plot_draw::{legend_ui, plot_ui};
 use crate::app::plot_frame::Fit;
 use crate::app::speak::Speak as _;
 use crate::app::state::AppState;
-use crate::app::theme::Theme;
+use crate::app::theme::{Theme, color};
 use crate::format::load_text;
 use crate::i18n::Words;
 use crate::model::Model;
@@ -147,7 +147,10 @@ impl View for PostCriticalPanel {
             Ok(onsets) => onsets,
             Err(why) => {
                 let why = why.words(state.words());
-                ui.colored_label(theme.warning, tr!(state.words(), "cycles-none", why = why));
+                ui.colored_label(
+                    color(theme.palette.warning),
+                    tr!(state.words(), "cycles-none", why = why),
+                );
                 return;
             }
         };

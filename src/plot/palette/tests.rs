@@ -105,7 +105,7 @@ fn curves_and_series_stay_apart_for_every_colour_vision() {
         };
         let beside = [
             ("background", p.background),
-            ("reference", p.overlay),
+            ("reference", p.reference),
             ("now", p.now),
         ];
         let kinds = [
