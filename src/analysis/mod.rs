@@ -12,9 +12,13 @@ use linear::{
     along, critical, crossing, hqr, locus, map, paradox, peaks, pencil, resolution, roots,
     stability,
 };
-use nonlinear::{cycles, field, gauss, hopf, jet};
+use nonlinear::{boundary, cycles, field, gauss, hopf, jet};
 
 pub use along::{AlongLoad, Sampling, Unresolved};
+pub use boundary::{
+    Boundaries, Boundary, BoundaryKind, BoundaryPoint, BoundarySpec, CurveEnd, SpecialKind,
+    SpecialPoint, boundaries,
+};
 pub use critical::{
     BRACKET_SAMPLES, bracketing_locus, bracketing_locus_reporting, critical_loads,
     critical_loads_along, plotted_locus,

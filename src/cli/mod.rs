@@ -4,6 +4,7 @@
 
 mod bench;
 mod bifurcation;
+mod boundary;
 mod critical;
 mod desktop;
 mod figure;
@@ -244,9 +245,15 @@ enum Command {
     /// Floquet multipliers) at evenly spaced loads; optionally a sweep of
     /// the load up and down as an experiment does.
     Bifurcation(bifurcation::Args),
+    /// Stability boundaries followed in the load and a second parameter
+    /// (pseudo-arclength continuation): every flutter and divergence onset,
+    /// soft or hard along each flutter boundary by its first Lyapunov
+    /// coefficient, and the Bautin, Bogdanov-Takens, double-Hopf and
+    /// zero-Hopf points.
+    Boundary(boundary::Args),
     /// A figure for a paper, SVG or PNG at a journal's size: the root locus,
     /// Re and Im against the load (other presets overlaid), the stability
-    /// map or the paradox curves.
+    /// map, the paradox curves or the bifurcation diagram.
     Figure(figure::Args),
     /// Speed: the root locus, the eigenvalues, the critical loads, both
     /// engines and the app's frame time, measured in this process.
@@ -399,6 +406,7 @@ fn execute(command: &Command) -> Result<()> {
         | Command::Manual(_) => true,
         Command::Map(args) => args.streams(),
         Command::Bifurcation(args) => args.streams(),
+        Command::Boundary(args) => args.streams(),
         _ => false,
     };
     if to_stdout {
@@ -414,6 +422,7 @@ fn execute(command: &Command) -> Result<()> {
         Command::Map(args) => map::run(args),
         Command::Figure(args) => figure::run(args),
         Command::Bifurcation(args) => bifurcation::run(args),
+        Command::Boundary(args) => boundary::run(args),
         Command::Bench(args) => bench::run(args, &mut out),
         Command::Snapshot(args) => snapshot::run(args),
         Command::Record(args) => record::run(args),

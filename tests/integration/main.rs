@@ -9,6 +9,7 @@ mod app_logic;
 mod app_tools;
 mod as_printed;
 mod bad_input;
+mod boundary;
 mod chain_engines;
 mod chains;
 mod cli;

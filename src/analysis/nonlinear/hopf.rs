@@ -130,7 +130,7 @@ pub(crate) struct HopfPoint {
 /// Whether anything in `model` dissipates energy: a damper, drag along the
 /// rods or a roller with mass (whose spin slips on the band). Without, the
 /// column is reversible (a massless roller is exactly the ideal follower).
-fn dissipative(model: &Model) -> bool {
+pub(crate) fn dissipative(model: &Model) -> bool {
     let c = &model.column;
     c.c1_nms_per_rad != 0.0
         || c.c2_nms_per_rad != 0.0

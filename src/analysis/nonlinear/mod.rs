@@ -1,7 +1,11 @@
 //! The nonlinear analysis: the reduced equations of motion and their
 //! derivatives, the Hopf points' normal form (soft or hard onset), and the
-//! limit cycles continued from them with their Floquet multipliers.
+//! limit cycles continued from them with their Floquet multipliers; the
+//! stability boundaries followed in a second parameter, with where their
+//! onsets turn from soft to hard.
 
+pub(super) mod arclength;
+pub(super) mod boundary;
 mod cycle;
 pub(super) mod cycles;
 pub(super) mod field;

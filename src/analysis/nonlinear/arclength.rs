@@ -1,0 +1,424 @@
+//! Pseudo-arclength continuation of a curve in a plane: the zero set of a
+//! smooth scalar function `g(y, p)` (a pair's growth rate at a Hopf point,
+//! a real eigenvalue at a divergence), followed by tangent predictor and
+//! Newton corrector on `g = 0` and the arclength condition, so the curve is
+//! followed through its folds (where it turns back in either coordinate).
+//!
+//! Both coordinates are scaled to the box asked for (`u`, `v` in [0, 1]);
+//! the derivatives of `g` are central differences. Pure: no UI, no clock.
+
+use crate::analysis::{AnalysisError, C64};
+
+/// The box the curve is followed in: the second parameter's range and the
+/// load's.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Plane {
+    pub y: (f64, f64),
+    pub p: (f64, f64),
+}
+
+impl Plane {
+    /// The plane's point at scaled `[u, v]`.
+    pub fn point(&self, z: [f64; 2]) -> (f64, f64) {
+        (
+            self.y.0 + z[0] * (self.y.1 - self.y.0),
+            self.p.0 + z[1] * (self.p.1 - self.p.0),
+        )
+    }
+
+    /// The scaled coordinates of `(y, p)`.
+    pub fn scaled(&self, y: f64, p: f64) -> [f64; 2] {
+        [
+            (y - self.y.0) / (self.y.1 - self.y.0),
+            (p - self.p.0) / (self.p.1 - self.p.0),
+        ]
+    }
+}
+
+/// What a curve is the zero set of.
+pub(crate) trait Defining {
+    /// `g` at `(y, p)` (scaled to the spectrum: a growth rate over the
+    /// pencil's frequency scale) with the eigenvalue it is of, the one
+    /// nearest `near`; `None` where that eigenvalue is gone (a pair met on
+    /// the real axis) or the column cannot be analysed.
+    ///
+    /// # Errors
+    /// An eigenvalue computation that fails.
+    fn value(&self, y: f64, p: f64, near: C64) -> Result<Option<(f64, C64)>, AnalysisError>;
+}
+
+/// How a followed curve ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum End {
+    /// It left the second parameter's range (the last point is on its end).
+    ParameterEdge,
+    /// It left the load range (the last point is on its end).
+    LoadEdge,
+    /// Its eigenvalue was gone past the last point: a pair met on the
+    /// real axis (at zero, on a Hopf curve: a Bogdanov-Takens point).
+    Merged,
+    /// It came back to where it started.
+    Closed,
+    /// The corrector failed down to the smallest step.
+    Lost,
+    /// The most steps were taken.
+    Steps,
+}
+
+/// A point of the curve: scaled coordinates and its eigenvalue.
+pub(crate) type Node = ([f64; 2], C64);
+
+/// The central-difference step in scaled coordinates.
+const H: f64 = 1e-6;
+/// A point is on the curve when `|g| / |grad g|`, its distance from the
+/// curve to first order (scaled), is at most this.
+const ON_CURVE: f64 = 1e-11;
+/// The first, the largest and the smallest arclength step (scaled).
+const FIRST_STEP: f64 = 0.01;
+const LARGEST_STEP: f64 = 0.03;
+const SMALLEST_STEP: f64 = 1e-7;
+/// The most steps along one direction.
+const MOST_STEPS: usize = 5000;
+/// The largest turn of the tangent in one step, in radians.
+const LARGEST_TURN: f64 = 0.25;
+
+/// Follows the curve through `start` in the direction `sign` (+1 or -1)
+/// of its tangent there: its points from `start` on, and how it ended.
+///
+/// # Errors
+/// An eigenvalue computation that fails.
+pub(crate) fn follow(
+    g: &dyn Defining,
+    plane: &Plane,
+    start: Node,
+    sign: f64,
+) -> Result<(Vec<Node>, End), AnalysisError> {
+    let mut nodes = vec![start];
+    let (y, p) = plane.point(start.0);
+    let Some((value, _)) = g.value(y, p, start.1)? else {
+        return Ok((nodes, End::Lost));
+    };
+    let Some(gradient) = gradient(g, plane, start, value)? else {
+        return Ok((nodes, End::Lost));
+    };
+    let mut tangent = scale(tangent_of(gradient), sign);
+    let mut step = FIRST_STEP;
+    let mut merged = false;
+    let (mut z, mut lambda) = start;
+    for _ in 0..MOST_STEPS {
+        let predicted = [z[0] + step * tangent[0], z[1] + step * tangent[1]];
+        // Beyond the box the column may not exist (eta > 1): the curve's
+        // point on the edge is found on the edge.
+        if let Some((edge, end)) = outside(predicted) {
+            if let Some(node) = on_edge(g, plane, (z, lambda), predicted, edge)? {
+                if distance(node.0, z) > 1e-12 {
+                    nodes.push(node);
+                }
+                return Ok((nodes, end));
+            }
+            step *= 0.5;
+            if step < SMALLEST_STEP {
+                return Ok((nodes, End::Lost));
+            }
+            continue;
+        }
+        let next = match correct(g, plane, predicted, tangent, lambda)? {
+            Corrected::Point(node) => Some(node),
+            Corrected::Gone => {
+                merged = true;
+                None
+            }
+            Corrected::Failed => None,
+        };
+        let accepted = match next {
+            Some(node) => turned_tangent(g, plane, node, tangent)?.map(|t| (node, t)),
+            None => None,
+        };
+        let Some(((z1, lambda1), t1)) = accepted.filter(|((z1, _), _)| outside(*z1).is_none())
+        else {
+            step *= 0.5;
+            if step < SMALLEST_STEP {
+                return Ok((nodes, if merged { End::Merged } else { End::Lost }));
+            }
+            continue;
+        };
+        merged = false;
+        nodes.push((z1, lambda1));
+        if nodes.len() > 8 && distance(z1, start.0) < 0.5 * step {
+            return Ok((nodes, End::Closed));
+        }
+        (z, lambda, tangent) = (z1, lambda1, t1);
+        step = (step * 1.3).min(LARGEST_STEP);
+    }
+    Ok((nodes, End::Steps))
+}
+
+/// What the corrector found.
+enum Corrected {
+    Point(Node),
+    /// The eigenvalue is gone at the prediction or on the way.
+    Gone,
+    Failed,
+}
+
+/// Newton's method on `g = 0` and `tangent . (z - predicted) = 0`.
+fn correct(
+    g: &dyn Defining,
+    plane: &Plane,
+    predicted: [f64; 2],
+    tangent: [f64; 2],
+    near: C64,
+) -> Result<Corrected, AnalysisError> {
+    let mut z = predicted;
+    let mut lambda = near;
+    for _ in 0..12 {
+        let (y, p) = plane.point(z);
+        let Some((value, found)) = g.value(y, p, lambda)? else {
+            return Ok(Corrected::Gone);
+        };
+        lambda = found;
+        let Some(grad) = gradient(g, plane, (z, lambda), value)? else {
+            return Ok(Corrected::Gone);
+        };
+        let along = tangent[0] * (z[0] - predicted[0]) + tangent[1] * (z[1] - predicted[1]);
+        let Some(dz) = solve2([grad, tangent], [-value, -along]) else {
+            return Ok(Corrected::Failed);
+        };
+        z = [z[0] + dz[0], z[1] + dz[1]];
+        if value.abs() <= ON_CURVE * grad[0].hypot(grad[1]) && dz[0].hypot(dz[1]) <= 1e-10 {
+            return Ok(Corrected::Point((z, lambda)));
+        }
+        if dz[0].hypot(dz[1]) > 1.0 {
+            return Ok(Corrected::Failed);
+        }
+    }
+    Ok(Corrected::Failed)
+}
+
+/// The tangent at `node`, turned the way of `before`, if it turned less
+/// than [`LARGEST_TURN`] from it.
+fn turned_tangent(
+    g: &dyn Defining,
+    plane: &Plane,
+    node: Node,
+    before: [f64; 2],
+) -> Result<Option<[f64; 2]>, AnalysisError> {
+    let (y, p) = plane.point(node.0);
+    let Some((value, _)) = g.value(y, p, node.1)? else {
+        return Ok(None);
+    };
+    let Some(grad) = gradient(g, plane, node, value)? else {
+        return Ok(None);
+    };
+    let mut t = tangent_of(grad);
+    let cos = t[0] * before[0] + t[1] * before[1];
+    if cos < 0.0 {
+        t = scale(t, -1.0);
+    }
+    Ok((cos.abs() >= LARGEST_TURN.cos()).then_some(t))
+}
+
+/// `(dg/du, dg/dv)` at `node`, where `g` is `value`, by central
+/// differences, one-sided where the column does not exist on one side (an
+/// end of its range, such as eta = 1); `None` where the eigenvalue is gone
+/// on both sides, or the gradient vanishes.
+fn gradient(
+    g: &dyn Defining,
+    plane: &Plane,
+    (z, near): Node,
+    value: f64,
+) -> Result<Option<[f64; 2]>, AnalysisError> {
+    let mut out = [0.0; 2];
+    for (k, slot) in out.iter_mut().enumerate() {
+        let at = |sign: f64| -> Result<Option<f64>, AnalysisError> {
+            let mut moved = z;
+            moved[k] += sign * H;
+            let (y, p) = plane.point(moved);
+            Ok(g.value(y, p, near)?.map(|(value, _)| value))
+        };
+        *slot = match (at(1.0)?, at(-1.0)?) {
+            (Some(plus), Some(minus)) => (plus - minus) / (2.0 * H),
+            (Some(plus), None) => (plus - value) / H,
+            (None, Some(minus)) => (value - minus) / H,
+            (None, None) => return Ok(None),
+        };
+    }
+    let size = out[0].hypot(out[1]);
+    Ok((size.is_finite() && size > 0.0).then_some(out))
+}
+
+/// The unit tangent of the level curve with this gradient.
+fn tangent_of(gradient: [f64; 2]) -> [f64; 2] {
+    let size = gradient[0].hypot(gradient[1]);
+    [-gradient[1] / size, gradient[0] / size]
+}
+
+fn scale(v: [f64; 2], s: f64) -> [f64; 2] {
+    [s * v[0], s * v[1]]
+}
+
+fn distance(a: [f64; 2], b: [f64; 2]) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+/// `rows x = rhs` for two rows, by Cramer's rule; `None` when singular.
+fn solve2(rows: [[f64; 2]; 2], rhs: [f64; 2]) -> Option<[f64; 2]> {
+    let [[a, b], [c, d]] = rows;
+    let det = a * d - b * c;
+    let size = (a.abs() + b.abs()) * (c.abs() + d.abs());
+    (det.abs() > 1e-14 * size && det.is_finite()).then(|| {
+        [
+            (rhs[0] * d - b * rhs[1]) / det,
+            (a * rhs[1] - c * rhs[0]) / det,
+        ]
+    })
+}
+
+/// Which edge of the box `z` is beyond, if any: the coordinate, the
+/// edge's value and how the curve ends there.
+fn outside(z: [f64; 2]) -> Option<((usize, f64), End)> {
+    if z[0] < 0.0 {
+        Some(((0, 0.0), End::ParameterEdge))
+    } else if z[0] > 1.0 {
+        Some(((0, 1.0), End::ParameterEdge))
+    } else if z[1] < 0.0 {
+        Some(((1, 0.0), End::LoadEdge))
+    } else if z[1] > 1.0 {
+        Some(((1, 1.0), End::LoadEdge))
+    } else {
+        None
+    }
+}
+
+/// The curve's point on the edge `z[k] = value` between `inside` and the
+/// point `beyond` past it: Newton's method on `g` in the other coordinate
+/// from where the chord crosses the edge.
+///
+/// # Errors
+/// An eigenvalue computation that fails.
+pub(crate) fn on_edge(
+    g: &dyn Defining,
+    plane: &Plane,
+    (inside, near): Node,
+    beyond: [f64; 2],
+    (k, value): (usize, f64),
+) -> Result<Option<Node>, AnalysisError> {
+    let other = 1 - k;
+    let s = (value - inside[k]) / (beyond[k] - inside[k]);
+    let mut z = inside;
+    z[k] = value;
+    z[other] = inside[other] + s * (beyond[other] - inside[other]);
+    let mut lambda = near;
+    for _ in 0..20 {
+        let (y, p) = plane.point(z);
+        let Some((g0, found)) = g.value(y, p, lambda)? else {
+            return Ok(None);
+        };
+        lambda = found;
+        let Some(grad) = gradient(g, plane, (z, lambda), g0)? else {
+            return Ok(None);
+        };
+        if grad[other] == 0.0 {
+            return Ok(None);
+        }
+        let dz = -g0 / grad[other];
+        z[other] += dz;
+        if dz.abs() <= 1e-12 {
+            // Past a corner the curve leaves by the other edge first.
+            return Ok((0.0..=1.0).contains(&z[other]).then_some((z, lambda)));
+        }
+        if dz.abs() > 1.0 {
+            return Ok(None);
+        }
+    }
+    Ok(None)
+}
+
+/// The curve's point nearest `fraction` of the way from `a` to `b` (two
+/// of its points): the chord's point corrected onto the curve across the
+/// chord.
+///
+/// # Errors
+/// An eigenvalue computation that fails.
+pub(crate) fn between(
+    g: &dyn Defining,
+    plane: &Plane,
+    a: Node,
+    b: [f64; 2],
+    fraction: f64,
+) -> Result<Option<Node>, AnalysisError> {
+    let chord = [b[0] - a.0[0], b[1] - a.0[1]];
+    let length = chord[0].hypot(chord[1]);
+    if length == 0.0 {
+        return Ok(Some(a));
+    }
+    let along = scale(chord, 1.0 / length);
+    let predicted = [a.0[0] + fraction * chord[0], a.0[1] + fraction * chord[1]];
+    Ok(match correct(g, plane, predicted, along, a.1)? {
+        Corrected::Point(node) => Some(node),
+        Corrected::Gone | Corrected::Failed => None,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The unit circle about (0.5, 0.5) of radius 0.3: g = r^2 - 0.09.
+    struct Circle;
+
+    impl Defining for Circle {
+        fn value(&self, y: f64, p: f64, near: C64) -> Result<Option<(f64, C64)>, AnalysisError> {
+            Ok(Some(((y - 0.5).powi(2) + (p - 0.5).powi(2) - 0.09, near)))
+        }
+    }
+
+    /// A circle is followed round through both its folds in y and back
+    /// to its start, every point on it.
+    #[test]
+    fn a_circle_is_followed_round_through_its_folds() {
+        let plane = Plane {
+            y: (0.0, 1.0),
+            p: (0.0, 1.0),
+        };
+        let start = ([0.8, 0.5], C64::new(0.0, 1.0));
+        let (nodes, end) = follow(&Circle, &plane, start, 1.0).unwrap();
+        assert_eq!(end, End::Closed);
+        for (z, _) in &nodes {
+            let r = (z[0] - 0.5).hypot(z[1] - 0.5);
+            assert!((r - 0.3).abs() < 1e-9, "r = {r}");
+        }
+        let lowest = nodes.iter().map(|n| n.0[0]).fold(1.0, f64::min);
+        assert!(lowest < 0.21, "round the fold at y = 0.2: {lowest}");
+    }
+
+    /// A circle of radius 0.6 about the box's centre, cut by the box: each
+    /// way it ends on an edge, its last point on the edge and the circle.
+    #[test]
+    fn a_curve_leaving_the_box_ends_on_its_edge() {
+        struct Wide;
+        impl Defining for Wide {
+            fn value(&self, y: f64, p: f64, n: C64) -> Result<Option<(f64, C64)>, AnalysisError> {
+                Ok(Some(((y - 0.5).powi(2) + (p - 0.5).powi(2) - 0.36, n)))
+            }
+        }
+        let plane = Plane {
+            y: (0.0, 1.0),
+            p: (0.0, 1.0),
+        };
+        let r = 0.6 / 2f64.sqrt();
+        let start = ([0.5 + r, 0.5 + r], C64::new(0.0, 1.0));
+        for sign in [1.0, -1.0] {
+            let (nodes, end) = follow(&Wide, &plane, start, sign).unwrap();
+            let (last, _) = *nodes.last().unwrap();
+            let on_edge = |x: f64| x.abs() < 1e-15 || (x - 1.0).abs() < 1e-15;
+            match end {
+                End::ParameterEdge => assert!(on_edge(last[0]), "{last:?}"),
+                End::LoadEdge => assert!(on_edge(last[1]), "{last:?}"),
+                other => panic!("{other:?}"),
+            }
+            let radius = (last[0] - 0.5).hypot(last[1] - 0.5);
+            assert!((radius - 0.6).abs() < 1e-9, "{radius}");
+        }
+    }
+}

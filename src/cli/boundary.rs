@@ -1,0 +1,234 @@
+//! `zieglerlab boundary`: the stability boundaries followed in the load and
+//! a second parameter, with the first Lyapunov coefficient along each
+//! flutter boundary and the special points, as CSV or JSON.
+
+use std::io::Write;
+use std::str::FromStr;
+
+use anyhow::Result;
+use clap::ValueEnum;
+use serde_json::json;
+
+use zieglerlab::analysis::{
+    Boundaries, BoundaryKind, BoundarySpec, SpecialKind, boundaries, check_largest_load,
+};
+use zieglerlab::format::Exact;
+use zieglerlab::model::Axis;
+
+use super::output::{check_output, write_atomically};
+use super::{ModelArgs, spinner};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum Format {
+    Csv,
+    Json,
+}
+
+/// The second parameter as `KEY:MIN:MAX`.
+#[derive(Clone, Debug)]
+pub struct RangeArg {
+    pub text: String,
+    pub name: String,
+    pub min: f64,
+    pub max: f64,
+}
+
+impl FromStr for RangeArg {
+    type Err = String;
+
+    fn from_str(text: &str) -> Result<Self, String> {
+        let mut parts = text.rsplitn(3, ':');
+        let (Some(max), Some(min), Some(name)) = (parts.next(), parts.next(), parts.next()) else {
+            return Err("must be KEY:MIN:MAX (e.g. c2:0:0.01)".to_owned());
+        };
+        let number = |s: &str| {
+            s.trim()
+                .parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| format!("'{s}' is not a finite number"))
+        };
+        let (min, max) = (number(min)?, number(max)?);
+        if max <= min {
+            return Err("MAX must be above MIN".to_owned());
+        }
+        Ok(Self {
+            text: text.to_owned(),
+            name: name.trim().to_owned(),
+            min,
+            max,
+        })
+    }
+}
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    model: ModelArgs,
+    /// The second parameter and its range, KEY:MIN:MAX (any key `map` takes).
+    #[arg(long, allow_hyphen_values = true)]
+    y: RangeArg,
+    /// Lower end of the loads.
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    load_min: f64,
+    /// Upper end of the loads [default: the end of the window's load bar].
+    #[arg(long, allow_hyphen_values = true)]
+    load_max: Option<f64>,
+    #[arg(long, value_enum, default_value_t = Format::Csv)]
+    format: Format,
+    /// Where to write [default: standard output].
+    #[arg(long)]
+    out: Option<std::path::PathBuf>,
+}
+
+impl Args {
+    /// Whether the boundaries go to standard output, a pipe or a device.
+    pub fn streams(&self) -> bool {
+        self.out
+            .as_ref()
+            .is_none_or(|out| std::fs::metadata(out).is_ok_and(|m| !m.is_file() && !m.is_dir()))
+    }
+}
+
+pub fn run(args: &Args) -> Result<()> {
+    if let Some(out) = &args.out {
+        check_output(out, false)?;
+    }
+    let (_, model) = args.model.build()?;
+    let axis = Axis::parse(&args.y.name, &model)
+        .map_err(|e| anyhow::anyhow!("--y {}: {e}", args.y.text))?;
+    let load_max = args.load_max.unwrap_or_else(|| model.load_bar_max_p());
+    check_largest_load(load_max)?;
+    let spec = BoundarySpec {
+        model,
+        axis,
+        axis_range: (args.y.min, args.y.max),
+        load_range: (args.load_min, load_max),
+    };
+    let working = spinner("following the stability boundaries");
+    let found = boundaries(&spec)?;
+    working.finish_and_clear();
+    for point in &found.special_points {
+        eprintln!(
+            "{}: {} = {}, p = {}",
+            special_name(point.kind),
+            args.y.name,
+            Exact(point.value),
+            Exact(point.load)
+        );
+    }
+    let write = |out: &mut dyn Write| -> std::io::Result<()> {
+        match args.format {
+            Format::Csv => write_csv(out, &found, &args.y.name),
+            Format::Json => write_json(out, &found, &args.y.name),
+        }
+    };
+    if let Some(path) = &args.out {
+        write_atomically(path, |file| write(file))?;
+    } else {
+        let mut out = zieglerlab::files::standard_output();
+        write(&mut out)?;
+        out.flush()?;
+    }
+    Ok(())
+}
+
+/// Each curve's name: `flutter-1`, ..., `divergence-1`, ... in the order
+/// found.
+fn curve_names(found: &Boundaries) -> Vec<String> {
+    let mut counts = [0usize; 2];
+    found
+        .curves
+        .iter()
+        .map(|curve| {
+            let (k, word) = match curve.kind {
+                BoundaryKind::Flutter => (0, "flutter"),
+                BoundaryKind::Divergence => (1, "divergence"),
+            };
+            counts[k] += 1;
+            format!("{word}-{}", counts[k])
+        })
+        .collect()
+}
+
+/// Soft or hard, from the first Lyapunov coefficient's sign.
+fn onset(first_lyapunov: Option<f64>) -> &'static str {
+    match first_lyapunov {
+        Some(l1) if l1 < 0.0 => "soft",
+        Some(l1) if l1 > 0.0 => "hard",
+        _ => "",
+    }
+}
+
+fn special_name(kind: SpecialKind) -> &'static str {
+    match kind {
+        SpecialKind::Bautin => "bautin",
+        SpecialKind::BogdanovTakens => "bogdanov-takens",
+        SpecialKind::DoubleHopf => "double-hopf",
+        SpecialKind::ZeroHopf => "zero-hopf",
+    }
+}
+
+/// `curve,KEY,load,first_lyapunov,onset`, one row per point.
+fn write_csv(out: &mut dyn Write, found: &Boundaries, key: &str) -> std::io::Result<()> {
+    writeln!(out, "curve,{key},load,first_lyapunov,onset")?;
+    for (curve, name) in found.curves.iter().zip(curve_names(found)) {
+        for point in &curve.points {
+            let l1 = point
+                .first_lyapunov
+                .map_or_else(String::new, |l1| Exact(l1).to_string());
+            writeln!(
+                out,
+                "{name},{},{},{l1},{}",
+                Exact(point.value),
+                Exact(point.load),
+                onset(point.first_lyapunov)
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The curves with their points and ends, and the special points.
+fn write_json(out: &mut dyn Write, found: &Boundaries, key: &str) -> std::io::Result<()> {
+    let names = curve_names(found);
+    let curves: Vec<_> = found
+        .curves
+        .iter()
+        .zip(&names)
+        .map(|(curve, name)| {
+            let points: Vec<_> = curve
+                .points
+                .iter()
+                .map(|point| {
+                    json!({
+                        key: point.value,
+                        "load": point.load,
+                        "frequency_rad_per_s": point.eigenvalue.im,
+                        "first_lyapunov": point.first_lyapunov,
+                        "onset": match curve.kind {
+                            BoundaryKind::Flutter => Some(onset(point.first_lyapunov)),
+                            BoundaryKind::Divergence => None,
+                        },
+                    })
+                })
+                .collect();
+            json!({"curve": name, "kind": curve.kind, "ends": curve.ends, "points": points})
+        })
+        .collect();
+    let special: Vec<_> = found
+        .special_points
+        .iter()
+        .map(|point| {
+            json!({
+                "kind": special_name(point.kind),
+                key: point.value,
+                "load": point.load,
+                "curves": [&names[point.curves[0]], &names[point.curves[1]]],
+            })
+        })
+        .collect();
+    let document = json!({"key": key, "curves": curves, "special_points": special});
+    serde_json::to_writer_pretty(&mut *out, &document)?;
+    writeln!(out)
+}
