@@ -1,6 +1,6 @@
 //! `zieglerlab boundary`: the stability boundaries followed in the load and
 //! a second parameter, with the first Lyapunov coefficient along each
-//! flutter boundary and the special points, as CSV or JSON.
+//! flutter boundary and the special points, as CSV, JSON or a figure.
 
 use std::io::Write;
 use std::str::FromStr;
@@ -12,8 +12,10 @@ use serde_json::json;
 use zieglerlab::analysis::{
     Boundaries, BoundaryKind, BoundarySpec, SpecialKind, boundaries, check_largest_load,
 };
+use zieglerlab::figure::{self, Page, render};
 use zieglerlab::format::Exact;
 use zieglerlab::model::Axis;
+use zieglerlab::plot::boundary::BoundaryPlane;
 
 use super::output::{check_output, write_atomically};
 use super::{ModelArgs, spinner};
@@ -22,6 +24,10 @@ use super::{ModelArgs, spinner};
 enum Format {
     Csv,
     Json,
+    /// The plane as a figure (the page of `figure`'s defaults).
+    Png,
+    /// The same as SVG.
+    Svg,
 }
 
 /// The second parameter as `KEY:MIN:MAX`.
@@ -65,6 +71,8 @@ impl FromStr for RangeArg {
 pub struct Args {
     #[command(flatten)]
     model: ModelArgs,
+    #[command(flatten)]
+    lang: super::headless::FigureLanguage,
     /// The second parameter and its range, KEY:MIN:MAX (any key `map` takes).
     #[arg(long, allow_hyphen_values = true)]
     y: RangeArg,
@@ -91,8 +99,30 @@ impl Args {
 }
 
 pub fn run(args: &Args) -> Result<()> {
-    if let Some(out) = &args.out {
-        check_output(out, false)?;
+    let figure = match args.format {
+        Format::Png => Some(figure::Format::Png),
+        Format::Svg => Some(figure::Format::Svg),
+        Format::Csv | Format::Json => None,
+    };
+    match (&args.out, figure) {
+        (None, Some(_)) => anyhow::bail!(
+            "--format {}: give the picture's file with --out",
+            if figure == Some(figure::Format::Png) {
+                "png"
+            } else {
+                "svg"
+            }
+        ),
+        (Some(out), _) => {
+            if figure == Some(figure::Format::Svg) && figure::Format::of(out) != figure {
+                anyhow::bail!(
+                    "out = {}: --format svg writes SVG; name the file *.svg",
+                    out.display()
+                );
+            }
+            check_output(out, figure == Some(figure::Format::Png))?;
+        }
+        (None, None) => {}
     }
     let (_, model) = args.model.build()?;
     let axis = Axis::parse(&args.y.name, &model)
@@ -117,10 +147,22 @@ pub fn run(args: &Args) -> Result<()> {
             Exact(point.load)
         );
     }
+    if let (Some(format), Some(out)) = (figure, &args.out) {
+        let sheet = BoundaryPlane {
+            found: &found,
+            axis: &spec.axis,
+            axis_range: spec.axis_range,
+            load_range: spec.load_range,
+            words: zieglerlab::i18n::words(args.lang.language),
+        }
+        .sheet();
+        let rendered = render(&sheet, &Page::default(), format)?;
+        return write_atomically(out, |file| file.write_all(&rendered.bytes));
+    }
     let write = |out: &mut dyn Write| -> std::io::Result<()> {
         match args.format {
-            Format::Csv => write_csv(out, &found, &args.y.name),
             Format::Json => write_json(out, &found, &args.y.name),
+            Format::Csv | Format::Png | Format::Svg => write_csv(out, &found, &args.y.name),
         }
     };
     if let Some(path) = &args.out {

@@ -3,6 +3,7 @@
 //! arithmetic of where a plot looks (pure: no drawing).
 
 pub mod bifurcation;
+pub mod boundary;
 pub mod describe;
 pub mod locus;
 pub mod map;

@@ -412,3 +412,52 @@ fn the_bifurcation_figure_is_the_diagram_bifurcation_draws() {
     assert!(said.contains("cycle-1: soft onset at p = "), "{said}");
     assert_eq!(said, String::from_utf8_lossy(&computed.stderr));
 }
+
+/// The boundaries' figure draws each boundary in its state's colour where
+/// the continuation put it: the middle point of the divergence curve and
+/// of the flutter curve of the partial follower with dampers.
+#[test]
+fn the_boundary_figure_draws_each_boundary_where_it_was_found() {
+    use zieglerlab::analysis::{BoundaryKind, BoundarySpec, boundaries};
+    use zieglerlab::model::Axis;
+    use zieglerlab::plot::boundary::BoundaryPlane;
+    let m = model("ziegler-1952", &["c1=0.1", "c2=0.1"]);
+    let axis = Axis::parse("eta", &m).unwrap();
+    let spec = BoundarySpec {
+        model: m,
+        axis: axis.clone(),
+        axis_range: (0.0, 1.0),
+        load_range: (0.0, 8.0),
+    };
+    let found = boundaries(&spec).unwrap();
+    let sheet = BoundaryPlane {
+        found: &found,
+        axis: &axis,
+        axis_range: spec.axis_range,
+        load_range: spec.load_range,
+        words: words(Language::English),
+    }
+    .sheet();
+    let rendered = render(&sheet, &Page::default(), Format::Png).unwrap();
+    let image = pixels(&rendered);
+    let panel = &rendered.panels[0];
+    for curve in &found.curves {
+        let state = match curve.kind {
+            BoundaryKind::Flutter => State::Flutter,
+            BoundaryKind::Divergence => State::Divergence,
+        };
+        let middle = curve.points[curve.points.len() / 2];
+        let (x, y) = panel.page_point(middle.value, middle.load);
+        let drawn = (-3..=3).any(|dx| {
+            (-3..=3).any(|dy| {
+                let color = pixel_at(&image, (x + f64::from(dx), y + f64::from(dy)));
+                state_of(color).is_some_and(|(s, strength)| s == state && strength > 0.5)
+            })
+        });
+        assert!(
+            drawn,
+            "{state:?} at eta = {}, p = {}",
+            middle.value, middle.load
+        );
+    }
+}
