@@ -38,7 +38,8 @@ pub struct Args {
     #[command(flatten)]
     lang: super::headless::FigureLanguage,
     /// The loads, load:MIN:MAX:N (N evenly spaced, ends included). Cycles
-    /// are followed from every flutter onset in this range.
+    /// are followed from every flutter onset in this range. One load,
+    /// load:L:L:1, gives the cycles at L followed from every onset below.
     #[arg(long, allow_hyphen_values = true)]
     x: AxisArg,
     #[arg(long, value_enum, default_value_t = Format::Csv)]
@@ -123,7 +124,19 @@ pub fn run(args: &Args) -> Result<()> {
             Shown(args.measure_periods)
         );
     }
-    let (lo, hi) = (args.x.min, args.x.max);
+    // One load: the cycles there, followed from every onset below it.
+    let single = loads.len() == 1;
+    if single && (args.sweep || args.format == Format::Png) {
+        anyhow::bail!(
+            "--x {}: one load has no diagram and no sweep; give a range of loads for --format png or --sweep",
+            args.x.text
+        );
+    }
+    let (lo, hi) = if single {
+        (0.0, args.x.max)
+    } else {
+        (args.x.min, args.x.max)
+    };
     let pencil = AffinePencil::new(&model)?.with_threads(zieglerlab::machine_threads());
     let mut rows = equilibrium_rows(&pencil, &loads, model.column.rods)?;
     let working = spinner("limit cycles: shooting and continuation");
@@ -164,12 +177,16 @@ pub fn run(args: &Args) -> Result<()> {
     Ok(())
 }
 
-/// The grid of `--x`, checked: the load, from 0 up.
+/// The grid of `--x`, checked: the load, from 0 up; one load as
+/// `load:L:L:1`.
 fn loads(x: &AxisArg) -> Result<Vec<f64>> {
     check_load_axis(x, "the diagram's axis")?;
+    if x.count == 1 && x.max == x.min {
+        return Ok(vec![x.min]);
+    }
     if x.count < 2 || x.max <= x.min {
         anyhow::bail!(
-            "--x {}: a diagram needs a range of loads (MAX above MIN, N at least 2)",
+            "--x {}: a diagram needs a range of loads (MAX above MIN, N at least 2), or one load as load:L:L:1",
             x.text
         );
     }

@@ -124,7 +124,7 @@ fn a_bautin_point_is_where_the_first_lyapunov_coefficient_changes_sign() {
 /// the divergence curve from those two loads folds back in eta, followed
 /// round its fold; the flutter curve from eta = 1 ends on it where its
 /// frequency falls to zero, a Bogdanov-Takens point with two eigenvalues
-/// at zero.
+/// at zero, on the divergence curve's fold (eta = 5/9, p = 3/2).
 #[test]
 fn the_hopf_curve_ends_where_the_divergence_curve_holds_a_double_zero() {
     let (m, axis, found) = boundaries_of("ziegler-1952", &["c1=0.1", "c2=0.1"], "eta", (0.0, 1.0));
@@ -151,6 +151,15 @@ fn the_hopf_curve_ends_where_the_divergence_curve_holds_a_double_zero() {
         .filter(|s| s.kind == SpecialKind::BogdanovTakens)
         .collect();
     assert_eq!(bt.len(), 1, "{:?}", found.special_points);
+    // With joint dampers in proportion to the joint springs, u C v of the
+    // null vectors of K is p u G v (G the load's part of K), so the double
+    // zero is where det K = 1 - 3(1 - eta) p + (1 - eta) p^2 = 0 turns
+    // back in eta: p = 3/2, eta = 5/9.
+    assert!(
+        (bt[0].value - 5.0 / 9.0).abs() < 1e-5 && (bt[0].load - 1.5).abs() < 1e-5,
+        "{:?}",
+        bt[0]
+    );
     let at = axis.apply(&m, bt[0].value).unwrap();
     let spectrum = AffinePencil::new(&at)
         .unwrap()
@@ -203,6 +212,8 @@ fn boundary_writes_its_curves_as_csv() {
     assert_eq!(kinds.len(), 2, "{kinds:?}");
     let said = String::from_utf8_lossy(&out.stderr);
     assert!(said.contains("bogdanov-takens: eta = 0.555"), "{said}");
-    let refused = run(&["boundary", "--preset", "ziegler-1952", "--y", "load:0:1"]);
-    assert_eq!(refused.status.code(), Some(2));
+    for y in ["load:0:1", "rods:2:8"] {
+        let refused = run(&["boundary", "--preset", "ziegler-1952", "--y", y]);
+        assert_eq!(refused.status.code(), Some(2), "{y}");
+    }
 }

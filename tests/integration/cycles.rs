@@ -590,3 +590,66 @@ fn a_chain_s_amplitude_dips_where_its_third_harmonic_meets_the_second_mode() {
         cycle.load
     );
 }
+
+/// One load (`--x load:L:L:1`) gives the cycles there, followed from the
+/// onset below it: the same cycle as the row at L of a range of loads
+/// that starts below the onset, and only L.
+#[test]
+fn one_load_gives_the_cycle_a_range_gives_there() {
+    let damped = [
+        "--preset",
+        "ziegler-1952",
+        "--set",
+        "c1=0.3",
+        "--set",
+        "c2=0.3",
+    ];
+    let csv = |x: &str| {
+        let mut args = vec!["bifurcation"];
+        args.extend(damped);
+        args.extend(["--x", x]);
+        let out = crate::cli::run(&args);
+        assert!(out.status.success(), "{out:?}");
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let row = |text: &str, branch: &str| -> Vec<String> {
+        text.lines()
+            .filter(|line| line.split(',').nth(1) == Some(branch))
+            .map(str::to_owned)
+            .collect()
+    };
+    let one = csv("load:2.2:2.2:1");
+    let cycles = row(&one, "cycle-1");
+    assert_eq!(cycles.len(), 1, "{one}");
+    assert_eq!(row(&one, "equilibrium").len(), 1, "{one}");
+    let range = csv("load:1.8:2.2:5");
+    let at_end: Vec<String> = row(&range, "cycle-1")
+        .into_iter()
+        .filter(|line| line.starts_with("2.2,"))
+        .collect();
+    assert_eq!(at_end.len(), 1, "{range}");
+    let numbers = |line: &str| -> Vec<f64> {
+        line.split(',')
+            .filter_map(|field| field.parse::<f64>().ok())
+            .collect()
+    };
+    let (a, b) = (numbers(&cycles[0]), numbers(&at_end[0]));
+    assert_eq!(a.len(), b.len());
+    for (x, y) in a.iter().zip(&b) {
+        assert!(
+            (x - y).abs() <= 1e-8 * x.abs().max(1e-3),
+            "{} against {}",
+            cycles[0],
+            at_end[0]
+        );
+    }
+    let refused = crate::cli::run(&[
+        "bifurcation",
+        "--preset",
+        "ziegler-1952",
+        "--x",
+        "load:2.2:2.2:1",
+        "--sweep",
+    ]);
+    assert_eq!(refused.status.code(), Some(2));
+}

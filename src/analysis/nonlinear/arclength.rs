@@ -106,51 +106,79 @@ pub(crate) fn follow(
     let mut merged = false;
     let (mut z, mut lambda) = start;
     for _ in 0..MOST_STEPS {
-        let predicted = [z[0] + step * tangent[0], z[1] + step * tangent[1]];
-        // Beyond the box the column may not exist (eta > 1): the curve's
-        // point on the edge is found on the edge.
-        if let Some((edge, end)) = outside(predicted) {
-            if let Some(node) = on_edge(g, plane, (z, lambda), predicted, edge)? {
+        match advance(g, plane, (z, lambda), tangent, step)? {
+            Step::Point((z1, lambda1), t1) => {
+                merged = false;
+                nodes.push((z1, lambda1));
+                if nodes.len() > 8 && distance(z1, start.0) < 0.5 * step {
+                    return Ok((nodes, End::Closed));
+                }
+                (z, lambda, tangent) = (z1, lambda1, t1);
+                step = (step * 1.3).min(LARGEST_STEP);
+            }
+            Step::Edge(node, end) => {
                 if distance(node.0, z) > 1e-12 {
                     nodes.push(node);
                 }
                 return Ok((nodes, end));
             }
-            step *= 0.5;
-            if step < SMALLEST_STEP {
-                return Ok((nodes, End::Lost));
+            Step::Refused { gone } => {
+                merged |= gone;
+                step *= 0.5;
+                if step < SMALLEST_STEP {
+                    return Ok((nodes, if merged { End::Merged } else { End::Lost }));
+                }
             }
-            continue;
         }
-        let next = match correct(g, plane, predicted, tangent, lambda)? {
-            Corrected::Point(node) => Some(node),
-            Corrected::Gone => {
-                merged = true;
-                None
-            }
-            Corrected::Failed => None,
-        };
-        let accepted = match next {
-            Some(node) => turned_tangent(g, plane, node, tangent)?.map(|t| (node, t)),
-            None => None,
-        };
-        let Some(((z1, lambda1), t1)) = accepted.filter(|((z1, _), _)| outside(*z1).is_none())
-        else {
-            step *= 0.5;
-            if step < SMALLEST_STEP {
-                return Ok((nodes, if merged { End::Merged } else { End::Lost }));
-            }
-            continue;
-        };
-        merged = false;
-        nodes.push((z1, lambda1));
-        if nodes.len() > 8 && distance(z1, start.0) < 0.5 * step {
-            return Ok((nodes, End::Closed));
-        }
-        (z, lambda, tangent) = (z1, lambda1, t1);
-        step = (step * 1.3).min(LARGEST_STEP);
     }
     Ok((nodes, End::Steps))
+}
+
+/// What one step along the curve found.
+enum Step {
+    /// The next point and the tangent there.
+    Point(Node, [f64; 2]),
+    /// The curve's point on an edge of the box, which ends it.
+    Edge(Node, End),
+    /// No point at this step (`gone`: the eigenvalue was gone).
+    Refused { gone: bool },
+}
+
+/// One step of `step` from `node` along `tangent`: predicted, corrected
+/// and its turn checked. A step past an edge of the box (where the column
+/// may not exist: eta > 1) is replaced by the curve's point on the edge.
+fn advance(
+    g: &dyn Defining,
+    plane: &Plane,
+    (z, lambda): Node,
+    tangent: [f64; 2],
+    step: f64,
+) -> Result<Step, AnalysisError> {
+    let refused = Step::Refused { gone: false };
+    let predicted = [z[0] + step * tangent[0], z[1] + step * tangent[1]];
+    let beyond = match outside(predicted) {
+        Some(edge) => Some((predicted, edge)),
+        None => match correct(g, plane, predicted, tangent, lambda)? {
+            Corrected::Point(node) => match outside(node.0) {
+                Some(edge) => Some((node.0, edge)),
+                None => {
+                    return Ok(match turned_tangent(g, plane, node, tangent)? {
+                        Some(t) => Step::Point(node, t),
+                        None => refused,
+                    });
+                }
+            },
+            Corrected::Gone => return Ok(Step::Refused { gone: true }),
+            Corrected::Failed => return Ok(refused),
+        },
+    };
+    let Some((past, (edge, end))) = beyond else {
+        return Ok(refused);
+    };
+    Ok(match on_edge(g, plane, (z, lambda), past, edge)? {
+        Some(node) => Step::Edge(node, end),
+        None => refused,
+    })
 }
 
 /// What the corrector found.

@@ -212,7 +212,18 @@ pub fn boundaries(spec: &BoundarySpec) -> Result<Boundaries, AnalysisError> {
         out.push(boundary);
         special.extend(found);
     }
-    special.extend(crossings(&curves, &plane));
+    // A Hopf curve's last chord reaches past its Bogdanov-Takens end and
+    // may cut the divergence curve there: that is the same point.
+    let ends: Vec<[f64; 2]> = special
+        .iter()
+        .filter(|s| s.kind == SpecialKind::BogdanovTakens)
+        .map(|s| plane.scaled(s.value, s.load))
+        .collect();
+    special.extend(crossings(&curves, &plane).into_iter().filter(|s| {
+        let z = plane.scaled(s.value, s.load);
+        ends.iter()
+            .all(|e| (e[0] - z[0]).hypot(e[1] - z[1]) > NEAR_CURVE)
+    }));
     Ok(Boundaries {
         curves: out,
         special_points: special,
@@ -355,6 +366,13 @@ fn check(spec: &BoundarySpec) -> Result<(), AnalysisError> {
             what: "y",
             value: spec.axis_range.0,
             allowed: "the second parameter cannot be the load, which the boundaries are found in",
+        });
+    }
+    if spec.axis.counts() {
+        return Err(AnalysisError::BadRange {
+            what: "y",
+            value: spec.axis_range.0,
+            allowed: "the boundaries are followed in a parameter that varies continuously, and the rods are counted; compare chains with `map --y rods:MIN:MAX:N`",
         });
     }
     let (y0, y1) = spec.axis_range;
