@@ -12,7 +12,7 @@ use linear::{
     along, critical, crossing, hqr, locus, map, paradox, peaks, pencil, resolution, roots,
     stability,
 };
-use nonlinear::{boundary, cycles, field, gauss, hopf, jet};
+use nonlinear::{boundary, cycle_bifurcations, cycles, field, gauss, hopf, jet};
 
 pub use along::{AlongLoad, Sampling, Unresolved};
 pub use boundary::{
@@ -24,6 +24,7 @@ pub use critical::{
     critical_loads_along, plotted_locus,
 };
 pub use crossing::{Transition, stability_ranges};
+pub use cycle_bifurcations::{CycleBifurcation, CycleBifurcationKind, cycle_bifurcations};
 pub use cycles::{
     Branch, BranchEnd, Cycle, MAX_AMPLITUDE_RAD, MAX_PERIOD_GROWTH, MAX_POINTS, NoBranch, Onset,
     TRIVIAL_TOLERANCE, cycle_branches, cycles_at,

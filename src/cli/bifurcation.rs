@@ -11,7 +11,8 @@ use clap::ValueEnum;
 use serde_json::json;
 
 use zieglerlab::analysis::{
-    AffinePencil, Branch, Cycle, NoBranch, Onset, State, classify, cycle_branches, cycles_at,
+    AffinePencil, Branch, Cycle, CycleBifurcationKind, NoBranch, Onset, State, classify,
+    cycle_bifurcations, cycle_branches, cycles_at,
 };
 use zieglerlab::figure::{self, Page, render};
 use zieglerlab::format::{Exact, Shown};
@@ -240,6 +241,21 @@ pub fn report(onset: f64, found: &Result<Branch, NoBranch>) {
         Err(why) => format!("flutter onset at p = {at}: {why}"),
     };
     eprintln!("{}", printable(&line));
+    if let Ok(branch) = found {
+        for found in cycle_bifurcations(&branch.cycles) {
+            let kind = match found.kind {
+                CycleBifurcationKind::Fold => "fold of cycles",
+                CycleBifurcationKind::PeriodDoubling => "period doubling",
+                CycleBifurcationKind::NeimarkSacker => "Neimark-Sacker (torus)",
+            };
+            eprintln!(
+                "{}: {kind} at p = {} (largest angle {:.4} rad)",
+                branch.name(),
+                Shown(found.load),
+                found.amplitude_rad
+            );
+        }
+    }
 }
 
 fn cycle_row(cycle: &Cycle, branch: &str) -> Row {
@@ -363,6 +379,7 @@ fn write_json(
                 "hopf": branch.hopf(),
                 "branch": branch.name(),
                 "cycles_followed": branch.cycles.len(),
+                "cycle_bifurcations": cycle_bifurcations(&branch.cycles),
                 "end": branch.end.to_string(),
             }),
             Err(why) => {

@@ -217,3 +217,33 @@ fn boundary_writes_its_curves_as_csv() {
         assert_eq!(refused.status.code(), Some(2), "{y}");
     }
 }
+
+/// The README's example of `boundary` is what the command prints: the
+/// Bautin line on stderr, then the CSV's first two lines.
+#[test]
+fn the_readme_example_of_boundary_is_what_it_prints() {
+    let readme = std::fs::read_to_string("README.md").expect("the README");
+    let command =
+        "    $ zieglerlab boundary --preset ziegler-1952 --set c_ext=0.05 --y m1:0.2:2 | head -3\n";
+    let start = readme.find(command).expect("the example") + command.len();
+    let shown: Vec<&str> = readme[start..]
+        .lines()
+        .take_while(|line| line.starts_with("    ") && !line.trim_start().starts_with('$'))
+        .map(|line| &line[4..])
+        .collect();
+    let out = run(&[
+        "boundary",
+        "--preset",
+        "ziegler-1952",
+        "--set",
+        "c_ext=0.05",
+        "--y",
+        "m1:0.2:2",
+    ]);
+    assert!(out.status.success(), "{out:?}");
+    let said = String::from_utf8(out.stderr).unwrap();
+    let printed = String::from_utf8(out.stdout).unwrap();
+    let mut made: Vec<&str> = said.lines().collect();
+    made.extend(printed.lines().take(2));
+    assert_eq!(shown, made);
+}

@@ -653,3 +653,45 @@ fn one_load_gives_the_cycle_a_range_gives_there() {
     ]);
     assert_eq!(refused.status.code(), Some(2));
 }
+
+/// The hard onset's branch folds back: its multipliers say so where its
+/// loads turn. The fold of cycles read from a real multiplier through +1
+/// is at the smallest load the branch reaches (to 1e-4: both are placed
+/// between the branch's cycles; seen 2.4e-5), the cycle there has a second
+/// multiplier within 0.02 of 1 besides the trivial one (seen 0.0072; the
+/// other two are 0.37 in modulus), and the branch has no period doubling
+/// and no torus.
+#[test]
+fn the_fold_of_cycles_is_where_the_branch_turns_and_a_multiplier_is_one() {
+    use zieglerlab::analysis::{CycleBifurcationKind, cycle_bifurcations};
+    let m = hard_onset_column();
+    let branch = first_branch(&m, 2.1, 2.2);
+    let found = cycle_bifurcations(&branch.cycles);
+    let folds: Vec<_> = found
+        .iter()
+        .filter(|f| f.kind == CycleBifurcationKind::Fold)
+        .collect();
+    assert_eq!(folds.len(), 1, "{found:?}");
+    assert_eq!(found.len(), 1, "no period doubling, no torus: {found:?}");
+    let (turn, at) = branch
+        .cycles
+        .iter()
+        .enumerate()
+        .min_by(|a, b| a.1.load.total_cmp(&b.1.load))
+        .map(|(i, c)| (c.load, i))
+        .unwrap();
+    let fold = folds[0].load;
+    assert!(
+        (fold - turn).abs() <= 1e-4 * turn,
+        "fold at p = {fold}, the branch turns at p = {turn}"
+    );
+    let cycle = &branch.cycles[at];
+    let trivial = cycle.trivial_multiplier();
+    let second = cycle
+        .multipliers
+        .iter()
+        .filter(|m| **m != trivial)
+        .map(|m| (m - 1.0).norm())
+        .fold(f64::INFINITY, f64::min);
+    assert!(second < 0.02, "{second} {:?}", cycle.multipliers);
+}

@@ -7,6 +7,7 @@
 pub(super) mod arclength;
 pub(super) mod boundary;
 mod cycle;
+pub(super) mod cycle_bifurcations;
 pub(super) mod cycles;
 pub(super) mod field;
 pub(super) mod gauss;

@@ -1,0 +1,103 @@
+//! The bifurcations of the limit cycles themselves along a branch, read
+//! from their Floquet multipliers: a fold of cycles (a real multiplier
+//! through +1, where the branch turns back in the load), a period doubling
+//! (a real multiplier through -1) and a Neimark-Sacker (torus) bifurcation
+//! (a complex pair through the unit circle), each placed between the two
+//! cycles it lies between where the multiplier's modulus passes 1.
+
+use serde::Serialize;
+
+use super::cycle::{Cycle, trivial_index};
+use crate::analysis::C64;
+
+/// A multiplier is real when its imaginary part is at most this share of
+/// its modulus.
+const REAL: f64 = 1e-8;
+
+/// What changes at a bifurcation of the cycles.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum CycleBifurcationKind {
+    /// A real multiplier through +1: the branch folds back in the load.
+    Fold,
+    /// A real multiplier through -1: a cycle of twice the period is born.
+    PeriodDoubling,
+    /// A complex pair through the unit circle: a torus is born.
+    NeimarkSacker,
+}
+
+/// A bifurcation of the cycles along a branch.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct CycleBifurcation {
+    pub kind: CycleBifurcationKind,
+    /// The load, interpolated between the two cycles.
+    pub load: f64,
+    /// The largest angle's amplitude there, interpolated, in rad.
+    pub amplitude_rad: f64,
+}
+
+/// The class of a multiplier other than the trivial one.
+fn class_of(m: C64) -> CycleBifurcationKind {
+    if m.im.abs() > REAL * m.norm() {
+        CycleBifurcationKind::NeimarkSacker
+    } else if m.re > 0.0 {
+        CycleBifurcationKind::Fold
+    } else {
+        CycleBifurcationKind::PeriodDoubling
+    }
+}
+
+/// The multipliers but the trivial one.
+fn nontrivial(cycle: &Cycle) -> impl Iterator<Item = C64> + '_ {
+    let trivial = trivial_index(&cycle.multipliers);
+    cycle
+        .multipliers
+        .iter()
+        .enumerate()
+        .filter(move |(i, _)| Some(*i) != trivial)
+        .map(|(_, m)| *m)
+}
+
+/// How many multipliers of `kind` lie outside the unit circle, and the
+/// distance `|m| - 1` of the one of that kind nearest the circle.
+fn outside(cycle: &Cycle, kind: CycleBifurcationKind) -> (usize, Option<f64>) {
+    let of_kind: Vec<f64> = nontrivial(cycle)
+        .filter(|m| class_of(*m) == kind)
+        .map(|m| m.norm() - 1.0)
+        .collect();
+    let count = of_kind.iter().filter(|&&r| r > 0.0).count();
+    let nearest = of_kind
+        .into_iter()
+        .min_by(|a, b| a.abs().total_cmp(&b.abs()));
+    (count, nearest)
+}
+
+/// Every bifurcation along `cycles` (in the order of the continuation):
+/// where the count of multipliers of a kind outside the unit circle
+/// changes between two cycles, placed where the modulus of the one
+/// nearest the circle passes 1, linearly between them.
+#[must_use]
+pub fn cycle_bifurcations(cycles: &[Cycle]) -> Vec<CycleBifurcation> {
+    use CycleBifurcationKind::{Fold, NeimarkSacker, PeriodDoubling};
+    let mut out = Vec::new();
+    for pair in cycles.windows(2) {
+        let [a, b] = pair else { continue };
+        for kind in [Fold, PeriodDoubling, NeimarkSacker] {
+            let ((count_a, near_a), (count_b, near_b)) = (outside(a, kind), outside(b, kind));
+            if count_a == count_b {
+                continue;
+            }
+            let t = match (near_a, near_b) {
+                (Some(ra), Some(rb)) if ra * rb < 0.0 => ra / (ra - rb),
+                _ => 0.5,
+            };
+            let along = |x: f64, y: f64| x + t * (y - x);
+            out.push(CycleBifurcation {
+                kind,
+                load: along(a.load, b.load),
+                amplitude_rad: along(a.largest_amplitude_rad(), b.largest_amplitude_rad()),
+            });
+        }
+    }
+    out
+}
