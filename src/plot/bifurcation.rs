@@ -7,7 +7,8 @@
 
 use super::spec::{Entry, Ink, Mark, OffView, Plot, Sheet, Size, Swatch, Ticks, View, Weight};
 use crate::analysis::{
-    AffinePencil, AnalysisError, Branch, Onset, State, classify, critical_loads, stability_ranges,
+    AffinePencil, AnalysisError, Branch, CycleBifurcation, CycleBifurcationKind, Onset, State,
+    classify, critical_loads, cycle_bifurcations, stability_ranges,
 };
 use crate::i18n::Words;
 use crate::tr;
@@ -99,6 +100,34 @@ pub struct Diagram<'a> {
 }
 
 impl Diagram<'_> {
+    /// The cycles' own bifurcations along every branch.
+    fn cycle_bifurcations(&self) -> Vec<CycleBifurcation> {
+        self.branches
+            .iter()
+            .flat_map(|b| cycle_bifurcations(&b.cycles))
+            .collect()
+    }
+
+    /// The cycles' bifurcations ringed, each named `above` its ring.
+    fn turn_marks(&self, above: f64) -> Vec<Mark> {
+        let turns = self.cycle_bifurcations();
+        if turns.is_empty() {
+            return Vec::new();
+        }
+        let mut marks = vec![Mark::Markers {
+            points: turns.iter().map(|t| [t.load, t.amplitude_rad]).collect(),
+            ink: Ink::Main,
+            size: Size::Large,
+            filled: false,
+            off_view: OffView::Hidden,
+        }];
+        marks.extend(turns.iter().map(|t| Mark::Label {
+            at: [t.load, t.amplitude_rad + above],
+            text: short_name(t.kind).to_owned(),
+        }));
+        marks
+    }
+
     /// The cycles as runs of equal stability.
     fn runs(&self) -> Vec<(Vec<[f64; 2]>, bool)> {
         self.branches.iter().flat_map(|b| b.runs()).collect()
@@ -148,6 +177,7 @@ impl Diagram<'_> {
                 off_view: OffView::Hidden,
             });
         }
+        marks.extend(self.turn_marks(0.06 * highest));
         for upward in [true, false] {
             let points: Vec<[f64; 2]> = self
                 .sweep
@@ -242,6 +272,25 @@ impl Diagram<'_> {
                 tr!(words, "legend-hopf-point"),
             ));
         }
+        let turns = self.cycle_bifurcations();
+        let kinds: Vec<String> = [
+            (CycleBifurcationKind::Fold, "legend-cycle-fold"),
+            (
+                CycleBifurcationKind::PeriodDoubling,
+                "legend-cycle-period-doubling",
+            ),
+            (CycleBifurcationKind::NeimarkSacker, "legend-cycle-torus"),
+        ]
+        .into_iter()
+        .filter(|(kind, _)| turns.iter().any(|t| t.kind == *kind))
+        .map(|(_, id)| words.get(id).into_owned())
+        .collect();
+        if !kinds.is_empty() {
+            entries.push(Entry::new(
+                Swatch::Marker(Ink::Main, false),
+                kinds.join(", "),
+            ));
+        }
         for (upward, id) in [(true, "legend-sweep-up"), (false, "legend-sweep-down")] {
             if self.sweep.iter().any(|s| s.2 == upward) {
                 entries.push(Entry::new(Swatch::Marker(Ink::Main, upward), words.get(id)));
@@ -266,5 +315,15 @@ impl Diagram<'_> {
             }
         }
         entries
+    }
+}
+
+/// A bifurcation of the cycles as labelled on the diagram (the legend
+/// spells it out).
+fn short_name(kind: CycleBifurcationKind) -> &'static str {
+    match kind {
+        CycleBifurcationKind::Fold => "LPC",
+        CycleBifurcationKind::PeriodDoubling => "PD",
+        CycleBifurcationKind::NeimarkSacker => "NS",
     }
 }

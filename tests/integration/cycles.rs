@@ -694,4 +694,26 @@ fn the_fold_of_cycles_is_where_the_branch_turns_and_a_multiplier_is_one() {
         .map(|m| (m - 1.0).norm())
         .fold(f64::INFINITY, f64::min);
     assert!(second < 0.02, "{second} {:?}", cycle.multipliers);
+    // The diagram rings and names it there, and its legend says what
+    // the name means.
+    let sheet = zieglerlab::plot::bifurcation::Diagram {
+        load_range: (2.1, 2.2),
+        equilibrium: &[],
+        branches: vec![&branch],
+        sweep: &[],
+        present: None,
+        words: zieglerlab::i18n::words(zieglerlab::i18n::Language::English),
+    }
+    .sheet();
+    let named = sheet.plots[0].marks.iter().any(|mark| {
+        matches!(mark, zieglerlab::plot::spec::Mark::Label { at, text }
+            if text == "LPC" && at[0] == fold)
+    });
+    assert!(named, "{:?}", sheet.plots[0].marks.len());
+    assert!(
+        sheet
+            .legend
+            .iter()
+            .any(|e| e.text.starts_with("LPC: fold of cycles"))
+    );
 }
