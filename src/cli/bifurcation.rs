@@ -77,9 +77,7 @@ pub struct Args {
 impl Args {
     /// Whether the diagram goes to standard output, a pipe or a device.
     pub fn streams(&self) -> bool {
-        self.out
-            .as_ref()
-            .is_none_or(|out| std::fs::metadata(out).is_ok_and(|m| !m.is_file() && !m.is_dir()))
+        super::output::streams(self.out.as_deref())
     }
 }
 

@@ -17,6 +17,7 @@ use zieglerlab::format::Exact;
 use zieglerlab::model::Axis;
 use zieglerlab::plot::boundary::BoundaryPlane;
 
+use super::map::finite_number;
 use super::output::{check_output, write_atomically};
 use super::{ModelArgs, spinner};
 
@@ -47,14 +48,7 @@ impl FromStr for RangeArg {
         let (Some(max), Some(min), Some(name)) = (parts.next(), parts.next(), parts.next()) else {
             return Err("must be KEY:MIN:MAX (e.g. c2:0:0.01)".to_owned());
         };
-        let number = |s: &str| {
-            s.trim()
-                .parse::<f64>()
-                .ok()
-                .filter(|v| v.is_finite())
-                .ok_or_else(|| format!("'{s}' is not a finite number"))
-        };
-        let (min, max) = (number(min)?, number(max)?);
+        let (min, max) = (finite_number(min)?, finite_number(max)?);
         if max <= min {
             return Err("MAX must be above MIN".to_owned());
         }
@@ -92,9 +86,7 @@ pub struct Args {
 impl Args {
     /// Whether the boundaries go to standard output, a pipe or a device.
     pub fn streams(&self) -> bool {
-        self.out
-            .as_ref()
-            .is_none_or(|out| std::fs::metadata(out).is_ok_and(|m| !m.is_file() && !m.is_dir()))
+        super::output::streams(self.out.as_deref())
     }
 }
 

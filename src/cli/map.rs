@@ -29,6 +29,15 @@ enum Format {
 /// The most cells along one axis of a map.
 const MAX_CELLS: usize = 2048;
 
+/// `text` as a finite number, or why it is not one.
+pub fn finite_number(text: &str) -> Result<f64, String> {
+    text.trim()
+        .parse::<f64>()
+        .ok()
+        .filter(|v| v.is_finite())
+        .ok_or_else(|| format!("'{text}' is not a finite number"))
+}
+
 /// One axis of the map as `NAME:MIN:MAX:N`: N evenly spaced values from MIN
 /// to MAX, ends included (the name may hold ':'-free '/', as c1/c2).
 #[derive(Clone, Debug)]
@@ -51,14 +60,7 @@ impl FromStr for AxisArg {
         else {
             return Err(shape());
         };
-        let number = |s: &str| {
-            s.trim()
-                .parse::<f64>()
-                .ok()
-                .filter(|v| v.is_finite())
-                .ok_or_else(|| format!("'{s}' is not a finite number"))
-        };
-        let (min, max) = (number(min)?, number(max)?);
+        let (min, max) = (finite_number(min)?, finite_number(max)?);
         let count: usize = n
             .trim()
             .parse()
@@ -101,7 +103,7 @@ impl Args {
     /// Whether the map goes to a pipe or a device (`--out /dev/stdout`)
     /// rather than a file.
     pub fn streams(&self) -> bool {
-        std::fs::metadata(&self.out).is_ok_and(|m| !m.is_file() && !m.is_dir())
+        super::output::streams(Some(&self.out))
     }
 }
 

@@ -118,3 +118,10 @@ pub fn stop_when_the_reader_goes() {
             .spawn(watch),
     );
 }
+
+/// Whether an answer written to `out` goes to a stream (standard output
+/// when there is no `out`, a pipe or a device such as `/dev/stdout`)
+/// rather than a file: the command then stops when nobody reads it.
+pub fn streams(out: Option<&Path>) -> bool {
+    out.is_none_or(|out| std::fs::metadata(out).is_ok_and(|m| !m.is_file() && !m.is_dir()))
+}

@@ -596,22 +596,7 @@ fn a_chain_s_amplitude_dips_where_its_third_harmonic_meets_the_second_mode() {
 /// that starts below the onset, and only L.
 #[test]
 fn one_load_gives_the_cycle_a_range_gives_there() {
-    let damped = [
-        "--preset",
-        "ziegler-1952",
-        "--set",
-        "c1=0.3",
-        "--set",
-        "c2=0.3",
-    ];
-    let csv = |x: &str| {
-        let mut args = vec!["bifurcation"];
-        args.extend(damped);
-        args.extend(["--x", x]);
-        let out = crate::cli::run(&args);
-        assert!(out.status.success(), "{out:?}");
-        String::from_utf8(out.stdout).unwrap()
-    };
+    let csv = |x: &str| damped_ziegler_bifurcation(&["--x", x]);
     let row = |text: &str, branch: &str| -> Vec<String> {
         text.lines()
             .filter(|line| line.split(',').nth(1) == Some(branch))

@@ -453,17 +453,10 @@ fn on_curve(
     }
     for pair in nodes.windows(2) {
         let (a, b) = (pair[0], pair[1].0);
-        let d = [b[0] - a.0[0], b[1] - a.0[1]];
-        let length2 = d[0] * d[0] + d[1] * d[1];
-        if length2 == 0.0 {
+        let Some((s, across)) = project(z, a.0, b) else {
             continue;
-        }
-        let s = ((z[0] - a.0[0]) * d[0] + (z[1] - a.0[1]) * d[1]) / length2;
-        if !(0.0..=1.0).contains(&s) {
-            continue;
-        }
-        let across = (z[0] - a.0[0] - s * d[0]).hypot(z[1] - a.0[1] - s * d[1]);
-        if across > NEAR_CURVE {
+        };
+        if !(0.0..=1.0).contains(&s) || across > NEAR_CURVE {
             continue;
         }
         if let Some((point, _)) = between(growth, plane, a, b, s)?
@@ -477,17 +470,25 @@ fn on_curve(
         .any(|(point, _)| (point[0] - z[0]).hypot(point[1] - z[1]) <= SAME_POINT))
 }
 
+/// Where `z` falls beside the segment from `a` to `b`: the fraction of
+/// the way along it of its foot on the segment's line, and its distance
+/// from the segment (from the nearer end past either end); `None` for a
+/// segment of no length.
+fn project(z: [f64; 2], a: [f64; 2], b: [f64; 2]) -> Option<(f64, f64)> {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let length2 = d[0] * d[0] + d[1] * d[1];
+    if length2 <= 0.0 {
+        return None;
+    }
+    let s = ((z[0] - a[0]) * d[0] + (z[1] - a[1]) * d[1]) / length2;
+    let t = s.clamp(0.0, 1.0);
+    Some((s, (z[0] - a[0] - t * d[0]).hypot(z[1] - a[1] - t * d[1])))
+}
+
 /// The distance from `z` to the polyline through `nodes` (scaled).
 fn near_polyline(z: [f64; 2], nodes: &[Node]) -> f64 {
     let segment = |a: [f64; 2], b: [f64; 2]| {
-        let d = [b[0] - a[0], b[1] - a[1]];
-        let length2 = d[0] * d[0] + d[1] * d[1];
-        let s = if length2 > 0.0 {
-            (((z[0] - a[0]) * d[0] + (z[1] - a[1]) * d[1]) / length2).clamp(0.0, 1.0)
-        } else {
-            0.0
-        };
-        (z[0] - a[0] - s * d[0]).hypot(z[1] - a[1] - s * d[1])
+        project(z, a, b).map_or_else(|| (z[0] - a[0]).hypot(z[1] - a[1]), |(_, d)| d)
     };
     match nodes {
         [] => f64::INFINITY,
