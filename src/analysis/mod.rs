@@ -12,19 +12,18 @@ use linear::{
     along, critical, crossing, hqr, locus, map, paradox, peaks, pencil, resolution, roots,
     stability,
 };
-use nonlinear::{boundary, cycle_bifurcations, cycles, field, gauss, hopf, jet};
+use nonlinear::{boundary, curve, cycle_bifurcations, cycle_fold, cycles, field, gauss, hopf, jet};
 
 pub use along::{AlongLoad, Sampling, Unresolved};
-pub use boundary::{
-    Boundaries, Boundary, BoundaryKind, BoundaryPoint, BoundarySpec, CurveEnd, SpecialKind,
-    SpecialPoint, boundaries,
-};
+pub use boundary::{Boundaries, SpecialKind, SpecialPoint, boundaries};
 pub use critical::{
     BRACKET_SAMPLES, bracketing_locus, bracketing_locus_reporting, critical_loads,
     critical_loads_along, plotted_locus,
 };
 pub use crossing::{Transition, stability_ranges};
+pub use curve::{Boundary, BoundaryKind, BoundaryPoint, BoundarySpec, CurveEnd};
 pub use cycle_bifurcations::{CycleBifurcation, CycleBifurcationKind, cycle_bifurcations};
+pub use cycle_fold::{CycleFold, FoldEnd, FoldPoint};
 pub use cycles::{
     Branch, BranchEnd, Cycle, MAX_AMPLITUDE_RAD, MAX_PERIOD_GROWTH, MAX_POINTS, NoBranch, Onset,
     TRIVIAL_TOLERANCE, cycle_branches, cycles_at,

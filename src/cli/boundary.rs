@@ -220,6 +220,17 @@ fn write_csv(out: &mut dyn Write, found: &Boundaries, key: &str) -> std::io::Res
             )?;
         }
     }
+    for (k, fold) in found.folds.iter().enumerate() {
+        for point in &fold.points {
+            writeln!(
+                out,
+                "fold-{},{},{},,",
+                k + 1,
+                Exact(point.value),
+                Exact(point.load)
+            )?;
+        }
+    }
     Ok(())
 }
 
@@ -262,7 +273,33 @@ fn write_json(out: &mut dyn Write, found: &Boundaries, key: &str) -> std::io::Re
             })
         })
         .collect();
-    let document = json!({"key": key, "curves": curves, "special_points": special});
+    let folds: Vec<_> = found
+        .folds
+        .iter()
+        .enumerate()
+        .map(|(k, fold)| {
+            let points: Vec<_> = fold
+                .points
+                .iter()
+                .map(|point| {
+                    json!({
+                        key: point.value,
+                        "load": point.load,
+                        "amplitude_rad": point.amplitude_rad,
+                        "period_s": point.period_secs,
+                        "second_multiplier": [point.second_multiplier.re, point.second_multiplier.im],
+                    })
+                })
+                .collect();
+            json!({"curve": format!("fold-{}", k + 1), "kind": "cycle-fold", "ends": fold.ends, "points": points})
+        })
+        .collect();
+    let document = json!({
+        "key": key,
+        "curves": curves,
+        "special_points": special,
+        "folds": folds,
+    });
     serde_json::to_writer_pretty(&mut *out, &document)?;
     writeln!(out)
 }

@@ -16,6 +16,7 @@ mod cli;
 mod cli_files;
 mod closed_form_loads;
 mod common;
+mod cycle_fold;
 mod cycles;
 mod damped_ziegler;
 mod desktop;

@@ -37,14 +37,50 @@ impl Plane {
 
 /// What a curve is the zero set of.
 pub(crate) trait Defining {
-    /// `g` at `(y, p)` (scaled to the spectrum: a growth rate over the
-    /// pencil's frequency scale) with the eigenvalue it is of, the one
-    /// nearest `near`; `None` where that eigenvalue is gone (a pair met on
-    /// the real axis) or the column cannot be analysed.
+    /// What `g` is of at a point (the eigenvalue on the axis, a cycle),
+    /// carried along the curve so that the next point's is the one
+    /// continuing it.
+    type Near: Clone;
+
+    /// `g` at `(y, p)` (scaled: a growth rate over the pencil's frequency
+    /// scale) with what it is of, the one nearest `near`; `None` where that
+    /// is gone (a pair met on the real axis, a cycle not found) or the
+    /// column cannot be analysed.
     ///
     /// # Errors
     /// An eigenvalue computation that fails.
-    fn value(&self, y: f64, p: f64, near: C64) -> Result<Option<(f64, C64)>, AnalysisError>;
+    fn value(
+        &self,
+        y: f64,
+        p: f64,
+        near: &Self::Near,
+    ) -> Result<Option<(f64, Self::Near)>, AnalysisError>;
+
+    /// How finely `g` is known: its difference step and when a point is on
+    /// the curve.
+    fn accuracy(&self) -> Accuracy {
+        Accuracy::EIGENVALUES
+    }
+}
+
+/// The difference step of `g`'s derivatives and the distance from the
+/// curve a point counts as on it, both scaled.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Accuracy {
+    pub step: f64,
+    pub on_curve: f64,
+    /// Central differences; else forward ones (half the evaluations, for
+    /// a `g` that costs much).
+    pub central: bool,
+}
+
+impl Accuracy {
+    /// For `g` an eigenvalue's part, known to rounding.
+    pub const EIGENVALUES: Self = Self {
+        step: 1e-6,
+        on_curve: 1e-11,
+        central: true,
+    };
 }
 
 /// How a followed curve ended.
@@ -65,14 +101,11 @@ pub(crate) enum End {
     Steps,
 }
 
-/// A point of the curve: scaled coordinates and its eigenvalue.
-pub(crate) type Node = ([f64; 2], C64);
+/// A point of the curve: scaled coordinates and what `g` is of there.
+pub(crate) type Node<N = C64> = ([f64; 2], N);
 
-/// The central-difference step in scaled coordinates.
-const H: f64 = 1e-6;
-/// A point is on the curve when `|g| / |grad g|`, its distance from the
-/// curve to first order (scaled), is at most this.
-const ON_CURVE: f64 = 1e-11;
+/// A followed curve's points and how it ended.
+pub(crate) type Followed<N> = (Vec<Node<N>>, End);
 /// The first, the largest and the smallest arclength step (scaled).
 const FIRST_STEP: f64 = 0.01;
 const LARGEST_STEP: f64 = 0.03;
@@ -87,33 +120,38 @@ const LARGEST_TURN: f64 = 0.25;
 ///
 /// # Errors
 /// An eigenvalue computation that fails.
-pub(crate) fn follow(
-    g: &dyn Defining,
+pub(crate) fn follow<G: Defining + ?Sized>(
+    g: &G,
     plane: &Plane,
-    start: Node,
+    start: Node<G::Near>,
     sign: f64,
-) -> Result<(Vec<Node>, End), AnalysisError> {
-    let mut nodes = vec![start];
+) -> Result<Followed<G::Near>, AnalysisError> {
     let (y, p) = plane.point(start.0);
-    let Some((value, _)) = g.value(y, p, start.1)? else {
-        return Ok((nodes, End::Lost));
+    let Some((value, _)) = g.value(y, p, &start.1)? else {
+        return Ok((vec![start], End::Lost));
     };
-    let Some(gradient) = gradient(g, plane, start, value)? else {
-        return Ok((nodes, End::Lost));
+    let Some(gradient) = gradient(g, plane, &start, value)? else {
+        return Ok((vec![start], End::Lost));
     };
     let mut tangent = scale(tangent_of(gradient), sign);
     let mut step = FIRST_STEP;
     let mut merged = false;
-    let (mut z, mut lambda) = start;
+    let origin = start.0;
+    let mut nodes = vec![start];
     for _ in 0..MOST_STEPS {
-        match advance(g, plane, (z, lambda), tangent, step)? {
-            Step::Point((z1, lambda1), t1) => {
+        let Some(last) = nodes.last() else {
+            break;
+        };
+        let z = last.0;
+        match advance(g, plane, last, tangent, step)? {
+            Step::Point(node, t1) => {
                 merged = false;
-                nodes.push((z1, lambda1));
-                if nodes.len() > 8 && distance(z1, start.0) < 0.5 * step {
+                let z1 = node.0;
+                nodes.push(node);
+                if nodes.len() > 8 && distance(z1, origin) < 0.5 * step {
                     return Ok((nodes, End::Closed));
                 }
-                (z, lambda, tangent) = (z1, lambda1, t1);
+                tangent = t1;
                 step = (step * 1.3).min(LARGEST_STEP);
             }
             Step::Edge(node, end) => {
@@ -135,11 +173,11 @@ pub(crate) fn follow(
 }
 
 /// What one step along the curve found.
-enum Step {
+enum Step<N> {
     /// The next point and the tangent there.
-    Point(Node, [f64; 2]),
+    Point(Node<N>, [f64; 2]),
     /// The curve's point on an edge of the box, which ends it.
-    Edge(Node, End),
+    Edge(Node<N>, End),
     /// No point at this step (`gone`: the eigenvalue was gone).
     Refused { gone: bool },
 }
@@ -147,22 +185,23 @@ enum Step {
 /// One step of `step` from `node` along `tangent`: predicted, corrected
 /// and its turn checked. A step past an edge of the box (where the column
 /// may not exist: eta > 1) is replaced by the curve's point on the edge.
-fn advance(
-    g: &dyn Defining,
+fn advance<G: Defining + ?Sized>(
+    g: &G,
     plane: &Plane,
-    (z, lambda): Node,
+    from: &Node<G::Near>,
     tangent: [f64; 2],
     step: f64,
-) -> Result<Step, AnalysisError> {
+) -> Result<Step<G::Near>, AnalysisError> {
     let refused = Step::Refused { gone: false };
+    let z = from.0;
     let predicted = [z[0] + step * tangent[0], z[1] + step * tangent[1]];
     let beyond = match outside(predicted) {
         Some(edge) => Some((predicted, edge)),
-        None => match correct(g, plane, predicted, tangent, lambda)? {
-            Corrected::Point(node) => match outside(node.0) {
+        None => match correct(g, plane, predicted, tangent, &from.1)? {
+            Corrected::Point(node, grad) => match outside(node.0) {
                 Some(edge) => Some((node.0, edge)),
                 None => {
-                    return Ok(match turned_tangent(g, plane, node, tangent)? {
+                    return Ok(match turned_tangent(grad, tangent) {
                         Some(t) => Step::Point(node, t),
                         None => refused,
                     });
@@ -175,46 +214,58 @@ fn advance(
     let Some((past, (edge, end))) = beyond else {
         return Ok(refused);
     };
-    Ok(match on_edge(g, plane, (z, lambda), past, edge)? {
+    Ok(match on_edge(g, plane, from, past, edge)? {
         Some(node) => Step::Edge(node, end),
         None => refused,
     })
 }
 
 /// What the corrector found.
-enum Corrected {
-    Point(Node),
+enum Corrected<N> {
+    /// The point, and the gradient of `g` at the last iterate before it.
+    Point(Node<N>, [f64; 2]),
     /// The eigenvalue is gone at the prediction or on the way.
     Gone,
     Failed,
 }
 
-/// Newton's method on `g = 0` and `tangent . (z - predicted) = 0`.
-fn correct(
-    g: &dyn Defining,
+/// Newton's method on `g = 0` and `tangent . (z - predicted) = 0`, with
+/// the gradient of `g` kept while `|g|` at least halves at each iterate
+/// (the chord method: a gradient costs two evaluations per coordinate).
+fn correct<G: Defining + ?Sized>(
+    g: &G,
     plane: &Plane,
     predicted: [f64; 2],
     tangent: [f64; 2],
-    near: C64,
-) -> Result<Corrected, AnalysisError> {
-    let mut z = predicted;
-    let mut lambda = near;
+    near: &G::Near,
+) -> Result<Corrected<G::Near>, AnalysisError> {
+    let accuracy = g.accuracy();
+    let mut node = (predicted, near.clone());
+    let mut kept: Option<([f64; 2], f64)> = None;
     for _ in 0..12 {
-        let (y, p) = plane.point(z);
-        let Some((value, found)) = g.value(y, p, lambda)? else {
+        let (y, p) = plane.point(node.0);
+        let Some((value, found)) = g.value(y, p, &node.1)? else {
             return Ok(Corrected::Gone);
         };
-        lambda = found;
-        let Some(grad) = gradient(g, plane, (z, lambda), value)? else {
-            return Ok(Corrected::Gone);
+        node.1 = found;
+        let grad = match kept {
+            Some((grad, before)) if value.abs() <= 0.5 * before.abs() => grad,
+            _ => match gradient(g, plane, &node, value)? {
+                Some(grad) => grad,
+                None => return Ok(Corrected::Gone),
+            },
         };
+        kept = Some((grad, value));
+        let z = node.0;
         let along = tangent[0] * (z[0] - predicted[0]) + tangent[1] * (z[1] - predicted[1]);
         let Some(dz) = solve2([grad, tangent], [-value, -along]) else {
             return Ok(Corrected::Failed);
         };
-        z = [z[0] + dz[0], z[1] + dz[1]];
-        if value.abs() <= ON_CURVE * grad[0].hypot(grad[1]) && dz[0].hypot(dz[1]) <= 1e-10 {
-            return Ok(Corrected::Point((z, lambda)));
+        node.0 = [z[0] + dz[0], z[1] + dz[1]];
+        if value.abs() <= accuracy.on_curve * grad[0].hypot(grad[1])
+            && dz[0].hypot(dz[1]) <= 10.0 * accuracy.on_curve
+        {
+            return Ok(Corrected::Point(node, grad));
         }
         if dz[0].hypot(dz[1]) > 1.0 {
             return Ok(Corrected::Failed);
@@ -223,51 +274,48 @@ fn correct(
     Ok(Corrected::Failed)
 }
 
-/// The tangent at `node`, turned the way of `before`, if it turned less
-/// than [`LARGEST_TURN`] from it.
-fn turned_tangent(
-    g: &dyn Defining,
-    plane: &Plane,
-    node: Node,
-    before: [f64; 2],
-) -> Result<Option<[f64; 2]>, AnalysisError> {
-    let (y, p) = plane.point(node.0);
-    let Some((value, _)) = g.value(y, p, node.1)? else {
-        return Ok(None);
-    };
-    let Some(grad) = gradient(g, plane, node, value)? else {
-        return Ok(None);
-    };
+/// The tangent of the level curve with gradient `grad`, turned the way of
+/// `before`, if it turned less than [`LARGEST_TURN`] from it.
+fn turned_tangent(grad: [f64; 2], before: [f64; 2]) -> Option<[f64; 2]> {
     let mut t = tangent_of(grad);
     let cos = t[0] * before[0] + t[1] * before[1];
     if cos < 0.0 {
         t = scale(t, -1.0);
     }
-    Ok((cos.abs() >= LARGEST_TURN.cos()).then_some(t))
+    (cos.abs() >= LARGEST_TURN.cos()).then_some(t)
 }
 
 /// `(dg/du, dg/dv)` at `node`, where `g` is `value`, by central
 /// differences, one-sided where the column does not exist on one side (an
 /// end of its range, such as eta = 1); `None` where the eigenvalue is gone
 /// on both sides, or the gradient vanishes.
-fn gradient(
-    g: &dyn Defining,
+fn gradient<G: Defining + ?Sized>(
+    g: &G,
     plane: &Plane,
-    (z, near): Node,
+    (z, near): &Node<G::Near>,
     value: f64,
 ) -> Result<Option<[f64; 2]>, AnalysisError> {
+    let Accuracy {
+        step: h, central, ..
+    } = g.accuracy();
     let mut out = [0.0; 2];
     for (k, slot) in out.iter_mut().enumerate() {
         let at = |sign: f64| -> Result<Option<f64>, AnalysisError> {
-            let mut moved = z;
-            moved[k] += sign * H;
+            let mut moved = *z;
+            moved[k] += sign * h;
             let (y, p) = plane.point(moved);
             Ok(g.value(y, p, near)?.map(|(value, _)| value))
         };
-        *slot = match (at(1.0)?, at(-1.0)?) {
-            (Some(plus), Some(minus)) => (plus - minus) / (2.0 * H),
-            (Some(plus), None) => (plus - value) / H,
-            (None, Some(minus)) => (value - minus) / H,
+        let plus = at(1.0)?;
+        let minus = if central || plus.is_none() {
+            at(-1.0)?
+        } else {
+            None
+        };
+        *slot = match (plus, minus) {
+            (Some(plus), Some(minus)) => (plus - minus) / (2.0 * h),
+            (Some(plus), None) => (plus - value) / h,
+            (None, Some(minus)) => (value - minus) / h,
             (None, None) => return Ok(None),
         };
     }
@@ -324,36 +372,36 @@ fn outside(z: [f64; 2]) -> Option<((usize, f64), End)> {
 ///
 /// # Errors
 /// An eigenvalue computation that fails.
-pub(crate) fn on_edge(
-    g: &dyn Defining,
+pub(crate) fn on_edge<G: Defining + ?Sized>(
+    g: &G,
     plane: &Plane,
-    (inside, near): Node,
+    (inside, near): &Node<G::Near>,
     beyond: [f64; 2],
     (k, value): (usize, f64),
-) -> Result<Option<Node>, AnalysisError> {
+) -> Result<Option<Node<G::Near>>, AnalysisError> {
     let other = 1 - k;
     let s = (value - inside[k]) / (beyond[k] - inside[k]);
-    let mut z = inside;
-    z[k] = value;
-    z[other] = inside[other] + s * (beyond[other] - inside[other]);
-    let mut lambda = near;
+    let mut node = (*inside, near.clone());
+    node.0[k] = value;
+    node.0[other] = inside[other] + s * (beyond[other] - inside[other]);
+    let tolerance = 0.1 * g.accuracy().on_curve;
     for _ in 0..20 {
-        let (y, p) = plane.point(z);
-        let Some((g0, found)) = g.value(y, p, lambda)? else {
+        let (y, p) = plane.point(node.0);
+        let Some((g0, found)) = g.value(y, p, &node.1)? else {
             return Ok(None);
         };
-        lambda = found;
-        let Some(grad) = gradient(g, plane, (z, lambda), g0)? else {
+        node.1 = found;
+        let Some(grad) = gradient(g, plane, &node, g0)? else {
             return Ok(None);
         };
         if grad[other] == 0.0 {
             return Ok(None);
         }
         let dz = -g0 / grad[other];
-        z[other] += dz;
-        if dz.abs() <= 1e-12 {
+        node.0[other] += dz;
+        if dz.abs() <= tolerance {
             // Past a corner the curve leaves by the other edge first.
-            return Ok((0.0..=1.0).contains(&z[other]).then_some((z, lambda)));
+            return Ok((0.0..=1.0).contains(&node.0[other]).then_some(node));
         }
         if dz.abs() > 1.0 {
             return Ok(None);
@@ -368,22 +416,22 @@ pub(crate) fn on_edge(
 ///
 /// # Errors
 /// An eigenvalue computation that fails.
-pub(crate) fn between(
-    g: &dyn Defining,
+pub(crate) fn between<G: Defining + ?Sized>(
+    g: &G,
     plane: &Plane,
-    a: Node,
+    a: &Node<G::Near>,
     b: [f64; 2],
     fraction: f64,
-) -> Result<Option<Node>, AnalysisError> {
+) -> Result<Option<Node<G::Near>>, AnalysisError> {
     let chord = [b[0] - a.0[0], b[1] - a.0[1]];
     let length = chord[0].hypot(chord[1]);
     if length == 0.0 {
-        return Ok(Some(a));
+        return Ok(Some(a.clone()));
     }
     let along = scale(chord, 1.0 / length);
     let predicted = [a.0[0] + fraction * chord[0], a.0[1] + fraction * chord[1]];
-    Ok(match correct(g, plane, predicted, along, a.1)? {
-        Corrected::Point(node) => Some(node),
+    Ok(match correct(g, plane, predicted, along, &a.1)? {
+        Corrected::Point(node, _) => Some(node),
         Corrected::Gone | Corrected::Failed => None,
     })
 }
@@ -396,8 +444,9 @@ mod tests {
     struct Circle;
 
     impl Defining for Circle {
-        fn value(&self, y: f64, p: f64, near: C64) -> Result<Option<(f64, C64)>, AnalysisError> {
-            Ok(Some(((y - 0.5).powi(2) + (p - 0.5).powi(2) - 0.09, near)))
+        type Near = C64;
+        fn value(&self, y: f64, p: f64, near: &C64) -> Result<Option<(f64, C64)>, AnalysisError> {
+            Ok(Some(((y - 0.5).powi(2) + (p - 0.5).powi(2) - 0.09, *near)))
         }
     }
 
@@ -426,8 +475,9 @@ mod tests {
     fn a_curve_leaving_the_box_ends_on_its_edge() {
         struct Wide;
         impl Defining for Wide {
-            fn value(&self, y: f64, p: f64, n: C64) -> Result<Option<(f64, C64)>, AnalysisError> {
-                Ok(Some(((y - 0.5).powi(2) + (p - 0.5).powi(2) - 0.36, n)))
+            type Near = C64;
+            fn value(&self, y: f64, p: f64, n: &C64) -> Result<Option<(f64, C64)>, AnalysisError> {
+                Ok(Some(((y - 0.5).powi(2) + (p - 0.5).powi(2) - 0.36, *n)))
             }
         }
         let plane = Plane {

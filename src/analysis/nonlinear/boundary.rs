@@ -10,6 +10,8 @@
 use serde::Serialize;
 
 use super::arclength::{Defining, End, Node, Plane, between, follow};
+use super::curve::{Boundary, BoundaryKind, BoundaryPoint, BoundarySpec, near_polyline, project};
+use super::cycle_fold::{CycleFold, cycle_folds};
 use super::hopf::{Steps, dissipative, hopf_at, is_hopf};
 use crate::analysis::{AffinePencil, AnalysisError, C64, State, critical_loads};
 use crate::model::{Axis, Key, Model};
@@ -28,82 +30,6 @@ const SAME_POINT: f64 = 1e-7;
 const MERGED: f64 = 0.01;
 /// Bisection steps for a Bautin point along its Hopf curve.
 const BISECTIONS: usize = 48;
-
-/// What the boundaries are asked of: a column, the second parameter and
-/// its range, and the load range.
-#[derive(Clone, Debug)]
-pub struct BoundarySpec {
-    pub model: Model,
-    pub axis: Axis,
-    pub axis_range: (f64, f64),
-    pub load_range: (f64, f64),
-}
-
-/// What kind of stability boundary a curve is.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum BoundaryKind {
-    /// A pair of eigenvalues on the imaginary axis: flutter sets in.
-    Flutter,
-    /// A real eigenvalue at zero: divergence sets in.
-    Divergence,
-}
-
-/// One point of a boundary.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BoundaryPoint {
-    /// The second parameter's value.
-    pub value: f64,
-    pub load: f64,
-    /// The eigenvalue on the imaginary axis (its upper one, for a pair).
-    pub eigenvalue: C64,
-    /// On a Hopf curve: the first Lyapunov coefficient (negative: soft
-    /// onset; positive: hard), `None` where there is none (a reversible
-    /// column) or it failed.
-    pub first_lyapunov: Option<f64>,
-}
-
-/// How a boundary ends, at either end.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum CurveEnd {
-    /// At an end of the second parameter's range.
-    ParameterEdge,
-    /// At an end of the load range.
-    LoadEdge,
-    /// The pair met on the real axis: a Bogdanov-Takens point.
-    PairMerged,
-    /// The curve is closed.
-    Closed,
-    /// The continuation could not go on (a reversible column, where a
-    /// pair's growth rate is zero over a whole region, or a corner).
-    Lost,
-    /// The most steps were taken.
-    Steps,
-}
-
-impl From<End> for CurveEnd {
-    fn from(end: End) -> Self {
-        match end {
-            End::ParameterEdge => Self::ParameterEdge,
-            End::LoadEdge => Self::LoadEdge,
-            End::Merged => Self::PairMerged,
-            End::Closed => Self::Closed,
-            End::Lost => Self::Lost,
-            End::Steps => Self::Steps,
-        }
-    }
-}
-
-/// A stability boundary followed through the plane.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Boundary {
-    pub kind: BoundaryKind,
-    /// In the order followed.
-    pub points: Vec<BoundaryPoint>,
-    /// How its first and its last point end it.
-    pub ends: [CurveEnd; 2],
-}
 
 /// What a special point is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -130,11 +56,13 @@ pub struct SpecialPoint {
     pub curves: [usize; 2],
 }
 
-/// Every boundary in the plane and the special points on them.
+/// Every boundary in the plane, the special points on them, and the folds
+/// of cycles from their hard stretches.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Boundaries {
     pub curves: Vec<Boundary>,
     pub special_points: Vec<SpecialPoint>,
+    pub folds: Vec<CycleFold>,
 }
 
 /// The defining function of a boundary: the growth rate of the tracked
@@ -152,12 +80,15 @@ impl Growth<'_> {
 }
 
 impl Defining for Growth<'_> {
+    type Near = C64;
+
     /// On a Hopf curve the growth rate of the pair nearest `near`; on a
     /// divergence curve the product of every eigenvalue over the frequency
     /// scale (the pencil's determinant, smooth through a Bogdanov-Takens
     /// point, where the real eigenvalue at zero meets another), with the
     /// real eigenvalue nearest zero.
-    fn value(&self, y: f64, p: f64, near: C64) -> Result<Option<(f64, C64)>, AnalysisError> {
+    fn value(&self, y: f64, p: f64, near: &C64) -> Result<Option<(f64, C64)>, AnalysisError> {
+        let near = *near;
         let Some(model) = self.model(y) else {
             return Ok(None);
         };
@@ -224,9 +155,11 @@ pub fn boundaries(spec: &BoundarySpec) -> Result<Boundaries, AnalysisError> {
         ends.iter()
             .all(|e| (e[0] - z[0]).hypot(e[1] - z[1]) > NEAR_CURVE)
     }));
+    let folds = cycle_folds(spec, &out)?;
     Ok(Boundaries {
         curves: out,
         special_points: special,
+        folds,
     })
 }
 
@@ -459,7 +392,7 @@ fn on_curve(
         if !(0.0..=1.0).contains(&s) || across > NEAR_CURVE {
             continue;
         }
-        if let Some((point, _)) = between(growth, plane, a, b, s)?
+        if let Some((point, _)) = between(growth, plane, &a, b, s)?
             && (point[0] - z[0]).hypot(point[1] - z[1]) <= SAME_POINT
         {
             return Ok(true);
@@ -468,36 +401,6 @@ fn on_curve(
     Ok(nodes
         .iter()
         .any(|(point, _)| (point[0] - z[0]).hypot(point[1] - z[1]) <= SAME_POINT))
-}
-
-/// Where `z` falls beside the segment from `a` to `b`: the fraction of
-/// the way along it of its foot on the segment's line, and its distance
-/// from the segment (from the nearer end past either end); `None` for a
-/// segment of no length.
-fn project(z: [f64; 2], a: [f64; 2], b: [f64; 2]) -> Option<(f64, f64)> {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let length2 = d[0] * d[0] + d[1] * d[1];
-    if length2 <= 0.0 {
-        return None;
-    }
-    let s = ((z[0] - a[0]) * d[0] + (z[1] - a[1]) * d[1]) / length2;
-    let t = s.clamp(0.0, 1.0);
-    Some((s, (z[0] - a[0] - t * d[0]).hypot(z[1] - a[1] - t * d[1])))
-}
-
-/// The distance from `z` to the polyline through `nodes` (scaled).
-fn near_polyline(z: [f64; 2], nodes: &[Node]) -> f64 {
-    let segment = |a: [f64; 2], b: [f64; 2]| {
-        project(z, a, b).map_or_else(|| (z[0] - a[0]).hypot(z[1] - a[1]), |(_, d)| d)
-    };
-    match nodes {
-        [] => f64::INFINITY,
-        [only] => segment(only.0, only.0),
-        _ => nodes
-            .windows(2)
-            .map(|w| segment(w[0].0, w[1].0))
-            .fold(f64::INFINITY, f64::min),
-    }
 }
 
 /// The Bautin point between `a` and `b` (where the first Lyapunov
@@ -515,7 +418,7 @@ fn bautin(
     let mut found = None;
     for _ in 0..BISECTIONS {
         let middle = 0.5 * (low + high);
-        let Some(node) = between(growth, plane, a, b, middle)? else {
+        let Some(node) = between(growth, plane, &a, b, middle)? else {
             return Ok(found);
         };
         match lyapunov(&node) {

@@ -35,7 +35,6 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 use nalgebra::{DMatrix, DVector};
 
-use crate::analysis::field::Field;
 use crate::analysis::hopf::{HopfPoint, Steps as HopfSteps, hopf_point};
 use crate::analysis::{AffinePencil, AnalysisError, Hopf, HopfKind, critical_loads, is_hopf};
 use crate::format::load_text;
@@ -43,7 +42,7 @@ use crate::model::Model;
 
 pub use super::cycle::Cycle;
 use super::cycle::LOAD_SCALE_FLOOR;
-use super::shooting::{Constraint, Shooting, Update, fastest_rate};
+use super::shooting::{Constraint, Shooting, Update};
 
 /// Why a branch's continuation stopped.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -238,11 +237,7 @@ fn branch(
     (load_min, load_max): (f64, f64),
     cancel: &AtomicBool,
 ) -> Option<Branch> {
-    let field = Field::new(&model.at_load(point.hopf.load));
-    let shooting = Shooting {
-        fastest_per_s: fastest_rate(&field),
-        field,
-    };
+    let shooting = Shooting::of(&model.at_load(point.hopf.load));
     let mut cycles = Vec::new();
     let mut monodromy = DMatrix::zeros(0, 0);
     for amplitude in START_AMPLITUDES_RAD {
@@ -404,11 +399,7 @@ pub fn cycle_branches(
 /// form's.
 #[must_use]
 pub fn cycles_at(model: &Model, branch: &Branch, p: f64) -> Vec<Cycle> {
-    let field = Field::new(&model.at_load(branch.hopf().load));
-    let shooting = Shooting {
-        fastest_per_s: fastest_rate(&field),
-        field,
-    };
+    let shooting = Shooting::of(&model.at_load(branch.hopf().load));
     let onset = branch.hopf().load;
     let near = branch.cycles.first().filter(|first| {
         let (lo, hi) = (onset.min(first.load), onset.max(first.load));

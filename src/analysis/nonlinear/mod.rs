@@ -4,10 +4,13 @@
 //! stability boundaries followed in a second parameter, with where their
 //! onsets turn from soft to hard.
 
+mod amplitude;
 pub(super) mod arclength;
 pub(super) mod boundary;
+pub(super) mod curve;
 mod cycle;
 pub(super) mod cycle_bifurcations;
+pub(super) mod cycle_fold;
 pub(super) mod cycles;
 pub(super) mod field;
 pub(super) mod gauss;

@@ -41,16 +41,28 @@ pub(in crate::analysis) enum Update<'a> {
     /// on the branch), or else the flow's with each step's Jacobian held
     /// over its stages.
     Broyden(Option<&'a DMatrix<f64>>),
+    /// Broyden's method from this Newton matrix (a nearby cycle's, of the
+    /// same equations): every iteration is one flow without the monodromy.
+    Matrix(&'a DMatrix<f64>),
     /// Newton's method: the matrix anew at every iteration, with the
     /// monodromy taken as given.
     Newton(Monodromy),
 }
 
-/// A converged cycle with its exact monodromy and Newton's iterations.
+/// A converged cycle with its exact monodromy, the steps of its flow and
+/// Newton's iterations.
 pub(in crate::analysis) struct Solved {
     pub(in crate::analysis) cycle: Cycle,
     pub(in crate::analysis) monodromy: DMatrix<f64>,
+    pub(in crate::analysis) steps: usize,
     pub(in crate::analysis) iterations: usize,
+}
+
+/// The phase condition `normal . (x0 - point) = 0`: the plane a cycle's
+/// start is held on.
+pub(in crate::analysis) struct Phase {
+    pub(in crate::analysis) normal: DVector<f64>,
+    pub(in crate::analysis) point: DVector<f64>,
 }
 
 /// The flow over one period from `x0` in a number of steps: the
@@ -152,6 +164,16 @@ pub(in crate::analysis) struct Shooting {
 }
 
 impl Shooting {
+    /// The shooting problem of `model` (at its own load, the start of its
+    /// Newton iterations' load).
+    pub(in crate::analysis) fn of(model: &crate::model::Model) -> Self {
+        let field = Field::new(model);
+        Self {
+            fastest_per_s: fastest_rate(&field),
+            field,
+        }
+    }
+
     /// The cycle through the guess `u = (x0, T, p)` under `constraint`,
     /// with its exact monodromy and Newton's iterations, or `None` where
     /// Newton fails: first by Broyden's method (see [`Update::Broyden`]),
@@ -168,7 +190,8 @@ impl Shooting {
             .or_else(|| self.newton(guess, constraint, Update::Newton(Monodromy::Exact)))
     }
 
-    /// [`Self::solve`] with Newton's matrix updated as `update` says.
+    /// [`Self::solve`] with Newton's matrix updated as `update` says, the
+    /// start on the plane through the guess's across its flow.
     pub(in crate::analysis) fn newton(
         &self,
         guess: &DVector<f64>,
@@ -176,15 +199,30 @@ impl Shooting {
         update: Update,
     ) -> Option<Solved> {
         let d = self.field.dimension();
-        let reference = guess.rows(0, d).into_owned();
-        let reference_flow = self.field.at_load(guess[d + 1]).at(&reference);
+        let point = guess.rows(0, d).into_owned();
+        let phase = Phase {
+            normal: self.field.at_load(guess[d + 1]).at(&point),
+            point,
+        };
+        self.newton_on(guess, constraint, update, &phase)
+    }
+
+    /// [`Self::newton`] with the start held on `phase`'s plane.
+    pub(in crate::analysis) fn newton_on(
+        &self,
+        guess: &DVector<f64>,
+        constraint: &Constraint,
+        update: Update,
+        phase: &Phase,
+    ) -> Option<Solved> {
+        let d = self.field.dimension();
         let mut u = guess.clone();
         // The inverse of Newton's matrix, and the last step with the
         // residual it was taken from (for Broyden's update).
         let mut inverse: Option<DMatrix<f64>> = None;
         let mut last: Option<(DVector<f64>, DVector<f64>)> = None;
         let iterations = match update {
-            Update::Broyden(_) => BROYDEN_ITERATIONS,
+            Update::Broyden(_) | Update::Matrix(_) => BROYDEN_ITERATIONS,
             Update::Newton(_) => NEWTON_ITERATIONS,
         };
         for iteration in 1..=iterations {
@@ -195,20 +233,24 @@ impl Shooting {
             let field = self.field.at_load(load);
             let taken = match update {
                 Update::Broyden(None) if inverse.is_none() => Monodromy::HeldPerStep,
-                Update::Broyden(_) => Monodromy::None,
+                Update::Broyden(_) | Update::Matrix(_) => Monodromy::None,
                 Update::Newton(monodromy) => monodromy,
             };
             let (orbit, steps) = self.orbit(&field, &x0, period, taken)?;
             let mut residual = DVector::<f64>::zeros(d + 2);
             residual.rows_mut(0, d).copy_from(&(&orbit.end - &x0));
-            residual[d] = reference_flow.dot(&(&x0 - &reference));
+            residual[d] = phase.normal.dot(&(&x0 - &phase.point));
             residual[d + 1] = match constraint {
                 Constraint::Load(target) => load - target,
                 Constraint::Arclength { tangent, predicted } => tangent.dot(&(&u - *predicted)),
             };
             let monodromy = match (update, &inverse) {
+                (Update::Matrix(known), None) => {
+                    inverse = Some(known.clone().try_inverse()?);
+                    None
+                }
                 (Update::Broyden(Some(known)), None) => Some(known),
-                (Update::Broyden(_), Some(_)) => None,
+                (Update::Broyden(_) | Update::Matrix(_), Some(_)) => None,
                 _ => Some(orbit.monodromy.as_ref()?),
             };
             if let Some(monodromy) = monodromy {
@@ -216,7 +258,7 @@ impl Shooting {
                     (&x0, period, load),
                     steps,
                     (&orbit.end, monodromy),
-                    &reference_flow,
+                    &phase.normal,
                     constraint,
                 )?;
                 inverse = Some(jacobian.try_inverse()?);
@@ -226,10 +268,11 @@ impl Shooting {
             let step = inverse.as_ref()? * &residual;
             u -= &step;
             if converged(&step, &u, d) {
-                let (cycle, monodromy) = self.cycle(&u)?;
+                let (cycle, monodromy, steps) = self.cycle(&u)?;
                 return Some(Solved {
                     cycle,
                     monodromy,
+                    steps,
                     iterations: iteration,
                 });
             }
@@ -246,7 +289,7 @@ impl Shooting {
         (x0, period, load): (&DVector<f64>, f64, f64),
         steps: usize,
         (end, monodromy): (&DVector<f64>, &DMatrix<f64>),
-        reference_flow: &DVector<f64>,
+        phase_normal: &DVector<f64>,
         constraint: &Constraint,
     ) -> Option<DMatrix<f64>> {
         let d = x0.len();
@@ -258,7 +301,7 @@ impl Shooting {
         jacobian.view_mut((0, d), (d, 1)).copy_from(&field.at(end));
         jacobian
             .view_mut((d, 0), (1, d))
-            .copy_from(&reference_flow.transpose());
+            .copy_from(&phase_normal.transpose());
         match constraint {
             Constraint::Load(_) => jacobian[(d + 1, d + 1)] = 1.0,
             Constraint::Arclength { tangent, .. } => {
@@ -279,12 +322,16 @@ impl Shooting {
         Some(jacobian)
     }
 
-    /// The cycle at the converged unknowns `u`, with its multipliers, and
-    /// its exact monodromy.
-    pub(in crate::analysis) fn cycle(&self, u: &DVector<f64>) -> Option<(Cycle, DMatrix<f64>)> {
+    /// The cycle at the converged unknowns `u`, with its multipliers, its
+    /// exact monodromy and the steps of its flow.
+    pub(in crate::analysis) fn cycle(
+        &self,
+        u: &DVector<f64>,
+    ) -> Option<(Cycle, DMatrix<f64>, usize)> {
         let d = self.field.dimension();
         let (x0, period, load) = (u.rows(0, d).into_owned(), u[d], u[d + 1]);
-        let (orbit, _) = self.orbit(&self.field.at_load(load), &x0, period, Monodromy::Exact)?;
+        let (orbit, steps) =
+            self.orbit(&self.field.at_load(load), &x0, period, Monodromy::Exact)?;
         let monodromy = orbit.monodromy?;
         let multipliers = sorted_multipliers(&monodromy);
         let trivial = trivial_index(&multipliers)?;
@@ -301,7 +348,7 @@ impl Shooting {
             stable,
             closest_slip_m_per_s: orbit.closest_slip_m_per_s,
         };
-        Some((cycle, monodromy))
+        Some((cycle, monodromy, steps))
     }
 
     /// The flow over `period` with its monodromy, and the steps it took.
