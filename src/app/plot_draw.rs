@@ -8,8 +8,8 @@ use std::sync::Arc;
 
 use eframe::egui::{self, Color32};
 use egui_plot::{
-    HLine, LineStyle, MarkerShape, Plot as EguiPlot, PlotImage, PlotPoint, PlotResponse, Points,
-    Span, Text, VLine, log_grid_spacer,
+    HLine, LineStyle, MarkerShape, Plot as EguiPlot, PlotImage, PlotPoint, PlotPoints,
+    PlotResponse, Points, Polygon, Span, Text, VLine, log_grid_spacer,
 };
 
 use super::legend::{Swatch as RowSwatch, legend_row};
@@ -259,6 +259,25 @@ fn mark_ui<'a>(
         Mark::Range { from, to, state } => {
             let name = state_name(plot_ui.ctx().words(), *state);
             plot_ui.span(Span::new(name, *from..=*to).fill(range_tint(*state, theme)));
+        }
+        Mark::Band {
+            lower,
+            upper,
+            state,
+        } => {
+            // egui fills convex shapes only: one trapezoid per step in x.
+            let name = state_name(plot_ui.ctx().words(), *state);
+            let fill = range_tint(*state, theme);
+            for (i, (l, u)) in lower.windows(2).zip(upper.windows(2)).enumerate() {
+                let corners = vec![l[0], l[1], u[1], u[0]];
+                plot_ui.polygon(
+                    Polygon::new(name.clone(), PlotPoints::from(corners))
+                        .id(("band", i))
+                        .fill_color(fill)
+                        .stroke(egui::Stroke::NONE)
+                        .allow_hover(false),
+                );
+            }
         }
         Mark::Label { at, text } => {
             // Spaces pad the plate on both sides of the word.

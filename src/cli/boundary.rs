@@ -131,8 +131,11 @@ pub fn run(args: &Args) -> Result<()> {
     let found = boundaries(&spec)?;
     working.finish_and_clear();
     for point in &found.special_points {
+        let second = point.second_lyapunov.map_or_else(String::new, |l2| {
+            format!(" (second Lyapunov coefficient {l2:.4e})")
+        });
         eprintln!(
-            "{}: {} = {}, p = {}",
+            "{}: {} = {}, p = {}{second}",
             special_name(point.kind),
             args.y.name,
             Exact(point.value),
@@ -270,6 +273,7 @@ fn write_json(out: &mut dyn Write, found: &Boundaries, key: &str) -> std::io::Re
                 key: point.value,
                 "load": point.load,
                 "curves": [&names[point.curves[0]], &names[point.curves[1]]],
+                "second_lyapunov": point.second_lyapunov,
             })
         })
         .collect();

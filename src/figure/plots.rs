@@ -196,6 +196,11 @@ where
                     range_tint(*state).filled(),
                 ))))?;
             }
+            Mark::Band {
+                lower,
+                upper,
+                state,
+            } => band(&mut chart, (lower, upper), *state)?,
             Mark::Label { at, text } => label(&mut chart, *at, text, ink)?,
         }
     }
@@ -206,6 +211,28 @@ where
             .map(|far| far.note.clone()),
     );
     drawn.panels.push(panel(&chart));
+    Ok(())
+}
+
+/// The region between `lower` and `upper` (matched points), tinted as a
+/// range of `state` is: one polygon round both.
+fn band<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    (lower, upper): (&[[f64; 2]], &[[f64; 2]]),
+    state: State,
+) -> Result<(), FigureError>
+where
+    DB::ErrorType: 'static,
+{
+    let outline: Vec<(f64, f64)> = lower
+        .iter()
+        .chain(upper.iter().rev())
+        .map(|p| (p[0], p[1]))
+        .collect();
+    drawing(chart.draw_series(std::iter::once(Polygon::new(
+        outline,
+        range_tint(state).filled(),
+    ))))?;
     Ok(())
 }
 

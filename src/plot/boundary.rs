@@ -1,8 +1,10 @@
 //! The stability boundaries described once: the plane of the second
 //! parameter and the load, each flutter boundary in the flutter colour,
 //! solid where its onset is soft and dashed where it is hard, each
-//! divergence boundary in the divergence colour, and the special points
-//! ringed and named.
+//! divergence boundary in the divergence colour, each fold of cycles in
+//! the main ink with the band of hysteresis between it and the hard
+//! flutter boundary above it tinted, and the special points ringed and
+//! named.
 
 use super::map::axis_words;
 use super::spec::{Entry, Ink, Mark, OffView, Plot, Sheet, Size, Swatch, Ticks, View, Weight};
@@ -22,6 +24,9 @@ pub struct BoundaryPlane<'a> {
     /// The language of the axes and the legend.
     pub words: &'static Words,
 }
+
+/// A band's lower and upper edges, point by point.
+type Band = (Vec<[f64; 2]>, Vec<[f64; 2]>);
 
 /// How a stretch of a flutter boundary sets in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -77,39 +82,119 @@ impl BoundaryPlane<'_> {
         out
     }
 
-    /// The loads the view spans: from the range's start to a quarter
-    /// above the highest boundary (within the range; all of it without
-    /// boundaries), so that curves low in a wide range are not a sliver.
+    /// The loads the view spans: the boundaries' and folds' loads and a
+    /// quarter of their spread each side (from the range's start where
+    /// that comes near it; within the range; all of it without
+    /// boundaries), so that curves close together in a wide range are not
+    /// a sliver and a thin band of hysteresis shows.
     fn fitted_loads(&self) -> (f64, f64) {
         let (p0, p1) = self.load_range;
-        let highest = self
+        let loads = self
             .found
             .curves
             .iter()
             .flat_map(|c| c.points.iter().map(|p| p.load))
-            .reduce(f64::max);
-        match highest {
-            Some(top) if top > p0 => (p0, (p0 + 1.25 * (top - p0)).min(p1)),
-            _ => (p0, p1),
+            .chain(
+                self.found
+                    .folds
+                    .iter()
+                    .flat_map(|f| f.points.iter().map(|p| p.load)),
+            );
+        let (low, high) = loads.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(p), hi.max(p))
+        });
+        if !(low.is_finite() && high.is_finite()) {
+            return (p0, p1);
         }
+        let pad = 0.25 * (high - low).max(1e-3 * (p1 - p0));
+        let bottom = if low - 2.0 * pad <= p0 { p0 } else { low - pad };
+        (bottom.max(p0), (high + pad).min(p1))
+    }
+
+    /// The folds of cycles as polylines `[value, load]`.
+    fn folds(&self) -> Vec<Vec<[f64; 2]>> {
+        self.found
+            .folds
+            .iter()
+            .map(|fold| fold.points.iter().map(|p| [p.value, p.load]).collect())
+            .collect()
+    }
+
+    /// The bands of hysteresis: below, each fold of cycles over a stretch
+    /// where it runs one way in the parameter; above, the nearest flutter
+    /// boundary at each of its points (where there is one).
+    fn bands(&self) -> Vec<Band> {
+        let mut out = Vec::new();
+        for fold in self.folds() {
+            for run in fold.chunk_by(|a, b| a[0] != b[0]).flat_map(monotone_runs) {
+                let mut run = run.to_vec();
+                run.sort_by(|a, b| a[0].total_cmp(&b[0]));
+                let (lower, upper): (Vec<_>, Vec<_>) = run
+                    .iter()
+                    .filter_map(|&low| Some((low, [low[0], self.onset_above(low)?])))
+                    .unzip();
+                if lower.len() >= 2 {
+                    out.push((lower, upper));
+                }
+            }
+        }
+        out
+    }
+
+    /// The least flutter onset at `point`'s parameter at or above its load
+    /// (less the fold's accuracy), interpolated along the flutter
+    /// boundaries' chords.
+    fn onset_above(&self, point: [f64; 2]) -> Option<f64> {
+        let [x, load] = point;
+        self.found
+            .curves
+            .iter()
+            .filter(|c| c.kind == BoundaryKind::Flutter)
+            .flat_map(|c| c.points.windows(2))
+            .filter_map(|w| {
+                let (a, b) = (&w[0], &w[1]);
+                let (lo, hi) = (a.value.min(b.value), a.value.max(b.value));
+                if !(lo..=hi).contains(&x) || lo == hi {
+                    return None;
+                }
+                let t = (x - a.value) / (b.value - a.value);
+                Some(a.load + t * (b.load - a.load))
+            })
+            .filter(|&onset| onset >= load - 1e-6 * load.abs().max(1.0))
+            .reduce(f64::min)
     }
 
     /// The plane over the second parameter's range and the fitted loads.
     fn plot(&self) -> Plot {
         let mut marks: Vec<Mark> = self
-            .stretches()
+            .bands()
             .into_iter()
-            .map(|(points, state, onset)| Mark::Line {
-                points,
-                ink: Ink::State(state),
-                weight: if onset == Onset::Unknown && state == State::Flutter {
-                    Weight::Fine
-                } else {
-                    Weight::Regular
-                },
-                dashed: onset == Onset::Hard,
+            .map(|(lower, upper)| Mark::Band {
+                lower,
+                upper,
+                state: State::Flutter,
             })
             .collect();
+        marks.extend(self.folds().into_iter().map(|points| Mark::Line {
+            points,
+            ink: Ink::Main,
+            weight: Weight::Fine,
+            dashed: false,
+        }));
+        marks.extend(
+            self.stretches()
+                .into_iter()
+                .map(|(points, state, onset)| Mark::Line {
+                    points,
+                    ink: Ink::State(state),
+                    weight: if onset == Onset::Unknown && state == State::Flutter {
+                        Weight::Fine
+                    } else {
+                        Weight::Regular
+                    },
+                    dashed: onset == Onset::Hard,
+                }),
+        );
         let special = &self.found.special_points;
         if !special.is_empty() {
             marks.push(Mark::Markers {
@@ -175,6 +260,18 @@ impl BoundaryPlane<'_> {
                 tr!(words, "legend-divergence-onset"),
             ));
         }
+        if !self.found.folds.is_empty() {
+            entries.push(Entry::new(
+                Swatch::Line(Ink::Main),
+                tr!(words, "legend-fold-of-cycles"),
+            ));
+        }
+        if !self.bands().is_empty() {
+            entries.push(Entry::new(
+                Swatch::Fill(State::Flutter),
+                tr!(words, "legend-hysteresis"),
+            ));
+        }
         if !self.found.special_points.is_empty() {
             entries.push(Entry::new(
                 Swatch::Marker(Ink::Main, false),
@@ -183,6 +280,25 @@ impl BoundaryPlane<'_> {
         }
         entries
     }
+}
+
+/// `points` cut where they turn back in x, each piece running one way (the
+/// pieces share their ends).
+fn monotone_runs(points: &[[f64; 2]]) -> Vec<&[[f64; 2]]> {
+    let mut out = Vec::new();
+    let mut start = 0;
+    for i in 1..points.len().saturating_sub(1) {
+        let before = points[i][0] - points[i - 1][0];
+        let after = points[i + 1][0] - points[i][0];
+        if before * after < 0.0 {
+            out.push(&points[start..=i]);
+            start = i;
+        }
+    }
+    if points.len() > start + 1 {
+        out.push(&points[start..]);
+    }
+    out
 }
 
 /// A special point's label on the plot (its legend entry spells it out).

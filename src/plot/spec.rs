@@ -126,6 +126,13 @@ pub enum Mark {
     },
     /// A range of x tinted across the plot in the colour of a state.
     Range { from: f64, to: f64, state: State },
+    /// The region between two curves over the same x (`lower[i][0] ==
+    /// upper[i][0]`, x increasing), tinted in the colour of a state.
+    Band {
+        lower: Vec<[f64; 2]>,
+        upper: Vec<[f64; 2]>,
+        state: State,
+    },
     /// A word written on the plot, centred at `at`, on a plate of the
     /// background so that it reads over cells and lines.
     Label { at: [f64; 2], text: String },

@@ -461,3 +461,73 @@ fn the_boundary_figure_draws_each_boundary_where_it_was_found() {
         );
     }
 }
+
+/// The boundaries' figure tints the band of hysteresis between the fold of
+/// cycles and the hard flutter onset above it (drag, a light first rod):
+/// between them at m1 = 0.25 the page is tinted in the flutter colour
+/// (a range's tint, 0.18 of it); 0.03 below the fold (a tenth of the view) it is not.
+#[test]
+fn the_boundary_figure_tints_the_band_of_hysteresis() {
+    use zieglerlab::analysis::{BoundarySpec, boundaries};
+    use zieglerlab::model::Axis;
+    use zieglerlab::plot::boundary::BoundaryPlane;
+    let m = model("ziegler-1952", &["c_ext=0.05"]);
+    let axis = Axis::parse("m1", &m).unwrap();
+    let spec = BoundarySpec {
+        model: m,
+        axis: axis.clone(),
+        axis_range: (0.2, 2.0),
+        load_range: (0.0, 8.0),
+    };
+    let found = boundaries(&spec).unwrap();
+    let fold = &found.folds[0].points;
+    let sheet = BoundaryPlane {
+        found: &found,
+        axis: &axis,
+        axis_range: spec.axis_range,
+        load_range: spec.load_range,
+        words: words(Language::English),
+    }
+    .sheet();
+    let rendered = render(&sheet, &Page::default(), Format::Png).unwrap();
+    let image = pixels(&rendered);
+    let panel = &rendered.panels[0];
+    // The fold's chord about m1 = 0.3, and the onset there from the Hopf
+    // curve's chord.
+    let on_chord = |points: &[(f64, f64)], x: f64| {
+        points
+            .windows(2)
+            .find_map(|w| {
+                let ((x0, y0), (x1, y1)) = (w[0], w[1]);
+                ((x0.min(x1)..=x0.max(x1)).contains(&x))
+                    .then(|| y0 + (x - x0) / (x1 - x0) * (y1 - y0))
+            })
+            .unwrap()
+    };
+    let fold_chord: Vec<_> = fold.iter().map(|p| (p.value, p.load)).collect();
+    let hopf_chord: Vec<_> = found.curves[0]
+        .points
+        .iter()
+        .map(|p| (p.value, p.load))
+        .collect();
+    let (low, high) = (on_chord(&fold_chord, 0.25), on_chord(&hopf_chord, 0.25));
+    assert!(high - low > 3e-3, "{low} {high}");
+    let tint = |load: f64| state_of(pixel_at(&image, panel.page_point(0.25, load)));
+    // The band is a few pixels tall between the two lines: some pixel in
+    // it is the tint, not a line.
+    let (_, y_low) = panel.page_point(0.25, low);
+    let (_, y_high) = panel.page_point(0.25, high);
+    #[expect(clippy::cast_possible_truncation, reason = "pixel rows")]
+    let rows = y_high.ceil() as i32..=y_low.floor() as i32;
+    let tinted = rows.into_iter().any(|y| {
+        let (x, _) = panel.page_point(0.25, low);
+        state_of(pixel_at(&image, (x, f64::from(y))))
+            .is_some_and(|(s, strength)| s == State::Flutter && (0.1..0.3).contains(&strength))
+    });
+    assert!(tinted, "{y_high} {y_low}");
+    let below = tint(low - 0.03);
+    assert!(
+        below.is_none_or(|(_, strength)| strength <= 0.05),
+        "{below:?}"
+    );
+}

@@ -17,6 +17,7 @@
 
 use nalgebra::{DMatrix, DVector};
 
+use super::hopf::HopfPoint;
 use super::shooting::{Constraint, Phase, Shooting, Solved, Update};
 use crate::analysis::gauss::Monodromy;
 
@@ -83,4 +84,21 @@ impl Shooting {
             solved,
         })
     }
+}
+
+/// The unknowns `(x0, T, p)` of the normal form's cycle of `point` whose
+/// first angle peaks at `amplitude_rad`, to leading order:
+/// `x0 = a Re(q conj(q_0)) / |q_0|^2`, the Hopf period and load.
+pub(in crate::analysis) fn normal_form_start(
+    point: &HopfPoint,
+    amplitude_rad: f64,
+) -> DVector<f64> {
+    let q = &point.eigenvector;
+    let q0 = q[0];
+    let d = q.len();
+    DVector::from_fn(d + 2, |i, _| match i {
+        i if i < d => amplitude_rad * (q[i] * q0.conj()).re / q0.norm_sqr(),
+        i if i == d => std::f64::consts::TAU / point.hopf.frequency_rad_per_s,
+        _ => point.hopf.load,
+    })
 }

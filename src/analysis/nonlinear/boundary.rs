@@ -10,6 +10,7 @@
 use serde::Serialize;
 
 use super::arclength::{Defining, End, Node, Plane, between, follow};
+use super::bautin::fitted_coefficients;
 use super::curve::{Boundary, BoundaryKind, BoundaryPoint, BoundarySpec, near_polyline, project};
 use super::cycle_fold::{CycleFold, cycle_folds};
 use super::hopf::{Steps, dissipative, hopf_at, is_hopf};
@@ -54,6 +55,10 @@ pub struct SpecialPoint {
     pub load: f64,
     /// The curves (indices into [`Boundaries::curves`]) it lies on.
     pub curves: [usize; 2],
+    /// At a Bautin point, the second Lyapunov coefficient (negative: the
+    /// cycles born there are stable; see `bautin`), where the cycles were
+    /// found.
+    pub second_lyapunov: Option<f64>,
 }
 
 /// Every boundary in the plane, the special points on them, and the folds
@@ -242,6 +247,10 @@ fn describe(
                 value,
                 load,
                 curves: [index, index],
+                second_lyapunov: growth
+                    .model(value)
+                    .and_then(|model| fitted_coefficients(&model, load))
+                    .map(|[_, l2, ..]| l2),
             });
         }
     }
@@ -266,6 +275,7 @@ fn describe(
                     value,
                     load,
                     curves: [index, on],
+                    second_lyapunov: None,
                 });
             }
         }
@@ -452,6 +462,7 @@ fn crossings(curves: &[Followed], plane: &Plane) -> Vec<SpecialPoint> {
                             value,
                             load,
                             curves: [i, j],
+                            second_lyapunov: None,
                         });
                     }
                 }

@@ -14,7 +14,7 @@
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
-use super::amplitude::AtAmplitude;
+use super::amplitude::{AtAmplitude, normal_form_start};
 use super::arclength::{Accuracy, Defining, End, Node, Plane, follow};
 use super::curve::{Boundary, BoundaryKind, BoundaryPoint, BoundarySpec, near_polyline};
 use super::cycle::trivial_index;
@@ -208,17 +208,8 @@ fn march(
     let Ok(point) = hopf_point(&model, load, Steps::DEFAULT.into())? else {
         return Ok(Vec::new());
     };
-    // The normal form's cycle at its first angle's peak:
-    // x0 = a Re(q conj(q_0)) / |q_0|^2.
-    let q = &point.eigenvector;
-    let q0 = q[0];
     let a0 = SMALLEST_AMPLITUDE_RAD;
-    let d = q.len();
-    let mut guess = DVector::from_fn(d + 2, |i, _| match i {
-        i if i < d => a0 * (q[i] * q0.conj()).re / q0.norm_sqr(),
-        i if i == d => std::f64::consts::TAU / point.hopf.frequency_rad_per_s,
-        _ => load,
-    });
+    let mut guess = normal_form_start(&point, a0);
     let mut seeds = Vec::new();
     let mut last: Option<Sample> = None;
     let mut a = a0;

@@ -122,6 +122,9 @@ pub(crate) struct HopfPoint {
     pub hopf: Hopf,
     /// `q`, `A q = i omega q` on the reduced state (see `field`), `|q| = 1`.
     pub eigenvector: DVector<C64>,
+    /// `p`, `Aᵀ p = -i omega p` with `<p, q> = 1`: the normal form's
+    /// coordinate is `z = <p, x>` (to the orders its transformation keeps).
+    pub adjoint: DVector<C64>,
     /// The normal form's radius per sqrt of the load's distance from the
     /// onset: the cycle is `2 r Re(q e^{i omega t})` to leading order.
     pub radius_per_sqrt_load: f64,
@@ -208,6 +211,7 @@ pub(crate) fn hopf_point(
             amplitude_per_sqrt_load_rad,
         },
         eigenvector: q,
+        adjoint: p,
         radius_per_sqrt_load,
     }))
 }

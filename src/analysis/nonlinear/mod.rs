@@ -6,6 +6,7 @@
 
 mod amplitude;
 pub(super) mod arclength;
+mod bautin;
 pub(super) mod boundary;
 pub(super) mod curve;
 mod cycle;
