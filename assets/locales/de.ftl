@@ -446,6 +446,7 @@ describe-range = { $state } von { $from } bis { $to }
 describe-ranges = Bereiche: { $ranges }
 describe-mark = { $name } bei { $x }
 describe-marked = markiert: { $marks }
+describe-bands = getönt zwischen einer Falte der Zyklen und einem harten Flatterbeginn: das Band der Hysterese, in dem Ruhe und großes Schwingen beide stabil sind
 describe-curves = { $count ->
     [one] { $count } Kurve
    *[other] { $count } Kurven
@@ -485,6 +486,12 @@ view-hint = ziehen: verschieben · Strg+Scrollen: zoomen · Doppelklick: einpass
     .more = Alle Daten wieder zeigen (wie ein Doppelklick auf ein Diagramm).{"\u000A"}Ziehen oder scrollen zum Verschieben, Strg+Scrollen zum Zoomen, mit der rechten Taste einen Rahmen ziehen, um hineinzuzoomen.
 view-fit = einpassen
 map-readout-growth = Anwachsrate { $rate } 1/s
+map-kick-settles = ein Stoß klingt ab
+map-kick-hysteresis = ein kleiner Stoß klingt ab, ein großer lässt es schwingen (Hysterese)
+map-kick-grows-softly = ein Stoß wächst sanft zu einem kleinen Schwingen
+map-kick-jumps = ein Stoß springt auf ein großes Schwingen
+map-following = Flattergrenze und Falten der Zyklen werden verfolgt…
+map-not-followed = Grenzen nicht verfolgt: { $why }
 map-readout-hint = auf die Karte zeigen, um eine Zelle abzulesen; klicken übernimmt ihre Last und ihren Parameter
 histories-delta = δ: der Winkel der Bandkraft zu Stab 2
 histories-energy = kinetische + Federenergie

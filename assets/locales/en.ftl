@@ -442,6 +442,7 @@ describe-range = { $state } from { $from } to { $to }
 describe-ranges = ranges: { $ranges }
 describe-mark = { $name } at { $x }
 describe-marked = marked: { $marks }
+describe-bands = tinted between a fold of cycles and a hard flutter onset: the band of hysteresis, where rest and a large swing are both stable
 describe-curves = { $count ->
     [one] { $count } curve
    *[other] { $count } curves
@@ -481,6 +482,12 @@ view-hint = drag: pan · Ctrl+scroll: zoom · double-click: fit
     .more = Show all the data again (as a double-click on a plot does).{"\u000A"}Drag or scroll to pan, Ctrl+scroll to zoom, drag a box with the right button to zoom into it.
 view-fit = fit
 map-readout-growth = growth rate { $rate } 1/s
+map-kick-settles = a kick dies out
+map-kick-hysteresis = a small kick dies out, a large one leaves it swinging (hysteresis)
+map-kick-grows-softly = a kick grows softly to a small swing
+map-kick-jumps = a kick jumps to a large swing
+map-following = following the flutter boundary and the folds of cycles…
+map-not-followed = boundaries not followed: { $why }
 map-readout-hint = point at the map to read a cell; click to take its load and parameter
 histories-delta = δ: the band force's angle from rod 2
 histories-energy = kinetic + spring energy

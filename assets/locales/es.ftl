@@ -446,6 +446,7 @@ describe-range = { $state } de { $from } a { $to }
 describe-ranges = intervalos: { $ranges }
 describe-mark = { $name } en { $x }
 describe-marked = marcados: { $marks }
+describe-bands = sombreada entre un pliegue de ciclos y un inicio brusco del flameo: la banda de histéresis, donde reposo y oscilación grande son ambos estables
 describe-curves = { $count ->
     [one] { $count } curva
    *[other] { $count } curvas
@@ -485,6 +486,12 @@ view-hint = arrastrar: desplazar · Ctrl+rueda: ampliar · doble clic: ajustar
     .more = Mostrar de nuevo todos los datos (como un doble clic en un gráfico).{"\u000A"}Arrastra o desplaza para mover, Ctrl+rueda para ampliar, arrastra un recuadro con el botón derecho para ampliarlo.
 view-fit = ajustar
 map-readout-growth = tasa de crecimiento { $rate } 1/s
+map-kick-settles = un golpe se amortigua
+map-kick-hysteresis = un golpe pequeño se amortigua, uno grande lo deja oscilando (histéresis)
+map-kick-grows-softly = un golpe crece suavemente hasta una oscilación pequeña
+map-kick-jumps = un golpe salta a una oscilación grande
+map-following = siguiendo el borde del flameo y los pliegues de ciclos…
+map-not-followed = bordes no seguidos: { $why }
 map-readout-hint = señala el mapa para leer una celda; haz clic para tomar su carga y su parámetro
 histories-delta = δ: el ángulo de la fuerza de la banda respecto a la barra 2
 histories-energy = energía cinética + elástica

@@ -446,6 +446,7 @@ describe-range = { $state } de { $from } à { $to }
 describe-ranges = intervalles : { $ranges }
 describe-mark = { $name } à { $x }
 describe-marked = repères : { $marks }
+describe-bands = teintée entre un pli des cycles et un début brutal du flottement : la bande d'hystérésis, où repos et grande oscillation sont tous deux stables
 describe-curves = { $count ->
     [one] { $count } courbe
    *[other] { $count } courbes
@@ -485,6 +486,12 @@ view-hint = glisser : déplacer · Ctrl+molette : zoomer · double-clic : ajuste
     .more = Montrer à nouveau toutes les données (comme un double-clic sur un graphique).{"\u000A"}Glisser ou faire défiler pour déplacer, Ctrl+molette pour zoomer, tracer un cadre avec le bouton droit pour zoomer dessus.
 view-fit = ajuster
 map-readout-growth = taux de croissance { $rate } 1/s
+map-kick-settles = une poussée s'amortit
+map-kick-hysteresis = une petite poussée s'amortit, une grande le laisse osciller (hystérésis)
+map-kick-grows-softly = une poussée croît doucement jusqu'à une petite oscillation
+map-kick-jumps = une poussée saute à une grande oscillation
+map-following = suivi de la frontière du flottement et des plis des cycles…
+map-not-followed = frontières non suivies : { $why }
 map-readout-hint = pointer la carte pour lire une cellule ; cliquer pour prendre sa charge et son paramètre
 histories-delta = δ : l'angle de la force de la bande par rapport à la barre 2
 histories-energy = énergie cinétique + élastique

@@ -446,6 +446,7 @@ describe-range = { $state } da { $from } a { $to }
 describe-ranges = intervalli: { $ranges }
 describe-mark = { $name } a { $x }
 describe-marked = segnati: { $marks }
+describe-bands = colorata tra una piega dei cicli e un inizio brusco del flutter: la banda di isteresi, dove quiete e grande oscillazione sono entrambe stabili
 describe-curves = { $count ->
     [one] { $count } curva
    *[other] { $count } curve
@@ -485,6 +486,12 @@ view-hint = trascina: sposta · Ctrl+rotella: zoom · doppio clic: adatta
     .more = Mostra di nuovo tutti i dati (come un doppio clic su un grafico).{"\u000A"}Trascina o scorri per spostare, Ctrl+rotella per lo zoom, trascina un riquadro col tasto destro per ingrandirlo.
 view-fit = adatta
 map-readout-growth = tasso di crescita { $rate } 1/s
+map-kick-settles = un colpetto si smorza
+map-kick-hysteresis = un colpetto piccolo si smorza, uno grande lo lascia oscillare (isteresi)
+map-kick-grows-softly = un colpetto cresce dolcemente fino a una piccola oscillazione
+map-kick-jumps = un colpetto salta a una grande oscillazione
+map-following = si seguono il confine del flutter e le pieghe dei cicli…
+map-not-followed = confini non seguiti: { $why }
 map-readout-hint = punta sulla mappa per leggere una cella; clicca per prenderne carico e parametro
 histories-delta = δ: l'angolo della forza del nastro rispetto all'asta 2
 histories-energy = energia cinetica + elastica

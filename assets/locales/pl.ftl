@@ -453,6 +453,7 @@ describe-range = { $state } od { $from } do { $to }
 describe-ranges = zakresy: { $ranges }
 describe-mark = { $name } przy { $x }
 describe-marked = zaznaczone: { $marks }
+describe-bands = zabarwione między fałdą cykli a gwałtownym początkiem flatteru: pas histerezy, gdzie spoczynek i duże drganie są oba stabilne
 describe-curves = { $count ->
     [one] { $count } krzywa
     [few] { $count } krzywe
@@ -493,6 +494,12 @@ view-hint = przeciągnij: przesuń · Ctrl+kółko: powiększ · dwuklik: dopasu
     .more = Pokaż znów wszystkie dane (jak dwuklik na wykresie).{"\u000A"}Przeciągnij lub przewiń, by przesunąć, Ctrl+kółko, by powiększyć, przeciągnij prostokąt prawym przyciskiem, by go przybliżyć.
 view-fit = dopasuj
 map-readout-growth = szybkość narastania { $rate } 1/s
+map-kick-settles = pchnięcie wygasa
+map-kick-hysteresis = małe pchnięcie wygasa, duże zostawia drganie (histereza)
+map-kick-grows-softly = pchnięcie łagodnie rośnie do małego drgania
+map-kick-jumps = pchnięcie skacze do dużego drgania
+map-following = śledzenie granicy flatteru i fałd cykli…
+map-not-followed = granice nie śledzone: { $why }
 map-readout-hint = wskaż mapę, by odczytać komórkę; kliknij, by przyjąć jej obciążenie i parametr
 histories-delta = δ: kąt siły taśmy względem pręta 2
 histories-energy = energia kinetyczna + sprężyn

@@ -12,10 +12,12 @@ use linear::{
     along, critical, crossing, hqr, locus, map, paradox, peaks, pencil, resolution, roots,
     stability,
 };
-use nonlinear::{boundary, curve, cycle_bifurcations, cycle_fold, cycles, field, gauss, hopf, jet};
+use nonlinear::{
+    boundary, curve, cycle_bifurcations, cycle_fold, cycles, field, gauss, hopf, jet, kick,
+};
 
 pub use along::{AlongLoad, Sampling, Unresolved};
-pub use boundary::{Boundaries, SpecialKind, SpecialPoint, boundaries};
+pub use boundary::{Boundaries, SpecialKind, SpecialPoint, boundaries, boundaries_until};
 pub use critical::{
     BRACKET_SAMPLES, bracketing_locus, bracketing_locus_reporting, critical_loads,
     critical_loads_along, plotted_locus,
@@ -29,6 +31,7 @@ pub use cycles::{
     TRIVIAL_TOLERANCE, cycle_branches, cycles_at,
 };
 pub use hopf::{Derivatives, Hopf, HopfKind, NoHopf, Steps as HopfSteps, hopf_at, is_hopf};
+pub use kick::Kick;
 pub use locus::{
     LARGEST_LOAD, Locus, MAX_HELD_EIGENVALUES, check_largest_load, load_grid, locus,
     locus_streamed, max_samples,

@@ -163,7 +163,9 @@ pub fn run(args: &Args) -> Result<()> {
     let write = |out: &mut dyn Write| -> std::io::Result<()> {
         match args.format {
             Format::Json => write_json(out, &name.to_string(), &branches, &rows),
-            Format::Csv | Format::Png => write_csv(out, &rows, model.column.rods),
+            Format::Csv | Format::Png => {
+                write_csv(out, &rows, &branches, (lo, hi), model.column.rods)
+            }
         }
     };
     if let Some(path) = &args.out {
@@ -339,9 +341,21 @@ fn sweep_rows(
         .collect())
 }
 
-fn write_csv(out: &mut dyn Write, rows: &[Row], rods: usize) -> std::io::Result<()> {
+/// The rows, then a row for each bifurcation of the cycles in `[lo, hi]`
+/// (its load, its branch, its kind in the last column, the rest empty).
+fn write_csv(
+    out: &mut dyn Write,
+    rows: &[Row],
+    branches: &[Onset],
+    (lo, hi): (f64, f64),
+    rods: usize,
+) -> std::io::Result<()> {
     let amplitudes: Vec<String> = (1..=rods).map(|i| format!("amp_phi{i}_rad")).collect();
-    writeln!(out, "load,branch,stable,period_s,{}", amplitudes.join(","))?;
+    writeln!(
+        out,
+        "load,branch,stable,period_s,{},bifurcation",
+        amplitudes.join(",")
+    )?;
     for row in rows {
         let stable = row.stable.map_or(String::new(), |s| s.to_string());
         let period = row
@@ -354,13 +368,39 @@ fn write_csv(out: &mut dyn Write, rows: &[Row], rods: usize) -> std::io::Result<
             .collect();
         writeln!(
             out,
-            "{},{},{stable},{period},{}",
+            "{},{},{stable},{period},{},",
             Exact(row.load),
             row.branch,
             amplitudes.join(",")
         )?;
     }
+    let empty = ",".repeat(rods);
+    for branch in branches
+        .iter()
+        .filter_map(|onset| onset.branch.as_ref().ok())
+    {
+        for event in cycle_bifurcations(&branch.cycles) {
+            if (lo..=hi).contains(&event.load) {
+                writeln!(
+                    out,
+                    "{},{},,,{empty}{}",
+                    Exact(event.load),
+                    branch.name(),
+                    bifurcation_word(event.kind)
+                )?;
+            }
+        }
+    }
     Ok(())
+}
+
+/// A bifurcation of the cycles as the CSV names it.
+fn bifurcation_word(kind: CycleBifurcationKind) -> &'static str {
+    match kind {
+        CycleBifurcationKind::Fold => "fold",
+        CycleBifurcationKind::PeriodDoubling => "period-doubling",
+        CycleBifurcationKind::NeimarkSacker => "neimark-sacker",
+    }
 }
 
 fn write_json(

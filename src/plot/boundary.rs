@@ -6,7 +6,7 @@
 //! flutter boundary above it tinted, and the special points ringed and
 //! named.
 
-use super::map::axis_words;
+use super::axis_words;
 use super::spec::{Entry, Ink, Mark, OffView, Plot, Sheet, Size, Swatch, Ticks, View, Weight};
 use crate::analysis::{Boundaries, BoundaryKind, SpecialKind, State};
 use crate::i18n::Words;
@@ -164,19 +164,31 @@ impl BoundaryPlane<'_> {
             .reduce(f64::min)
     }
 
-    /// The plane over the second parameter's range and the fitted loads.
-    fn plot(&self) -> Plot {
+    /// The boundaries' marks: the bands of hysteresis, the folds of cycles,
+    /// the boundaries, the special points ringed and named (the names set
+    /// off by `name_offset` in the load). Each point is `[value, load]`,
+    /// or `[load, value]` where `transposed` (the stability map's axes).
+    #[must_use]
+    pub fn marks(&self, transposed: bool, name_offset: f64) -> Vec<Mark> {
+        let at = |[value, load]: [f64; 2]| {
+            if transposed {
+                [load, value]
+            } else {
+                [value, load]
+            }
+        };
+        let flip = |points: Vec<[f64; 2]>| points.into_iter().map(at).collect();
         let mut marks: Vec<Mark> = self
             .bands()
             .into_iter()
             .map(|(lower, upper)| Mark::Band {
-                lower,
-                upper,
+                lower: flip(lower),
+                upper: flip(upper),
                 state: State::Flutter,
             })
             .collect();
         marks.extend(self.folds().into_iter().map(|points| Mark::Line {
-            points,
+            points: flip(points),
             ink: Ink::Main,
             weight: Weight::Fine,
             dashed: false,
@@ -185,7 +197,7 @@ impl BoundaryPlane<'_> {
             self.stretches()
                 .into_iter()
                 .map(|(points, state, onset)| Mark::Line {
-                    points,
+                    points: flip(points),
                     ink: Ink::State(state),
                     weight: if onset == Onset::Unknown && state == State::Flutter {
                         Weight::Fine
@@ -198,19 +210,23 @@ impl BoundaryPlane<'_> {
         let special = &self.found.special_points;
         if !special.is_empty() {
             marks.push(Mark::Markers {
-                points: special.iter().map(|s| [s.value, s.load]).collect(),
+                points: special.iter().map(|s| at([s.value, s.load])).collect(),
                 ink: Ink::Main,
                 size: Size::Large,
                 filled: false,
                 off_view: OffView::Hidden,
             });
         }
-        let (p0, p1) = self.fitted_loads();
-        let above = 0.06 * (p1 - p0);
         marks.extend(special.iter().map(|s| Mark::Label {
-            at: [s.value, s.load + above],
+            at: at([s.value, s.load + name_offset]),
             text: short_name(s.kind).to_owned(),
         }));
+        marks
+    }
+
+    /// The plane over the second parameter's range and the fitted loads.
+    fn plot(&self) -> Plot {
+        let (p0, p1) = self.fitted_loads();
         Plot {
             id: "stability boundaries",
             x_label: axis_words(self.axis, self.words),
@@ -220,13 +236,14 @@ impl BoundaryPlane<'_> {
                 x: self.axis_range,
                 y: (p0, p1),
             },
-            marks,
+            marks: self.marks(false, 0.06 * (p1 - p0)),
             far_left: Vec::new(),
         }
     }
 
     /// The legend: the kinds of boundary drawn and the special points' names.
-    fn legend(&self) -> Vec<Entry> {
+    #[must_use]
+    pub fn legend(&self) -> Vec<Entry> {
         let words = self.words;
         let stretches = self.stretches();
         let any = |state: State, onset: Onset| {

@@ -60,6 +60,13 @@ pub fn describe(plot: &Plot, words: &'static Words) -> String {
     if curves > 0 {
         sentences.push(tr!(words, "describe-curves", count = curves));
     }
+    if plot
+        .marks
+        .iter()
+        .any(|mark| matches!(mark, Mark::Band { .. }))
+    {
+        sentences.push(tr!(words, "describe-bands"));
+    }
     if let Some(now) = present(plot, words) {
         sentences.push(now);
     }

@@ -7,13 +7,14 @@ use crate::i18n::{Words, state_name};
 use crate::tr;
 use std::sync::Arc;
 
+use super::axis_words;
+use super::boundary::BoundaryPlane;
 use super::map_words;
 use super::spec::{
     CellGrid, Entry, Ink, Mark, OffView, Plot, Sheet, Size, Swatch, Ticks, View, Weight,
 };
-use crate::analysis::{MapSpec, Row, RowResult, State, map_boundaries};
+use crate::analysis::{Boundaries, MapSpec, Row, RowResult, State, map_boundaries};
 use crate::format::number_text;
-use crate::model::Axis;
 
 impl CellGrid {
     /// The cells of `rows` on `spec`'s grid: a row not computed yet takes
@@ -85,6 +86,7 @@ impl MapData {
             rows: &self.rows,
             grid: Arc::new(CellGrid::new(&self.spec, &self.rows)),
             now: None,
+            followed: None,
             words,
         }
         .sheet()
@@ -100,21 +102,12 @@ pub struct StabilityMap<'a> {
     pub grid: Arc<CellGrid>,
     /// The current model's point `[load, value]` (the window's).
     pub now: Option<[f64; 2]>,
+    /// The boundaries followed over the map's axes (the window's, once
+    /// computed): soft and hard onsets, folds of cycles, bands of
+    /// hysteresis and special points drawn over the cells.
+    pub followed: Option<&'a Boundaries>,
     /// The language of the axes and the key.
     pub words: &'static Words,
-}
-
-/// The second axis's words: its name and unit.
-#[must_use]
-pub fn axis_words(axis: &Axis, words: &'static Words) -> String {
-    match axis {
-        Axis::Key(key) if !key.spec().unit.is_empty() => {
-            format!("{} ({})", key.name(), key.spec().unit)
-        }
-        Axis::DampingLevel => tr!(words, "axis-damping-level"),
-        Axis::MassRatio => tr!(words, "axis-mass-ratio"),
-        _ => axis.name().to_owned(),
-    }
 }
 
 /// `value` to three significant digits (a key's scale needs no more).
@@ -150,6 +143,17 @@ impl StabilityMap<'_> {
         ((p0 - hx, p1 + hx), (y0 - hy, y1 + hy))
     }
 
+    /// The followed boundaries as the boundaries' plane draws them.
+    fn plane(&self) -> Option<BoundaryPlane<'_>> {
+        Some(BoundaryPlane {
+            found: self.followed?,
+            axis: &self.spec.axis,
+            axis_range: self.spec.axis_range,
+            load_range: self.spec.load_range,
+            words: self.words,
+        })
+    }
+
     /// The map and its key.
     #[must_use]
     pub fn sheet(&self) -> Sheet {
@@ -178,6 +182,9 @@ impl StabilityMap<'_> {
                     dashed: false,
                 }),
         );
+        if let Some(plane) = self.plane() {
+            marks.extend(plane.marks(true, 0.03 * (x.1 - x.0)));
+        }
         marks.extend(
             map_words::state_words(&self.grid, x, y)
                 .into_iter()
@@ -241,6 +248,9 @@ impl StabilityMap<'_> {
             Swatch::Line(Ink::Main),
             tr!(self.words, "legend-critical-loads"),
         ));
+        if let Some(plane) = self.plane() {
+            entries.extend(plane.legend());
+        }
         if let Some(now) = self.now {
             entries.push(Entry::new(
                 Swatch::Marker(Ink::Now, true),
@@ -295,6 +305,7 @@ mod tests {
 
     use super::*;
     use crate::analysis::compute_map;
+    use crate::model::Axis;
     use crate::model::PresetId;
 
     /// Ziegler's column against its damping level: on the undamped row the
@@ -348,6 +359,7 @@ mod tests {
             rows: &rows,
             grid: Arc::new(grid),
             now: None,
+            followed: None,
             words: crate::i18n::words(crate::i18n::Language::English),
         };
         let plot = map.plot();

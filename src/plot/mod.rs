@@ -16,3 +16,20 @@ pub mod view;
 pub mod vision;
 
 pub use palette::{Palette, Rgb};
+
+use crate::i18n::Words;
+use crate::model::Axis;
+use crate::tr;
+
+/// The second axis's words: its name and unit.
+#[must_use]
+pub fn axis_words(axis: &Axis, words: &'static Words) -> String {
+    match axis {
+        Axis::Key(key) if !key.spec().unit.is_empty() => {
+            format!("{} ({})", key.name(), key.spec().unit)
+        }
+        Axis::DampingLevel => tr!(words, "axis-damping-level"),
+        Axis::MassRatio => tr!(words, "axis-mass-ratio"),
+        _ => axis.name().to_owned(),
+    }
+}

@@ -229,3 +229,28 @@ pub fn paper_loci(
     }
     .sheet(part)
 }
+
+/// The drag column (`c_ext = 0.05`) of the README's `boundary` example,
+/// its second parameter m1 over 0.2 to 2 with loads 0 to 8, and its
+/// boundaries: computed once (a few seconds: the fold of cycles) for every
+/// test that reads them.
+pub fn drag_column_boundaries() -> &'static (
+    zieglerlab::analysis::BoundarySpec,
+    zieglerlab::analysis::Boundaries,
+) {
+    static FOUND: std::sync::OnceLock<(
+        zieglerlab::analysis::BoundarySpec,
+        zieglerlab::analysis::Boundaries,
+    )> = std::sync::OnceLock::new();
+    FOUND.get_or_init(|| {
+        let m = model("ziegler-1952", &["c_ext=0.05"]);
+        let spec = zieglerlab::analysis::BoundarySpec {
+            model: m,
+            axis: zieglerlab::model::Axis::parse("m1", &m).unwrap(),
+            axis_range: (0.2, 2.0),
+            load_range: (0.0, 8.0),
+        };
+        let found = zieglerlab::analysis::boundaries(&spec).expect("boundaries");
+        (spec, found)
+    })
+}

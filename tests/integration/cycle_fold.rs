@@ -5,12 +5,10 @@
 //! `bifurcation` follows turns back.
 
 use zieglerlab::analysis::{
-    AffinePencil, BoundarySpec, FoldEnd, SpecialKind, State, boundaries, critical_loads,
-    cycle_branches,
+    AffinePencil, FoldEnd, Kick, SpecialKind, State, critical_loads, cycle_branches,
 };
-use zieglerlab::model::Axis;
 
-use crate::common::model;
+use crate::common::{drag_column_boundaries, model};
 
 /// The first flutter onset of the drag column with first rod `m1`.
 fn onset(m1: f64) -> f64 {
@@ -39,14 +37,7 @@ fn onset(m1: f64) -> f64 {
 /// cycle's neighbours'.
 #[test]
 fn the_fold_of_cycles_runs_from_the_bautin_point_below_the_onset() {
-    let m = model("ziegler-1952", &["c_ext=0.05"]);
-    let spec = BoundarySpec {
-        model: m,
-        axis: Axis::parse("m1", &m).unwrap(),
-        axis_range: (0.2, 2.0),
-        load_range: (0.0, 8.0),
-    };
-    let found = boundaries(&spec).expect("boundaries");
+    let (_, found) = drag_column_boundaries();
     assert_eq!(found.folds.len(), 1, "{:?}", found.folds.len());
     let fold = &found.folds[0];
     assert_eq!(fold.ends, [FoldEnd::SmallAmplitude, FoldEnd::ParameterEdge]);
@@ -112,4 +103,85 @@ fn the_fold_of_cycles_runs_from_the_bautin_point_below_the_onset() {
         last.amplitude_rad,
         amplitude(turn + 1)
     );
+}
+
+/// What a kick does, read off the same boundaries (the map tab's readout):
+/// at m1 = 0.25 below the fold it dies out, between the fold and the hard
+/// onset it may leave the column swinging, past the onset it jumps; at
+/// m1 = 1.5, past the soft onset, it grows softly. The map drawn with the
+/// boundaries has the band (load along x), names the fold in its key and
+/// tells a screen reader of the band.
+#[test]
+fn a_kick_settles_below_the_fold_and_jumps_past_a_hard_onset() {
+    use zieglerlab::analysis::{MapSpec, RowResult};
+    use zieglerlab::plot::map::StabilityMap;
+    use zieglerlab::plot::spec::{CellGrid, Mark};
+    let (spec, found) = drag_column_boundaries();
+    let fold_at = |m1: f64| {
+        found.folds[0]
+            .points
+            .windows(2)
+            .find_map(|w| {
+                let (a, b) = (&w[0], &w[1]);
+                ((a.value.min(b.value)..=a.value.max(b.value)).contains(&m1))
+                    .then(|| a.load + (m1 - a.value) / (b.value - a.value) * (b.load - a.load))
+            })
+            .unwrap()
+    };
+    let (fold, hopf) = (fold_at(0.25), onset(0.25));
+    let kick = |m1: f64, load: f64, state: State| found.kick_at(m1, load, state);
+    assert_eq!(kick(0.25, fold - 0.01, State::Stable), Some(Kick::Settles));
+    let between = 0.5 * (fold + hopf);
+    assert_eq!(kick(0.25, between, State::Stable), Some(Kick::Hysteresis));
+    assert_eq!(kick(0.25, hopf + 0.01, State::Flutter), Some(Kick::Jumps));
+    assert_eq!(
+        kick(1.5, onset(1.5) + 0.01, State::Flutter),
+        Some(Kick::GrowsSoftly)
+    );
+    assert_eq!(
+        kick(1.5, onset(1.5) - 0.01, State::Stable),
+        Some(Kick::Settles)
+    );
+    let map = MapSpec {
+        model: spec.model,
+        axis: spec.axis.clone(),
+        load_range: (0.0, 8.0),
+        loads: 3,
+        axis_range: (0.2, 2.0),
+        values: 2,
+    };
+    let rows: Vec<Option<RowResult>> = vec![None, None];
+    let sheet = StabilityMap {
+        spec: &map,
+        rows: &rows,
+        grid: std::sync::Arc::new(CellGrid::new(&map, &rows)),
+        now: None,
+        followed: Some(found),
+        words: zieglerlab::i18n::words(zieglerlab::i18n::Language::English),
+    }
+    .sheet();
+    let band = sheet.plots[0].marks.iter().find_map(|mark| match mark {
+        Mark::Band { lower, upper, .. } => Some((lower.clone(), upper.clone())),
+        _ => None,
+    });
+    let (lower, upper) = band.expect("a band of hysteresis");
+    for (low, high) in lower.iter().zip(&upper) {
+        assert_eq!(low[1], high[1], "the band's sides at one m1");
+        assert!(
+            low[0] <= high[0] + 1e-8,
+            "the fold's load below the onset's"
+        );
+    }
+    assert!(
+        sheet
+            .legend
+            .iter()
+            .any(|e| e.text.starts_with("fold of cycles")),
+        "{:?}",
+        sheet.legend
+    );
+    // A screen reader is told of the band too.
+    let words = zieglerlab::i18n::words(zieglerlab::i18n::Language::English);
+    let said = zieglerlab::plot::describe::describe(&sheet.plots[0], words);
+    assert!(said.contains("the band of hysteresis"), "{said}");
 }

@@ -289,7 +289,7 @@ fn bifurcation_csv_lists_the_equilibrium_and_the_cycles() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next(),
-        Some("load,branch,stable,period_s,amp_phi1_rad,amp_phi2_rad")
+        Some("load,branch,stable,period_s,amp_phi1_rad,amp_phi2_rad,bifurcation")
     );
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
     let onset = 1.914_285_714_285_7;
@@ -454,18 +454,7 @@ fn a_hard_onset_s_unstable_cycles_fold_back_into_large_stable_ones() {
 /// finds it: hysteresis, the mark of a hard onset.
 #[test]
 fn a_sweep_over_a_hard_onset_shows_hysteresis() {
-    let text = crate::cli::stdout(&[
-        "bifurcation",
-        "--preset",
-        "ziegler-1952",
-        "--set",
-        "c_ext=0.05",
-        "--set",
-        "m1=0.2",
-        "--x",
-        "load:2.125:2.145:5",
-        "--sweep",
-    ]);
+    let text = hard_onset_bifurcation(&["--x", "load:2.125:2.145:5", "--sweep"]);
     let rows = csv_rows(&text);
     let amplitudes = |branch: &str, load: &str| -> Vec<(f64, &str)> {
         rows.iter()
@@ -495,6 +484,21 @@ fn csv_rows(text: &str) -> Vec<Vec<&str>> {
         .skip(1)
         .map(|l| l.split(',').collect())
         .collect()
+}
+
+/// `bifurcation` of [`hard_onset_column`] with `args` after the model: stdout.
+fn hard_onset_bifurcation(args: &[&str]) -> String {
+    let mut all = vec![
+        "bifurcation",
+        "--preset",
+        "ziegler-1952",
+        "--set",
+        "c_ext=0.05",
+        "--set",
+        "m1=0.2",
+    ];
+    all.extend(args);
+    crate::cli::stdout(&all)
 }
 
 fn hard_onset_column() -> Model {
@@ -700,5 +704,25 @@ fn the_fold_of_cycles_is_where_the_branch_turns_and_a_multiplier_is_one() {
             .legend
             .iter()
             .any(|e| e.text.starts_with("LPC: fold of cycles"))
+    );
+}
+
+/// `bifurcation`'s CSV lists the cycles' own bifurcations as rows of their
+/// own: the hard onset's fold of cycles, at the load and on the branch the
+/// JSON gives, its kind in the last column, nothing measured beside it.
+#[test]
+fn bifurcation_csv_lists_the_fold_of_cycles() {
+    let run = |format: &str| hard_onset_bifurcation(&["--x", "load:2.1:2.2:3", "--format", format]);
+    let csv = run("csv");
+    let folds: Vec<&str> = csv.lines().filter(|l| l.ends_with(",fold")).collect();
+    assert_eq!(folds.len(), 1, "{csv}");
+    let fields: Vec<&str> = folds[0].split(',').collect();
+    assert_eq!(fields[1..], ["cycle-1", "", "", "", "", "fold"]);
+    let json: serde_json::Value = serde_json::from_str(&run("json")).unwrap();
+    let fold = &json["onsets"][0]["cycle_bifurcations"][0];
+    assert_eq!(fold["kind"], "fold");
+    assert_eq!(
+        fields[0].parse::<f64>().unwrap(),
+        fold["load"].as_f64().unwrap()
     );
 }

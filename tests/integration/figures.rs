@@ -468,22 +468,12 @@ fn the_boundary_figure_draws_each_boundary_where_it_was_found() {
 /// (a range's tint, 0.18 of it); 0.03 below the fold (a tenth of the view) it is not.
 #[test]
 fn the_boundary_figure_tints_the_band_of_hysteresis() {
-    use zieglerlab::analysis::{BoundarySpec, boundaries};
-    use zieglerlab::model::Axis;
     use zieglerlab::plot::boundary::BoundaryPlane;
-    let m = model("ziegler-1952", &["c_ext=0.05"]);
-    let axis = Axis::parse("m1", &m).unwrap();
-    let spec = BoundarySpec {
-        model: m,
-        axis: axis.clone(),
-        axis_range: (0.2, 2.0),
-        load_range: (0.0, 8.0),
-    };
-    let found = boundaries(&spec).unwrap();
+    let (spec, found) = crate::common::drag_column_boundaries();
     let fold = &found.folds[0].points;
     let sheet = BoundaryPlane {
-        found: &found,
-        axis: &axis,
+        found,
+        axis: &spec.axis,
         axis_range: spec.axis_range,
         load_range: spec.load_range,
         words: words(Language::English),

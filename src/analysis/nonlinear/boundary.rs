@@ -7,6 +7,8 @@
 //! Bautin points where it changes sign; where the curves end or meet, the
 //! Bogdanov-Takens, double-Hopf and zero-Hopf points. Pure: no UI, no clock.
 
+use std::sync::atomic::AtomicBool;
+
 use serde::Serialize;
 
 use super::arclength::{Defining, End, Node, Plane, between, follow};
@@ -135,6 +137,18 @@ impl Defining for Growth<'_> {
 /// A bad range, a second parameter that is the load, a column that cannot
 /// be analysed at the range's ends, or an eigenvalue computation that fails.
 pub fn boundaries(spec: &BoundarySpec) -> Result<Boundaries, AnalysisError> {
+    boundaries_until(spec, &AtomicBool::new(false))
+}
+
+/// [`boundaries`], the folds of cycles cut short once `cancel` is set (a
+/// window's job whose result is no longer wanted).
+///
+/// # Errors
+/// As [`boundaries`].
+pub fn boundaries_until(
+    spec: &BoundarySpec,
+    cancel: &AtomicBool,
+) -> Result<Boundaries, AnalysisError> {
     check(spec)?;
     let plane = Plane {
         y: spec.axis_range,
@@ -160,7 +174,7 @@ pub fn boundaries(spec: &BoundarySpec) -> Result<Boundaries, AnalysisError> {
         ends.iter()
             .all(|e| (e[0] - z[0]).hypot(e[1] - z[1]) > NEAR_CURVE)
     }));
-    let folds = cycle_folds(spec, &out)?;
+    let folds = cycle_folds(spec, &out, cancel)?;
     Ok(Boundaries {
         curves: out,
         special_points: special,

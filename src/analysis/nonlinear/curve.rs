@@ -11,7 +11,7 @@ use crate::model::{Axis, Model};
 
 /// What the boundaries are asked of: a column, the second parameter and
 /// its range, and the load range.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct BoundarySpec {
     pub model: Model,
     pub axis: Axis,

@@ -11,6 +11,8 @@
 //! Hopf curve; a fold born at a Bautin point shrinks to it as `a` goes to
 //! zero. Pure: no UI, no clock.
 
+use std::sync::atomic::{AtomicBool, Ordering};
+
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
@@ -85,12 +87,17 @@ pub struct CycleFold {
 /// The defining function of a fold: the load's rate along the branch.
 struct LoadRate<'a> {
     spec: &'a BoundarySpec,
+    /// Once set, no cycle is solved: the folds end where they are.
+    cancel: &'a AtomicBool,
 }
 
 impl LoadRate<'_> {
     /// The cycle at `(y, a)` from the unknowns `guess` of one near it, if
     /// its load is in range and its roller's contact slips.
     fn solve(&self, y: f64, a: f64, guess: Guess<'_>) -> Option<AtAmplitude> {
+        if self.cancel.load(Ordering::Relaxed) {
+            return None;
+        }
         let model = self.spec.axis.apply(&self.spec.model, y).ok()?;
         let load = guess.0[guess.0.len() - 1];
         let shooting = Shooting::of(&model.at_load(load));
@@ -138,19 +145,21 @@ impl Defining for LoadRate<'_> {
 }
 
 /// The folds of cycles of `spec`'s column that start from the hard
-/// stretches of the Hopf curves among `curves`.
+/// stretches of the Hopf curves among `curves` (those followed before
+/// `cancel` is set).
 ///
 /// # Errors
 /// A Hopf point that cannot be computed.
 pub fn cycle_folds(
     spec: &BoundarySpec,
     curves: &[Boundary],
+    cancel: &AtomicBool,
 ) -> Result<Vec<CycleFold>, AnalysisError> {
     let plane = Plane {
         y: spec.axis_range,
         p: (SMALLEST_AMPLITUDE_RAD, LARGEST_AMPLITUDE_RAD),
     };
-    let rate = LoadRate { spec };
+    let rate = LoadRate { spec, cancel };
     let mut followed: Vec<(Vec<Node<Found>>, [End; 2])> = Vec::new();
     for curve in curves.iter().filter(|c| c.kind == BoundaryKind::Flutter) {
         for (value, load) in hard_middles(curve) {

@@ -2,7 +2,8 @@
 //! derivatives, the Hopf points' normal form (soft or hard onset), and the
 //! limit cycles continued from them with their Floquet multipliers; the
 //! stability boundaries followed in a second parameter, with where their
-//! onsets turn from soft to hard.
+//! onsets turn from soft to hard, the folds of cycles and what a kick does
+//! between them.
 
 mod amplitude;
 pub(super) mod arclength;
@@ -17,4 +18,5 @@ pub(super) mod field;
 pub(super) mod gauss;
 pub(super) mod hopf;
 pub(super) mod jet;
+pub(super) mod kick;
 mod shooting;

@@ -12,7 +12,10 @@ use egui_plot::{PlotPoint, PlotResponse};
 
 use super::map_readout::{Readout, cell_at, readout_ui};
 use super::{TabSpec, TabView, save_buttons};
-use crate::analysis::{AnalysisError, MapSpec, RowResult, compute_map, default_map_axis};
+use crate::analysis::{
+    AnalysisError, Boundaries, BoundarySpec, MapSpec, RowResult, boundaries_until, compute_map,
+    default_map_axis,
+};
 use crate::app::View;
 use crate::app::action::{Action, Actions};
 use crate::app::jobs::{Cancel, Jobs};
@@ -137,6 +140,10 @@ pub struct MapPanel {
     generation: u64,
     /// The cell under the pointer in the last frame (shown above the map).
     hovered: Option<Readout>,
+    /// The boundaries followed over the map's axes, newest first.
+    following: Jobs<BoundarySpec, Result<Boundaries, AnalysisError>>,
+    /// The last that came in, for the plane it was asked for.
+    followed: Option<(BoundarySpec, Result<Boundaries, AnalysisError>)>,
 }
 
 impl Default for MapPanel {
@@ -150,6 +157,8 @@ impl Default for MapPanel {
             click: SingleClick::default(),
             generation: 0,
             hovered: None,
+            following: Jobs::new("stability boundaries"),
+            followed: None,
         }
     }
 }
@@ -193,6 +202,7 @@ impl MapPanel {
         let Some(spec) = self.spec(model, load_max) else {
             return;
         };
+        self.follow_boundaries(&spec);
         if self.jobs.key() == Some(&spec) {
             return;
         }
@@ -221,8 +231,35 @@ impl MapPanel {
         self.shown = Some(shown);
     }
 
+    /// Starts following the boundaries over `spec`'s plane when they are
+    /// not already (a parameter that varies continuously only: the rods
+    /// are counted).
+    fn follow_boundaries(&mut self, spec: &MapSpec) {
+        if spec.axis.counts() {
+            return;
+        }
+        let wanted = BoundarySpec {
+            model: spec.model,
+            axis: spec.axis.clone(),
+            axis_range: spec.axis_range,
+            load_range: spec.load_range,
+        };
+        if self.following.key() != Some(&wanted) {
+            // No thread: the map is drawn without them.
+            let _ = self.following.request(wanted, |spec, cancel, send| {
+                let found = boundaries_until(spec, cancel.flag());
+                if !cancel.requested() {
+                    send(found);
+                }
+            });
+        }
+    }
+
     /// Takes the rows that came in for the map shown.
     fn receive(&mut self) {
+        if let Some(last) = self.following.drain().last() {
+            self.followed = Some(last);
+        }
         let Some(shown) = &mut self.shown else {
             return;
         };
@@ -268,9 +305,11 @@ impl MapPanel {
         Ok(())
     }
 
-    /// Blocks until the current map is complete (for pictures and tests).
+    /// Blocks until the current map and its boundaries are complete (for
+    /// pictures and tests).
     pub fn wait(&mut self) {
         self.jobs.wait();
+        self.following.wait();
         self.receive();
     }
 
@@ -306,14 +345,7 @@ impl MapPanel {
             )));
         }
         if let Some(reason) = job.rows.iter().flatten().find_map(|r| r.as_ref().err()) {
-            ui.colored_label(
-                color(theme.palette.warning),
-                tr!(
-                    ui.words(),
-                    "map-grey-rows",
-                    why = crate::i18n::analysis_error(ui.words(), reason)
-                ),
-            );
+            warn(ui, theme, "map-grey-rows", reason);
         }
         if job.stale || job.grid.is_none() {
             job.grid = Some(Arc::new(CellGrid::new(&job.spec, &job.rows)));
@@ -323,11 +355,23 @@ impl MapPanel {
         self.fit
             .bar_ui(ui, for_picture, |ui| save_buttons(ui, None, actions));
         let spec = &job.spec;
+        let followed = followed_for(self.followed.as_ref(), spec);
+        match followed {
+            None if self.following.busy() => {
+                ui.weak(tr!(ui.words(), "map-following"));
+                ui.ctx()
+                    .request_repaint_after(std::time::Duration::from_millis(100));
+            }
+            Some(Err(why)) => warn(ui, theme, "map-not-followed", why),
+            _ => {}
+        }
+        let found = followed.and_then(|f| f.as_ref().ok());
         let sheet = StabilityMap {
             spec,
             rows: &job.rows,
             grid,
             now: Some([model.load_p(), spec.axis.get(model)]),
+            followed: found,
             words: ui.words(),
         }
         .sheet();
@@ -343,7 +387,13 @@ impl MapPanel {
         ));
         let response = plot_ui(ui, sheet.plots.first()?, refit, theme);
         let (click, double, pointer) = clicked(&response, spec);
-        let hovered = pointer.and_then(|point| cell_at(spec, &job.rows, point.x, point.y));
+        // What a kick does is read at the pointer itself: a band of
+        // hysteresis may be narrower than a cell.
+        let hovered = pointer.and_then(|point| {
+            let cell = cell_at(spec, &job.rows, point.x, point.y)?;
+            let kick = found.and_then(|b| b.kick_at(point.y, point.x, cell.state));
+            Some(Readout { kick, ..cell })
+        });
         if hovered != self.hovered {
             // Shown above the map from the next frame: ask for it now.
             self.hovered = hovered;
@@ -429,6 +479,28 @@ impl View for MapPanel {
             });
         }
     }
+}
+
+/// The message `id` with the analysis error `why` in its place, as a
+/// warning.
+fn warn(ui: &mut egui::Ui, theme: &Theme, id: &str, why: &AnalysisError) {
+    let words = ui.words();
+    ui.colored_label(
+        color(theme.palette.warning),
+        tr!(words, id, why = crate::i18n::analysis_error(words, why)),
+    );
+}
+
+/// The boundaries `followed` for `spec`'s plane, if that is what they
+/// were followed over.
+fn followed_for<'a>(
+    followed: Option<&'a (BoundarySpec, Result<Boundaries, AnalysisError>)>,
+    spec: &MapSpec,
+) -> Option<&'a Result<Boundaries, AnalysisError>> {
+    let (key, found) = followed?;
+    ((&key.model, &key.axis, key.axis_range, key.load_range)
+        == (&spec.model, &spec.axis, spec.axis_range, spec.load_range))
+        .then_some(found)
 }
 
 /// A number field for the map's range.

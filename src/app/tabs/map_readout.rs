@@ -6,7 +6,7 @@ use crate::i18n::state_name;
 use crate::tr;
 use eframe::egui;
 
-use crate::analysis::{MapSpec, RowResult, State};
+use crate::analysis::{Kick, MapSpec, RowResult, State};
 use crate::app::theme::Theme;
 use crate::format::{number_text, rate_text};
 
@@ -17,6 +17,8 @@ pub struct Readout {
     pub value: f64,
     pub state: State,
     pub growth_per_s: f64,
+    /// What a kick does at the pointer, where the boundaries followed say.
+    pub kick: Option<Kick>,
 }
 
 /// The computed cell nearest to `(load, value)` on the map of `spec`, or
@@ -53,10 +55,12 @@ pub fn cell_at(
         value: row.value,
         state: cell.state,
         growth_per_s: cell.growth_per_s,
+        kick: None,
     })
 }
 
-/// One line in a fixed place: the cell under the pointer, or how to read one.
+/// One line in a fixed place: the cell under the pointer (and what a kick
+/// does there, where the boundaries followed say), or how to read one.
 pub fn readout_ui(ui: &mut egui::Ui, readout: Option<&Readout>, axis_name: &str, theme: &Theme) {
     match readout {
         Some(cell) => {
@@ -73,10 +77,24 @@ pub fn readout_ui(ui: &mut egui::Ui, readout: Option<&Readout>, axis_name: &str,
                     "map-readout-growth",
                     rate = rate_text(cell.growth_per_s)
                 ));
+                if let Some(kick) = cell.kick {
+                    ui.label(kick_words(words, kick));
+                }
             });
         }
         None => {
             ui.weak(tr!(ui.words(), "map-readout-hint"));
         }
+    }
+}
+
+/// What a kick does, in `words`.
+#[must_use]
+pub fn kick_words(words: &'static crate::i18n::Words, kick: Kick) -> String {
+    match kick {
+        Kick::Settles => tr!(words, "map-kick-settles"),
+        Kick::Hysteresis => tr!(words, "map-kick-hysteresis"),
+        Kick::GrowsSoftly => tr!(words, "map-kick-grows-softly"),
+        Kick::Jumps => tr!(words, "map-kick-jumps"),
     }
 }
