@@ -333,7 +333,7 @@ fn scale(v: [f64; 2], s: f64) -> [f64; 2] {
     [s * v[0], s * v[1]]
 }
 
-fn distance(a: [f64; 2], b: [f64; 2]) -> f64 {
+pub(crate) fn distance(a: [f64; 2], b: [f64; 2]) -> f64 {
     (a[0] - b[0]).hypot(a[1] - b[1])
 }
 
@@ -436,6 +436,49 @@ pub(crate) fn between<G: Defining + ?Sized>(
     })
 }
 
+/// Where the curves of `g` and `h` cross, from `z` (scaled) near it with
+/// what each is of there: Newton's method on both defining functions at
+/// once; `None` where it does not converge within `reach` (scaled) of `z`.
+///
+/// # Errors
+/// An eigenvalue computation that fails.
+pub(crate) fn crossing<G: Defining + ?Sized, H: Defining + ?Sized>(
+    (g, h): (&G, &H),
+    plane: &Plane,
+    z: [f64; 2],
+    (near_g, near_h): (&G::Near, &H::Near),
+    reach: f64,
+) -> Result<Option<[f64; 2]>, AnalysisError> {
+    let tolerance = 10.0 * g.accuracy().on_curve.max(h.accuracy().on_curve);
+    let (mut at, mut near_g, mut near_h) = (z, near_g.clone(), near_h.clone());
+    for _ in 0..20 {
+        let (y, p) = plane.point(at);
+        let (Some((vg, found_g)), Some((vh, found_h))) =
+            (g.value(y, p, &near_g)?, h.value(y, p, &near_h)?)
+        else {
+            return Ok(None);
+        };
+        (near_g, near_h) = (found_g, found_h);
+        let (Some(grad_g), Some(grad_h)) = (
+            gradient(g, plane, &(at, near_g.clone()), vg)?,
+            gradient(h, plane, &(at, near_h.clone()), vh)?,
+        ) else {
+            return Ok(None);
+        };
+        let Some(dz) = solve2([grad_g, grad_h], [-vg, -vh]) else {
+            return Ok(None);
+        };
+        at = [at[0] + dz[0], at[1] + dz[1]];
+        if distance(at, z) > reach {
+            return Ok(None);
+        }
+        if dz[0].hypot(dz[1]) <= tolerance {
+            return Ok(Some(at));
+        }
+    }
+    Ok(None)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -498,5 +541,32 @@ mod tests {
             let radius = (last[0] - 0.5).hypot(last[1] - 0.5);
             assert!((radius - 0.6).abs() < 1e-9, "{radius}");
         }
+    }
+
+    /// A circle and a line through it cross where the algebra says,
+    /// to rounding, from a chord's crossing 0.01 away.
+    #[test]
+    fn a_crossing_is_refined_onto_both_curves() {
+        struct Line;
+        impl Defining for Line {
+            type Near = C64;
+            fn value(&self, y: f64, p: f64, n: &C64) -> Result<Option<(f64, C64)>, AnalysisError> {
+                Ok(Some((p - y, *n)))
+            }
+        }
+        let plane = Plane {
+            y: (0.0, 1.0),
+            p: (0.0, 1.0),
+        };
+        let near = C64::new(0.0, 1.0);
+        let exact = 0.5 + 0.3 / 2f64.sqrt();
+        let start = [exact + 0.01, exact - 0.005];
+        let found = crossing((&Circle, &Line), &plane, start, (&near, &near), 0.1)
+            .unwrap()
+            .unwrap();
+        assert!(
+            (found[0] - exact).abs() < 1e-12 && (found[1] - exact).abs() < 1e-12,
+            "{found:?}"
+        );
     }
 }

@@ -11,7 +11,7 @@ use std::sync::atomic::AtomicBool;
 
 use serde::Serialize;
 
-use super::arclength::{Defining, End, Node, Plane, between, follow};
+use super::arclength::{Defining, End, Node, Plane, between, crossing, distance, follow};
 use super::bautin::fitted_coefficients;
 use super::curve::{Boundary, BoundaryKind, BoundaryPoint, BoundarySpec, near_polyline, project};
 use super::cycle_fold::{CycleFold, cycle_folds};
@@ -169,7 +169,7 @@ pub fn boundaries_until(
         .filter(|s| s.kind == SpecialKind::BogdanovTakens)
         .map(|s| plane.scaled(s.value, s.load))
         .collect();
-    special.extend(crossings(&curves, &plane).into_iter().filter(|s| {
+    special.extend(crossings(spec, &curves, &plane)?.into_iter().filter(|s| {
         let z = plane.scaled(s.value, s.load);
         ends.iter()
             .all(|e| (e[0] - z[0]).hypot(e[1] - z[1]) > NEAR_CURVE)
@@ -458,7 +458,11 @@ fn bautin(
 /// Where two curves cross: double-Hopf (two Hopf curves) and zero-Hopf
 /// (a Hopf curve and a divergence curve) points, where their polylines'
 /// segments cross.
-fn crossings(curves: &[Followed], plane: &Plane) -> Vec<SpecialPoint> {
+fn crossings(
+    spec: &BoundarySpec,
+    curves: &[Followed],
+    plane: &Plane,
+) -> Result<Vec<SpecialPoint>, AnalysisError> {
     let mut out = Vec::new();
     for (i, (kind_i, nodes_i, _)) in curves.iter().enumerate() {
         for (j, (kind_j, nodes_j, _)) in curves.iter().enumerate().skip(i + 1) {
@@ -467,9 +471,23 @@ fn crossings(curves: &[Followed], plane: &Plane) -> Vec<SpecialPoint> {
                 (BoundaryKind::Divergence, BoundaryKind::Divergence) => continue,
                 _ => SpecialKind::ZeroHopf,
             };
+            let (g, h) = (
+                Growth {
+                    spec,
+                    kind: *kind_i,
+                },
+                Growth {
+                    spec,
+                    kind: *kind_j,
+                },
+            );
             for a in nodes_i.windows(2) {
                 for b in nodes_j.windows(2) {
-                    if let Some(z) = segments_cross(a[0].0, a[1].0, b[0].0, b[1].0) {
+                    if let Some(chord) = segments_cross(a[0].0, a[1].0, b[0].0, b[1].0) {
+                        // Refined onto both curves, within a chord's length.
+                        let reach = distance(a[0].0, a[1].0).max(distance(b[0].0, b[1].0));
+                        let z = crossing((&g, &h), plane, chord, (&a[0].1, &b[0].1), reach)?
+                            .unwrap_or(chord);
                         let (value, load) = plane.point(z);
                         out.push(SpecialPoint {
                             kind,
@@ -483,7 +501,7 @@ fn crossings(curves: &[Followed], plane: &Plane) -> Vec<SpecialPoint> {
             }
         }
     }
-    out
+    Ok(out)
 }
 
 /// Where the segments `a0 a1` and `b0 b1` cross, if they do.

@@ -101,3 +101,60 @@ pub fn cycle_bifurcations(cycles: &[Cycle]) -> Vec<CycleBifurcation> {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::DVector;
+
+    /// A cycle at `load` with the trivial multiplier and `others`.
+    fn cycle(load: f64, others: &[C64]) -> Cycle {
+        let mut multipliers = vec![C64::new(1.0, 0.0)];
+        multipliers.extend_from_slice(others);
+        Cycle {
+            load,
+            period_secs: 1.0,
+            start: DVector::zeros(2),
+            amplitude_rad: vec![load],
+            multipliers,
+            stable: true,
+            closest_slip_m_per_s: None,
+        }
+    }
+
+    /// Each kind is read where its multiplier's modulus passes 1 (the
+    /// moduli here change linearly with the load, so the placement is
+    /// exact): a real one through -1 at p = 1.25, a complex pair through
+    /// the circle at p = 2.5, a real one through +1 at p = 3.75. (No
+    /// column met so far has a period doubling: the scans of `bifurcation`
+    /// over chains found folds and tori only.)
+    #[test]
+    fn each_kind_is_read_where_its_multiplier_leaves_the_circle() {
+        let pd = |p: f64| C64::new(-(0.5 + 0.4 * p), 0.0);
+        let ns = |p: f64| C64::from_polar(0.5 + 0.2 * p, 1.0);
+        let fold = |p: f64| C64::new(0.25 + 0.2 * p, 0.0);
+        let cycles: Vec<Cycle> = [1.0, 1.5, 2.0, 3.0, 3.5, 4.0]
+            .iter()
+            .map(|&p| {
+                cycle(
+                    p,
+                    &[pd(p.min(1.5)), ns(p.clamp(2.0, 3.0)), fold(p.max(3.5))],
+                )
+            })
+            .collect();
+        let found = cycle_bifurcations(&cycles);
+        let kinds: Vec<_> = found.iter().map(|b| b.kind).collect();
+        assert_eq!(
+            kinds,
+            [
+                CycleBifurcationKind::PeriodDoubling,
+                CycleBifurcationKind::NeimarkSacker,
+                CycleBifurcationKind::Fold
+            ]
+        );
+        for (b, at) in found.iter().zip([1.25, 2.5, 3.75]) {
+            assert!((b.load - at).abs() < 1e-12, "{b:?}");
+            assert!((b.amplitude_rad - at).abs() < 1e-12, "{b:?}");
+        }
+    }
+}
