@@ -149,6 +149,7 @@ pub fn run(args: &Args) -> Result<()> {
             axis_range: spec.axis_range,
             load_range: spec.load_range,
             words: zieglerlab::i18n::words(args.lang.language),
+            over_cells: false,
         }
         .sheet();
         let rendered = render(&sheet, &Page::default(), format)?;

@@ -23,6 +23,10 @@ pub struct BoundaryPlane<'a> {
     pub load_range: (f64, f64),
     /// The language of the axes and the legend.
     pub words: &'static Words,
+    /// Drawn over a stability map's cells, which are in the states'
+    /// colours: the boundaries then in the main ink (soft solid, hard
+    /// dashed), so that they read on the cells of their own colour.
+    pub over_cells: bool,
 }
 
 /// A band's lower and upper edges, point by point.
@@ -109,6 +113,15 @@ impl BoundaryPlane<'_> {
         let pad = 0.25 * (high - low).max(1e-3 * (p1 - p0));
         let bottom = if low - 2.0 * pad <= p0 { p0 } else { low - pad };
         (bottom.max(p0), (high + pad).min(p1))
+    }
+
+    /// The ink of a boundary of `state`.
+    fn ink(&self, state: State) -> Ink {
+        if self.over_cells {
+            Ink::Main
+        } else {
+            Ink::State(state)
+        }
     }
 
     /// The folds of cycles as polylines `[value, load]`.
@@ -198,7 +211,7 @@ impl BoundaryPlane<'_> {
                 .into_iter()
                 .map(|(points, state, onset)| Mark::Line {
                     points: flip(points),
-                    ink: Ink::State(state),
+                    ink: self.ink(state),
                     weight: if onset == Onset::Unknown && state == State::Flutter {
                         Weight::Fine
                     } else {
@@ -251,7 +264,7 @@ impl BoundaryPlane<'_> {
                 .iter()
                 .any(|(_, s, o)| *s == state && (*o == onset || state == State::Divergence))
         };
-        let flutter = Ink::State(State::Flutter);
+        let flutter = self.ink(State::Flutter);
         let mut entries = Vec::new();
         if any(State::Flutter, Onset::Soft) {
             entries.push(Entry::new(
@@ -273,7 +286,7 @@ impl BoundaryPlane<'_> {
         }
         if any(State::Divergence, Onset::Unknown) {
             entries.push(Entry::new(
-                Swatch::Line(Ink::State(State::Divergence)),
+                Swatch::Line(self.ink(State::Divergence)),
                 tr!(words, "legend-divergence-onset"),
             ));
         }

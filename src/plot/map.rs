@@ -151,6 +151,7 @@ impl StabilityMap<'_> {
             axis_range: self.spec.axis_range,
             load_range: self.spec.load_range,
             words: self.words,
+            over_cells: true,
         })
     }
 

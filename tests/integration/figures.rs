@@ -436,6 +436,7 @@ fn the_boundary_figure_draws_each_boundary_where_it_was_found() {
         axis_range: spec.axis_range,
         load_range: spec.load_range,
         words: words(Language::English),
+        over_cells: false,
     }
     .sheet();
     let rendered = render(&sheet, &Page::default(), Format::Png).unwrap();
@@ -477,6 +478,7 @@ fn the_boundary_figure_tints_the_band_of_hysteresis() {
         axis_range: spec.axis_range,
         load_range: spec.load_range,
         words: words(Language::English),
+        over_cells: false,
     }
     .sheet();
     let rendered = render(&sheet, &Page::default(), Format::Png).unwrap();

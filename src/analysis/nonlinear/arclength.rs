@@ -106,6 +106,9 @@ pub(crate) type Node<N = C64> = ([f64; 2], N);
 
 /// A followed curve's points and how it ended.
 pub(crate) type Followed<N> = (Vec<Node<N>>, End);
+
+/// A curve followed both ways: its points and how each end ended.
+pub(crate) type Curve<N> = (Vec<Node<N>>, [End; 2]);
 /// The first, the largest and the smallest arclength step (scaled).
 const FIRST_STEP: f64 = 0.01;
 const LARGEST_STEP: f64 = 0.03;
@@ -170,6 +173,26 @@ pub(crate) fn follow<G: Defining + ?Sized>(
         }
     }
     Ok((nodes, End::Steps))
+}
+
+/// Follows the curve through `start` both ways: its points from one end
+/// to the other, and how each end ended.
+///
+/// # Errors
+/// An eigenvalue computation that fails.
+pub(crate) fn follow_both<G: Defining + ?Sized>(
+    g: &G,
+    plane: &Plane,
+    start: Node<G::Near>,
+) -> Result<Curve<G::Near>, AnalysisError> {
+    let (back, first_end) = follow(g, plane, start.clone(), -1.0)?;
+    let (ahead, last_end) = follow(g, plane, start, 1.0)?;
+    let nodes = back
+        .into_iter()
+        .rev()
+        .chain(ahead.into_iter().skip(1))
+        .collect();
+    Ok((nodes, [first_end, last_end]))
 }
 
 /// What one step along the curve found.

@@ -64,7 +64,7 @@ pub(crate) fn fitted_coefficients(model: &Model, load: f64) -> Option<[f64; 4]> 
     // -mu / omega / r^4 = l1 / r^2 + l2 + l3 r^2 + l4 r^4.
     let a = DMatrix::from_fn(rows.len(), 4, |i, j| {
         let r2 = rows[i].0;
-        r2.powi(i32::try_from(j).unwrap_or(0) - 1)
+        [1.0 / r2, 1.0, r2, r2 * r2][j]
     });
     let b = DVector::from_fn(rows.len(), |i, _| rows[i].1 / rows[i].0.powi(2));
     let x = a.svd(true, true).solve(&b, 1e-15).ok()?;

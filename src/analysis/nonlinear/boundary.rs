@@ -11,7 +11,7 @@ use std::sync::atomic::AtomicBool;
 
 use serde::Serialize;
 
-use super::arclength::{Defining, End, Node, Plane, between, crossing, distance, follow};
+use super::arclength::{Defining, End, Node, Plane, between, crossing, distance, follow_both};
 use super::bautin::fitted_coefficients;
 use super::curve::{Boundary, BoundaryKind, BoundaryPoint, BoundarySpec, near_polyline, project};
 use super::cycle_fold::{CycleFold, cycle_folds};
@@ -213,14 +213,8 @@ fn follow_all(spec: &BoundarySpec, plane: &Plane) -> Result<Vec<Followed>, Analy
             if on_one {
                 continue;
             }
-            let (back, first_end) = follow(&growth, plane, start, -1.0)?;
-            let (ahead, last_end) = follow(&growth, plane, start, 1.0)?;
-            let nodes: Vec<Node> = back
-                .into_iter()
-                .rev()
-                .chain(ahead.into_iter().skip(1))
-                .collect();
-            curves.push((kind, nodes, [first_end, last_end]));
+            let (nodes, ends) = follow_both(&growth, plane, start)?;
+            curves.push((kind, nodes, ends));
         }
     }
     Ok(curves)

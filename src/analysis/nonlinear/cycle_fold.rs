@@ -17,7 +17,7 @@ use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
 use super::amplitude::{AtAmplitude, normal_form_start};
-use super::arclength::{Accuracy, Defining, End, Node, Plane, follow};
+use super::arclength::{Accuracy, Curve, Defining, End, Node, Plane, follow_both};
 use super::curve::{Boundary, BoundaryKind, BoundaryPoint, BoundarySpec, near_polyline};
 use super::cycle::trivial_index;
 use super::cycles::{MAX_AMPLITUDE_RAD, STICK_FRACTION};
@@ -160,7 +160,7 @@ pub fn cycle_folds(
         p: (SMALLEST_AMPLITUDE_RAD, LARGEST_AMPLITUDE_RAD),
     };
     let rate = LoadRate { spec, cancel };
-    let mut followed: Vec<(Vec<Node<Found>>, [End; 2])> = Vec::new();
+    let mut followed: Vec<Curve<Found>> = Vec::new();
     for curve in curves.iter().filter(|c| c.kind == BoundaryKind::Flutter) {
         for (value, load) in hard_middles(curve) {
             for seed in march(&rate, &plane, value, load)? {
@@ -170,14 +170,7 @@ pub fn cycle_folds(
                 {
                     continue;
                 }
-                let (back, first_end) = follow(&rate, &plane, seed.clone(), -1.0)?;
-                let (ahead, last_end) = follow(&rate, &plane, seed, 1.0)?;
-                let nodes = back
-                    .into_iter()
-                    .rev()
-                    .chain(ahead.into_iter().skip(1))
-                    .collect();
-                followed.push((nodes, [first_end, last_end]));
+                followed.push(follow_both(&rate, &plane, seed)?);
             }
         }
     }
