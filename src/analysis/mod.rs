@@ -23,7 +23,7 @@ pub use critical::{
     critical_loads_along, plotted_locus,
 };
 pub use crossing::{Transition, stability_ranges};
-pub use curve::{Boundary, BoundaryKind, BoundaryPoint, BoundarySpec, CurveEnd};
+pub use curve::{Boundary, BoundaryKind, BoundaryPoint, BoundarySpec, CurveEnd, load_on_chord};
 pub use cycle_bifurcations::{CycleBifurcation, CycleBifurcationKind, cycle_bifurcations};
 pub use cycle_fold::{CycleFold, FoldEnd, FoldPoint};
 pub use cycles::{

@@ -143,15 +143,8 @@ pub fn run(args: &Args) -> Result<()> {
         );
     }
     if let (Some(format), Some(out)) = (figure, &args.out) {
-        let sheet = BoundaryPlane {
-            found: &found,
-            axis: &spec.axis,
-            axis_range: spec.axis_range,
-            load_range: spec.load_range,
-            words: zieglerlab::i18n::words(args.lang.language),
-            over_cells: false,
-        }
-        .sheet();
+        let sheet =
+            BoundaryPlane::of(&found, &spec, zieglerlab::i18n::words(args.lang.language)).sheet();
         let rendered = render(&sheet, &Page::default(), format)?;
         return write_atomically(out, |file| file.write_all(&rendered.bytes));
     }
@@ -187,6 +180,11 @@ fn curve_names(found: &Boundaries) -> Vec<String> {
             format!("{word}-{}", counts[k])
         })
         .collect()
+}
+
+/// The `k`-th fold of cycles' name (from 0): `fold-1`, `fold-2`, ...
+fn fold_name(k: usize) -> String {
+    format!("fold-{}", k + 1)
 }
 
 /// Soft or hard, from the first Lyapunov coefficient's sign.
@@ -228,8 +226,8 @@ fn write_csv(out: &mut dyn Write, found: &Boundaries, key: &str) -> std::io::Res
         for point in &fold.points {
             writeln!(
                 out,
-                "fold-{},{},{},,",
-                k + 1,
+                "{},{},{},,",
+                fold_name(k),
                 Exact(point.value),
                 Exact(point.load)
             )?;
@@ -296,7 +294,7 @@ fn write_json(out: &mut dyn Write, found: &Boundaries, key: &str) -> std::io::Re
                     })
                 })
                 .collect();
-            json!({"curve": format!("fold-{}", k + 1), "kind": "cycle-fold", "ends": fold.ends, "points": points})
+            json!({"curve": fold_name(k), "kind": "cycle-fold", "ends": fold.ends, "points": points})
         })
         .collect();
     let document = json!({

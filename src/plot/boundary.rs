@@ -8,7 +8,7 @@
 
 use super::axis_words;
 use super::spec::{Entry, Ink, Mark, OffView, Plot, Sheet, Size, Swatch, Ticks, View, Weight};
-use crate::analysis::{Boundaries, BoundaryKind, SpecialKind, State};
+use crate::analysis::{Boundaries, BoundaryKind, BoundarySpec, SpecialKind, State, load_on_chord};
 use crate::i18n::Words;
 use crate::model::Axis;
 use crate::tr;
@@ -41,7 +41,20 @@ enum Onset {
     Unknown,
 }
 
-impl BoundaryPlane<'_> {
+impl<'a> BoundaryPlane<'a> {
+    /// The plane `found` was followed over, `spec`'s, on paper.
+    #[must_use]
+    pub fn of(found: &'a Boundaries, spec: &'a BoundarySpec, words: &'static Words) -> Self {
+        Self {
+            found,
+            axis: &spec.axis,
+            axis_range: spec.axis_range,
+            load_range: spec.load_range,
+            words,
+            over_cells: false,
+        }
+    }
+
     /// The plane and its legend.
     #[must_use]
     pub fn sheet(&self) -> Sheet {
@@ -164,15 +177,7 @@ impl BoundaryPlane<'_> {
             .iter()
             .filter(|c| c.kind == BoundaryKind::Flutter)
             .flat_map(|c| c.points.windows(2))
-            .filter_map(|w| {
-                let (a, b) = (&w[0], &w[1]);
-                let (lo, hi) = (a.value.min(b.value), a.value.max(b.value));
-                if !(lo..=hi).contains(&x) || lo == hi {
-                    return None;
-                }
-                let t = (x - a.value) / (b.value - a.value);
-                Some(a.load + t * (b.load - a.load))
-            })
+            .filter_map(|w| load_on_chord((w[0].value, w[0].load), (w[1].value, w[1].load), x))
             .filter(|&onset| onset >= load - 1e-6 * load.abs().max(1.0))
             .reduce(f64::min)
     }

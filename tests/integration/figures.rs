@@ -425,20 +425,12 @@ fn the_boundary_figure_draws_each_boundary_where_it_was_found() {
     let axis = Axis::parse("eta", &m).unwrap();
     let spec = BoundarySpec {
         model: m,
-        axis: axis.clone(),
+        axis,
         axis_range: (0.0, 1.0),
         load_range: (0.0, 8.0),
     };
     let found = boundaries(&spec).unwrap();
-    let sheet = BoundaryPlane {
-        found: &found,
-        axis: &axis,
-        axis_range: spec.axis_range,
-        load_range: spec.load_range,
-        words: words(Language::English),
-        over_cells: false,
-    }
-    .sheet();
+    let sheet = BoundaryPlane::of(&found, &spec, words(Language::English)).sheet();
     let rendered = render(&sheet, &Page::default(), Format::Png).unwrap();
     let image = pixels(&rendered);
     let panel = &rendered.panels[0];
@@ -472,15 +464,7 @@ fn the_boundary_figure_tints_the_band_of_hysteresis() {
     use zieglerlab::plot::boundary::BoundaryPlane;
     let (spec, found) = crate::common::drag_column_boundaries();
     let fold = &found.folds[0].points;
-    let sheet = BoundaryPlane {
-        found,
-        axis: &spec.axis,
-        axis_range: spec.axis_range,
-        load_range: spec.load_range,
-        words: words(Language::English),
-        over_cells: false,
-    }
-    .sheet();
+    let sheet = BoundaryPlane::of(found, spec, words(Language::English)).sheet();
     let rendered = render(&sheet, &Page::default(), Format::Png).unwrap();
     let image = pixels(&rendered);
     let panel = &rendered.panels[0];

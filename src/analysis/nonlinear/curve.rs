@@ -114,3 +114,15 @@ pub(super) fn near_polyline<N>(z: [f64; 2], nodes: &[Node<N>]) -> f64 {
             .fold(f64::INFINITY, f64::min),
     }
 }
+
+/// The load at `value` on the chord from `a` to `b` (each `(value,
+/// load)`), where the chord spans `value` (ends included) and is not
+/// upright.
+#[must_use]
+pub fn load_on_chord(a: (f64, f64), b: (f64, f64), value: f64) -> Option<f64> {
+    let ((x0, y0), (x1, y1)) = (a, b);
+    if x0 == x1 || !(x0.min(x1)..=x0.max(x1)).contains(&value) {
+        return None;
+    }
+    Some(y0 + (value - x0) / (x1 - x0) * (y1 - y0))
+}

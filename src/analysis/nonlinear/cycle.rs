@@ -38,6 +38,16 @@ impl Cycle {
         trivial_index(&self.multipliers).map_or(C64::new(f64::NAN, 0.0), |i| self.multipliers[i])
     }
 
+    /// The multipliers but the trivial one.
+    pub(in crate::analysis) fn nontrivial_multipliers(&self) -> impl Iterator<Item = C64> + '_ {
+        let trivial = trivial_index(&self.multipliers);
+        self.multipliers
+            .iter()
+            .enumerate()
+            .filter(move |(i, _)| Some(*i) != trivial)
+            .map(|(_, m)| *m)
+    }
+
     /// The cycle's start as a full state of `model` (the spin angle zero;
     /// a massless roller's spin rate, which follows the rods, too).
     #[must_use]

@@ -7,7 +7,7 @@
 
 use serde::Serialize;
 
-use super::cycle::{Cycle, trivial_index};
+use super::cycle::Cycle;
 use crate::analysis::C64;
 
 /// A multiplier is real when its imaginary part is at most this share of
@@ -47,21 +47,11 @@ fn class_of(m: C64) -> CycleBifurcationKind {
     }
 }
 
-/// The multipliers but the trivial one.
-fn nontrivial(cycle: &Cycle) -> impl Iterator<Item = C64> + '_ {
-    let trivial = trivial_index(&cycle.multipliers);
-    cycle
-        .multipliers
-        .iter()
-        .enumerate()
-        .filter(move |(i, _)| Some(*i) != trivial)
-        .map(|(_, m)| *m)
-}
-
 /// How many multipliers of `kind` lie outside the unit circle, and the
 /// distance `|m| - 1` of the one of that kind nearest the circle.
 fn outside(cycle: &Cycle, kind: CycleBifurcationKind) -> (usize, Option<f64>) {
-    let of_kind: Vec<f64> = nontrivial(cycle)
+    let of_kind: Vec<f64> = cycle
+        .nontrivial_multipliers()
         .filter(|m| class_of(*m) == kind)
         .map(|m| m.norm() - 1.0)
         .collect();

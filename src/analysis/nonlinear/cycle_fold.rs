@@ -19,7 +19,7 @@ use serde::Serialize;
 use super::amplitude::{AtAmplitude, normal_form_start};
 use super::arclength::{Accuracy, Curve, Defining, End, Node, Plane, follow_both};
 use super::curve::{Boundary, BoundaryKind, BoundaryPoint, BoundarySpec, near_polyline};
-use super::cycle::trivial_index;
+use super::cycle::Cycle;
 use super::cycles::{MAX_AMPLITUDE_RAD, STICK_FRACTION};
 use super::hopf::{Steps, hopf_point};
 use super::shooting::Shooting;
@@ -118,7 +118,7 @@ type Guess<'a> = (&'a DVector<f64>, Option<&'a DMatrix<f64>>);
 
 impl AtAmplitude {
     fn found(self) -> Found {
-        let second = second_nearest_one(&self.solved.cycle.multipliers);
+        let second = second_nearest_one(&self.solved.cycle);
         (self.solved.cycle.unknowns(), second, self.matrix)
     }
 }
@@ -318,13 +318,9 @@ fn describe(plane: &Plane, nodes: &[Node<Found>], ends: [End; 2]) -> CycleFold {
 }
 
 /// The multiplier nearest 1 but for the trivial one.
-fn second_nearest_one(multipliers: &[C64]) -> C64 {
-    let trivial = trivial_index(multipliers);
-    multipliers
-        .iter()
-        .enumerate()
-        .filter(|(i, _)| Some(*i) != trivial)
-        .map(|(_, m)| *m)
+fn second_nearest_one(cycle: &Cycle) -> C64 {
+    cycle
+        .nontrivial_multipliers()
         .min_by(|a, b| (a - 1.0).norm().total_cmp(&(b - 1.0).norm()))
         .unwrap_or(C64::new(f64::NAN, 0.0))
 }

@@ -8,7 +8,7 @@
 use serde::Serialize;
 
 use super::boundary::Boundaries;
-use super::curve::BoundaryKind;
+use super::curve::{BoundaryKind, load_on_chord};
 use crate::analysis::State;
 
 /// What a kick does.
@@ -44,7 +44,9 @@ impl Boundaries {
                     .folds
                     .iter()
                     .filter_map(|fold| {
-                        at_value(fold.points.iter().map(|p| (p.value, p.load)), value)
+                        fold.points.windows(2).find_map(|w| {
+                            load_on_chord((w[0].value, w[0].load), (w[1].value, w[1].load), value)
+                        })
                     })
                     .any(|fold_load| fold_load <= load);
                 Some(if hard_above && past_fold {
@@ -84,7 +86,7 @@ impl Boundaries {
             .flat_map(|c| c.points.windows(2))
             .filter_map(|w| {
                 let (a, b) = (&w[0], &w[1]);
-                let load = at_value([(a.value, a.load), (b.value, b.load)], value)?;
+                let load = load_on_chord((a.value, a.load), (b.value, b.load), value)?;
                 let nearer = if (value - a.value).abs() <= (value - b.value).abs() {
                     a
                 } else {
@@ -94,17 +96,4 @@ impl Boundaries {
             })
             .collect()
     }
-}
-
-/// The load where the polyline `points` (`(value, load)`) crosses `value`
-/// (the first crossing), by its chord.
-fn at_value(points: impl IntoIterator<Item = (f64, f64)>, value: f64) -> Option<f64> {
-    let points: Vec<(f64, f64)> = points.into_iter().collect();
-    points.windows(2).find_map(|w| {
-        let ((x0, y0), (x1, y1)) = (w[0], w[1]);
-        if x0 == x1 || !(x0.min(x1)..=x0.max(x1)).contains(&value) {
-            return None;
-        }
-        Some(y0 + (value - x0) / (x1 - x0) * (y1 - y0))
-    })
 }

@@ -238,12 +238,7 @@ impl MapPanel {
         if spec.axis.counts() {
             return;
         }
-        let wanted = BoundarySpec {
-            model: spec.model,
-            axis: spec.axis.clone(),
-            axis_range: spec.axis_range,
-            load_range: spec.load_range,
-        };
+        let wanted = plane_of(spec);
         if self.following.key() != Some(&wanted) {
             // No thread: the map is drawn without them.
             let _ = self.following.request(wanted, |spec, cancel, send| {
@@ -498,9 +493,17 @@ fn followed_for<'a>(
     spec: &MapSpec,
 ) -> Option<&'a Result<Boundaries, AnalysisError>> {
     let (key, found) = followed?;
-    ((&key.model, &key.axis, key.axis_range, key.load_range)
-        == (&spec.model, &spec.axis, spec.axis_range, spec.load_range))
-        .then_some(found)
+    (*key == plane_of(spec)).then_some(found)
+}
+
+/// The plane of the map `spec`, as the boundaries are followed over it.
+fn plane_of(spec: &MapSpec) -> BoundarySpec {
+    BoundarySpec {
+        model: spec.model,
+        axis: spec.axis.clone(),
+        axis_range: spec.axis_range,
+        load_range: spec.load_range,
+    }
 }
 
 /// A number field for the map's range.
