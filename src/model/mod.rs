@@ -47,6 +47,7 @@ pub use presets::{PRESETS, Preset, PresetId, preset};
 pub use quantity::Quantity;
 pub use quantity::{DAMPER_RATIO, DAMPING_LEVEL, MASS_RATIO};
 pub use state::{StateVec, StateView, StateViewMut, rest_state, state_len};
+pub use two_rods::{TwoRodState, two_rod_derivative};
 pub use valid::{AsValid, ValidModel};
 
 /// What a refused value is: a parameter the user sets by its key, or a

@@ -12,7 +12,7 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use crate::model::{Model, StateVec, friction, state_derivative, state_len};
+use crate::model::{Model, StateVec, friction, state_derivative, state_len, two_rod_derivative};
 
 /// The reduced field of one model at one load.
 #[derive(Clone, Debug)]
@@ -80,13 +80,31 @@ impl Field {
     /// `f(x)`: the reduced state's time derivative.
     #[must_use]
     pub fn at(&self, x: &DVector<f64>) -> DVector<f64> {
+        let mut f = DVector::zeros(self.dimension());
+        self.at_into(x, &mut f);
+        f
+    }
+
+    /// [`Self::at`] into `out` (of the reduced state's length). Two rods'
+    /// closed form allocates nothing: the flows' inner loop.
+    pub fn at_into(&self, x: &DVector<f64>, out: &mut DVector<f64>) {
         let n = self.rods;
+        if n == 2 {
+            let spin = if self.spin { x[4] } else { 0.0 };
+            let d = two_rod_derivative(&self.model, [x[0], x[1], 0.0, x[2], x[3], spin]);
+            for (o, v) in out.iter_mut().zip([d[0], d[1], d[3], d[4], d[5]]) {
+                *o = v;
+            }
+            return;
+        }
         let d = state_derivative(&self.model, &self.full_state(x));
-        DVector::from_fn(self.dimension(), |i, _| match i {
-            i if i < n => d[i],
-            i if i < 2 * n => d[n + 1 + (i - n)],
-            _ => d[2 * n + 1],
-        })
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = match i {
+                i if i < n => d[i],
+                i if i < 2 * n => d[n + 1 + (i - n)],
+                _ => d[2 * n + 1],
+            };
+        }
     }
 
     /// The roller's slip speed on the band in state `x`, m/s (none without
@@ -141,18 +159,22 @@ impl Field {
         let n = self.dimension();
         let mut a = DMatrix::zeros(n, n);
         let mut shifted = x.clone();
+        let (mut plus, mut minus) = (DVector::zeros(n), DVector::zeros(n));
         for j in 0..n {
             let step = h * x[j].abs().max(1.0);
             shifted[j] = x[j] + step;
-            let plus = self.at(&shifted);
-            let column = if let Some(at_x) = at_x {
-                (plus - at_x) / step
+            self.at_into(&shifted, &mut plus);
+            let (minus, width) = if let Some(at_x) = at_x {
+                (at_x, step)
             } else {
                 shifted[j] = x[j] - step;
-                (plus - self.at(&shifted)) / (2.0 * step)
+                self.at_into(&shifted, &mut minus);
+                (&minus, 2.0 * step)
             };
             shifted[j] = x[j];
-            a.set_column(j, &column);
+            for i in 0..n {
+                a[(i, j)] = (plus[i] - minus[i]) / width;
+            }
         }
         a
     }

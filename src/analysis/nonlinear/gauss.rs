@@ -61,16 +61,23 @@ pub struct Stepper<'a> {
     /// The Jacobian the last step was solved with and its stage matrix,
     /// factored.
     newton: Option<(DMatrix<f64>, LU<f64, Dyn, Dyn>)>,
+    /// Room for a stage point and the field there, reused by every
+    /// iteration (the inner loop allocates nothing).
+    point: DVector<f64>,
+    at_point: DVector<f64>,
 }
 
 impl<'a> Stepper<'a> {
     #[must_use]
     pub fn new(field: &'a Field, h: f64) -> Self {
+        let d = field.dimension();
         Self {
             field,
             h,
             stages: None,
             newton: None,
+            point: DVector::zeros(d),
+            at_point: DVector::zeros(d),
         }
     }
 
@@ -147,17 +154,22 @@ impl<'a> Stepper<'a> {
     /// leave an error that varies from one flow to the next and stalls
     /// Newton's iterations of the shooting.
     fn solve_stages(
-        &self,
+        &mut self,
         x: &DVector<f64>,
         iterations: usize,
         fresh: bool,
     ) -> Option<DVector<f64>> {
-        let (_, lu) = self.newton.as_ref()?;
+        self.newton.as_ref()?;
         let mut k = self.first_guess(x);
+        let mut change = DVector::zeros(k.len());
         let scale = x.amax().max(f64::MIN_POSITIVE);
         let mut last_change = f64::INFINITY;
         for _ in 0..iterations {
-            let change = lu.solve(&self.residual(x, &k))?;
+            self.residual(x, &k, &mut change);
+            let (_, lu) = self.newton.as_ref()?;
+            if !lu.solve_mut(&mut change) {
+                return None;
+            }
             k -= &change;
             let size = self.h * change.amax();
             if !size.is_finite() {
@@ -188,12 +200,19 @@ impl<'a> Stepper<'a> {
         }
     }
 
-    /// The stage equations' residual `K_i - f(x + h sum_j a_ij K_j)`.
-    fn residual(&self, x: &DVector<f64>, k: &DVector<f64>) -> DVector<f64> {
+    /// The stage equations' residual `K_i - f(x + h sum_j a_ij K_j)`, into
+    /// `out`.
+    fn residual(&mut self, x: &DVector<f64>, k: &DVector<f64>, out: &mut DVector<f64>) {
         let d = x.len();
-        let (k1, k2) = (k.rows(0, d).into_owned(), k.rows(d, d).into_owned());
-        let f = [0, 1].map(|i| self.field.at(&stage_point(x, &k1, &k2, self.h, i)));
-        stack(&(&k1 - &f[0]), &(&k2 - &f[1]))
+        for (i, a) in A.iter().enumerate() {
+            for r in 0..d {
+                self.point[r] = x[r] + k[r] * (self.h * a[0]) + k[d + r] * (self.h * a[1]);
+            }
+            self.field.at_into(&self.point, &mut self.at_point);
+            for r in 0..d {
+                out[i * d + r] = k[i * d + r] - self.at_point[r];
+            }
+        }
     }
 }
 
