@@ -115,9 +115,7 @@ mod tests {
     /// Each kind is read where its multiplier's modulus passes 1 (the
     /// moduli here change linearly with the load, so the placement is
     /// exact): a real one through -1 at p = 1.25, a complex pair through
-    /// the circle at p = 2.5, a real one through +1 at p = 3.75. (No
-    /// column met so far has a period doubling: the scans of `bifurcation`
-    /// over chains found folds and tori only.)
+    /// the circle at p = 2.5, a real one through +1 at p = 3.75.
     #[test]
     fn each_kind_is_read_where_its_multiplier_leaves_the_circle() {
         let pd = |p: f64| C64::new(-(0.5 + 0.4 * p), 0.0);
@@ -146,5 +144,87 @@ mod tests {
             assert!((b.load - at).abs() < 1e-12, "{b:?}");
             assert!((b.amplitude_rad - at).abs() < 1e-12, "{b:?}");
         }
+    }
+
+    /// Where the constructed field below has its period doubling.
+    const DOUBLING_P: f64 = 0.61;
+
+    /// The cycle's angular frequency at `p`, rad/s.
+    fn omega(p: f64) -> f64 {
+        0.8 + 0.4 * p
+    }
+
+    /// A field in four dimensions with a period doubling at a known load:
+    /// the circle `x^2 + y^2 = 1` run round at `omega(p)` attracts `(x,
+    /// y)`, and `w = (u, v)` obeys
+    ///
+    /// ```text
+    /// w' = (l I + d S(x, y) + omega/2 J) w - |w|^2 w,
+    /// S = [[x, y], [y, -x]],  J = [[0, -1], [1, 0]],
+    /// ```
+    ///
+    /// with `l +- d = l1, l2`, `l1 = p - DOUBLING_P`, `l2 = -1`. On the
+    /// circle `S(theta)` is the reflection `R(theta/2) diag(1, -1)
+    /// R(-theta/2)`, so in the frame turned by `theta/2` the linear part is
+    /// `diag(l1, l2)`, and over a period the frame turns by half a turn:
+    /// `w`'s multipliers are `-exp(l1 T)` and `-exp(l2 T)`, the first
+    /// through -1 exactly at `p = DOUBLING_P` (the band of a Moebius strip
+    /// flipping its stability). The circle's own are 1 and `exp(-2 T)`.
+    fn doubling_field(s: &DVector<f64>, p: f64, out: &mut DVector<f64>) {
+        let (x, y, u, v) = (s[0], s[1], s[2], s[3]);
+        let (l1, l2, w) = (p - DOUBLING_P, -1.0, omega(p));
+        let (l, d) = (f64::midpoint(l1, l2), (l1 - l2) / 2.0);
+        let (radial, cubic) = (1.0 - x * x - y * y, u * u + v * v);
+        out[0] = x * radial - w * y;
+        out[1] = y * radial + w * x;
+        out[2] = l * u + d * (x * u + y * v) - w / 2.0 * v - cubic * u;
+        out[3] = l * v + d * (y * u - x * v) + w / 2.0 * u - cubic * v;
+    }
+
+    /// The shooting, its multipliers and the reading of the bifurcations
+    /// on a field whose period doubling is known in closed form (above):
+    /// every cycle's multipliers are the closed form's to 1e-8, and the
+    /// doubling is read at `DOUBLING_P` to the linear placement's own
+    /// error, `T h^2 / 8` for loads `h` apart (the modulus
+    /// `exp((p - DOUBLING_P) T)` is not linear in the load).
+    #[test]
+    fn a_constructed_period_doubling_is_found_where_it_is() {
+        use crate::analysis::nonlinear::shooting::{Constraint, Shooting, fastest_rate};
+        let field = crate::analysis::field::Field::constructed(doubling_field, 2, 0.3);
+        let shooting = Shooting {
+            fastest_per_s: fastest_rate(&field),
+            field,
+        };
+        let h = 0.02;
+        let cycles: Vec<Cycle> = (0..30)
+            .map(|i| {
+                let p = 0.3 + h * f64::from(i);
+                let period = std::f64::consts::TAU / omega(p);
+                let guess = DVector::from_vec(vec![1.0, 0.0, 0.0, 0.0, period, p]);
+                let cycle = shooting
+                    .solve(&guess, &Constraint::Load(p))
+                    .expect("a cycle")
+                    .cycle;
+                assert!((cycle.period_secs - period).abs() < 1e-9 * period);
+                let expected = [1.0, (-2.0 * period).exp()]
+                    .into_iter()
+                    .chain([-((p - DOUBLING_P) * period).exp(), -(-period).exp()]);
+                for m in expected {
+                    let off = cycle
+                        .multipliers
+                        .iter()
+                        .map(|z| (z - m).norm())
+                        .fold(f64::INFINITY, f64::min);
+                    assert!(off < 1e-8, "p = {p}: {m} against {:?}", cycle.multipliers);
+                }
+                cycle
+            })
+            .collect();
+        let found = cycle_bifurcations(&cycles);
+        assert_eq!(found.len(), 1, "{found:?}");
+        let period = std::f64::consts::TAU / omega(DOUBLING_P);
+        assert_eq!(found[0].kind, CycleBifurcationKind::PeriodDoubling);
+        let off = (found[0].load - DOUBLING_P).abs();
+        assert!(off < period * h * h / 8.0, "{:?}: {off}", found[0]);
     }
 }

@@ -21,7 +21,16 @@ pub struct Field {
     rods: usize,
     /// Whether `psi'` is a coordinate (a roller with mass).
     spin: bool,
+    /// Equations `f(x, p)` in place of the column's, and their `p`.
+    #[cfg(test)]
+    constructed: Option<(Constructed, f64)>,
 }
+
+/// A field `f(x, p)` with a known answer, put in place of a column's
+/// equations by the tests of what is built on the field (the flow, the
+/// monodromy, the cycles' bifurcations).
+#[cfg(test)]
+pub(crate) type Constructed = fn(&DVector<f64>, f64, &mut DVector<f64>);
 
 impl Field {
     /// The field of `model` (at its own load).
@@ -31,6 +40,20 @@ impl Field {
             model: *model,
             rods: model.column.rods,
             spin: model.roller().is_some_and(|r| r.mass_kg > 0.0),
+            #[cfg(test)]
+            constructed: None,
+        }
+    }
+
+    /// The field `f(x, p)` on a state of `2 * half` entries (the first
+    /// `half` read as the angles), at `p`.
+    #[cfg(test)]
+    pub(crate) fn constructed(f: Constructed, half: usize, p: f64) -> Self {
+        let mut model = crate::model::PresetId::Ziegler1952.model();
+        model.column.rods = half;
+        Self {
+            constructed: Some((f, p)),
+            ..Self::new(&model)
         }
     }
 
@@ -39,6 +62,8 @@ impl Field {
     pub fn at_load(&self, p: f64) -> Self {
         Self {
             model: self.model.at_load(p),
+            #[cfg(test)]
+            constructed: self.constructed.map(|(f, _)| (f, p)),
             ..self.clone()
         }
     }
@@ -88,6 +113,10 @@ impl Field {
     /// [`Self::at`] into `out` (of the reduced state's length). Two rods'
     /// closed form allocates nothing: the flows' inner loop.
     pub fn at_into(&self, x: &DVector<f64>, out: &mut DVector<f64>) {
+        #[cfg(test)]
+        if let Some((f, p)) = self.constructed {
+            return f(x, p, out);
+        }
         let n = self.rods;
         if n == 2 {
             let spin = if self.spin { x[4] } else { 0.0 };
