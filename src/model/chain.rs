@@ -83,12 +83,12 @@ fn joint_and_drag_forces(column: &Column, x: &StateVec, phi: &[f64], rate: &[f64
 /// on the rods. `None` for a mass matrix that cannot be factored.
 fn lagrange(
     model: &Model,
+    mu: &DMatrix<f64>,
     x: &StateVec,
     tip_q: &[f64],
 ) -> Option<(Cholesky<f64, Dyn>, DVector<f64>)> {
     let (phi, rate) = angles_and_rates(x);
     let n = phi.len();
-    let mu = chain_mass_matrix(model);
     // cos and sin of every difference phi_j - phi_k from one sin_cos per
     // rod (N calls instead of 2 N^2).
     let trig: Vec<(f64, f64)> = phi.iter().map(|a| a.sin_cos()).collect();
@@ -108,8 +108,13 @@ fn lagrange(
 /// The rods' angular accelerations from Lagrange's equations (see
 /// [`lagrange`]) under the tip load's generalized forces `tip_q`. `None`
 /// for a mass matrix that cannot be factored.
-fn rod_accelerations(model: &Model, x: &StateVec, tip_q: &[f64]) -> Option<DVector<f64>> {
-    let (factor, rhs) = lagrange(model, x, tip_q)?;
+fn rod_accelerations(
+    model: &Model,
+    mu: &DMatrix<f64>,
+    x: &StateVec,
+    tip_q: &[f64],
+) -> Option<DVector<f64>> {
+    let (factor, rhs) = lagrange(model, mu, x, tip_q)?;
     Some(factor.solve(&rhs))
 }
 
@@ -122,7 +127,7 @@ fn rod_accelerations(model: &Model, x: &StateVec, tip_q: &[f64]) -> Option<DVect
 pub fn tip_mobility(model: &Model, x: &StateVec) -> Option<(Matrix2<f64>, DVector<f64>)> {
     let column = &model.column;
     let n = column.rods;
-    let (factor, rhs) = lagrange(model, x, &vec![0.0; n])?;
+    let (factor, rhs) = lagrange(model, &chain_mass_matrix(model), x, &vec![0.0; n])?;
     let angles = StateView::new(x).angles_rad();
     let jacobian = DMatrix::from_fn(2, n, |row, i| {
         column.rod(i).length_m * normal(angles[i])[row]
@@ -143,10 +148,18 @@ pub fn tip_mobility(model: &Model, x: &StateVec) -> Option<(Matrix2<f64>, DVecto
 /// a mass matrix that cannot be factored.
 #[must_use]
 pub fn chain_derivative(model: &Model, x: &StateVec) -> Option<StateVec> {
+    chain_derivative_with(model, &chain_mass_matrix(model), x)
+}
+
+/// [`chain_derivative`] with the mass matrix at rest `mu`
+/// ([`chain_mass_matrix`] of `model`) given, for a caller that evaluates
+/// the same chain many times.
+#[must_use]
+pub fn chain_derivative_with(model: &Model, mu: &DMatrix<f64>, x: &StateVec) -> Option<StateVec> {
     let column = &model.column;
     let n = column.rods;
     let tip = tip_load(model, x);
-    let accelerations = rod_accelerations(model, x, &tip.generalized_n_m[..n])?;
+    let accelerations = rod_accelerations(model, mu, x, &tip.generalized_n_m[..n])?;
     let state = StateView::new(x);
     let (angles, rates) = (state.angles_rad(), state.rates_rad_per_s());
     let (psi_dot, psi_ddot) = match model.roller() {

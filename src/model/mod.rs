@@ -9,6 +9,7 @@ mod allowed;
 mod assign;
 mod axis;
 mod chain;
+mod chain_jacobian;
 mod key_table;
 mod keys;
 mod kinematics;
@@ -29,9 +30,10 @@ pub use allowed::Allowed;
 pub use assign::{Assignment, apply_assignments, parse_assignment};
 pub use axis::Axis;
 pub use chain::{
-    TipResponse, chain_derivative, chain_energy_j, energy_j, state_derivative, tip_mobility,
-    tip_response,
+    TipResponse, chain_derivative, chain_derivative_with, chain_energy_j, energy_j,
+    state_derivative, tip_mobility, tip_response,
 };
+pub use chain_jacobian::chain_jacobian;
 pub use key_table::KEYS;
 pub use keys::{Key, KeySpec};
 pub use kinematics::{joints_m, normal, tip_m, unit};

@@ -12,7 +12,10 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use crate::model::{Model, StateVec, friction, state_derivative, state_len, two_rod_derivative};
+use crate::model::{
+    Model, StateVec, chain_derivative_with, chain_jacobian, chain_mass_matrix, friction, state_len,
+    two_rod_derivative,
+};
 
 /// The reduced field of one model at one load.
 #[derive(Clone, Debug)]
@@ -21,6 +24,8 @@ pub struct Field {
     rods: usize,
     /// Whether `psi'` is a coordinate (a roller with mass).
     spin: bool,
+    /// The chain's mass matrix at rest (`chain_mass_matrix`), taken once.
+    mass_at_rest: DMatrix<f64>,
     /// Equations `f(x, p)` in place of the column's, and their `p`.
     #[cfg(test)]
     constructed: Option<(Constructed, f64)>,
@@ -40,6 +45,7 @@ impl Field {
             model: *model,
             rods: model.column.rods,
             spin: model.roller().is_some_and(|r| r.mass_kg > 0.0),
+            mass_at_rest: chain_mass_matrix(model),
             #[cfg(test)]
             constructed: None,
         }
@@ -126,7 +132,9 @@ impl Field {
             }
             return;
         }
-        let d = state_derivative(&self.model, &self.full_state(x));
+        let full = self.full_state(x);
+        let d = chain_derivative_with(&self.model, &self.mass_at_rest, &full)
+            .unwrap_or_else(|| StateVec::from_element(full.len(), f64::NAN));
         for (i, o) in out.iter_mut().enumerate() {
             *o = match i {
                 i if i < n => d[i],
@@ -154,11 +162,29 @@ impl Field {
         self.model.roller().map(|r| r.band_speed_m_per_s)
     }
 
-    /// The Jacobian of `f` at `x` by central differences, steps `h` scaled
-    /// by each coordinate's size (at least 1).
+    /// The Jacobian of `f` at `x` in closed form where the equations are
+    /// covered (`chain_jacobian`: a tip force turning with the last rod,
+    /// joints' springs and dampers; not the drag or the roller), else
+    /// `None`.
+    fn closed_form_jacobian(&self, x: &DVector<f64>) -> Option<DMatrix<f64>> {
+        #[cfg(test)]
+        if self.constructed.is_some() {
+            return None;
+        }
+        let n = self.rods;
+        if self.spin {
+            return None;
+        }
+        chain_jacobian(&self.model, &x.as_slice()[..n], &x.as_slice()[n..2 * n])
+    }
+
+    /// The Jacobian of `f` at `x`: in closed form where covered (exact to
+    /// rounding, for about two evaluations of `f`), else by central
+    /// differences, steps `h` scaled by each coordinate's size (at least 1).
     #[must_use]
     pub fn jacobian(&self, x: &DVector<f64>, h: f64) -> DMatrix<f64> {
-        self.differences(x, h, None)
+        self.closed_form_jacobian(x)
+            .unwrap_or_else(|| self.differences(x, h, None))
     }
 
     /// The Jacobian of `f` at `x` by central differences at steps `h` and
@@ -170,6 +196,12 @@ impl Field {
     /// rounding takes over).
     #[must_use]
     pub fn jacobian_extrapolated(&self, x: &DVector<f64>, h: f64) -> DMatrix<f64> {
+        self.closed_form_jacobian(x)
+            .unwrap_or_else(|| self.extrapolated_differences(x, h))
+    }
+
+    /// Central differences at steps `h` and `h/2`, extrapolated.
+    fn extrapolated_differences(&self, x: &DVector<f64>, h: f64) -> DMatrix<f64> {
         (self.differences(x, h / 2.0, None) * 4.0 - self.differences(x, h, None)) / 3.0
     }
 
@@ -178,7 +210,8 @@ impl Field {
     /// accuracy: for Newton's matrices, not for the multipliers).
     #[must_use]
     pub fn jacobian_one_sided(&self, x: &DVector<f64>, h: f64) -> DMatrix<f64> {
-        self.differences(x, h, Some(&self.at(x)))
+        self.closed_form_jacobian(x)
+            .unwrap_or_else(|| self.differences(x, h, Some(&self.at(x))))
     }
 
     /// The Jacobian by differences with steps `h` scaled by each
@@ -250,10 +283,13 @@ mod tests {
             crate::analysis::jet::directional_derivatives(&model, &v).expect("covered");
         let at_rest = DVector::zeros(6);
         let h = 1e-2;
-        let central = (field.jacobian(&at_rest, h) * &v - &exact).amax();
-        let extrapolated = (field.jacobian_extrapolated(&at_rest, h) * &v - &exact).amax();
+        let central = (field.differences(&at_rest, h, None) * &v - &exact).amax();
+        let extrapolated = (field.extrapolated_differences(&at_rest, h) * &v - &exact).amax();
         assert!(central > 1e-6, "the step's error shows: {central}");
         assert!(extrapolated < 1e-3 * central, "{extrapolated} vs {central}");
+        // The closed form (this chain is covered) to rounding.
+        let closed = (field.jacobian_extrapolated(&at_rest, h) * &v - &exact).amax();
+        assert!(closed < 1e-12 * exact.amax(), "{closed}");
     }
 
     /// The roller's spin rate is a coordinate only when the roller has mass.
