@@ -105,6 +105,15 @@ pub struct Report {
     pub window_fps_1920x1080: Option<f64>,
     /// The window at 1920x1080: frame interval, 99th percentile, ms.
     pub window_frame_ms_p99_1920x1080: Option<f64>,
+    /// The window at 1920x1080 in projector mode with the `beck` preset
+    /// (16 rods on the reference engine): frames drawn per second.
+    pub window_fps_chain16_projector_1920x1080: Option<f64>,
+    /// Its frame interval, 99th percentile, ms.
+    pub window_frame_ms_p99_chain16_projector_1920x1080: Option<f64>,
+    /// The limit cycles of `bifurcation` for a chain of 16 uniform rods
+    /// with joint dampers 0.05 over its load bar: every branch followed,
+    /// s (null when skipped).
+    pub bifurcation_chain16_s: Option<f64>,
 }
 
 /// Frames timed in each real window.
@@ -120,6 +129,7 @@ pub fn window_figures(
     renderer: crate::app::Renderer,
     size: [f32; 2],
     frames: usize,
+    settings: Settings,
 ) -> Result<Option<(f64, f64)>> {
     let has_display = ["DISPLAY", "WAYLAND_DISPLAY"]
         .iter()
@@ -127,7 +137,7 @@ pub fn window_figures(
     if !has_display {
         return Ok(None);
     }
-    let timed = crate::app::time_window_frames(renderer, size, frames)
+    let timed = crate::app::time_window_frames(renderer, size, frames, settings)
         .map_err(|why| anyhow::anyhow!("the timed window: {why}"))?;
     let total_secs: f64 = timed.intervals_ms.iter().sum::<f64>() / 1e3;
     Ok(Some((
@@ -136,21 +146,29 @@ pub fn window_figures(
     )))
 }
 
-/// Runs every measurement; `frames` frames are timed headless, and the real
-/// window is timed too when `window` is set and there is a display.
+/// Runs every measurement; `frames` frames are timed headless, the real
+/// window too when `window` is set and there is a display, and the 16-rod
+/// chain's limit cycles when `cycles` is set.
 ///
 /// # Errors
 /// A preset or a computation that fails (none should), or a display that
 /// gives no window.
-pub fn run(frames: usize, window: bool) -> Result<Report> {
-    let (small, large) = if window {
+pub fn run(frames: usize, window: bool, cycles: bool) -> Result<Report> {
+    let (small, large, chain_window) = if window {
         let renderer = crate::app::Renderer::default();
+        let large = [1920.0, 1080.0];
         (
-            window_figures(renderer, FRAME_SIZE, WINDOW_FRAMES)?,
-            window_figures(renderer, [1920.0, 1080.0], WINDOW_FRAMES)?,
+            window_figures(renderer, FRAME_SIZE, WINDOW_FRAMES, Settings::default())?,
+            window_figures(renderer, large, WINDOW_FRAMES, Settings::default())?,
+            window_figures(renderer, large, WINDOW_FRAMES, chain16_projector())?,
         )
     } else {
-        (None, None)
+        (None, None, None)
+    };
+    let bifurcation_s = if cycles {
+        Some(bifurcation_chain16_s()?)
+    } else {
+        None
     };
     let roller = pencil(PresetId::Roller)?;
     let midpoint = pencil(PresetId::MidpointMasses)?;
@@ -188,7 +206,40 @@ pub fn run(frames: usize, window: bool) -> Result<Report> {
         window_frame_ms_p99: small.map(|(_, p99)| p99),
         window_fps_1920x1080: large.map(|(fps, _)| fps),
         window_frame_ms_p99_1920x1080: large.map(|(_, p99)| p99),
+        window_fps_chain16_projector_1920x1080: chain_window.map(|(fps, _)| fps),
+        window_frame_ms_p99_chain16_projector_1920x1080: chain_window.map(|(_, p99)| p99),
+        bifurcation_chain16_s: bifurcation_s,
     })
+}
+
+/// The `beck` preset (16 rods on the reference engine) in projector mode.
+#[must_use]
+pub fn chain16_projector() -> Settings {
+    Settings {
+        preset: PresetId::Beck,
+        model: PresetId::Beck.model(),
+        engine: EngineKind::Reference,
+        projector: true,
+        ..Settings::default()
+    }
+}
+
+/// The time `bifurcation` spends on the limit cycles of a chain of 16
+/// uniform rods with joint dampers 0.05 over its load bar (every branch
+/// from every flutter onset, followed by shooting and continuation), s.
+fn bifurcation_chain16_s() -> Result<f64> {
+    let mut model = PresetId::UniformRods.model();
+    model.column.rods = 16;
+    model.column.c1_nms_per_rad = 0.05;
+    model.column.c2_nms_per_rad = 0.05;
+    let load_max = model.load_bar_max_p();
+    let start = Instant::now();
+    let branches = crate::analysis::cycle_branches(&model, 0.0, load_max, &AtomicBool::new(false))?;
+    let secs = start.elapsed().as_secs_f64();
+    if !branches.iter().any(|onset| onset.branch.is_ok()) {
+        anyhow::bail!("the 16-rod chain gave no branch of cycles");
+    }
+    Ok(secs)
 }
 
 /// The map of the app's stability-map tab for `roller`: 256 loads in

@@ -117,13 +117,14 @@ pub fn time_window_frames(
     renderer: Renderer,
     inner_size: [f32; 2],
     frames: usize,
+    settings: Settings,
 ) -> Result<WindowFrames, WindowTimingError> {
     let timed = Arc::new(Mutex::new(WindowFrames::default()));
     let shared = Arc::clone(&timed);
     let mut options = options(renderer, inner_size);
     options.persist_window = false;
     options.viewport = options.viewport.with_min_inner_size([64.0, 64.0]);
-    let app = ZieglerApp::new(Settings::default())?;
+    let app = ZieglerApp::new(settings)?;
     eframe::run_native(
         "zieglerlab-bench",
         options,
