@@ -30,10 +30,14 @@ use crate::analysis::field::Field;
 pub enum Monodromy {
     /// None: the end point only.
     None,
-    /// The field's Jacobian at both stages (extrapolated differences,
-    /// [`Field::jacobian_extrapolated`]): the exact derivative of the
-    /// computed flow (for the multipliers).
+    /// The field's Jacobian at both stages (in closed form or by
+    /// extrapolated differences, [`Field::jacobian_extrapolated`]): the
+    /// exact derivative of the computed flow, for Newton's method proper.
     Exact,
+    /// The same for a flow whose end point no Newton iteration compares
+    /// (a converged cycle's multipliers): its stage iterations may take
+    /// their Newton matrix in closed form too, which is cheaper.
+    Multipliers,
     /// The Jacobian at the step's start held over its stages: off by the
     /// step's change of the Jacobian, which slows Newton's convergence from
     /// quadratic to fast linear but not where it ends.
@@ -110,9 +114,13 @@ impl<'a> Stepper<'a> {
             k
         } else {
             // Newton's matrix for the stages only: where they converge
-            // does not depend on its accuracy.
+            // does not depend on its accuracy, but how the iterations end
+            // does, and with it the flow's rounding: by differences, with
+            // which the shooting's tolerances were set (see
+            // `Field::jacobian_one_sided`).
             let jacobian = match monodromy {
-                Monodromy::Exact => self.field.jacobian(x, JACOBIAN_STEP),
+                Monodromy::Exact => self.field.central_differences(x, JACOBIAN_STEP),
+                Monodromy::Multipliers => self.field.jacobian(x, JACOBIAN_STEP),
                 Monodromy::None | Monodromy::HeldPerStep => {
                     self.field.jacobian_one_sided(x, JACOBIAN_STEP)
                 }
@@ -124,7 +132,7 @@ impl<'a> Stepper<'a> {
         let (k1, k2) = (k.rows(0, d).into_owned(), k.rows(d, d).into_owned());
         if let Some(y) = y {
             let dk = match (monodromy, &self.newton) {
-                (Monodromy::Exact, _) => {
+                (Monodromy::Exact | Monodromy::Multipliers, _) => {
                     let [j1, j2] = [0, 1].map(|i| {
                         self.field
                             .jacobian_extrapolated(&stage_point(x, &k1, &k2, h, i), JACOBIAN_STEP)

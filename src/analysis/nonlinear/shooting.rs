@@ -330,8 +330,12 @@ impl Shooting {
     ) -> Option<(Cycle, DMatrix<f64>, usize)> {
         let d = self.field.dimension();
         let (x0, period, load) = (u.rows(0, d).into_owned(), u[d], u[d + 1]);
-        let (orbit, steps) =
-            self.orbit(&self.field.at_load(load), &x0, period, Monodromy::Exact)?;
+        let (orbit, steps) = self.orbit(
+            &self.field.at_load(load),
+            &x0,
+            period,
+            Monodromy::Multipliers,
+        )?;
         let monodromy = orbit.monodromy?;
         let multipliers = sorted_multipliers(&monodromy);
         let trivial = trivial_index(&multipliers)?;
