@@ -81,7 +81,7 @@ fn joint_and_drag_forces(column: &Column, x: &StateVec, phi: &[f64], rate: &[f64
 /// and `t_j . t_k = cos(phi_j - phi_k)`) and the right side, with `Q` the
 /// springs, dampers and drag plus `tip_q`, the tip load's generalized forces
 /// on the rods. `None` for a mass matrix that cannot be factored.
-fn lagrange(
+pub(super) fn lagrange(
     model: &Model,
     mu: &DMatrix<f64>,
     x: &StateVec,

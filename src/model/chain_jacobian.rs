@@ -20,8 +20,11 @@
 
 use nalgebra::DMatrix;
 
+use super::chain::lagrange;
+use super::loads::tip_load;
 use super::mass::chain_mass_matrix;
 use super::params::{Load, Model};
+use super::state::{StateVec, StateViewMut, state_len};
 
 /// The Jacobian of the reduced field `(phi, phi') -> (phi', phi'')` of
 /// `model`'s chain at these angles and rates, `2N x 2N`; `None` where the
@@ -37,39 +40,29 @@ pub fn chain_jacobian(model: &Model, phi: &[f64], rate: &[f64]) -> Option<DMatri
         return None;
     }
     let n = phi.len();
+    let mut state = StateVec::zeros(state_len(n));
+    let mut view = StateViewMut::new(&mut state);
+    view.angles_rad().copy_from_slice(phi);
+    view.rates_rad_per_s().copy_from_slice(rate);
+    // The equations themselves (`chain::lagrange`): the factored mass
+    // matrix and the accelerations.
     let mu = chain_mass_matrix(model);
+    let tip = tip_load(model, &state).generalized_n_m;
+    let (factor, r) = lagrange(model, &mu, &state, &tip[..n])?;
+    let a = factor.solve(&r);
+
     let trig: Vec<(f64, f64)> = phi.iter().map(|a| a.sin_cos()).collect();
     let cos_diff = |j: usize, k: usize| trig[j].1 * trig[k].1 + trig[j].0 * trig[k].0;
     let sin_diff = |j: usize, k: usize| trig[j].0 * trig[k].1 - trig[j].1 * trig[k].0;
-    let factor = DMatrix::from_fn(n, n, |j, k| mu[(j, k)] * cos_diff(j, k)).cholesky()?;
-
-    // The joints: torque_i = -k_i b_i - c_i b_i' on b_i = phi_i - phi_{i-1}
-    // (phi_{-1} = 0) acts on rod i and back on rod i - 1.
-    let torque = |i: usize| {
-        let (bend, bend_rate) = if i == 0 {
-            (phi[0], rate[0])
-        } else {
-            (phi[i] - phi[i - 1], rate[i] - rate[i - 1])
-        };
-        -column.spring_nm_per_rad(i) * bend - column.damper_nms_per_rad(i) * bend_rate
-    };
     let theta = eta * phi[n - 1];
     let length = |j: usize| column.rod(j).length_m;
-    let r = nalgebra::DVector::from_fn(n, |j, _| {
-        let joints = torque(j) - if j + 1 < n { torque(j + 1) } else { 0.0 };
-        let tip = -force_n * length(j) * (theta - phi[j]).sin();
-        let centripetal: f64 = (0..n)
-            .map(|k| mu[(j, k)] * sin_diff(j, k) * rate[k] * rate[k])
-            .sum();
-        joints + tip - centripetal
-    });
-    let a = factor.solve(&r);
 
     // dr/dphi - (dM/dphi) a (left n columns) and dr/dphi' (right n).
     let mut rhs = DMatrix::<f64>::zeros(n, 2 * n);
     for i in 0..n {
-        // Joint i's torque on rod i (+) and on rod i - 1 (-), through its
-        // bend's dependence on phi_i (+1) and phi_{i-1} (-1).
+        // Joint i's torque `-k_i b_i - c_i b_i'` on its bend `b_i = phi_i -
+        // phi_{i-1}` acts on rod i (+) and back on rod i - 1 (-), through
+        // the bend's dependence on phi_i (+1) and phi_{i-1} (-1).
         let (k, c) = (column.spring_nm_per_rad(i), column.damper_nms_per_rad(i));
         let bent: &[(usize, f64)] = if i == 0 {
             &[(0, 1.0)]

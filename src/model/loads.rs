@@ -171,10 +171,9 @@ pub fn rods_drag(column: &Column, angles_rad: &[f64], rates_rad_per_s: &[f64]) -
 }
 
 /// The torque of joint i's spring and damper on `phi_i - phi_{i-1}`
-/// (`phi_0 = 0`: joint 0 is the clamp O, then A, ...), in N m.
-pub(super) fn joint_torque_nm(column: &Column, x: &StateVec, i: usize) -> f64 {
-    let state = StateView::new(x);
-    let (angles, rates) = (state.angles_rad(), state.rates_rad_per_s());
+/// (`phi_0 = 0`: joint 0 is the clamp O, then A, ...) at these angles and
+/// rates, in N m.
+pub(super) fn joint_torque_nm(column: &Column, angles: &[f64], rates: &[f64], i: usize) -> f64 {
     let (bend, bend_rate) = if i == 0 {
         (angles[0], rates[0])
     } else {
@@ -186,7 +185,9 @@ pub(super) fn joint_torque_nm(column: &Column, x: &StateVec, i: usize) -> f64 {
 /// Every joint's torque ([`joint_torque_nm`]), from the clamp out.
 #[must_use]
 pub fn joint_torques_nm(column: &Column, x: &StateVec) -> Vec<f64> {
+    let state = StateView::new(x);
+    let (angles, rates) = (state.angles_rad(), state.rates_rad_per_s());
     (0..column.rods)
-        .map(|i| joint_torque_nm(column, x, i))
+        .map(|i| joint_torque_nm(column, angles, rates, i))
         .collect()
 }

@@ -3,7 +3,7 @@
 //! to, held to them by a test. Each angle's sine and cosine is taken once,
 //! and nothing is allocated but for the roller's friction.
 
-use super::loads::{friction, slaved_spin_rate};
+use super::loads::{friction, joint_torque_nm, slaved_spin_rate};
 use super::params::{Column, Load, Model};
 use super::state::StateVec;
 
@@ -114,9 +114,9 @@ fn column_accelerations(
     let column = &model.column;
     let [phi1, phi2, _, phi1_dot, phi2_dot, _] = *s;
     // The torque at A acts on rod 2, and back on rod 1.
-    let torque_o = -column.k1_nm_per_rad * phi1 - column.c1_nms_per_rad * phi1_dot;
-    let torque_a =
-        -column.k2_nm_per_rad * (phi2 - phi1) - column.c2_nms_per_rad * (phi2_dot - phi1_dot);
+    let (angles, rates) = ([phi1, phi2], [phi1_dot, phi2_dot]);
+    let torque_o = joint_torque_nm(column, &angles, &rates, 0);
+    let torque_a = joint_torque_nm(column, &angles, &rates, 1);
     let [drag1, drag2] = drag_generalized_n_m(column, s, trig);
     let (b, sin_d) = (inertia.b_kg_m2, trig.sin_d);
     let rhs1 = q1 + drag1 + b * sin_d * phi2_dot * phi2_dot + torque_o - torque_a;
