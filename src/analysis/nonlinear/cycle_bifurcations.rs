@@ -189,12 +189,9 @@ mod tests {
     /// `exp((p - DOUBLING_P) T)` is not linear in the load).
     #[test]
     fn a_constructed_period_doubling_is_found_where_it_is() {
-        use crate::analysis::nonlinear::shooting::{Constraint, Shooting, fastest_rate};
+        use crate::analysis::nonlinear::shooting::{Constraint, Shooting};
         let field = crate::analysis::field::Field::constructed(doubling_field, 2, 0.3);
-        let shooting = Shooting {
-            fastest_per_s: fastest_rate(&field),
-            field,
-        };
+        let shooting = Shooting::on(field);
         let h = 0.02;
         let cycles: Vec<Cycle> = (0..30)
             .map(|i| {

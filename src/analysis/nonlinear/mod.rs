@@ -20,3 +20,4 @@ pub(super) mod hopf;
 pub(super) mod jet;
 pub(super) mod kick;
 mod shooting;
+mod tableau;
