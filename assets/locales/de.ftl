@@ -699,7 +699,7 @@ notice-reset-closed-lesson = alles zurückgesetzt: Die Lektion „{ $title }“ 
 cycles-computing = die Grenzzyklen werden von jedem Flatterbeginn an verfolgt ...
 cycles-none = keine Grenzzyklen: { $why }
 cycles-no-onset = kein Flatterbeginn im Bereich der Lastleiste: keine Grenzzyklen
-cycles-chain-too-long = eine Kette aus { $rods } Stäben zu verfolgen dauert im Fenster zu lange (8 Stäbe brauchen auf zwei Kernen etwa 18 s, und die Arbeit wächst schneller als die Zahl der Stäbe); `zieglerlab bifurcation` berechnet ihre Zyklen auf der Kommandozeile
+cycles-chain-too-long = eine Kette aus { $rods } Stäben zu verfolgen dauert im Fenster zu lange (16 Stäbe brauchen auf zwei Kernen etwa 20 s, und die Arbeit wächst schneller als die Zahl der Stäbe); `zieglerlab bifurcation` berechnet ihre Zyklen auf der Kommandozeile
 cycles-no-thread = kein Thread für die Zyklen: { $why }
 cycles-branch = { $name }: { $onset } Einsatz bei p = { $at }; der Zweig endete: { $end }
 cycles-onset-soft = weicher

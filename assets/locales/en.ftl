@@ -698,7 +698,7 @@ notice-reset-closed-lesson = reset all: the lesson "{ $title }" is closed (open 
 cycles-computing = following the limit cycles from each flutter onset ...
 cycles-none = no limit cycles: { $why }
 cycles-no-onset = no flutter onset in the load bar's range: no limit cycles
-cycles-chain-too-long = a chain of { $rods } rods takes too long to follow in the window (8 rods take about 18 s on two cores, and the work grows faster than the number of rods); `zieglerlab bifurcation` computes its cycles from the command line
+cycles-chain-too-long = a chain of { $rods } rods takes too long to follow in the window (16 rods take about 20 s on two cores, and the work grows faster than the number of rods); `zieglerlab bifurcation` computes its cycles from the command line
 cycles-no-thread = no thread for the cycles: { $why }
 cycles-branch = { $name }: { $onset } onset at p = { $at }; the branch ended: { $end }
 cycles-onset-soft = soft

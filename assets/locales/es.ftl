@@ -699,7 +699,7 @@ notice-reset-closed-lesson = todo restablecido: la lección "{ $title }" está c
 cycles-computing = siguiendo los ciclos límite desde cada inicio del flameo ...
 cycles-none = no hay ciclos límite: { $why }
 cycles-no-onset = ningún inicio del flameo en el rango de la barra de carga: no hay ciclos límite
-cycles-chain-too-long = una cadena de { $rods } barras tarda demasiado en seguirse en la ventana (8 barras tardan unos 18 s en dos núcleos, y el trabajo crece más deprisa que el número de barras); `zieglerlab bifurcation` calcula sus ciclos desde la línea de órdenes
+cycles-chain-too-long = una cadena de { $rods } barras tarda demasiado en seguirse en la ventana (16 barras tardan unos 20 s en dos núcleos, y el trabajo crece más deprisa que el número de barras); `zieglerlab bifurcation` calcula sus ciclos desde la línea de órdenes
 cycles-no-thread = no hay hilo para los ciclos: { $why }
 cycles-branch = { $name }: inicio { $onset } en p = { $at }; la rama terminó: { $end }
 cycles-onset-soft = suave

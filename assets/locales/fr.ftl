@@ -699,7 +699,7 @@ notice-reset-closed-lesson = tout réinitialisé : la leçon « { $title } » es
 cycles-computing = suivi des cycles limites depuis chaque début du flottement ...
 cycles-none = pas de cycle limite : { $why }
 cycles-no-onset = aucun début du flottement dans la plage de la barre de charge : pas de cycle limite
-cycles-chain-too-long = une chaîne de { $rods } barres est trop longue à suivre dans la fenêtre (8 barres prennent environ 18 s sur deux cœurs, et le travail croît plus vite que le nombre de barres) ; `zieglerlab bifurcation` calcule ses cycles en ligne de commande
+cycles-chain-too-long = une chaîne de { $rods } barres est trop longue à suivre dans la fenêtre (16 barres prennent environ 20 s sur deux cœurs, et le travail croît plus vite que le nombre de barres) ; `zieglerlab bifurcation` calcule ses cycles en ligne de commande
 cycles-no-thread = pas de fil d'exécution pour les cycles : { $why }
 cycles-branch = { $name } : apparition { $onset } à p = { $at } ; la branche s'est arrêtée : { $end }
 cycles-onset-soft = douce

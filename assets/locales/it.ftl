@@ -699,7 +699,7 @@ notice-reset-closed-lesson = tutto azzerato: la lezione "{ $title }" è chiusa (
 cycles-computing = si seguono i cicli limite da ogni inizio del flutter ...
 cycles-none = nessun ciclo limite: { $why }
 cycles-no-onset = nessun inizio del flutter nell'intervallo della barra del carico: nessun ciclo limite
-cycles-chain-too-long = una catena di { $rods } aste richiede troppo tempo per essere seguita nella finestra (8 aste richiedono circa 18 s su due core, e il lavoro cresce più in fretta del numero di aste); `zieglerlab bifurcation` ne calcola i cicli dalla riga di comando
+cycles-chain-too-long = una catena di { $rods } aste richiede troppo tempo per essere seguita nella finestra (16 aste richiedono circa 20 s su due core, e il lavoro cresce più in fretta del numero di aste); `zieglerlab bifurcation` ne calcola i cicli dalla riga di comando
 cycles-no-thread = nessun thread per i cicli: { $why }
 cycles-branch = { $name }: insorgenza { $onset } a p = { $at }; il ramo è terminato: { $end }
 cycles-onset-soft = dolce

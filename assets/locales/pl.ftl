@@ -709,7 +709,7 @@ notice-reset-closed-lesson = zresetowano wszystko: lekcja „{ $title }” jest 
 cycles-computing = śledzenie cykli granicznych od każdego początku flatteru ...
 cycles-none = brak cykli granicznych: { $why }
 cycles-no-onset = brak początku flatteru w zakresie paska obciążenia: brak cykli granicznych
-cycles-chain-too-long = śledzenie łańcucha { $rods } prętów trwa w oknie zbyt długo (8 prętów zajmuje około 18 s na dwóch rdzeniach, a praca rośnie szybciej niż liczba prętów); `zieglerlab bifurcation` oblicza jego cykle z wiersza poleceń
+cycles-chain-too-long = śledzenie łańcucha { $rods } prętów trwa w oknie zbyt długo (16 prętów zajmuje około 20 s na dwóch rdzeniach, a praca rośnie szybciej niż liczba prętów); `zieglerlab bifurcation` oblicza jego cykle z wiersza poleceń
 cycles-no-thread = brak wątku dla cykli: { $why }
 cycles-branch = { $name }: { $onset } początek przy p = { $at }; gałąź zakończyła się: { $end }
 cycles-onset-soft = łagodny

@@ -38,9 +38,9 @@ pub const TAB: TabSpec = TabSpec {
 };
 
 /// The longest chain whose cycles the window follows (over the load bar, a
-/// chain of 4 rods with joint dampers takes about 5 s in a release build on
-/// two cores, 6 rods 10 s, 8 rods 18 s: the README's figures).
-const WINDOW_MAX_RODS: usize = 8;
+/// chain of 8 rods with joint dampers takes about 5 s in a release build on
+/// two cores, 16 rods about 20 s: the README's figures).
+const WINDOW_MAX_RODS: usize = 16;
 
 /// What the diagram depends on: the column (at load 0) and the load range.
 type DiagramKey = (Model, f64);
@@ -387,7 +387,7 @@ mod tests {
     fn a_long_chain_is_told_to_use_the_command_line() {
         let mut panel = PostCriticalPanel::default();
         let mut chain = damped_ziegler();
-        chain.column.rods = 12;
+        chain.column.rods = 20;
         for (model, too_long) in [(chain, true), (damped_ziegler(), false)] {
             let key = (model, 2.0);
             panel.follow(key);
@@ -397,7 +397,7 @@ mod tests {
             assert_eq!(*got, key);
             match diagram {
                 Err(why) => assert!(
-                    too_long && matches!(why, NoDiagram::TooLong { rods: 12 }),
+                    too_long && matches!(why, NoDiagram::TooLong { rods: 20 }),
                     "{why:?}"
                 ),
                 Ok(onsets) => assert!(!too_long && onsets[0].branch.is_ok()),
