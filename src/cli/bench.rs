@@ -21,7 +21,7 @@ pub struct Args {
     /// display: two windows open for a few seconds each).
     #[arg(long)]
     no_window: bool,
-    /// Skip the limit cycles of a 16-rod chain (about 35 s on two cores).
+    /// Skip the limit cycles of a 16-rod chain (about 16 s on two cores).
     #[arg(long)]
     no_cycles: bool,
 }
