@@ -9,6 +9,7 @@ mod amplitude;
 pub(super) mod arclength;
 mod bautin;
 pub(super) mod boundary;
+mod convergence;
 pub(super) mod curve;
 mod cycle;
 pub(super) mod cycle_bifurcations;

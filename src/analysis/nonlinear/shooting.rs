@@ -7,7 +7,8 @@ use std::cell::Cell;
 
 use nalgebra::{DMatrix, DVector};
 
-use super::cycle::{Cycle, LOAD_SCALE_FLOOR, trivial_index};
+use super::convergence::{broyden_update, converged, periodic_to_rounding};
+use super::cycle::{Cycle, trivial_index};
 use crate::analysis::C64;
 use crate::analysis::field::Field;
 use crate::analysis::gauss::{Monodromy, Stepper};
@@ -34,9 +35,6 @@ const MAX_STEPS_SCALE: usize = 16;
 const FAST_MODE_STEP: f64 = 100.0;
 /// Newton iterations for one cycle.
 const NEWTON_ITERATIONS: usize = 12;
-/// Newton's iterations end when each part of the step is this fraction of
-/// its part of the unknowns (see [`converged`]).
-const NEWTON_TOLERANCE: f64 = 1e-9;
 /// Broyden iterations for one cycle (each is one flow without the
 /// monodromy).
 const BROYDEN_ITERATIONS: usize = 16;
@@ -295,7 +293,7 @@ impl Shooting {
             }
             let step = inverse.as_ref()? * &residual;
             u -= &step;
-            if converged(&step, &u, d) {
+            if converged(&step, &u, d) || periodic_to_rounding(&residual, &step, &u, d) {
                 let (cycle, monodromy, (steps, end)) = self.cycle(&u)?;
                 let scale = self.steps_scale.get();
                 if scale < MAX_STEPS_SCALE && self.too_coarse(&u, steps, &end) {
@@ -484,37 +482,6 @@ fn discretization_error(field: &Field, u: &DVector<f64>, steps: usize, end: &DVe
     let x0 = u.rows(0, d).into_owned();
     flow(field, &x0, u[d], steps / 2, Monodromy::None)
         .map_or(f64::INFINITY, |orbit| (orbit.end - end).amax() / 255.0)
-}
-
-/// Broyden's ("good") rank-one update of the inverse `h` of Newton's
-/// matrix after a step `s` changed the residual by `y`, by the formula of
-/// Sherman and Morrison: `h += (s - h y) (s^T h) / (s^T h y)`. The updated
-/// matrix maps `y` to `s`, and is unchanged across `s`. Left as it is
-/// where `s^T h y` vanishes.
-pub(in crate::analysis) fn broyden_update(
-    h: &mut DMatrix<f64>,
-    s: &DVector<f64>,
-    y: &DVector<f64>,
-) {
-    let hy = &*h * y;
-    let denominator = s.dot(&hy);
-    if denominator.abs() > f64::MIN_POSITIVE && denominator.is_finite() {
-        let st_h = s.transpose() * &*h;
-        *h += (s - hy) * st_h / denominator;
-    }
-}
-
-/// Whether Newton's `step` at the unknowns `u = (x0, T, p)` (the state's
-/// length `d`) is down to [`NEWTON_TOLERANCE`] of each part's own size: the
-/// state's largest entry, the period, the load (at least
-/// [`LOAD_SCALE_FLOOR`]). Measured by one size for all, a cycle of small
-/// amplitude and long period (a long chain's near its onset) would ask its
-/// period to more digits than the state determines it to.
-pub(in crate::analysis) fn converged(step: &DVector<f64>, u: &DVector<f64>, d: usize) -> bool {
-    let state = u.rows(0, d).amax();
-    step.rows(0, d).amax() <= NEWTON_TOLERANCE * state
-        && step[d].abs() <= NEWTON_TOLERANCE * u[d].abs()
-        && step[d + 1].abs() <= NEWTON_TOLERANCE * u[d + 1].abs().max(LOAD_SCALE_FLOOR)
 }
 
 /// Eigenvalues of the monodromy, largest modulus first.
