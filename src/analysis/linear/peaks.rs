@@ -150,12 +150,17 @@ fn hermite_extremum([v0, s0, a0, v1, s1, a1]: [f64; 6]) -> f64 {
             ]
         }
     };
-    let ends = [v0, s0, a0, v1, s1, a1];
+    // The cubic's basis has no second-derivative terms: its unknown
+    // accelerations (NaN) stand as zeros.
+    let ends = if quintic {
+        [v0, s0, a0, v1, s1, a1]
+    } else {
+        [v0, s0, 0.0, v1, s1, 0.0]
+    };
     let at = |t: f64, derivative: usize| -> f64 {
         basis(t)
             .iter()
             .zip(ends)
-            .filter(|(b, _)| b[derivative] != 0.0)
             .map(|(b, e)| b[derivative] * e)
             .sum()
     };

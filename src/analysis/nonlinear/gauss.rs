@@ -150,8 +150,8 @@ impl<'a> Stepper<'a> {
             let dk = match (monodromy, &mut self.newton) {
                 (Monodromy::Exact | Monodromy::Multipliers, _) => {
                     let jacobians: [DMatrix<f64>; STAGES] = std::array::from_fn(|i| {
-                        self.field
-                            .jacobian_extrapolated(&stage_point(x, &k, h, i), JACOBIAN_STEP)
+                        stage_point_into(x, &k, h, i, &mut self.point);
+                        self.field.jacobian_extrapolated(&self.point, JACOBIAN_STEP)
                     });
                     let mut dk = DMatrix::zeros(STAGES * d, d);
                     for (i, j) in jacobians.iter().enumerate() {
@@ -257,11 +257,8 @@ impl<'a> Stepper<'a> {
     /// `out`.
     fn residual(&mut self, x: &DVector<f64>, k: &DVector<f64>, out: &mut DVector<f64>) {
         let d = x.len();
-        for (i, a) in GAUSS.a.iter().enumerate() {
-            self.point.copy_from(x);
-            for (j, &a_ij) in a.iter().enumerate() {
-                self.point.axpy(self.h * a_ij, &k.rows(j * d, d), 1.0);
-            }
+        for i in 0..STAGES {
+            stage_point_into(x, k, self.h, i, &mut self.point);
             self.field.at_into(&self.point, &mut self.at_point);
             for r in 0..d {
                 out[i * d + r] = k[i * d + r] - self.at_point[r];
@@ -270,14 +267,20 @@ impl<'a> Stepper<'a> {
     }
 }
 
-/// Stage `i`'s point `x + h sum_j a_ij K_j` (`k` the stacked stages).
-fn stage_point(x: &DVector<f64>, k: &DVector<f64>, h: f64, i: usize) -> DVector<f64> {
+/// Stage `i`'s point `x + h sum_j a_ij K_j` (`k` the stacked stages), into
+/// `point` (of the state's length).
+fn stage_point_into(
+    x: &DVector<f64>,
+    k: &DVector<f64>,
+    h: f64,
+    i: usize,
+    point: &mut DVector<f64>,
+) {
     let d = x.len();
-    let mut point = x.clone();
+    point.copy_from(x);
     for (j, &a_ij) in GAUSS.a[i].iter().enumerate() {
         point.axpy(h * a_ij, &k.rows(j * d, d), 1.0);
     }
-    point
 }
 
 /// The stage equations' matrix `I - h (A ⊗ J)` for one Jacobian `J`,
@@ -375,6 +378,20 @@ fn stage_matrix(jacobians: &[&DMatrix<f64>; STAGES], h: f64) -> DMatrix<f64> {
     m
 }
 
+/// A damped Ziegler column (p = 2.2, joint dampers 0.3) and a start far
+/// from rest (angles 0.5 and 0.9 rad): a swing at large amplitude, for the
+/// flows' tests.
+#[cfg(test)]
+pub(in crate::analysis) fn swinging_column() -> (Field, DVector<f64>) {
+    let mut model = crate::model::PresetId::Ziegler1952.model().at_load(2.2);
+    model.column.c1_nms_per_rad = 0.3;
+    model.column.c2_nms_per_rad = 0.3;
+    (
+        Field::new(&model),
+        DVector::from_vec(vec![0.5, 0.9, 0.0, 0.0]),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -403,11 +420,7 @@ mod tests {
     /// derivative of the computed flow (against central differences of it).
     #[test]
     fn the_steps_are_of_order_eight_and_the_monodromy_is_their_derivative() {
-        let mut model = PresetId::Ziegler1952.model().at_load(2.2);
-        model.column.c1_nms_per_rad = 0.3;
-        model.column.c2_nms_per_rad = 0.3;
-        let field = Field::new(&model);
-        let x0 = DVector::from_vec(vec![0.5, 0.9, 0.0, 0.0]);
+        let (field, x0) = swinging_column();
         let duration = 10.0;
         let (fine, _) = flow(&field, &x0, duration, 400, Monodromy::None);
         let errors: Vec<f64> = [3, 6, 12]

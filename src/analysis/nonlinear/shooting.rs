@@ -494,7 +494,6 @@ pub(in crate::analysis) fn sorted_multipliers(monodromy: &DMatrix<f64>) -> Vec<C
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::PresetId;
 
     /// The half-step estimate of a flow's error is its error: a damped
     /// Ziegler column swinging at large amplitude for 10 s, at 6 to 12
@@ -502,12 +501,8 @@ mod tests {
     /// steps: within 25 %.
     #[test]
     fn the_half_step_estimate_is_the_flow_s_error() {
-        let mut model = PresetId::Ziegler1952.model().at_load(2.2);
-        model.column.c1_nms_per_rad = 0.3;
-        model.column.c2_nms_per_rad = 0.3;
-        let field = Field::new(&model);
-        let u = DVector::from_vec(vec![0.5, 0.9, 0.0, 0.0, 10.0, 2.2]);
-        let x0 = u.rows(0, 4).into_owned();
+        let (field, x0) = crate::analysis::gauss::swinging_column();
+        let u = DVector::from_iterator(6, x0.iter().copied().chain([10.0, 2.2]));
         let end = |steps| {
             flow(&field, &x0, 10.0, steps, Monodromy::None)
                 .expect("a flow")
