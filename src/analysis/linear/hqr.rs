@@ -36,60 +36,90 @@ impl std::ops::IndexMut<(usize, usize)> for Square {
 /// `entry(i, j)`, or `None` when the QR iteration does not converge (or the
 /// matrix holds a non-finite entry).
 pub(crate) fn eigenvalues(n: usize, entry: impl Fn(usize, usize) -> f64) -> Option<Vec<C64>> {
-    let mut a = Square {
-        n,
-        entries: (0..n * n)
-            .map(|k| entry(k / n.max(1), k % n.max(1)))
-            .collect(),
-    };
-    if !a.entries.iter().all(|v| v.is_finite()) {
+    let mut columns = Vec::with_capacity(n * n);
+    for j in 0..n {
+        columns.extend((0..n).map(|i| entry(i, j)));
+    }
+    if !columns.iter().all(|v| v.is_finite()) {
         return None;
     }
-    to_hessenberg(&mut a);
-    hessenberg_eigenvalues(&mut a)
+    to_hessenberg(n, &mut columns);
+    let mut entries = Vec::with_capacity(n * n);
+    for i in 0..n {
+        entries.extend(columns.iter().skip(i).step_by(n));
+    }
+    hessenberg_eigenvalues(&mut Square { n, entries })
 }
 
-/// Reduces `a` to upper Hessenberg form by Gaussian elimination with
-/// partial pivoting (similarity transformations), zeroing what lies below
-/// the subdiagonal.
-fn to_hessenberg(a: &mut Square) {
-    let n = a.n;
+/// Reduces the `n` x `n` matrix `a`, stored column by column, to upper
+/// Hessenberg form by Gaussian elimination with partial pivoting
+/// (similarity transformations), zeroing what lies below the subdiagonal.
+///
+/// Each elimination `m` subtracts multiples of row `m` from the rows below
+/// it and adds the same multiples of their columns to column `m`, one row
+/// `i` after another. The row operations are applied here a column at a
+/// time (contiguous, so vectorized) at the moment the column is read: rows
+/// up to `i` before column `i` is added to column `m`, the rest after.
+/// Every entry therefore receives the same operations in the same order as
+/// in EISPACK's `elmhes`, so the result is the same to the last bit.
+fn to_hessenberg(n: usize, a: &mut [f64]) {
+    let mut multipliers = vec![0.0; n];
     for m in 1..n.saturating_sub(1) {
         // The pivot: the largest entry of column m - 1 at or below row m.
         let mut pivot = 0.0_f64;
         let mut row = m;
-        for j in m..n {
-            if a[(j, m - 1)].abs() > pivot.abs() {
-                pivot = a[(j, m - 1)];
+        for (j, &v) in a[(m - 1) * n..m * n].iter().enumerate().skip(m) {
+            if v.abs() > pivot.abs() {
+                pivot = v;
                 row = j;
             }
         }
         if row != m {
             for j in m - 1..n {
-                a.entries.swap(row * n + j, m * n + j);
+                a.swap(j * n + row, j * n + m);
             }
-            for j in 0..n {
-                a.entries.swap(j * n + row, j * n + m);
-            }
+            let (left, right) = a.split_at_mut(row * n);
+            left[m * n..(m + 1) * n].swap_with_slice(&mut right[..n]);
         }
-        if pivot != 0.0 {
-            for i in m + 1..n {
-                let y = a[(i, m - 1)] / pivot;
-                if y != 0.0 {
-                    a[(i, m - 1)] = 0.0;
-                    // Row i -= y row m (rows m < i, from column m).
-                    let (upper, lower) = a.entries.split_at_mut(i * n);
-                    let row_m = &upper[m * n + m..(m + 1) * n];
-                    for (to, from) in lower[m..n].iter_mut().zip(row_m) {
-                        *to -= y * from;
-                    }
-                    // Column m += y column i.
-                    for row in a.entries.chunks_exact_mut(n) {
-                        row[m] += y * row[i];
-                    }
+        if pivot == 0.0 {
+            continue;
+        }
+        // The multiplier of each row below m (zero: the row is left alone).
+        let y = &mut multipliers;
+        y.fill(0.0);
+        for (y, &v) in y.iter_mut().zip(&a[(m - 1) * n..m * n]).skip(m + 1) {
+            *y = v / pivot;
+        }
+        for i in m + 1..n {
+            let (left, right) = a.split_at_mut(i * n);
+            let (before_m, from_m) = left.split_at_mut(m * n);
+            let (column_m, column_i) = (&mut from_m[..n], &mut right[..n]);
+            // Row m's entry in column i: what the rows below m subtract.
+            let from = column_i[m];
+            // Rows m + 1..=i of column i, before it is read.
+            subtract_rows(&mut column_i[m + 1..=i], &y[m + 1..=i], from);
+            let y_i = y[i];
+            if y_i != 0.0 {
+                before_m[(m - 1) * n + i] = 0.0;
+                // Row i's entry in column m, against row m's so far.
+                column_m[i] -= y_i * column_m[m];
+                // Column m += y_i column i.
+                for (to, &v) in column_m.iter_mut().zip(column_i.iter()) {
+                    *to += y_i * v;
                 }
             }
+            // The rows below i, once column i has been read.
+            subtract_rows(&mut column_i[i + 1..], &y[i + 1..], from);
         }
+    }
+}
+
+/// `v_r -= y_r from` for each `r` whose multiplier `y_r` is not zero (a
+/// zero multiplier leaves the entry exactly as it is, its zero's sign too).
+fn subtract_rows(column: &mut [f64], multipliers: &[f64], from: f64) {
+    for (v, &y) in column.iter_mut().zip(multipliers) {
+        let updated = *v - y * from;
+        *v = if y == 0.0 { *v } else { updated };
     }
 }
 
@@ -333,6 +363,90 @@ mod tests {
                 .map(|f| (f - r).norm())
                 .fold(f64::INFINITY, f64::min);
             assert!(miss < 1e-12, "{r}: {found:?}");
+        }
+    }
+
+    /// EISPACK's `elmhes` as written there, a row `i` at a time on a
+    /// row-major matrix: what [`to_hessenberg`] must equal bit for bit.
+    fn elmhes(n: usize, a: &mut [f64]) {
+        for m in 1..n.saturating_sub(1) {
+            let (mut pivot, mut row) = (0.0_f64, m);
+            for j in m..n {
+                if a[j * n + m - 1].abs() > pivot.abs() {
+                    pivot = a[j * n + m - 1];
+                    row = j;
+                }
+            }
+            if row != m {
+                for j in m - 1..n {
+                    a.swap(row * n + j, m * n + j);
+                }
+                for j in 0..n {
+                    a.swap(j * n + row, j * n + m);
+                }
+            }
+            if pivot == 0.0 {
+                continue;
+            }
+            for i in m + 1..n {
+                let y = a[i * n + m - 1] / pivot;
+                if y != 0.0 {
+                    a[i * n + m - 1] = 0.0;
+                    for j in m..n {
+                        a[i * n + j] -= y * a[m * n + j];
+                    }
+                    for r in 0..n {
+                        a[r * n + m] += y * a[r * n + i];
+                    }
+                }
+            }
+        }
+    }
+
+    /// The reduction column by column gives `elmhes`'s Hessenberg matrix to
+    /// the last bit, signs of zeros included: on dense matrices, on ones
+    /// with exact zeros below the diagonal (zero multipliers, zero pivots)
+    /// and on a 32-rod chain's `M^-1 K` at loads past its flutter.
+    #[test]
+    fn the_reduction_is_elmhes_to_the_last_bit() {
+        let mut model = crate::model::PresetId::UniformRods.model();
+        model.column.rods = 32;
+        let pencil = crate::analysis::AffinePencil::new(&model).unwrap();
+        // Each case: its order and its entries, row by row.
+        let mut cases: Vec<(usize, Vec<f64>)> = Vec::new();
+        let rows_of = |n: usize, entry: &dyn Fn(usize, usize) -> f64| {
+            (n, (0..n * n).map(|k| entry(k / n, k % n)).collect())
+        };
+        for n in [1, 2, 3, 7, 12, 33] {
+            #[expect(clippy::cast_precision_loss, reason = "small indices")]
+            cases.push(rows_of(n, &|i, j| {
+                ((1.7 * i as f64 + 0.3 * (j * j) as f64).sin() - 0.25).max(-0.5)
+            }));
+            // Sparse: zeros below the diagonal, some negative.
+            cases.push(rows_of(n, &|i, j| match (i + 2 * j) % 5 {
+                0 => 0.0,
+                1 => -0.0,
+                k => f64::from(u8::try_from(k).unwrap()) - 2.5,
+            }));
+        }
+        for p in [0.0, 3.0, 12.0, 40.0] {
+            let lin = pencil.at(p);
+            let a = lin.mass.clone().cholesky().unwrap().solve(&lin.stiffness);
+            cases.push(rows_of(a.nrows(), &|i, j| a[(i, j)]));
+        }
+        for (n, mut rows) in cases {
+            let mut columns: Vec<f64> = (0..n * n).map(|k| rows[(k % n) * n + k / n]).collect();
+            elmhes(n, &mut rows);
+            to_hessenberg(n, &mut columns);
+            for i in 0..n {
+                for j in 0..n {
+                    assert_eq!(
+                        rows[i * n + j].to_bits(),
+                        columns[j * n + i].to_bits(),
+                        "n = {n}, entry ({i}, {j})"
+                    );
+                }
+            }
         }
     }
 

@@ -304,7 +304,10 @@ fn track(
     let mut out = Locus {
         loads: Vec::with_capacity(capacity),
         on_grid: Vec::with_capacity(capacity),
-        branches: vec![Vec::with_capacity(capacity); first.len() + structural_zeros],
+        // Each branch its own capacity (a cloned empty Vec has none).
+        branches: (0..first.len() + structural_zeros)
+            .map(|_| Vec::with_capacity(capacity))
+            .collect(),
         structural_zeros,
         refinement_cut_at: None,
     };
@@ -383,16 +386,16 @@ fn track(
                 let scale = pencil.scale_per_s(next_p);
                 let tolerance = RELATIVE_TOLERANCE * scale;
                 let rounding_band = ROUNDING_BAND * scale;
-                let smooth = next.iter().zip(&guess).zip(&current).all(|((z, g), w)| {
-                    modulus(z - g)
-                        <= TURN_TOLERANCE * modulus(g - w) + FLOOR_TOLERANCE * (modulus(*z) + scale)
-                });
+                let smooth = next
+                    .iter()
+                    .zip(&guess)
+                    .zip(&current)
+                    .all(|((&z, &g), &w)| predicted(z, g, w, scale));
                 let crossed = |(z, w): (&C64, &C64)| {
-                    (modulus(*z) > rounding_band || modulus(*w) > rounding_band)
-                        && (sign_with_tolerance(z.re, tolerance)
-                            != sign_with_tolerance(w.re, tolerance)
-                            || sign_with_tolerance(z.im, tolerance)
-                                != sign_with_tolerance(w.im, tolerance))
+                    (sign_with_tolerance(z.re, tolerance) != sign_with_tolerance(w.re, tolerance)
+                        || sign_with_tolerance(z.im, tolerance)
+                            != sign_with_tolerance(w.im, tolerance))
+                        && (modulus(*z) > rounding_band || modulus(*w) > rounding_band)
                 };
                 let crosses = match crossings {
                     Crossings::Refined => next.iter().zip(&current).any(crossed),
@@ -437,6 +440,22 @@ fn track(
     }
     Ok(out)
 }
+/// Whether the eigenvalue `z`, found where `guess` was extrapolated from
+/// the last sample's `last`, was predicted as [`TURN_TOLERANCE`] and
+/// [`FLOOR_TOLERANCE`] ask. Decided first without a square root, by the
+/// sum of the miss's parts (at least its modulus) against the largest
+/// part of each modulus on the right (at most it): on a smooth branch the
+/// miss is orders of magnitude inside the bound, and only a near call
+/// takes the moduli.
+fn predicted(z: C64, guess: C64, last: C64, scale: f64) -> bool {
+    let largest_part = |c: C64| c.re.abs().max(c.im.abs());
+    let miss = z - guess;
+    let bound = |size: fn(C64) -> f64| {
+        TURN_TOLERANCE * size(guess - last) + FLOOR_TOLERANCE * (size(z) + scale)
+    };
+    miss.re.abs() + miss.im.abs() <= bound(largest_part) || modulus(miss) <= bound(modulus)
+}
+
 /// Two eigenvalues this close to conjugate, relative to their size plus the
 /// frequency scale, are a pair (near a double root rounding parts a pair's
 /// computed roots by about the square root of the machine epsilon).
@@ -476,6 +495,35 @@ pub(crate) fn locus_until(
 mod tests {
     use super::*;
     use crate::model::PresetId;
+
+    /// The prediction test without square roots decides as the moduli do:
+    /// over misses from far inside the bound to far outside it, in every
+    /// direction, at every size of the eigenvalue against the scale.
+    #[test]
+    fn the_cheap_prediction_test_decides_as_the_moduli_do() {
+        let by_moduli = |z: C64, g: C64, w: C64, scale: f64| {
+            modulus(z - g)
+                <= TURN_TOLERANCE * modulus(g - w) + FLOOR_TOLERANCE * (modulus(z) + scale)
+        };
+        let mut checked = 0;
+        for k in 0..4000_u32 {
+            let t = f64::from(k);
+            let size = 10f64.powf((t * 0.37).sin() * 3.0);
+            let w = C64::from_polar(size, t * 0.91);
+            let g = w + C64::from_polar(size * 10f64.powf((t * 0.53).cos() * 2.0 - 3.0), t * 1.3);
+            let miss = modulus(g - w) * 10f64.powf((t * 0.29).sin() * 4.0 - 1.0);
+            let z = g + C64::from_polar(miss, t * 2.7);
+            let scale = 10f64.powf((t * 0.17).cos() * 2.0);
+            assert_eq!(
+                predicted(z, g, w, scale),
+                by_moduli(z, g, w, scale),
+                "{z} {g} {w}"
+            );
+            checked += usize::from(predicted(z, g, w, scale));
+        }
+        // Both outcomes were tried.
+        assert!((500..3500).contains(&checked), "{checked}");
+    }
 
     /// A chain's evenly spaced loads, computed ahead on three threads, hold
     /// exactly the eigenvalues of the Schur path at their loads (the

@@ -6,6 +6,7 @@ pub(super) mod along;
 mod characteristic;
 pub(super) mod critical;
 pub(super) mod crossing;
+mod dense;
 pub(super) mod hqr;
 pub(super) mod locus;
 pub(super) mod map;

@@ -1,13 +1,12 @@
 //! Eigenvalues of the quadratic pencil `lambda^2 M + lambda D + K`, any number
 //! of degrees of freedom, and the pencil as an affine function of the load.
-//! nalgebra's QR iteration serves only companions up to order 6 (the two-rod
-//! columns, bit for bit as first computed): it has no exceptional shifts and
-//! stalls on a long chain's imaginary pairs, so larger pencils go to faer's
-//! (or, for an undamped chain, to `hqr`).
 
-use nalgebra::{DMatrix, linalg::Schur};
+use nalgebra::DMatrix;
 
 use super::characteristic::CharacteristicPolynomial;
+use super::dense::{
+    NALGEBRA_MAX_ORDER, balance, companion, eigenvalues_from_squares, eigenvalues_of,
+};
 use crate::analysis::roots::{MAX_DEGREE, Poly, aberth};
 use crate::analysis::stability::beyond_resolution;
 use crate::analysis::{AnalysisError, C64};
@@ -45,151 +44,18 @@ pub(crate) fn cyclic_coordinates(stiffness: &DMatrix<f64>) -> Vec<usize> {
 
 /// The frequency scale of a pencil in 1/s.
 pub(crate) fn frequency_scale(lin: &LinearModel) -> f64 {
-    let mass = lin.mass.norm();
-    (lin.stiffness.norm() / mass).sqrt() + lin.damping.norm() / mass
+    scale_of_norms(lin.stiffness.norm(), lin.damping.norm(), lin.mass.norm())
 }
 
-/// The first-order companion matrix with the cyclic coordinates' positions
-/// removed: state `(q_i for non-cyclic i, q')`, size `2n - cyclic`.
-fn companion(lin: &LinearModel, cyclic: &[usize]) -> Option<DMatrix<f64>> {
-    let n = lin.mass.nrows();
-    let mass_inv = lin.mass.clone().cholesky()?.inverse();
-    let keep: Vec<usize> = (0..n).filter(|j| !cyclic.contains(j)).collect();
-    let kept = keep.len();
-    let minv_k = -&mass_inv * &lin.stiffness;
-    let minv_d = -&mass_inv * &lin.damping;
-    let mut a = DMatrix::zeros(kept + n, kept + n);
-    for (row, &j) in keep.iter().enumerate() {
-        a[(row, kept + j)] = 1.0;
-    }
-    for i in 0..n {
-        for (col, &j) in keep.iter().enumerate() {
-            a[(kept + i, col)] = minv_k[(i, j)];
-        }
-        for j in 0..n {
-            a[(kept + i, kept + j)] = minv_d[(i, j)];
-        }
-    }
-    Some(a)
-}
-
-/// Diagonal similarity scaling by powers of two (Parlett and Reinsch) so that
-/// rows and columns have comparable norms: a light roller's fast spin row
-/// would otherwise cost the slow eigenvalues their accuracy.
-fn balance(a: &mut DMatrix<f64>) {
-    const RADIX: f64 = 2.0;
-    let n = a.nrows();
-    for _sweep in 0..64 {
-        let mut changed = false;
-        for i in 0..n {
-            let (mut col, mut row) = (0.0, 0.0);
-            for j in (0..n).filter(|&j| j != i) {
-                col += a[(j, i)].abs();
-                row += a[(i, j)].abs();
-            }
-            if col == 0.0 || row == 0.0 {
-                continue;
-            }
-            let sum = col + row;
-            let mut f = 1.0;
-            while col < row / RADIX {
-                f *= RADIX;
-                col *= RADIX * RADIX;
-            }
-            while col > row * RADIX {
-                f /= RADIX;
-                col /= RADIX * RADIX;
-            }
-            if (col + row) / f < 0.95 * sum {
-                changed = true;
-                for j in 0..n {
-                    a[(i, j)] /= f;
-                    a[(j, i)] *= f;
-                }
-            }
-        }
-        if !changed {
-            break;
-        }
-    }
-}
-
-/// Eigenvalues of a real matrix by Schur decomposition, `None` if the QR
-/// iteration does not converge.
-fn schur_eigenvalues(a: DMatrix<f64>) -> Option<Vec<C64>> {
-    let schur = Schur::try_new(a, f64::EPSILON, 10_000)?;
-    let eigenvalues: Vec<C64> = schur.complex_eigenvalues().iter().copied().collect();
-    all_finite(eigenvalues)
-}
-
-/// Largest companion matrix given to nalgebra's QR iteration first (the
-/// two-rod columns and the roller, bit for bit as before); larger ones, and
-/// any it cannot finish, go to faer's, whose shifts do not stall on the
-/// many imaginary pairs of a long undamped chain.
-const NALGEBRA_MAX_ORDER: usize = 6;
-
-/// The eigenvalues of `a` by faer's real Hessenberg QR algorithm.
-fn faer_eigenvalues(a: &DMatrix<f64>) -> Option<Vec<C64>> {
-    let matrix = faer::Mat::from_fn(a.nrows(), a.ncols(), |i, j| a[(i, j)]);
-    let eigenvalues = matrix.eigenvalues().ok()?;
-    all_finite(
-        eigenvalues
-            .into_iter()
-            .map(|z| C64::new(z.re, z.im))
-            .collect(),
-    )
-}
-
-fn all_finite(eigenvalues: Vec<C64>) -> Option<Vec<C64>> {
-    eigenvalues
-        .iter()
-        .all(|z| z.re.is_finite() && z.im.is_finite())
-        .then_some(eigenvalues)
+/// The frequency scale from the Frobenius norms of K, D and M.
+fn scale_of_norms(stiffness: f64, damping: f64, mass: f64) -> f64 {
+    (stiffness / mass).sqrt() + damping / mass
 }
 
 /// `M^-1 K` of `lin` by a Cholesky solve; `None` when M is not positive
 /// definite.
 fn squares_matrix(lin: &LinearModel) -> Option<DMatrix<f64>> {
     Some(lin.mass.clone().cholesky()?.solve(&lin.stiffness))
-}
-
-/// The eigenvalues of an undamped pencil `lambda^2 M + K` of a long chain:
-/// `lambda = +/- sqrt(-mu)` for the eigenvalues mu of `a = M^-1 K`, a
-/// matrix of half the companion's order (balanced, then the double-shift QR
-/// iteration; faer's Schur decomposition where that does not converge).
-fn eigenvalues_from_squares(mut a: DMatrix<f64>) -> Option<Vec<C64>> {
-    balance(&mut a);
-    let squares = crate::analysis::hqr::eigenvalues(a.nrows(), |i, j| a[(i, j)])
-        .or_else(|| faer_eigenvalues(&a))?;
-    Some(
-        squares
-            .into_iter()
-            .flat_map(|mu| {
-                let root = (-mu).sqrt();
-                [root, -root]
-            })
-            .collect(),
-    )
-}
-
-/// The eigenvalues of the balanced companion matrix `balanced` (or, when
-/// no iteration finishes on it, of the unbalanced `a`).
-/// `bounded`: the EISPACK iteration first ([`crate::analysis::hqr`], at
-/// most 30 iterations an eigenvalue), for matrices whose modes span beyond
-/// resolution (see [`AffinePencil::new`]).
-fn eigenvalues_of(balanced: &DMatrix<f64>, a: &DMatrix<f64>, bounded: bool) -> Option<Vec<C64>> {
-    if bounded {
-        let bounded = crate::analysis::hqr::eigenvalues(balanced.nrows(), |i, j| balanced[(i, j)]);
-        if bounded.is_some() {
-            return bounded;
-        }
-    }
-    if balanced.nrows() > NALGEBRA_MAX_ORDER {
-        return faer_eigenvalues(balanced).or_else(|| faer_eigenvalues(a));
-    }
-    schur_eigenvalues(balanced.clone())
-        .or_else(|| faer_eigenvalues(balanced))
-        .or_else(|| schur_eigenvalues(a.clone()))
 }
 
 /// All eigenvalues of the pencil by a balanced real Schur decomposition of its
@@ -366,6 +232,9 @@ impl AffinePencil {
     /// # Errors
     /// See [`spectrum`].
     pub fn spectrum(&self, p: f64) -> Result<Spectrum, AnalysisError> {
+        if let Some(spectrum) = self.squares_spectrum(p) {
+            return spectrum;
+        }
         let lin = self.at(p);
         // An undamped pencil's squares' matrix from the products formed once.
         let squares = || match &self.squares {
@@ -385,6 +254,32 @@ impl AffinePencil {
             .extend(std::iter::repeat_n(C64::new(0.0, 0.0), extra));
         spectrum.structural_zeros = structural;
         Ok(spectrum)
+    }
+
+    /// [`Self::spectrum`] where it comes from the squares' matrix formed
+    /// once (see [`takes_squares`]), without the pencil's matrices at p:
+    /// only `K(p)`, for the general path's checks and the frequency scale,
+    /// which are the same here to the last bit (the damping is zero at a
+    /// finite load). `None` where the general path decides.
+    fn squares_spectrum(&self, p: f64) -> Option<Result<Spectrum, AnalysisError>> {
+        let [own, per_load] = self.squares.as_ref()?;
+        if !p.is_finite() || 2 * self.dof() <= NALGEBRA_MAX_ORDER {
+            return None;
+        }
+        let stiffness = &self.at_zero.stiffness + p * &self.per_unit_load.stiffness;
+        let finite = [&self.at_zero.mass, &stiffness]
+            .iter()
+            .all(|m| m.iter().all(|v| v.is_finite()));
+        if !finite || !cyclic_coordinates(&stiffness).is_empty() {
+            return None;
+        }
+        let eigenvalues = eigenvalues_from_squares(own + p * per_load)
+            .ok_or(AnalysisError::NotConverged { load: p });
+        Some(eigenvalues.map(|eigenvalues| Spectrum {
+            eigenvalues,
+            structural_zeros: self.structural_zeros(),
+            scale_per_s: scale_of_norms(stiffness.norm(), 0.0, self.norms.mass),
+        }))
     }
 
     /// `det(lambda^2 M + lambda D + K)` at load p for 2 or 3 degrees of
@@ -500,6 +395,7 @@ impl NormQuadratics {
 
 #[cfg(test)]
 mod tests {
+    use super::super::dense::faer_eigenvalues;
     use super::*;
     use crate::model::{Assignment, Key, PresetId, apply_assignments};
 

@@ -1,6 +1,8 @@
 //! A long chain's spectra at the locus's evenly spaced loads, computed a
 //! block at a time on the threads its pencil allows, ahead of the tracking.
 
+use std::sync::atomic::{AtomicUsize, Ordering};
+
 use crate::analysis::pencil::AffinePencil;
 use crate::analysis::{AnalysisError, C64};
 
@@ -44,34 +46,7 @@ impl Prefetched {
         if !(self.from..self.from + self.spectra.len()).contains(&index) {
             let end = (index + PREFETCH_PER_THREAD * self.threads).min(grid.len());
             let loads = &grid[index..end];
-            let spectrum = |p: f64| pencil.spectrum(p).map(|s| s.eigenvalues);
-            self.spectra = if self.threads < 2 || loads.len() < 2 {
-                loads.iter().map(|&p| spectrum(p)).collect()
-            } else {
-                let chunk = loads.len().div_ceil(self.threads);
-                std::thread::scope(|scope| {
-                    let workers: Vec<_> = loads
-                        .chunks(chunk)
-                        .map(|part| {
-                            let worker = scope.spawn(move || {
-                                part.iter().map(|&p| spectrum(p)).collect::<Vec<_>>()
-                            });
-                            (part, worker)
-                        })
-                        .collect();
-                    workers
-                        .into_iter()
-                        .flat_map(|(part, worker)| {
-                            // A worker that failed leaves its loads unanswered.
-                            worker.join().unwrap_or_else(|_| {
-                                part.iter()
-                                    .map(|&load| Err(AnalysisError::NotConverged { load }))
-                                    .collect()
-                            })
-                        })
-                        .collect()
-                })
-            };
+            self.spectra = spectra_on_threads(pencil, loads, self.threads);
             self.from = index;
         }
         match &self.spectra[index - self.from] {
@@ -79,4 +54,46 @@ impl Prefetched {
             Err(error) => Err(error.clone()),
         }
     }
+}
+
+/// The moving eigenvalues of `pencil` at each of `loads`, in order, on
+/// `threads` threads (the calling one among them), each taking the next
+/// load not yet taken: loads whose QR iterations take longer do not keep
+/// the others waiting.
+fn spectra_on_threads(
+    pencil: &AffinePencil,
+    loads: &[f64],
+    threads: usize,
+) -> Vec<Result<Vec<C64>, AnalysisError>> {
+    let spectrum = |p: f64| pencil.spectrum(p).map(|s| s.eigenvalues);
+    if threads < 2 || loads.len() < 2 {
+        return loads.iter().map(|&p| spectrum(p)).collect();
+    }
+    let next = AtomicUsize::new(0);
+    let work = || {
+        let mut done = Vec::new();
+        loop {
+            let i = next.fetch_add(1, Ordering::Relaxed);
+            let Some(&p) = loads.get(i) else {
+                return done;
+            };
+            done.push((i, spectrum(p)));
+        }
+    };
+    let mut spectra: Vec<Result<Vec<C64>, AnalysisError>> = loads
+        .iter()
+        .map(|&load| Err(AnalysisError::NotConverged { load }))
+        .collect();
+    std::thread::scope(|scope| {
+        let helpers: Vec<_> = (1..threads.min(loads.len()))
+            .map(|_| scope.spawn(work))
+            .collect();
+        let own = work();
+        // A helper that failed leaves its loads unanswered (the error above).
+        let helped = helpers.into_iter().filter_map(|helper| helper.join().ok());
+        for (i, result) in helped.flatten().chain(own) {
+            spectra[i] = result;
+        }
+    });
+    spectra
 }

@@ -180,6 +180,59 @@ fn conjugate_pairs(roots: &[C64]) -> Option<([C64; MAX_DEGREE], [Role; MAX_DEGRE
     Some((mirrored, roles))
 }
 
+/// Aberth's correction of estimate `i` of `roots`: the step to subtract
+/// from it and the squared distance to the nearest other estimate, or
+/// `None` when its residual is at the level of rounding (`noise` times the
+/// rounding bound: converged).
+fn correction(poly: &Poly, roots: &[C64], i: usize, noise: f64) -> Option<(C64, f64)> {
+    let z = roots[i];
+    let (value, slope, bound) = horner(poly, z);
+    if modulus(value) <= noise * bound {
+        return None;
+    }
+    // The repulsion of the other roots, and the square of the distance to
+    // the nearest.
+    let (repulsion, nearest_sqr) = roots.iter().enumerate().filter(|&(j, _)| j != i).fold(
+        (C64::new(0.0, 0.0), f64::INFINITY),
+        |(sum, nearest), (_, &w)| {
+            let d = z - w;
+            let d_sqr = d.norm_sqr();
+            (sum + d.conj() / d_sqr, nearest.min(d_sqr))
+        },
+    );
+    // Newton's step n = value / slope over (1 - n repulsion), with one
+    // division.
+    Some((value / (slope - value * repulsion), nearest_sqr))
+}
+
+/// [`correction`] of a real estimate among estimates that are real or in
+/// exactly conjugate pairs, in real arithmetic: the polynomial, its slope
+/// and the repulsion are real there (a pair's terms' imaginary parts
+/// cancel), at a third of the complex evaluation's cost.
+fn real_correction(poly: &Poly, roots: &[C64], i: usize, noise: f64) -> Option<(f64, f64)> {
+    let x = roots[i].re;
+    let coeffs = &poly.coeffs[..=poly.degree];
+    let (mut value, mut slope, mut bound) = (coeffs[poly.degree], 0.0, coeffs[poly.degree].abs());
+    for &c in coeffs[..poly.degree].iter().rev() {
+        slope = slope * x + value;
+        value = value * x + c;
+        bound = bound * x.abs() + c.abs();
+    }
+    if value.abs() <= noise * bound {
+        return None;
+    }
+    let (mut repulsion, mut nearest_sqr) = (0.0, f64::INFINITY);
+    for (j, w) in roots.iter().enumerate() {
+        if j != i {
+            let d = x - w.re;
+            let d_sqr = d * d + w.im * w.im;
+            repulsion += d / d_sqr;
+            nearest_sqr = nearest_sqr.min(d_sqr);
+        }
+    }
+    Some((value / (slope - value * repulsion), nearest_sqr))
+}
+
 /// Aberth-Ehrlich iteration of the estimates whose `roles` say so (see
 /// [`aberth`]); false without convergence in `max_iterations`, or when a
 /// pair's upper root leaves the upper half-plane.
@@ -199,25 +252,17 @@ fn iterate(poly: &Poly, roots: &mut [C64], roles: &[Role], max_iterations: usize
                 continue;
             }
             let z = roots[i];
-            let (value, slope, bound) = horner(poly, z);
-            if modulus(value) <= noise * bound {
+            let correction = if roles[i] == Role::Real {
+                real_correction(poly, roots, i, noise)
+                    .map(|(step, nearest_sqr)| (C64::new(step, 0.0), nearest_sqr))
+            } else {
+                correction(poly, roots, i, noise)
+            };
+            let Some((step, nearest_sqr)) = correction else {
                 converged[i] = true;
                 continue;
-            }
+            };
             done = false;
-            // The repulsion of the other roots, and the square of the
-            // distance to the nearest.
-            let (repulsion, nearest_sqr) = roots.iter().enumerate().filter(|&(j, _)| j != i).fold(
-                (C64::new(0.0, 0.0), f64::INFINITY),
-                |(sum, nearest), (_, &w)| {
-                    let d = z - w;
-                    let d_sqr = d.norm_sqr();
-                    (sum + d.conj() / d_sqr, nearest.min(d_sqr))
-                },
-            );
-            // Newton's step n = value / slope over (1 - n repulsion), with
-            // one division.
-            let step = value / (slope - value * repulsion);
             if !(step.re.is_finite() && step.im.is_finite()) {
                 return false;
             }
@@ -282,6 +327,42 @@ mod tests {
                     .fold(f64::INFINITY, f64::min)
             })
             .fold(0.0, f64::max)
+    }
+
+    /// The real arithmetic's correction of a real estimate is the complex
+    /// one's, to rounding, with estimates real or in exact pairs around it:
+    /// the same step (a few units in the last place apart), the same nearest
+    /// distance, and the same verdict at a root.
+    #[test]
+    fn a_real_estimate_s_correction_is_the_complex_one() {
+        let exact = [
+            C64::new(-0.3, 2.1),
+            C64::new(-0.3, -2.1),
+            C64::new(0.7, 0.0),
+            C64::new(-1.9, 0.0),
+            C64::new(0.02, 0.4),
+            C64::new(0.02, -0.4),
+        ];
+        let poly = poly_with_roots(&exact);
+        let noise = 12.0 * f64::EPSILON;
+        for offset in [3e-2, -1e-4, 2e-7, 1e-11] {
+            let mut estimates = exact;
+            estimates[2].re += offset;
+            estimates[0] += C64::new(1e-3, -2e-3);
+            estimates[1] = estimates[0].conj();
+            let (step, nearest_sqr) = real_correction(&poly, &estimates, 2, noise).unwrap();
+            let (complex, complex_nearest) = correction(&poly, &estimates, 2, noise).unwrap();
+            assert!(complex.im.abs() <= 1e-15 * complex.re.abs(), "{complex}");
+            assert!(
+                (step - complex.re).abs() <= 8.0 * f64::EPSILON * step.abs(),
+                "{offset}: {step} against {complex}"
+            );
+            assert!((nearest_sqr - complex_nearest).abs() <= 4.0 * f64::EPSILON * nearest_sqr);
+            // The step moves the estimate most of the way to the root.
+            assert!((estimates[2].re - step - 0.7).abs() <= 1e-2 * offset.abs());
+        }
+        assert_eq!(real_correction(&poly, &exact, 3, noise), None);
+        assert_eq!(correction(&poly, &exact, 3, noise), None);
     }
 
     /// Two pairs and a real root, from estimates conjugate to 1e-12 (as a
