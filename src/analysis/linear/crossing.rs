@@ -290,6 +290,12 @@ fn polish_crossing(
     half_width: f64,
     (load_min, load_max): (f64, f64),
 ) -> Result<Option<f64>, AnalysisError> {
+    // An undamped pencil's eigenvalues come in pairs +-lambda: no load has
+    // a strictly damped side to bracket a root with (the widening below
+    // would go on to the range's end, a spectrum at each step, for none).
+    if pencil.undamped() {
+        return Ok(None);
+    }
     let toward_unstable = match (bracket.sa, bracket.sb) {
         (State::Stable, State::Stable) => return Ok(None),
         (State::Stable, _) => 1.0,

@@ -6,23 +6,11 @@ use crate::analysis::roots::{MAX_DEGREE, modulus};
 use crate::analysis::stability::RELATIVE_TOLERANCE;
 use crate::analysis::{AnalysisError, C64};
 
+pub(crate) use super::grid::load_resolution;
+pub use super::grid::{LARGEST_LOAD, MAX_SAMPLES, check_largest_load, load_grid};
 pub(in crate::analysis) use super::matching::eigenvalues_near;
 use super::matching::{assign, assignment};
-use super::prefetch::Prefetched;
-
-/// Neighbouring grid loads must differ by at least this many units of
-/// `f64::EPSILON` relative to the range's end, so that every load is distinct.
-const RESOLVED_STEPS: f64 = 4.0;
-
-/// The smallest step between distinct loads of a range ending at `load_max`.
-/// Never below the smallest normal number: subnormal loads carry too few
-/// digits to be told apart (and slow every operation on some CPUs).
-pub(crate) fn load_resolution(load_max: f64) -> f64 {
-    (RESOLVED_STEPS * f64::EPSILON * load_max.abs()).max(f64::MIN_POSITIVE)
-}
-
-/// Largest number of evenly spaced loads a locus accepts.
-pub const MAX_SAMPLES: usize = 1_000_000;
+use super::prefetch::{Prefetched, with_prefetched};
 
 /// A step is accepted when the linear prediction misses each eigenvalue by
 /// less than this fraction of the step's own length: the polyline then turns
@@ -114,87 +102,6 @@ impl Locus {
             .map(|branch| branch[i])
             .collect()
     }
-}
-
-/// The largest load a range may reach, as for the load itself (`--set load`).
-pub const LARGEST_LOAD: f64 = crate::model::LARGEST_DERIVED;
-
-/// Refuses a range reaching past [`LARGEST_LOAD`]: beyond it the column's
-/// stiffness is far below rounding and the eigenvalues are noise in scale.
-///
-/// # Errors
-/// `load_max` above [`LARGEST_LOAD`].
-pub fn check_largest_load(load_max: f64) -> Result<(), AnalysisError> {
-    if load_max > LARGEST_LOAD {
-        return Err(AnalysisError::BadRange {
-            what: "load-max",
-            value: load_max,
-            allowed: "must be at most 1e150, the largest load the analysis resolves",
-        });
-    }
-    Ok(())
-}
-
-/// The evenly spaced loads from `min` to `max` inclusive.
-///
-/// # Errors
-/// Non-finite or negative bounds, `max < min`, no samples or too many (also
-/// more than the range can hold distinct in f64), or one sample over a range.
-pub fn load_grid(min: f64, max: f64, samples: usize) -> Result<Vec<f64>, AnalysisError> {
-    let bad = |what, value, allowed| {
-        Err(AnalysisError::BadRange {
-            what,
-            value,
-            allowed,
-        })
-    };
-    if !(min.is_finite() && min >= 0.0) {
-        return bad("load-min", min, "must be a finite load >= 0");
-    }
-    if !(max.is_finite() && max >= min) {
-        return bad("load-max", max, "must be finite and >= load-min");
-    }
-    if samples == 0 || samples > MAX_SAMPLES {
-        #[expect(clippy::cast_precision_loss, reason = "a count shown in a message")]
-        return bad("samples", samples as f64, "must be between 1 and 1000000");
-    }
-    if samples == 1 {
-        return if min == max {
-            Ok(vec![min])
-        } else {
-            bad(
-                "samples",
-                1.0,
-                "must be >= 2 unless load-min equals load-max",
-            )
-        };
-    }
-    #[expect(
-        clippy::cast_precision_loss,
-        reason = "sample counts are far below 2^52"
-    )]
-    let step = (max - min) / (samples - 1) as f64;
-    if step < load_resolution(max) {
-        #[expect(clippy::cast_precision_loss, reason = "a count shown in a message")]
-        return bad(
-            "samples",
-            samples as f64,
-            "too many for so narrow a range: neighbouring loads would not be distinct in double precision (use fewer samples or a wider range)",
-        );
-    }
-    #[expect(
-        clippy::cast_precision_loss,
-        reason = "sample counts are far below 2^52"
-    )]
-    Ok((0..samples)
-        .map(|i| {
-            if i + 1 == samples {
-                max
-            } else {
-                min + step * i as f64
-            }
-        })
-        .collect())
 }
 
 /// -1, 0 or 1 with a dead band of `tolerance` around zero.
@@ -339,107 +246,118 @@ fn track(
     let mut earlier: Option<(f64, Vec<C64>)> = None;
     let mut step = grid.get(1).map_or(0.0, |g| g - grid[0]);
     let (mut guess, mut next) = (Vec::new(), Vec::new());
-    let mut prefetched = (current.len() > MAX_DEGREE).then(|| Prefetched::new(pencil.threads()));
-    for (index, &target) in grid.iter().enumerate().skip(1) {
-        while p < target {
-            let next_p = loop {
-                // Once the refinement's budget is spent: the evenly spaced loads only.
-                let trial = if refinement_left == 0 {
-                    target - p
-                } else {
-                    step.max(min_step).min(target - p)
-                };
-                let next_p = if trial >= target - p {
-                    target
-                } else {
-                    p + trial
-                };
-                // The guess: a linear extrapolation from the last two samples.
-                guess.clear();
-                match &previous {
-                    Some((p0, z0)) => {
-                        let t = (next_p - p) / (p - p0);
-                        guess.extend(current.iter().zip(z0).map(|(&z, &w)| z + (z - w) * t));
+    // The rest of the loads, with a long chain's spectra computed ahead.
+    let chain = current.len() > MAX_DEGREE;
+    let run = |mut prefetched: Option<&mut Prefetched<'_>>| -> Result<Locus, AnalysisError> {
+        for (index, &target) in grid.iter().enumerate().skip(1) {
+            while p < target {
+                let next_p = loop {
+                    // Once the refinement's budget is spent: the evenly spaced loads only.
+                    let trial = if refinement_left == 0 {
+                        target - p
+                    } else {
+                        step.max(min_step).min(target - p)
+                    };
+                    let next_p = if trial >= target - p {
+                        target
+                    } else {
+                        p + trial
+                    };
+                    // The guess: a linear extrapolation from the last two samples.
+                    guess.clear();
+                    match &previous {
+                        Some((p0, z0)) => {
+                            let t = (next_p - p) / (p - p0);
+                            guess.extend(current.iter().zip(z0).map(|(&z, &w)| z + (z - w) * t));
+                        }
+                        None => guess.extend_from_slice(&current),
                     }
-                    None => guess.extend_from_slice(&current),
-                }
-                // Aberth's start: a quadratic extrapolation from the last
-                // three, a digit or two closer on a smooth branch, which
-                // saves an iteration. (The Schur path's eigenvalues are
-                // assigned to the linear guess, which rounding moves less.)
-                next.clone_from(&guess);
-                if let (true, Some((p1, z1)), Some((p2, z2))) =
-                    (current.len() <= MAX_DEGREE, &previous, &earlier)
-                {
-                    let [a, b, c] = quadratic_weights([p, *p1, *p2], next_p);
-                    for (((start, &z0), &z1), &z2) in next.iter_mut().zip(&current).zip(z1).zip(z2)
+                    // Aberth's start: a quadratic extrapolation from the last
+                    // three, a digit or two closer on a smooth branch, which
+                    // saves an iteration. (The Schur path's eigenvalues are
+                    // assigned to the linear guess, which rounding moves less.)
+                    next.clone_from(&guess);
+                    if let (true, Some((p1, z1)), Some((p2, z2))) =
+                        (current.len() <= MAX_DEGREE, &previous, &earlier)
                     {
-                        *start = z0 * a + z1 * b + z2 * c;
-                    }
-                }
-                match prefetched.as_mut() {
-                    Some(held) if next_p == target => {
-                        next = assign(held.at(pencil, &grid, index)?, &guess);
-                    }
-                    _ => eigenvalues_near(pencil, next_p, &mut next)?,
-                }
-                let scale = pencil.scale_per_s(next_p);
-                let tolerance = RELATIVE_TOLERANCE * scale;
-                let rounding_band = ROUNDING_BAND * scale;
-                let smooth = next
-                    .iter()
-                    .zip(&guess)
-                    .zip(&current)
-                    .all(|((&z, &g), &w)| predicted(z, g, w, scale));
-                let crossed = |(z, w): (&C64, &C64)| {
-                    (sign_with_tolerance(z.re, tolerance) != sign_with_tolerance(w.re, tolerance)
-                        || sign_with_tolerance(z.im, tolerance)
-                            != sign_with_tolerance(w.im, tolerance))
-                        && (modulus(*z) > rounding_band || modulus(*w) > rounding_band)
-                };
-                let crosses = match crossings {
-                    Crossings::Refined => next.iter().zip(&current).any(crossed),
-                    Crossings::Bracketed => {
-                        let mut which =
-                            (0..next.len()).filter(|&b| crossed((&next[b], &current[b])));
-                        match (which.next(), which.next(), which.next()) {
-                            (None | Some(_), None, _) => false,
-                            (Some(a), Some(b), None) => {
-                                !(conjugate(next[a], next[b], scale)
-                                    || conjugate(current[a], current[b], scale))
-                            }
-                            _ => true,
+                        let [a, b, c] = quadratic_weights([p, *p1, *p2], next_p);
+                        for (((start, &z0), &z1), &z2) in
+                            next.iter_mut().zip(&current).zip(z1).zip(z2)
+                        {
+                            *start = z0 * a + z1 * b + z2 * c;
                         }
                     }
+                    match prefetched.as_mut() {
+                        Some(held) if next_p == target => {
+                            next = assign(held.at(index)?, &guess);
+                        }
+                        _ => eigenvalues_near(pencil, next_p, &mut next)?,
+                    }
+                    let scale = pencil.scale_per_s(next_p);
+                    let tolerance = RELATIVE_TOLERANCE * scale;
+                    let rounding_band = ROUNDING_BAND * scale;
+                    let smooth = next
+                        .iter()
+                        .zip(&guess)
+                        .zip(&current)
+                        .all(|((&z, &g), &w)| predicted(z, g, w, scale));
+                    let crossed = |(z, w): (&C64, &C64)| {
+                        (sign_with_tolerance(z.re, tolerance)
+                            != sign_with_tolerance(w.re, tolerance)
+                            || sign_with_tolerance(z.im, tolerance)
+                                != sign_with_tolerance(w.im, tolerance))
+                            && (modulus(*z) > rounding_band || modulus(*w) > rounding_band)
+                    };
+                    let crosses = match crossings {
+                        Crossings::Refined => next.iter().zip(&current).any(crossed),
+                        Crossings::Bracketed => {
+                            let mut which =
+                                (0..next.len()).filter(|&b| crossed((&next[b], &current[b])));
+                            match (which.next(), which.next(), which.next()) {
+                                (None | Some(_), None, _) => false,
+                                (Some(a), Some(b), None) => {
+                                    !(conjugate(next[a], next[b], scale)
+                                        || conjugate(current[a], current[b], scale))
+                                }
+                                _ => true,
+                            }
+                        }
+                    };
+                    if (smooth && !crosses) || trial <= min_step || refinement_left == 0 {
+                        step = if smooth { 2.0 * trial } else { trial };
+                        break next_p;
+                    }
+                    step = trial / 2.0;
                 };
-                if (smooth && !crosses) || trial <= min_step || refinement_left == 0 {
-                    step = if smooth { 2.0 * trial } else { trial };
-                    break next_p;
+                let on_grid = next_p == target;
+                if !on_grid {
+                    refinement_left = refinement_left.saturating_sub(1);
+                    if refinement_left == 0 && out.refinement_cut_at.is_none() {
+                        out.refinement_cut_at = Some(next_p);
+                    }
                 }
-                step = trial / 2.0;
-            };
-            let on_grid = next_p == target;
-            if !on_grid {
-                refinement_left = refinement_left.saturating_sub(1);
-                if refinement_left == 0 && out.refinement_cut_at.is_none() {
-                    out.refinement_cut_at = Some(next_p);
+                push(&mut out, next_p, on_grid, &next);
+                if on_grid && !hand_on(index, next_p, &next, out.branches.len()) {
+                    return Ok(out);
                 }
+                // The samples rotate through three buffers: no allocation per step.
+                let mut older = earlier.take().map_or_else(Vec::new, |(_, z)| z);
+                earlier = previous.take();
+                std::mem::swap(&mut older, &mut current);
+                std::mem::swap(&mut current, &mut next);
+                previous = Some((p, older));
+                p = next_p;
             }
-            push(&mut out, next_p, on_grid, &next);
-            if on_grid && !hand_on(index, next_p, &next, out.branches.len()) {
-                return Ok(out);
-            }
-            // The samples rotate through three buffers: no allocation per step.
-            let mut older = earlier.take().map_or_else(Vec::new, |(_, z)| z);
-            earlier = previous.take();
-            std::mem::swap(&mut older, &mut current);
-            std::mem::swap(&mut current, &mut next);
-            previous = Some((p, older));
-            p = next_p;
         }
+        Ok(out)
+    };
+    if chain {
+        with_prefetched(pencil, &grid, |prefetched| run(Some(prefetched)))
+    } else {
+        run(None)
     }
-    Ok(out)
 }
+
 /// Whether the eigenvalue `z`, found where `guess` was extrapolated from
 /// the last sample's `last`, was predicted as [`TURN_TOLERANCE`] and
 /// [`FLOOR_TOLERANCE`] ask. Decided first without a square root, by the

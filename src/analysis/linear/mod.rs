@@ -7,6 +7,7 @@ mod characteristic;
 pub(super) mod critical;
 pub(super) mod crossing;
 mod dense;
+mod grid;
 pub(super) mod hqr;
 pub(super) mod locus;
 pub(super) mod map;

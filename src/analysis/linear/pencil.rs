@@ -134,6 +134,8 @@ pub struct AffinePencil {
     /// Whether the spectra take the bounded iteration first (see
     /// [`Self::new`]).
     bounded: bool,
+    /// No damping at any load.
+    undamped: bool,
 }
 
 impl AffinePencil {
@@ -178,6 +180,7 @@ impl AffinePencil {
             natural_load_max: model.analysis_max_p(),
             threads: 1,
             bounded: false,
+            undamped,
         };
         // A chain whose modes span beyond what rounding resolves (a first
         // joint's damper of 1e149 on 64 rods): faer's Schur decomposition,
@@ -195,6 +198,12 @@ impl AffinePencil {
                 .is_ok_and(|spectrum| beyond_resolution(&spectrum.eigenvalues));
         }
         Ok(pencil)
+    }
+
+    /// Whether the pencil has no damping at any load.
+    #[must_use]
+    pub fn undamped(&self) -> bool {
+        self.undamped
     }
 
     /// Degrees of freedom of the pencil.

@@ -1,99 +1,182 @@
-//! A long chain's spectra at the locus's evenly spaced loads, computed a
-//! block at a time on the threads its pencil allows, ahead of the tracking.
+//! A long chain's spectra at the locus's evenly spaced loads, computed
+//! ahead of the tracking on the threads its pencil allows, while the
+//! tracking goes on.
 
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::{Mutex, PoisonError};
+use std::time::Duration;
 
 use crate::analysis::pencil::AffinePencil;
 use crate::analysis::{AnalysisError, C64};
 
-/// Evenly spaced loads whose spectra are computed together, on the pencil's threads,
-/// ahead of the tracking (per thread): a long chain's eigenvalues come from
-/// the QR iteration, about 50 µs each at 32 rods, and long blocks keep the
-/// threads' start and the wait for the slower one small beside them.
+/// Evenly spaced loads a helper may compute ahead of the tracking (per
+/// thread): a long chain's eigenvalues come from the QR iteration, about
+/// 50 µs each at 32 rods, and the tracking of a load takes a few µs, so
+/// this keeps the helpers busy and bounds the spectra held.
 const PREFETCH_PER_THREAD: usize = 128;
+
+/// How long a helper that is that far ahead waits before looking again.
+const AHEAD_PAUSE: Duration = Duration::from_micros(100);
+
+type Eigenvalues = Result<Vec<C64>, AnalysisError>;
+
+/// What the tracking and its helpers share: the loads, which of them are
+/// taken, and the spectra computed and not yet read.
+struct Shared<'a> {
+    pencil: &'a AffinePencil,
+    grid: &'a [f64],
+    /// The first grid index no thread has taken.
+    next: AtomicUsize,
+    /// The grid index the tracking asked for last.
+    reached: AtomicUsize,
+    /// Helpers still running (one that panicked is not).
+    helpers: AtomicUsize,
+    /// The tracking has ended.
+    stop: AtomicBool,
+    spectra: Vec<Mutex<Option<Eigenvalues>>>,
+}
+
+impl Shared<'_> {
+    /// How far past the tracking's load the loads may be taken.
+    fn ahead(&self) -> usize {
+        PREFETCH_PER_THREAD * self.pencil.threads()
+    }
+
+    /// Takes the next load not yet taken (none beyond `limit`), or `None`.
+    fn take(&self, limit: usize) -> Option<usize> {
+        let mut index = self.next.load(Ordering::Acquire);
+        while index < self.grid.len().min(limit + 1) {
+            match self.next.compare_exchange_weak(
+                index,
+                index + 1,
+                Ordering::AcqRel,
+                Ordering::Acquire,
+            ) {
+                Ok(_) => return Some(index),
+                Err(now) => index = now,
+            }
+        }
+        None
+    }
+
+    fn compute(&self, index: usize) -> Eigenvalues {
+        self.pencil
+            .spectrum(self.grid[index])
+            .map(|spectrum| spectrum.eigenvalues)
+    }
+
+    fn slot(&self, index: usize) -> std::sync::MutexGuard<'_, Option<Eigenvalues>> {
+        self.spectra[index]
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+    }
+
+    /// A helper's work: the next load, while the tracking goes on.
+    fn help(&self) {
+        while !self.stop.load(Ordering::Acquire)
+            && self.next.load(Ordering::Acquire) < self.grid.len()
+        {
+            let limit = self.reached.load(Ordering::Acquire) + self.ahead();
+            match self.take(limit) {
+                Some(index) => *self.slot(index) = Some(self.compute(index)),
+                None => std::thread::sleep(AHEAD_PAUSE),
+            }
+        }
+    }
+}
+
+/// Counts a helper out when it ends, by return or by panic.
+struct Leaving<'a>(&'a AtomicUsize);
+
+impl Drop for Leaving<'_> {
+    fn drop(&mut self) {
+        self.0.fetch_sub(1, Ordering::AcqRel);
+    }
+}
 
 /// The spectra of the evenly spaced loads of a locus whose eigenvalues all
 /// come from the Schur path (more than [`MAX_DEGREE`](crate::analysis::roots::MAX_DEGREE) of them: no
-/// characteristic polynomial), computed a block at a time on the pencil's threads.
-/// The tracking assigns them exactly as [`eigenvalues_near`](super::matching::eigenvalues_near) would, so the
-/// locus is the same to the last bit; an error is returned only when its
-/// load is reached.
-pub(in crate::analysis) struct Prefetched {
-    threads: usize,
-    /// The grid index of `spectra[0]`.
-    from: usize,
-    spectra: Vec<Result<Vec<C64>, AnalysisError>>,
+/// characteristic polynomial), computed ahead by helper threads (the
+/// pencil's threads less one) while the tracking asks for them in order;
+/// the tracking computes loads too while it waits. Each load's spectrum is
+/// the same whichever thread computes it, and the tracking assigns them
+/// exactly as [`eigenvalues_near`](super::matching::eigenvalues_near)
+/// would, so the locus is the same to the last bit; an error is returned
+/// only when its load is reached.
+pub(in crate::analysis) struct Prefetched<'a> {
+    shared: &'a Shared<'a>,
+    /// The last load asked for and its spectrum (a step may reach a load
+    /// again after halving).
+    held: Option<(usize, Eigenvalues)>,
 }
 
-impl Prefetched {
-    /// Spectra computed on `threads` threads.
-    pub(in crate::analysis) fn new(threads: usize) -> Self {
-        Self {
-            threads,
-            from: 0,
-            spectra: Vec::new(),
-        }
+impl Prefetched<'_> {
+    /// The moving eigenvalues at `grid[index]` (asked for in increasing
+    /// order).
+    pub(in crate::analysis) fn at(&mut self, index: usize) -> Result<&[C64], AnalysisError> {
+        let held = match self.held.take() {
+            Some((i, eigenvalues)) if i == index => (i, eigenvalues),
+            _ => (index, self.wait_for(index)),
+        };
+        let (_, eigenvalues) = self.held.insert(held);
+        eigenvalues.as_deref().map_err(Clone::clone)
     }
 
-    /// The moving eigenvalues at `grid[index]`, computing the block that
-    /// starts there when it is not held.
-    pub(in crate::analysis) fn at(
-        &mut self,
-        pencil: &AffinePencil,
-        grid: &[f64],
-        index: usize,
-    ) -> Result<&[C64], AnalysisError> {
-        if !(self.from..self.from + self.spectra.len()).contains(&index) {
-            let end = (index + PREFETCH_PER_THREAD * self.threads).min(grid.len());
-            let loads = &grid[index..end];
-            self.spectra = spectra_on_threads(pencil, loads, self.threads);
-            self.from = index;
-        }
-        match &self.spectra[index - self.from] {
-            Ok(eigenvalues) => Ok(eigenvalues),
-            Err(error) => Err(error.clone()),
-        }
-    }
-}
-
-/// The moving eigenvalues of `pencil` at each of `loads`, in order, on
-/// `threads` threads (the calling one among them), each taking the next
-/// load not yet taken: loads whose QR iterations take longer do not keep
-/// the others waiting.
-fn spectra_on_threads(
-    pencil: &AffinePencil,
-    loads: &[f64],
-    threads: usize,
-) -> Vec<Result<Vec<C64>, AnalysisError>> {
-    let spectrum = |p: f64| pencil.spectrum(p).map(|s| s.eigenvalues);
-    if threads < 2 || loads.len() < 2 {
-        return loads.iter().map(|&p| spectrum(p)).collect();
-    }
-    let next = AtomicUsize::new(0);
-    let work = || {
-        let mut done = Vec::new();
+    /// The spectrum at `grid[index]`: computed by a helper, or here (that
+    /// load, or loads ahead while a helper finishes it).
+    fn wait_for(&self, index: usize) -> Eigenvalues {
+        let shared = self.shared;
+        shared.reached.store(index, Ordering::Release);
         loop {
-            let i = next.fetch_add(1, Ordering::Relaxed);
-            let Some(&p) = loads.get(i) else {
-                return done;
-            };
-            done.push((i, spectrum(p)));
+            if let Some(eigenvalues) = shared.slot(index).take() {
+                return eigenvalues;
+            }
+            match shared.take(index + shared.ahead()) {
+                Some(taken) if taken == index => return shared.compute(index),
+                Some(taken) => *shared.slot(taken) = Some(shared.compute(taken)),
+                // Taken by a helper that has gone (a panic): computed here.
+                None if shared.helpers.load(Ordering::Acquire) == 0 => {
+                    if let Some(eigenvalues) = shared.slot(index).take() {
+                        return eigenvalues;
+                    }
+                    return shared.compute(index);
+                }
+                None => std::thread::yield_now(),
+            }
         }
+    }
+}
+
+/// Runs `track` with the spectra of `grid` (from index 1 on) prefetched on
+/// the pencil's threads, the helpers stopped when it returns.
+pub(in crate::analysis) fn with_prefetched<R>(
+    pencil: &AffinePencil,
+    grid: &[f64],
+    track: impl FnOnce(&mut Prefetched<'_>) -> R,
+) -> R {
+    let helpers = pencil.threads().saturating_sub(1).min(grid.len());
+    let shared = Shared {
+        pencil,
+        grid,
+        next: AtomicUsize::new(1),
+        reached: AtomicUsize::new(1),
+        helpers: AtomicUsize::new(helpers),
+        stop: AtomicBool::new(false),
+        spectra: grid.iter().map(|_| Mutex::new(None)).collect(),
     };
-    let mut spectra: Vec<Result<Vec<C64>, AnalysisError>> = loads
-        .iter()
-        .map(|&load| Err(AnalysisError::NotConverged { load }))
-        .collect();
     std::thread::scope(|scope| {
-        let helpers: Vec<_> = (1..threads.min(loads.len()))
-            .map(|_| scope.spawn(work))
-            .collect();
-        let own = work();
-        // A helper that failed leaves its loads unanswered (the error above).
-        let helped = helpers.into_iter().filter_map(|helper| helper.join().ok());
-        for (i, result) in helped.flatten().chain(own) {
-            spectra[i] = result;
+        for _ in 0..helpers {
+            scope.spawn(|| {
+                let _leaving = Leaving(&shared.helpers);
+                shared.help();
+            });
         }
-    });
-    spectra
+        let mut prefetched = Prefetched {
+            shared: &shared,
+            held: None,
+        };
+        let result = track(&mut prefetched);
+        shared.stop.store(true, Ordering::Release);
+        result
+    })
 }
