@@ -156,7 +156,7 @@ const LINES: [(&str, Figure, &str, &str, Option<Target>); 26] = [
         |r| r.locus_speedup_vs_numpy.unwrap_or(f64::NAN),
         "x",
         "numpy per pencil over the locus per load",
-        Some(Target::AtLeast(10.0)),
+        Some(Target::AtLeast(12.0)),
     ),
     (
         "numpy_chain32_scan_ms",
@@ -170,7 +170,7 @@ const LINES: [(&str, Figure, &str, &str, Option<Target>); 26] = [
         |r| r.critical_chain32_over_numpy.unwrap_or(f64::NAN),
         "x",
         "every change of stability of the chain over numpy's first one",
-        Some(Target::AtMost(1.0)),
+        Some(Target::AtMost(0.7)),
     ),
     (
         "window_fps",
