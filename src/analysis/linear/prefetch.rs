@@ -85,12 +85,12 @@ impl Shared<'_> {
     }
 }
 
-/// Counts a helper out when it ends, by return or by panic.
-struct Leaving<'a>(&'a AtomicUsize);
+/// Runs its closure when dropped: on return and on a panic's unwinding.
+struct OnDrop<F: FnMut()>(F);
 
-impl Drop for Leaving<'_> {
+impl<F: FnMut()> Drop for OnDrop<F> {
     fn drop(&mut self) {
-        self.0.fetch_sub(1, Ordering::AcqRel);
+        (self.0)();
     }
 }
 
@@ -167,16 +167,49 @@ pub(in crate::analysis) fn with_prefetched<R>(
     std::thread::scope(|scope| {
         for _ in 0..helpers {
             scope.spawn(|| {
-                let _leaving = Leaving(&shared.helpers);
+                // Counted out however it ends.
+                let _leaving = OnDrop(|| {
+                    shared.helpers.fetch_sub(1, Ordering::AcqRel);
+                });
                 shared.help();
             });
         }
-        let mut prefetched = Prefetched {
+        // The helpers stop however the tracking ends (a panic too: else
+        // they would wait for it forever and the scope would never close).
+        let _stopping = OnDrop(|| shared.stop.store(true, Ordering::Release));
+        track(&mut Prefetched {
             shared: &shared,
             held: None,
-        };
-        let result = track(&mut prefetched);
-        shared.stop.store(true, Ordering::Release);
-        result
+        })
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::analysis::load_grid;
+    use crate::model::PresetId;
+
+    /// However the tracking ends, the helpers stop and the scope closes:
+    /// a tracking that reads one load of 2000 and returns, and one that
+    /// panics after it (its helpers would otherwise wait for it forever).
+    /// The load read is the spectrum computed on its own.
+    #[test]
+    fn the_helpers_stop_however_the_tracking_ends() {
+        let mut model = PresetId::UniformRods.model();
+        model.column.rods = 8;
+        let pencil = AffinePencil::new(&model).unwrap().with_threads(3);
+        let grid = load_grid(0.0, model.analysis_max_p(), 2000).unwrap();
+        let read = with_prefetched(&pencil, &grid, |prefetched| {
+            prefetched.at(5).map(<[C64]>::to_vec)
+        });
+        assert_eq!(read.unwrap(), pencil.spectrum(grid[5]).unwrap().eigenvalues);
+        let panicked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            with_prefetched(&pencil, &grid, |prefetched| {
+                prefetched.at(1).unwrap();
+                panic!("the tracking fails");
+            })
+        }));
+        assert!(panicked.is_err());
+    }
 }
