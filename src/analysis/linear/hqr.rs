@@ -85,11 +85,15 @@ fn to_hessenberg(n: usize, a: &mut [f64]) {
             continue;
         }
         // The multiplier of each row below m (zero: the row is left alone).
-        let y = &mut multipliers;
-        y.fill(0.0);
-        for (y, &v) in y.iter_mut().zip(&a[(m - 1) * n..m * n]).skip(m + 1) {
+        multipliers.fill(0.0);
+        for (y, &v) in multipliers
+            .iter_mut()
+            .zip(&a[(m - 1) * n..m * n])
+            .skip(m + 1)
+        {
             *y = v / pivot;
         }
+        let y = &multipliers;
         for i in m + 1..n {
             let (left, right) = a.split_at_mut(i * n);
             let (before_m, from_m) = left.split_at_mut(m * n);

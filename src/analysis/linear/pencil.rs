@@ -244,12 +244,10 @@ impl AffinePencil {
         if let Some(spectrum) = self.squares_spectrum(p) {
             return spectrum;
         }
+        // The products formed once serve wherever the squares' matrix is
+        // taken with them (`squares_spectrum`); here it is solved for.
         let lin = self.at(p);
-        // An undamped pencil's squares' matrix from the products formed once.
-        let squares = || match &self.squares {
-            Some([own, per_load]) => Some(own + p * per_load),
-            None => squares_matrix(&lin),
-        };
+        let squares = || squares_matrix(&lin);
         let mut spectrum = match spectrum_from(&lin, p, squares, self.bounded) {
             Ok(spectrum) => spectrum,
             Err(error) => self.polynomial_spectrum(p, &lin).ok_or(error)?,

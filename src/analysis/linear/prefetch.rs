@@ -65,6 +65,12 @@ impl Shared<'_> {
             .map(|spectrum| spectrum.eigenvalues)
     }
 
+    /// Computes the load `index` into its slot for the tracking to read.
+    fn fill(&self, index: usize) {
+        let eigenvalues = self.compute(index);
+        *self.slot(index) = Some(eigenvalues);
+    }
+
     fn slot(&self, index: usize) -> std::sync::MutexGuard<'_, Option<Eigenvalues>> {
         self.spectra[index]
             .lock()
@@ -78,7 +84,7 @@ impl Shared<'_> {
         {
             let limit = self.reached.load(Ordering::Acquire) + self.ahead();
             match self.take(limit) {
-                Some(index) => *self.slot(index) = Some(self.compute(index)),
+                Some(index) => self.fill(index),
                 None => std::thread::sleep(AHEAD_PAUSE),
             }
         }
@@ -133,7 +139,7 @@ impl Prefetched<'_> {
             }
             match shared.take(index + shared.ahead()) {
                 Some(taken) if taken == index => return shared.compute(index),
-                Some(taken) => *shared.slot(taken) = Some(shared.compute(taken)),
+                Some(taken) => shared.fill(taken),
                 // Taken by a helper that has gone (a panic): computed here.
                 None if shared.helpers.load(Ordering::Acquire) == 0 => {
                     if let Some(eigenvalues) = shared.slot(index).take() {
