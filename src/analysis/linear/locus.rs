@@ -6,6 +6,7 @@ use crate::analysis::roots::{MAX_DEGREE, modulus};
 use crate::analysis::stability::RELATIVE_TOLERANCE;
 use crate::analysis::{AnalysisError, C64};
 
+use super::branch_points::{at_branch_points, conjugate};
 pub(crate) use super::grid::load_resolution;
 pub use super::grid::{LARGEST_LOAD, MAX_SAMPLES, check_largest_load, load_grid};
 pub(in crate::analysis) use super::matching::eigenvalues_near;
@@ -35,7 +36,7 @@ const MIN_STEP_FRACTION: f64 = 1e-6;
 /// everywhere (a stiff first joint on a chain took minutes). A true crossing
 /// of such a tiny eigenvalue is still bracketed by the samples' states and
 /// located by the critical loads' bisection.
-const ROUNDING_BAND: f64 = 1e-6;
+pub(super) const ROUNDING_BAND: f64 = 1e-6;
 
 /// At most this many samples are added by refinement per evenly spaced load
 /// (with [`MIN_REFINED_SAMPLES`] at least): a crossing or a meeting of
@@ -294,6 +295,7 @@ fn track(
                         _ => eigenvalues_near(pencil, next_p, &mut next)?,
                     }
                     let scale = pencil.scale_per_s(next_p);
+                    at_branch_points(&current, &mut next, scale);
                     let tolerance = RELATIVE_TOLERANCE * scale;
                     let rounding_band = ROUNDING_BAND * scale;
                     let smooth = next
@@ -372,16 +374,6 @@ fn predicted(z: C64, guess: C64, last: C64, scale: f64) -> bool {
         TURN_TOLERANCE * size(guess - last) + FLOOR_TOLERANCE * (size(z) + scale)
     };
     miss.re.abs() + miss.im.abs() <= bound(largest_part) || modulus(miss) <= bound(modulus)
-}
-
-/// Two eigenvalues this close to conjugate, relative to their size plus the
-/// frequency scale, are a pair (near a double root rounding parts a pair's
-/// computed roots by about the square root of the machine epsilon).
-const CONJUGATE_TOLERANCE: f64 = 1e-6;
-
-/// Whether `a` and `b` are a conjugate pair (see [`CONJUGATE_TOLERANCE`]).
-fn conjugate(a: C64, b: C64, scale: f64) -> bool {
-    modulus(a - b.conj()) <= CONJUGATE_TOLERANCE * (modulus(a) + scale)
 }
 
 /// The weights of the values at `loads` in their interpolating quadratic's

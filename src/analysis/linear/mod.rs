@@ -3,6 +3,7 @@
 //! critical loads, the stability map and the paradox curves.
 
 pub(super) mod along;
+mod branch_points;
 mod characteristic;
 pub(super) mod critical;
 pub(super) mod crossing;

@@ -86,9 +86,12 @@ fn horner(poly: &Poly, z: C64) -> (C64, C64, f64) {
 /// The coefficients are real, so the roots are real or come in conjugate
 /// pairs: when the estimates do too (to [`PAIR_TOLERANCE`]), only one of
 /// each pair is iterated and the other is its mirror image, which halves
-/// the work and keeps pairs exactly conjugate. Where that cannot converge (two
-/// real roots about to become a pair, or a pair about to split on the real
-/// axis) every root is iterated on its own from the same estimates.
+/// the work and keeps pairs exactly conjugate. A pair whose upper root
+/// crosses the real axis has split into two real roots (past a branch
+/// point): its estimates `a +- ib` are taken as the reals `a +- b` and the
+/// iteration starts again, still mirrored. Where the mirrored iteration
+/// cannot converge otherwise (two real roots about to become a pair)
+/// every root is iterated on its own from the same estimates.
 /// Returns false, the estimates unchanged, without convergence in
 /// `max_iterations`.
 pub fn aberth(poly: &Poly, roots: &mut [C64], max_iterations: usize) -> bool {
@@ -96,11 +99,25 @@ pub fn aberth(poly: &Poly, roots: &mut [C64], max_iterations: usize) -> bool {
     if n != poly.degree {
         return false;
     }
-    if let Some((mut mirrored, roles)) = conjugate_pairs(roots) {
+    if let Some((mut starts, mut roles)) = conjugate_pairs(roots) {
         let iterations = max_iterations.min(MIRRORED_ITERATIONS);
-        if iterate(poly, &mut mirrored[..n], &roles[..n], iterations) {
-            roots.copy_from_slice(&mirrored[..n]);
-            return true;
+        // Each split leaves one pair fewer: at most n / 2 restarts.
+        for _ in 0..=n / 2 {
+            let mut mirrored = starts;
+            match iterate(poly, &mut mirrored[..n], &roles[..n], iterations) {
+                Iterated::Converged => {
+                    roots.copy_from_slice(&mirrored[..n]);
+                    return true;
+                }
+                Iterated::Split { upper, lower } => {
+                    let z = starts[upper];
+                    starts[upper] = C64::new(z.re + z.im, 0.0);
+                    starts[lower] = C64::new(z.re - z.im, 0.0);
+                    roles[upper] = Role::Real;
+                    roles[lower] = Role::Real;
+                }
+                Iterated::Failed => break,
+            }
         }
     }
     let mut own = [C64::new(0.0, 0.0); MAX_DEGREE];
@@ -110,7 +127,7 @@ pub fn aberth(poly: &Poly, roots: &mut [C64], max_iterations: usize) -> bool {
         &mut own[..n],
         &[Role::Own; MAX_DEGREE][..n],
         max_iterations,
-    );
+    ) == Iterated::Converged;
     if found {
         roots.copy_from_slice(&own[..n]);
     }
@@ -233,10 +250,21 @@ fn real_correction(poly: &Poly, roots: &[C64], i: usize, noise: f64) -> Option<(
     Some((value / (slope - value * repulsion), nearest_sqr))
 }
 
+/// How an iteration ended.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Iterated {
+    /// Every root to rounding.
+    Converged,
+    /// The upper root of the pair at `upper` and `lower` left the upper
+    /// half-plane: the pair's roots are real.
+    Split { upper: usize, lower: usize },
+    /// No convergence in the iterations allowed, or a step not finite.
+    Failed,
+}
+
 /// Aberth-Ehrlich iteration of the estimates whose `roles` say so (see
-/// [`aberth`]); false without convergence in `max_iterations`, or when a
-/// pair's upper root leaves the upper half-plane.
-fn iterate(poly: &Poly, roots: &mut [C64], roles: &[Role], max_iterations: usize) -> bool {
+/// [`aberth`]), stopped when a pair's upper root leaves the upper half-plane.
+fn iterate(poly: &Poly, roots: &mut [C64], roles: &[Role], max_iterations: usize) -> Iterated {
     // Degree <= MAX_DEGREE: exact in f64.
     let noise = 2.0 * f64::from(u8::try_from(poly.degree).unwrap_or(u8::MAX)) * f64::EPSILON;
     // A converged root is not moved again, so its residual need not be
@@ -264,7 +292,7 @@ fn iterate(poly: &Poly, roots: &mut [C64], roles: &[Role], max_iterations: usize
             };
             done = false;
             if !(step.re.is_finite() && step.im.is_finite()) {
-                return false;
+                return Iterated::Failed;
             }
             let moved = without_negligible_component(z - step);
             match roles[i] {
@@ -272,7 +300,7 @@ fn iterate(poly: &Poly, roots: &mut [C64], roles: &[Role], max_iterations: usize
                 Role::Real => roots[i] = C64::new(moved.re, 0.0),
                 Role::Upper(j) => {
                     if moved.im <= 0.0 {
-                        return false;
+                        return Iterated::Split { upper: i, lower: j };
                     }
                     roots[i] = moved;
                     roots[j] = moved.conj();
@@ -285,10 +313,10 @@ fn iterate(poly: &Poly, roots: &mut [C64], roles: &[Role], max_iterations: usize
             converged[i] = step.norm_sqr() <= SETTLED_STEP * SETTLED_STEP * nearest_sqr;
         }
         if done {
-            return true;
+            return Iterated::Converged;
         }
     }
-    false
+    Iterated::Failed
 }
 
 #[cfg(test)]
@@ -425,6 +453,45 @@ mod tests {
         ];
         assert!(aberth(&poly_with_roots(&reals), &mut from_pair, 60));
         assert!(nearest_miss(&from_pair, &reals) < 1e-12, "{from_pair:?}");
+    }
+
+    /// A pair's estimates for two real roots (a pair that has landed on the
+    /// real axis between two loads): the mirrored iteration sees the upper
+    /// root cross the axis, takes the pair as two reals and finds them
+    /// exactly real, each to rounding, with the other roots still mirrored.
+    #[test]
+    fn a_landed_pair_is_split_into_two_reals() {
+        let exact = [
+            C64::new(0.43, 0.0),
+            C64::new(-0.4, 0.02),
+            C64::new(-96.0, 0.0),
+            C64::new(-0.4, -0.02),
+            C64::new(0.436, 0.0),
+        ];
+        let poly = poly_with_roots(&exact);
+        for half_width in [1e-2, 3e-3, 1e-4] {
+            let starts = [
+                C64::new(0.432, half_width),
+                C64::new(-0.4003, 0.0199),
+                C64::new(-96.01, 0.0),
+                C64::new(-0.4003, -0.0199),
+                C64::new(0.432, -half_width),
+            ];
+            let (mut mirrored, roles) = conjugate_pairs(&starts).unwrap();
+            assert_eq!(
+                iterate(&poly, &mut mirrored[..5], &roles[..5], MIRRORED_ITERATIONS),
+                Iterated::Split { upper: 0, lower: 4 }
+            );
+            let mut roots = starts;
+            assert!(aberth(&poly, &mut roots, 60));
+            assert_eq!(
+                [roots[0].im, roots[2].im, roots[4].im],
+                [0.0; 3],
+                "{roots:?}"
+            );
+            assert_eq!(roots[3], roots[1].conj());
+            assert!(nearest_miss(&roots, &exact) < 1e-13, "{roots:?}");
+        }
     }
 
     /// Estimates that are not conjugate (no symmetry to use) are iterated
