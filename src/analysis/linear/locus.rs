@@ -247,7 +247,8 @@ fn track(
     let mut earlier: Option<(f64, Vec<C64>)> = None;
     let mut step = grid.get(1).map_or(0.0, |g| g - grid[0]);
     let (mut guess, mut next) = (Vec::new(), Vec::new());
-    // The rest of the loads, with a long chain's spectra computed ahead.
+    // A long chain: more eigenvalues than the polynomial path takes, so
+    // the Schur path's, computed ahead for the evenly spaced loads.
     let chain = current.len() > MAX_DEGREE;
     let run = |mut prefetched: Option<&mut Prefetched<'_>>| -> Result<Locus, AnalysisError> {
         for (index, &target) in grid.iter().enumerate().skip(1) {
@@ -278,9 +279,7 @@ fn track(
                     // saves an iteration. (The Schur path's eigenvalues are
                     // assigned to the linear guess, which rounding moves less.)
                     next.clone_from(&guess);
-                    if let (true, Some((p1, z1)), Some((p2, z2))) =
-                        (current.len() <= MAX_DEGREE, &previous, &earlier)
-                    {
+                    if let (true, Some((p1, z1)), Some((p2, z2))) = (!chain, &previous, &earlier) {
                         let [a, b, c] = quadratic_weights([p, *p1, *p2], next_p);
                         for (((start, &z0), &z1), &z2) in
                             next.iter_mut().zip(&current).zip(z1).zip(z2)
