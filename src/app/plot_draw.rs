@@ -13,7 +13,7 @@ use egui_plot::{
 };
 
 use super::legend::{Swatch as RowSwatch, legend_row};
-use super::plot_frame::{axes, curve, refit_if, view_settled};
+use super::plot_frame::{axes, curve, refit_if, show_framed, view_settled};
 use super::plot_keys;
 use super::theme::{Theme, color};
 use crate::analysis::{C64, State};
@@ -129,7 +129,7 @@ pub fn plot_ui(
             .x_axis_formatter(|mark, _| number_text(10f64.powf(mark.value)));
     }
     let egui_plot = refit_if(egui_plot, refit);
-    let shown = egui_plot.show(ui, |plot_ui| {
+    let shown = show_framed(egui_plot, ui, |plot_ui| {
         let keyed = plot_keys::keys_ui(plot_ui, theme);
         let settled = view_settled(plot_ui, refit);
         let mut edge_marked = Vec::new();

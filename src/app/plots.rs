@@ -8,7 +8,7 @@ use egui_plot::{Line, Plot, PlotPoints};
 
 use super::history::History;
 use super::legend::{Swatch, legend_row};
-use super::plot_frame::{axes, refit_if};
+use super::plot_frame::{axes, refit_if, show_framed};
 use super::theme::{Theme, color};
 
 /// The run's recent past: the angles and delta against time, the energies,
@@ -52,7 +52,7 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, band: bool, refit: boo
                     .fold(0.0, f64::max);
                 let half = crate::app::plot_frame::grid_ceil(widest);
                 let plot = Plot::new("angles").include_y(-half).include_y(half);
-                refit_if(axes(plot, "t (s)", "rad"), refit).show(ui, |plot_ui| {
+                show_framed(refit_if(axes(plot, "t (s)", "rad"), refit), ui, |plot_ui| {
                     plot_ui.line(
                         Line::new("φ1", series(&|o| o.phi1_rad))
                             .color(color(theme.palette.series[0])),
@@ -78,7 +78,7 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, band: bool, refit: boo
                 legend_row(ui, &legend);
                 let plot = Plot::new("energy");
                 let units = if band { "J, W" } else { "J" };
-                refit_if(axes(plot, "t (s)", units), refit).show(ui, |plot_ui| {
+                show_framed(refit_if(axes(plot, "t (s)", units), refit), ui, |plot_ui| {
                     plot_ui.line(
                         Line::new(energy.as_str(), series(&|o| o.energy_j()))
                             .color(color(theme.palette.series[3])),
@@ -94,16 +94,20 @@ pub fn histories_ui(ui: &mut egui::Ui, history: &History, band: bool, refit: boo
         });
         ui.allocate_ui(vec2(ui.available_width(), height), |ui| {
             let plot = Plot::new("phase portrait");
-            refit_if(axes(plot, "φ2 (rad)", "φ2' (rad/s)"), refit).show(ui, |plot_ui| {
-                let points: PlotPoints<'_> = samples
-                    .iter()
-                    .map(|o| [o.phi2_rad, o.phi2_dot_rad_per_s])
-                    .collect();
-                plot_ui.line(
-                    Line::new(tr!(words, "histories-rod-2"), points)
-                        .color(color(theme.palette.series[5])),
-                );
-            });
+            show_framed(
+                refit_if(axes(plot, "φ2 (rad)", "φ2' (rad/s)"), refit),
+                ui,
+                |plot_ui| {
+                    let points: PlotPoints<'_> = samples
+                        .iter()
+                        .map(|o| [o.phi2_rad, o.phi2_dot_rad_per_s])
+                        .collect();
+                    plot_ui.line(
+                        Line::new(tr!(words, "histories-rod-2"), points)
+                            .color(color(theme.palette.series[5])),
+                    );
+                },
+            );
         });
     });
 }
