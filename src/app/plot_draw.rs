@@ -21,7 +21,9 @@ use crate::format::number_text;
 use crate::plot::describe::describe;
 use crate::plot::pattern;
 use crate::plot::spec::CellGrid;
-use crate::plot::spec::{Entry, Ink, Mark, OffView, Plot, Size, Swatch, Ticks, View, Weight};
+use crate::plot::spec::{
+    Entry, Ink, Mark, OffView, Plot, Size, Swatch, Ticks, View, Weight, graded_pieces,
+};
 use crate::plot::view::{EdgeMark, Side, ViewRect, default_view, edge_marks};
 
 /// How far inside the view an edge mark is drawn, as a fraction of its size.
@@ -207,6 +209,18 @@ fn mark_ui<'a>(
                 line
             });
         }
+        Mark::Graded {
+            points,
+            along,
+            weight,
+        } => graded_ui(
+            plot_ui,
+            settled,
+            points,
+            along,
+            width(*weight, theme),
+            theme,
+        ),
         Mark::Markers {
             points,
             ink,
@@ -264,21 +278,7 @@ fn mark_ui<'a>(
             lower,
             upper,
             state,
-        } => {
-            // egui fills convex shapes only: one trapezoid per step in x.
-            let name = state_name(plot_ui.ctx().words(), *state);
-            let fill = range_tint(*state, theme);
-            for (i, (l, u)) in lower.windows(2).zip(upper.windows(2)).enumerate() {
-                let corners = vec![l[0], l[1], u[1], u[0]];
-                plot_ui.polygon(
-                    Polygon::new(name.clone(), PlotPoints::from(corners))
-                        .id(("band", i))
-                        .fill_color(fill)
-                        .stroke(egui::Stroke::NONE)
-                        .allow_hover(false),
-                );
-            }
-        }
+        } => band_ui(plot_ui, lower, upper, *state, theme),
         Mark::Label { at, text } => {
             // Spaces pad the plate on both sides of the word.
             let word = egui::RichText::new(format!(" {text} "))
@@ -293,6 +293,67 @@ fn mark_ui<'a>(
         }
     }
     None
+}
+
+/// The region between `lower` and `upper` tinted in `state`'s colour:
+/// one trapezoid per step in x (egui fills convex shapes only).
+fn band_ui(
+    plot_ui: &mut egui_plot::PlotUi<'_>,
+    lower: &[[f64; 2]],
+    upper: &[[f64; 2]],
+    state: State,
+    theme: &Theme,
+) {
+    let name = state_name(plot_ui.ctx().words(), state);
+    let fill = range_tint(state, theme);
+    for (i, (l, u)) in lower.windows(2).zip(upper.windows(2)).enumerate() {
+        let corners = vec![l[0], l[1], u[1], u[0]];
+        plot_ui.polygon(
+            Polygon::new(name.clone(), PlotPoints::from(corners))
+                .id(("band", i))
+                .fill_color(fill)
+                .stroke(egui::Stroke::NONE)
+                .allow_hover(false),
+        );
+    }
+}
+
+/// A line coloured along its samples, `width_pt` wide: in
+/// [`graded_pieces`] at least twice its width long on the screen (shorter
+/// ones show no colour of their own; a 16-rod chain's 32 short branches
+/// were 768 pieces, a third of the frame's triangles). While the view is
+/// changing the plot's transform may be another view's: every piece is
+/// drawn then.
+fn graded_ui(
+    plot_ui: &mut egui_plot::PlotUi<'_>,
+    settled: bool,
+    points: &[[f64; 2]],
+    along: &[f64],
+    width_pt: f32,
+    theme: &Theme,
+) {
+    let shortest = if settled {
+        2.0 * f64::from(width_pt)
+    } else {
+        0.0
+    };
+    let transform = *plot_ui.transform();
+    let drawn: Vec<[f64; 2]> = points
+        .iter()
+        .map(|&[x, y]| {
+            let at = transform.position_from_point(&PlotPoint::new(x, y));
+            [f64::from(at.x), f64::from(at.y)]
+        })
+        .collect();
+    for (first, last) in graded_pieces(&drawn, shortest) {
+        let (Some(&from), Some(&to)) = (along.get(first), along.get(last)) else {
+            continue;
+        };
+        let line = curve(plot_ui, settled, points[first..=last].iter().copied())
+            .color(ink_color(&Ink::Along(0.5 * (from + to)), theme))
+            .width(width_pt);
+        plot_ui.line(line);
+    }
 }
 
 /// `grid` as an image, each cell a square of pixels (so a map of 128 cells

@@ -12,7 +12,7 @@ use super::style::{INK, Ink as PageInk, rgb, state_color, tint};
 use super::{Drawn, FigureError, drawing};
 use crate::analysis::State;
 use crate::plot::spec::CellGrid;
-use crate::plot::spec::{Entry, Ink, Mark, Plot, Size, Swatch, Ticks, View, Weight};
+use crate::plot::spec::{Entry, Ink, Mark, Plot, Size, Swatch, Ticks, View, Weight, graded_pieces};
 use crate::plot::view::default_view;
 use crate::plot::{Palette, pattern};
 
@@ -150,6 +150,11 @@ where
                 let points: Vec<(f64, f64)> = points.iter().map(|p| (p[0], p[1])).collect();
                 stroked(&mut chart, &points, (color, *weight, *is_dashed), ink)?;
             }
+            Mark::Graded {
+                points,
+                along,
+                weight,
+            } => graded(&mut chart, points, along, *weight, ink)?,
             Mark::Markers {
                 points,
                 ink: color,
@@ -272,6 +277,33 @@ where
 }
 
 /// The polyline `points` in `color` at `weight`, solid or `dashed`.
+/// A line coloured along its samples (`along`, on the ramp), in all its
+/// [`graded_pieces`]: paper has no pixels to spare.
+fn graded<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    points: &[[f64; 2]],
+    along: &[f64],
+    weight: Weight,
+    ink: &PageInk,
+) -> Result<(), FigureError>
+where
+    DB::ErrorType: 'static,
+{
+    for (first, last) in graded_pieces(points, 0.0) {
+        let (Some(&from), Some(&to)) = (along.get(first), along.get(last)) else {
+            continue;
+        };
+        let piece: Vec<(f64, f64)> = points[first..=last].iter().map(|p| (p[0], p[1])).collect();
+        stroked(
+            chart,
+            &piece,
+            (&Ink::Along(0.5 * (from + to)), weight, false),
+            ink,
+        )?;
+    }
+    Ok(())
+}
+
 fn stroked<DB: DrawingBackend>(
     chart: &mut Chart<'_, DB>,
     points: &[(f64, f64)],

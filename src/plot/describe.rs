@@ -55,7 +55,7 @@ pub fn describe(plot: &Plot, words: &'static Words) -> String {
     let curves = plot
         .marks
         .iter()
-        .filter(|mark| matches!(mark, Mark::Line { .. }))
+        .filter(|mark| matches!(mark, Mark::Line { .. } | Mark::Graded { .. }))
         .count();
     if curves > 0 {
         sentences.push(tr!(words, "describe-curves", count = curves));
@@ -199,5 +199,21 @@ mod tests {
         let divergence = describe(&plane(vec![[0.3, 0.0], [-0.3, 0.0]]), english());
         assert!(divergence.contains("divergence"), "{divergence}");
         assert!(divergence.starts_with("Im λ (rad/s) against Re λ (1/s)"));
+    }
+
+    /// A branch coloured along the load is drawn in pieces but is one
+    /// curve to a listener (a 16-rod chain's plane said 768 curves).
+    #[test]
+    fn a_graded_branch_is_one_curve() {
+        let mut plot = plane(vec![[-0.1, 1.0]]);
+        for _ in 0..3 {
+            plot.marks.push(Mark::Graded {
+                points: (0..100).map(|i| [0.0, f64::from(i)]).collect(),
+                along: (0..100).map(|i| f64::from(i) / 99.0).collect(),
+                weight: Weight::Regular,
+            });
+        }
+        let said = describe(&plot, english());
+        assert!(said.contains(". 4 curves."), "{said}");
     }
 }

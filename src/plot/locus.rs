@@ -66,9 +66,6 @@ const PLANE: &str = "root locus";
 const RE: &str = "Re λ (1/s)";
 const IM: &str = "Im λ (rad/s)";
 
-/// Branch segments are drawn in this many colour bands along the load.
-const COLOR_BANDS: usize = 24;
-
 /// Evenly spaced samples the window draws at most (a plot is a few hundred
 /// pixels wide); the refinement's samples are all drawn.
 const DRAWN_GRID_SAMPLES: usize = 300;
@@ -195,7 +192,7 @@ impl Loci<'_> {
                 });
             }
         }
-        marks.extend(self.banded_branches());
+        marks.extend(self.graded_branches());
         marks
     }
 
@@ -240,37 +237,28 @@ impl Loci<'_> {
     }
 
     /// The main model's branches as the window draws them: at most
-    /// [`DRAWN_GRID_SAMPLES`] samples each ([`drawn_samples`]), in
-    /// [`COLOR_BANDS`] pieces coloured by the load along them.
-    fn banded_branches(&self) -> Vec<Mark> {
+    /// [`DRAWN_GRID_SAMPLES`] samples each ([`drawn_samples`]), coloured by
+    /// the load along them.
+    fn graded_branches(&self) -> Vec<Mark> {
         let locus = self.main.locus;
         let (min, max) = self.load_range();
         let shown = drawn_samples(locus);
-        let n = shown.len();
-        let mut marks = Vec::new();
-        for branch in &locus.branches {
-            for band in 0..COLOR_BANDS {
-                let (k0, k1) = (
-                    band * (n - 1) / COLOR_BANDS,
-                    ((band + 1) * (n - 1) / COLOR_BANDS).min(n - 1),
-                );
-                if k1 <= k0 {
-                    continue;
-                }
-                let (i0, i1) = (shown[k0], shown[k1]);
-                let mid = 0.5 * (locus.loads[i0] + locus.loads[i1]);
-                marks.push(Mark::Line {
-                    points: shown[k0..=k1]
-                        .iter()
-                        .map(|&i| [branch[i].re, branch[i].im])
-                        .collect(),
-                    ink: Ink::Along(fraction(mid, min, max)),
-                    weight: Weight::Regular,
-                    dashed: false,
-                });
-            }
-        }
-        marks
+        let along: Vec<f64> = shown
+            .iter()
+            .map(|&i| fraction(locus.loads[i], min, max))
+            .collect();
+        locus
+            .branches
+            .iter()
+            .map(|branch| Mark::Graded {
+                points: shown
+                    .iter()
+                    .map(|&i| [branch[i].re, branch[i].im])
+                    .collect(),
+                along: along.clone(),
+                weight: Weight::Regular,
+            })
+            .collect()
     }
 
     /// Re λ or (`imaginary`) Im λ ≥ 0 of every branch against the load: the

@@ -95,6 +95,15 @@ pub enum Mark {
         weight: Weight,
         dashed: bool,
     },
+    /// A polyline coloured along its samples: `along[i]` in [0, 1] is
+    /// where `points[i]` lies on the palette's ramp (a root-locus branch
+    /// coloured by the load). Drawn in [`graded_pieces`] of one colour
+    /// each, [`Ink::Along`] of the fraction at the piece's middle.
+    Graded {
+        points: Vec<[f64; 2]>,
+        along: Vec<f64>,
+        weight: Weight,
+    },
     /// Markers at points.
     Markers {
         points: Vec<[f64; 2]>,
@@ -219,4 +228,101 @@ pub struct FarLeft {
 pub struct Sheet {
     pub legend: Vec<Entry>,
     pub plots: Vec<Plot>,
+}
+
+/// How many pieces of one colour a [`Mark::Graded`] line has at most.
+pub const GRADED_PIECES: usize = 24;
+
+/// The pieces of a [`Mark::Graded`] line through `drawn` (its samples
+/// where they are drawn, in pixels or any unit of length), as ranges
+/// `(first, last)` of sample indices, each piece's last the next one's
+/// first. [`GRADED_PIECES`] pieces of equal counts of samples, and then
+/// neighbours joined until each is at least `shortest` long: a piece
+/// shorter than its line is wide shows no colour of its own, and each
+/// piece costs a CPU renderer a dozen triangles. A line shorter than
+/// `shortest` is one piece.
+#[must_use]
+pub fn graded_pieces(drawn: &[[f64; 2]], shortest: f64) -> Vec<(usize, usize)> {
+    let last = drawn.len().saturating_sub(1);
+    let length = |first: usize, end: usize| -> f64 {
+        drawn[first..=end]
+            .windows(2)
+            .map(|pair| (pair[1][0] - pair[0][0]).hypot(pair[1][1] - pair[0][1]))
+            .sum()
+    };
+    let mut pieces: Vec<(usize, usize)> = Vec::new();
+    let mut first = 0;
+    for piece in 0..GRADED_PIECES {
+        let end = ((piece + 1) * last / GRADED_PIECES).min(last);
+        if end > first && length(first, end) >= shortest {
+            pieces.push((first, end));
+            first = end;
+        }
+    }
+    // What is left is too short for a piece of its own: the last piece
+    // takes it (or it is the whole line).
+    match pieces.last_mut() {
+        Some(piece) if first < last => piece.1 = last,
+        None if last > 0 => pieces.push((0, last)),
+        _ => {}
+    }
+    pieces
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `n` samples evenly along x from 0 to `length`.
+    fn straight(n: u32, length: f64) -> Vec<[f64; 2]> {
+        (0..n)
+            .map(|i| [length * f64::from(i) / f64::from(n - 1), 0.0])
+            .collect()
+    }
+
+    #[test]
+    fn a_long_line_has_every_piece_in_equal_counts_of_samples() {
+        let pieces = graded_pieces(&straight(241, 2400.0), 4.0);
+        assert_eq!(pieces.len(), GRADED_PIECES);
+        assert!(pieces.iter().all(|&(a, b)| b - a == 10), "{pieces:?}");
+        assert!(pieces.windows(2).all(|w| w[0].1 == w[1].0));
+        assert_eq!((pieces[0].0, pieces[GRADED_PIECES - 1].1), (0, 240));
+    }
+
+    #[test]
+    fn short_pieces_join_their_neighbours_until_long_enough() {
+        // 24 pieces of 1.5 each: joined in threes (4.5 >= 4), 8 pieces.
+        let pieces = graded_pieces(&straight(241, 36.0), 4.0);
+        assert_eq!(pieces.len(), 8, "{pieces:?}");
+        assert!(pieces.iter().all(|&(a, b)| b - a == 30), "{pieces:?}");
+        // Still covering the whole line, end to end.
+        assert!(pieces.windows(2).all(|w| w[0].1 == w[1].0));
+        assert_eq!((pieces[0].0, pieces[7].1), (0, 240));
+        // 24 pieces of 25/24 each: joined in fours, nothing left over.
+        assert_eq!(graded_pieces(&straight(241, 25.0), 4.0).len(), 6);
+        // 24 of 0.9: five make 4.5, four pieces of five, the last four
+        // (3.6) join the fourth.
+        let odd = graded_pieces(&straight(241, 21.6), 4.0);
+        assert_eq!(odd.len(), 4, "{odd:?}");
+        assert_eq!(odd[3], (150, 240));
+    }
+
+    #[test]
+    fn a_line_shorter_than_a_piece_is_one_piece_and_a_point_none() {
+        assert_eq!(graded_pieces(&straight(50, 1.0), 4.0), vec![(0, 49)]);
+        // A root that does not move with the load: one piece, its colour
+        // the middle load's.
+        assert_eq!(graded_pieces(&[[1.0, 2.0]; 30], 4.0), vec![(0, 29)]);
+        assert_eq!(graded_pieces(&[[1.0, 2.0]], 4.0), Vec::new());
+        assert_eq!(graded_pieces(&[], 4.0), Vec::new());
+    }
+
+    #[test]
+    fn with_no_shortest_the_pieces_are_the_equal_ones_even_when_still() {
+        let still = graded_pieces(&[[0.0, 0.0]; 49], 0.0);
+        assert_eq!(still.len(), GRADED_PIECES);
+        assert!(still.iter().all(|&(a, b)| b - a == 2));
+        // Fewer samples than pieces: one piece a segment.
+        assert_eq!(graded_pieces(&straight(5, 1.0), 0.0).len(), 4);
+    }
 }
