@@ -205,7 +205,8 @@ fn draw(ui: &mut egui::Ui, input: &SceneInput<'_>) -> (Rect, View, Option<Rect>)
     // No background of its own: the scene lies on a panel of the theme's
     // background already (the window clears to it, a picture's panel is
     // filled with it). A second fill would cost a CPU renderer every pixel
-    // of the scene once more, half of a 16-rod chain's frame at 1920x1080.
+    // of the scene once more (nearly half of a 16-rod chain's frame at
+    // 1920x1080).
     let reach = model.column.reach_m();
     // The camera's box, with equal scales on both axes, centred.
     let margin = 0.12 * reach;

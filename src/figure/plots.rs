@@ -276,7 +276,6 @@ where
     Ok(())
 }
 
-/// The polyline `points` in `color` at `weight`, solid or `dashed`.
 /// A line coloured along its samples (`along`, on the ramp), in all its
 /// [`graded_pieces`]: paper has no pixels to spare.
 fn graded<DB: DrawingBackend>(
@@ -304,6 +303,7 @@ where
     Ok(())
 }
 
+/// The polyline `points` in `color` at `weight`, solid or `dashed`.
 fn stroked<DB: DrawingBackend>(
     chart: &mut Chart<'_, DB>,
     points: &[(f64, f64)],
