@@ -298,15 +298,25 @@ impl Loci<'_> {
             let part = |z: C64| if imaginary { z.im } else { z.re };
             if window {
                 let samples = drawn_samples(locus);
+                let mut drawn: Vec<Vec<[f64; 2]>> = Vec::new();
                 for branch in &locus.branches {
                     if imaginary && branch.iter().all(|z| z.im < 0.0) {
                         continue;
                     }
+                    let points: Vec<[f64; 2]> = samples
+                        .iter()
+                        .map(|&i| [locus.loads[i], part(branch[i])])
+                        .collect();
+                    // A conjugate pair's real parts (and real roots' zero
+                    // imaginary parts) are one curve: drawn once, not
+                    // shaded twice on a CPU renderer and counted twice to
+                    // a listener.
+                    if drawn.contains(&points) {
+                        continue;
+                    }
+                    drawn.push(points.clone());
                     marks.push(Mark::Line {
-                        points: samples
-                            .iter()
-                            .map(|&i| [locus.loads[i], part(branch[i])])
-                            .collect(),
+                        points,
                         ink: ink.clone(),
                         weight: Weight::Fine,
                         dashed: false,

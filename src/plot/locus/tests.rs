@@ -98,3 +98,57 @@ fn the_window_and_a_figure_describe_the_same_locus() {
     let at_onset = pencil.spectrum(onsets[0].0).unwrap().eigenvalues;
     assert!(at_onset.iter().all(|z| z.im.abs() <= extent.1 + 1e-12));
 }
+
+/// Beck's column (16 rods, undamped) over its load bar, stable and then
+/// fluttering, has every eigenvalue in a conjugate pair, whose two
+/// branches have the same real part at every load; 14 of the pairs stay on
+/// the imaginary axis (real part exactly 0, no damping) and one quadruple
+/// +-a +-ib leaves it at the flutter load. The window's Re plot draws each
+/// distinct curve once: 0, +a and -a, 3 lines for 32 branches, and misses
+/// no branch.
+#[test]
+fn the_re_plot_draws_each_curve_once() {
+    let model = PresetId::Beck.model();
+    let pencil = AffinePencil::new(&model).unwrap();
+    let locus = plotted_locus(&pencil, 0.0, model.load_bar_max_p()).unwrap();
+    let along = AlongLoad::new(&pencil, locus, Unresolved::Dropped).unwrap();
+    let layer = Layer {
+        name: "beck",
+        locus: &along.locus,
+        transitions: &along.transitions,
+        ranges: &along.ranges,
+        at_transitions: &[],
+    };
+    let words = crate::i18n::words(crate::i18n::Language::English);
+    let window = Loci {
+        main: layer,
+        others: Vec::new(),
+        medium: Medium::Window,
+        words,
+    };
+    let re_plot = &window.sheet(Part::VersusLoad).plots[0];
+    let lines: Vec<&Vec<[f64; 2]>> = re_plot
+        .marks
+        .iter()
+        .filter_map(|mark| match mark {
+            Mark::Line { points, .. } => Some(points),
+            _ => None,
+        })
+        .collect();
+    let branches = &along.locus.branches;
+    assert_eq!(branches.len(), 32);
+    assert_eq!(lines.len(), 3);
+    for branch in branches {
+        // Its real part against the load at the drawn samples.
+        let line = lines
+            .iter()
+            .find(|line| {
+                line.iter().all(|&[load, re]| {
+                    let i = along.locus.loads.iter().position(|&p| p == load).unwrap();
+                    branch[i].re == re
+                })
+            })
+            .is_some();
+        assert!(line, "a branch's real part is not drawn");
+    }
+}
