@@ -22,7 +22,7 @@ use crate::plot::describe::describe;
 use crate::plot::pattern;
 use crate::plot::spec::CellGrid;
 use crate::plot::spec::{
-    Entry, Ink, Mark, OffView, Plot, Size, Swatch, Ticks, View, Weight, graded_pieces,
+    Entry, Ink, Mark, OffView, Plot, Size, Swatch, Ticks, View, Weight, graded_lines,
 };
 use crate::plot::view::{EdgeMark, Side, ViewRect, default_view, edge_marks};
 
@@ -319,7 +319,7 @@ fn band_ui(
 }
 
 /// A line coloured along its samples, `width_pt` wide: in
-/// [`graded_pieces`] at least twice its width long on the screen (shorter
+/// [`graded_lines`] at least twice its width long on the screen (shorter
 /// ones show no colour of their own; a 16-rod chain's 32 short branches
 /// were 768 pieces, a third of the frame's triangles). While the view is
 /// changing the plot's transform may be another view's: every piece is
@@ -345,12 +345,9 @@ fn graded_ui(
             [f64::from(at.x), f64::from(at.y)]
         })
         .collect();
-    for (first, last) in graded_pieces(&drawn, shortest) {
-        let (Some(&from), Some(&to)) = (along.get(first), along.get(last)) else {
-            continue;
-        };
-        let line = curve(plot_ui, settled, points[first..=last].iter().copied())
-            .color(ink_color(&Ink::Along(0.5 * (from + to)), theme))
+    for (piece, ink) in graded_lines(points, along, &drawn, shortest) {
+        let line = curve(plot_ui, settled, piece.iter().copied())
+            .color(ink_color(&ink, theme))
             .width(width_pt);
         plot_ui.line(line);
     }

@@ -12,7 +12,7 @@ use super::style::{INK, Ink as PageInk, rgb, state_color, tint};
 use super::{Drawn, FigureError, drawing};
 use crate::analysis::State;
 use crate::plot::spec::CellGrid;
-use crate::plot::spec::{Entry, Ink, Mark, Plot, Size, Swatch, Ticks, View, Weight, graded_pieces};
+use crate::plot::spec::{Entry, Ink, Mark, Plot, Size, Swatch, Ticks, View, Weight, graded_lines};
 use crate::plot::view::default_view;
 use crate::plot::{Palette, pattern};
 
@@ -277,7 +277,7 @@ where
 }
 
 /// A line coloured along its samples (`along`, on the ramp), in all its
-/// [`graded_pieces`]: paper has no pixels to spare.
+/// [`graded_lines`]: paper has no pixels to spare.
 fn graded<DB: DrawingBackend>(
     chart: &mut Chart<'_, DB>,
     points: &[[f64; 2]],
@@ -288,17 +288,9 @@ fn graded<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    for (first, last) in graded_pieces(points, 0.0) {
-        let (Some(&from), Some(&to)) = (along.get(first), along.get(last)) else {
-            continue;
-        };
-        let piece: Vec<(f64, f64)> = points[first..=last].iter().map(|p| (p[0], p[1])).collect();
-        stroked(
-            chart,
-            &piece,
-            (&Ink::Along(0.5 * (from + to)), weight, false),
-            ink,
-        )?;
+    for (piece, color) in graded_lines(points, along, points, 0.0) {
+        let piece: Vec<(f64, f64)> = piece.iter().map(|p| (p[0], p[1])).collect();
+        stroked(chart, &piece, (&color, weight, false), ink)?;
     }
     Ok(())
 }

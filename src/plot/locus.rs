@@ -298,7 +298,7 @@ impl Loci<'_> {
             let part = |z: C64| if imaginary { z.im } else { z.re };
             if window {
                 let samples = drawn_samples(locus);
-                let mut drawn: Vec<Vec<[f64; 2]>> = Vec::new();
+                let layer_start = marks.len();
                 for branch in &locus.branches {
                     if imaginary && branch.iter().all(|z| z.im < 0.0) {
                         continue;
@@ -311,10 +311,12 @@ impl Loci<'_> {
                     // imaginary parts) are one curve: drawn once, not
                     // shaded twice on a CPU renderer and counted twice to
                     // a listener.
-                    if drawn.contains(&points) {
+                    let drawn = marks[layer_start..].iter().any(
+                        |mark| matches!(mark, Mark::Line { points: line, .. } if *line == points),
+                    );
+                    if drawn {
                         continue;
                     }
-                    drawn.push(points.clone());
                     marks.push(Mark::Line {
                         points,
                         ink: ink.clone(),

@@ -97,7 +97,7 @@ pub enum Mark {
     },
     /// A polyline coloured along its samples: `along[i]` in [0, 1] is
     /// where `points[i]` lies on the palette's ramp (a root-locus branch
-    /// coloured by the load). Drawn in [`graded_pieces`] of one colour
+    /// coloured by the load). Drawn in [`graded_lines`] of one colour
     /// each, [`Ink::Along`] of the fraction at the piece's middle.
     Graded {
         points: Vec<[f64; 2]>,
@@ -267,6 +267,23 @@ pub fn graded_pieces(drawn: &[[f64; 2]], shortest: f64) -> Vec<(usize, usize)> {
         _ => {}
     }
     pieces
+}
+
+/// A [`Mark::Graded`] line's pieces (see [`graded_pieces`], `drawn` its
+/// samples where they are drawn) as their points and their ink: the ramp
+/// at the fraction halfway between the piece's ends.
+pub fn graded_lines<'a>(
+    points: &'a [[f64; 2]],
+    along: &'a [f64],
+    drawn: &[[f64; 2]],
+    shortest: f64,
+) -> impl Iterator<Item = (&'a [[f64; 2]], Ink)> {
+    graded_pieces(drawn, shortest)
+        .into_iter()
+        .filter_map(move |(first, last)| {
+            let (from, to) = (along.get(first)?, along.get(last)?);
+            Some((points.get(first..=last)?, Ink::Along(0.5 * (from + to))))
+        })
 }
 
 #[cfg(test)]

@@ -15,6 +15,31 @@ fn ranges(plot: &Plot) -> Vec<(f64, f64, State)> {
         .collect()
 }
 
+/// The pencil of `preset` and its locus over its load bar, analysed.
+fn analysed(preset: PresetId) -> (AffinePencil, AlongLoad) {
+    let model = preset.model();
+    let pencil = AffinePencil::new(&model).unwrap();
+    let locus = plotted_locus(&pencil, 0.0, model.load_bar_max_p()).unwrap();
+    let along = AlongLoad::new(&pencil, locus, Unresolved::Dropped).unwrap();
+    (pencil, along)
+}
+
+/// `along`'s locus as the plots' one model, drawn for `medium`.
+fn loci<'a>(name: &'a str, along: &'a AlongLoad, medium: Medium) -> Loci<'a> {
+    Loci {
+        main: Layer {
+            name,
+            locus: &along.locus,
+            transitions: &along.transitions,
+            ranges: &along.ranges,
+            at_transitions: &[],
+        },
+        others: Vec::new(),
+        medium,
+        words: crate::i18n::words(crate::i18n::Language::English),
+    }
+}
+
 /// Ziegler's column (equal masses and springs, undamped) flutters at
 /// p = 7/2 - sqrt 2 and diverges at 7/2 + sqrt 2. The window and a figure
 /// of its locus hold the same eigenvalues in view, tint the same ranges,
@@ -22,25 +47,10 @@ fn ranges(plot: &Plot) -> Vec<(f64, f64, State)> {
 /// draws the current load instead.
 #[test]
 fn the_window_and_a_figure_describe_the_same_locus() {
-    let model = PresetId::Ziegler1952.model();
-    let pencil = AffinePencil::new(&model).unwrap();
-    let locus = plotted_locus(&pencil, 0.0, model.load_bar_max_p()).unwrap();
-    let along = AlongLoad::new(&pencil, locus, Unresolved::Dropped).unwrap();
-    let layer = Layer {
-        name: "ziegler-1952",
-        locus: &along.locus,
-        transitions: &along.transitions,
-        ranges: &along.ranges,
-        at_transitions: &[],
-    };
+    let (pencil, along) = analysed(PresetId::Ziegler1952);
     let now = pencil.spectrum(1.0).unwrap().eigenvalues;
-    let words = crate::i18n::words(crate::i18n::Language::English);
-    let paper = Loci {
-        main: layer,
-        others: Vec::new(),
-        medium: Medium::Paper,
-        words,
-    };
+    let paper = loci("ziegler-1952", &along, Medium::Paper);
+    let words = paper.words;
     let plane = paper.sheet(Part::Plane).plots;
     let paper_loads = paper.sheet(Part::VersusLoad).plots;
     let mut window = Loci {
@@ -108,24 +118,8 @@ fn the_window_and_a_figure_describe_the_same_locus() {
 /// no branch.
 #[test]
 fn the_re_plot_draws_each_curve_once() {
-    let model = PresetId::Beck.model();
-    let pencil = AffinePencil::new(&model).unwrap();
-    let locus = plotted_locus(&pencil, 0.0, model.load_bar_max_p()).unwrap();
-    let along = AlongLoad::new(&pencil, locus, Unresolved::Dropped).unwrap();
-    let layer = Layer {
-        name: "beck",
-        locus: &along.locus,
-        transitions: &along.transitions,
-        ranges: &along.ranges,
-        at_transitions: &[],
-    };
-    let words = crate::i18n::words(crate::i18n::Language::English);
-    let window = Loci {
-        main: layer,
-        others: Vec::new(),
-        medium: Medium::Window,
-        words,
-    };
+    let (_, along) = analysed(PresetId::Beck);
+    let window = loci("beck", &along, Medium::Window);
     let re_plot = &window.sheet(Part::VersusLoad).plots[0];
     let lines: Vec<&Vec<[f64; 2]>> = re_plot
         .marks
