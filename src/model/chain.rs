@@ -4,11 +4,12 @@
 //! in, state derivative out. The entry point for every column; two rods go
 //! the closed-form fast path of `two_rods`.
 
-use nalgebra::{Cholesky, DMatrix, DVector, Dyn, Matrix2, Vector2};
+use nalgebra::{DMatrix, DVector, Matrix2, Vector2};
 
+use super::chain_factor::MassFactor;
 use super::kinematics::normal;
 use super::loads::{joint_torques_nm, rods_drag, slaved_spin_rate, tip_load};
-use super::mass::chain_mass_matrix;
+use super::mass::{ChainInertia, chain_inertia, chain_mass_matrix};
 use super::params::{Column, Model};
 use super::state::{StateVec, StateView, StateViewMut};
 use super::two_rods;
@@ -70,52 +71,85 @@ fn joint_and_drag_forces(column: &Column, x: &StateVec, phi: &[f64], rate: &[f64
     q
 }
 
-/// Lagrange's equations of the chain in state `x`
+/// The right side of Lagrange's equations of the chain in state `x`
 ///
 /// ```text
 /// sum_k mu_jk [cos(phi_j - phi_k) phi_k'' + sin(phi_j - phi_k) phi_k'^2] = Q_j
 /// ```
 ///
-/// as the factored mass matrix `M(phi)_jk = mu_jk cos(phi_j - phi_k)` (`mu`
-/// the mass matrix at rest: every point's velocity is `sum_j c_j phi_j' t_j`,
-/// and `t_j . t_k = cos(phi_j - phi_k)`) and the right side, with `Q` the
-/// springs, dampers and drag plus `tip_q`, the tip load's generalized forces
-/// on the rods. `None` for a mass matrix that cannot be factored.
-pub(super) fn lagrange(
+/// (`mu` the mass matrix at rest, by its generators `inertia`: every
+/// point's velocity is `sum_j c_j phi_j' t_j`, and `t_j . t_k = cos(phi_j -
+/// phi_k)`), that is `Q` (the springs, dampers and drag plus `tip_q`, the
+/// tip load's generalized forces on the rods) less the centripetal terms;
+/// `trig` holds each angle's `(sin, cos)`. The left side's matrix
+/// `M(phi)_jk = mu_jk cos(phi_j - phi_k)` is factored by [`MassFactor`].
+///
+/// The centripetal sums take O(N): for `k > j`, `mu_jk sin(phi_j - phi_k)
+/// = l_j g_k (e_k x e_j)`, so the terms beyond j are `l_j e_j x` (a running
+/// sum of `g_k phi_k'^2 e_k` from the tip), and those before it `g_j e_j x`
+/// (a running sum of `l_k phi_k'^2 e_k` from the foot), with `a x b` the
+/// 2-D cross product `a_y b_x - a_x b_y`.
+pub(super) fn lagrange_rhs(
     model: &Model,
-    mu: &DMatrix<f64>,
+    inertia: &ChainInertia,
     x: &StateVec,
     tip_q: &[f64],
-) -> Option<(Cholesky<f64, Dyn>, DVector<f64>)> {
+    trig: &[(f64, f64)],
+) -> Vec<f64> {
     let (phi, rate) = angles_and_rates(x);
     let n = phi.len();
-    // cos and sin of every difference phi_j - phi_k from one sin_cos per
-    // rod (N calls instead of 2 N^2).
-    let trig: Vec<(f64, f64)> = phi.iter().map(|a| a.sin_cos()).collect();
-    let cos_diff = |j: usize, k: usize| trig[j].1 * trig[k].1 + trig[j].0 * trig[k].0;
-    let sin_diff = |j: usize, k: usize| trig[j].0 * trig[k].1 - trig[j].1 * trig[k].0;
-    let mass = DMatrix::from_fn(n, n, |j, k| mu[(j, k)] * cos_diff(j, k));
-    let q = joint_and_drag_forces(&model.column, x, phi, rate);
-    let rhs = DVector::from_fn(n, |j, _| {
-        q[j] + tip_q[j]
-            - (0..n)
-                .map(|k| mu[(j, k)] * sin_diff(j, k) * rate[k] * rate[k])
-                .sum::<f64>()
-    });
-    Some((mass.cholesky()?, rhs))
+    let mut rhs = joint_and_drag_forces(&model.column, x, phi, rate);
+    let cross = |(sin, cos): (f64, f64), sum: [f64; 2]| sin * sum[0] - cos * sum[1];
+    // Sum over k > j of g_k phi_k'^2 e_k, from the tip.
+    let mut beyond = [0.0; 2];
+    for j in (0..n).rev() {
+        rhs[j] += tip_q[j] - inertia.lever_m[j] * cross(trig[j], beyond);
+        let weight = inertia.moment_kg_m[j] * rate[j] * rate[j];
+        beyond[0] += weight * trig[j].1;
+        beyond[1] += weight * trig[j].0;
+    }
+    // Sum over k < j of l_k phi_k'^2 e_k, from the foot.
+    let mut before = [0.0; 2];
+    for j in 0..n {
+        rhs[j] -= inertia.moment_kg_m[j] * cross(trig[j], before);
+        let weight = inertia.lever_m[j] * rate[j] * rate[j];
+        before[0] += weight * trig[j].1;
+        before[1] += weight * trig[j].0;
+    }
+    rhs
+}
+
+/// Each angle's `(sin, cos)`.
+pub(super) fn angles_trig(x: &StateVec) -> Vec<(f64, f64)> {
+    angles_and_rates(x).0.iter().map(|a| a.sin_cos()).collect()
+}
+
+/// Lagrange's equations in state `x` (see [`lagrange_rhs`]): the factored
+/// mass matrix and the right side. `None` for a mass matrix that cannot
+/// be factored.
+fn lagrange(
+    model: &Model,
+    inertia: &ChainInertia,
+    x: &StateVec,
+    tip_q: &[f64],
+) -> Option<(MassFactor, Vec<f64>)> {
+    let trig = angles_trig(x);
+    let rhs = lagrange_rhs(model, inertia, x, tip_q, &trig);
+    Some((MassFactor::new(inertia, &trig)?, rhs))
 }
 
 /// The rods' angular accelerations from Lagrange's equations (see
-/// [`lagrange`]) under the tip load's generalized forces `tip_q`. `None`
-/// for a mass matrix that cannot be factored.
+/// [`lagrange_rhs`]) under the tip load's generalized forces `tip_q`.
+/// `None` for a mass matrix that cannot be factored.
 fn rod_accelerations(
     model: &Model,
-    mu: &DMatrix<f64>,
+    inertia: &ChainInertia,
     x: &StateVec,
     tip_q: &[f64],
-) -> Option<DVector<f64>> {
-    let (factor, rhs) = lagrange(model, mu, x, tip_q)?;
-    Some(factor.solve(&rhs))
+) -> Option<Vec<f64>> {
+    let (factor, mut rhs) = lagrange(model, inertia, x, tip_q)?;
+    factor.solve_in_place(&mut rhs);
+    Some(rhs)
 }
 
 /// How the tip answers a force there, from one factorization of the mass
@@ -127,19 +161,24 @@ fn rod_accelerations(
 pub fn tip_mobility(model: &Model, x: &StateVec) -> Option<(Matrix2<f64>, DVector<f64>)> {
     let column = &model.column;
     let n = column.rods;
-    let (factor, rhs) = lagrange(model, &chain_mass_matrix(model), x, &vec![0.0; n])?;
+    let (factor, mut free) = lagrange(model, &chain_inertia(model), x, &vec![0.0; n])?;
+    factor.solve_in_place(&mut free);
     let angles = StateView::new(x).angles_rad();
     let jacobian = DMatrix::from_fn(2, n, |row, i| {
         column.rod(i).length_m * normal(angles[i])[row]
     });
-    let product = &jacobian * factor.solve(&jacobian.transpose());
+    let mut solved = jacobian.transpose();
+    for column in solved.as_mut_slice().chunks_exact_mut(n) {
+        factor.solve_in_place(column);
+    }
+    let product = &jacobian * solved;
     let mobility = Matrix2::new(
         product[(0, 0)],
         product[(0, 1)],
         product[(1, 0)],
         product[(1, 1)],
     );
-    Some((mobility, factor.solve(&rhs)))
+    Some((mobility, DVector::from_vec(free)))
 }
 
 /// The state derivative of a chain of any length under any tip load. The
@@ -148,18 +187,22 @@ pub fn tip_mobility(model: &Model, x: &StateVec) -> Option<(Matrix2<f64>, DVecto
 /// a mass matrix that cannot be factored.
 #[must_use]
 pub fn chain_derivative(model: &Model, x: &StateVec) -> Option<StateVec> {
-    chain_derivative_with(model, &chain_mass_matrix(model), x)
+    chain_derivative_with(model, &chain_inertia(model), x)
 }
 
-/// [`chain_derivative`] with the mass matrix at rest `mu`
-/// ([`chain_mass_matrix`] of `model`) given, for a caller that evaluates
-/// the same chain many times.
+/// [`chain_derivative`] with the mass matrix at rest (its generators,
+/// [`chain_inertia`] of `model`) given, for a caller that evaluates the
+/// same chain many times.
 #[must_use]
-pub fn chain_derivative_with(model: &Model, mu: &DMatrix<f64>, x: &StateVec) -> Option<StateVec> {
+pub fn chain_derivative_with(
+    model: &Model,
+    inertia: &ChainInertia,
+    x: &StateVec,
+) -> Option<StateVec> {
     let column = &model.column;
     let n = column.rods;
     let tip = tip_load(model, x);
-    let accelerations = rod_accelerations(model, mu, x, &tip.generalized_n_m[..n])?;
+    let accelerations = rod_accelerations(model, inertia, x, &tip.generalized_n_m[..n])?;
     let state = StateView::new(x);
     let (angles, rates) = (state.angles_rad(), state.rates_rad_per_s());
     let (psi_dot, psi_ddot) = match model.roller() {
@@ -189,9 +232,7 @@ pub fn chain_derivative_with(model: &Model, mu: &DMatrix<f64>, x: &StateVec) -> 
     let mut derivative = StateVec::zeros(x.len());
     let mut write = StateViewMut::new(&mut derivative);
     write.angles_rad().copy_from_slice(rates);
-    write
-        .rates_rad_per_s()
-        .copy_from_slice(accelerations.as_slice());
+    write.rates_rad_per_s().copy_from_slice(&accelerations);
     *write.spin_rad() = psi_dot;
     *write.spin_rate_rad_per_s() = psi_ddot;
     Some(derivative)

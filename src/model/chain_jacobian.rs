@@ -18,11 +18,11 @@
 //! `-P (cos theta, sin theta)`, `theta = eta phi_N`, works on rod j through
 //! `l_j (-sin phi_j, cos phi_j)`: `T_j = -P l_j sin(theta - phi_j)`.
 
-use nalgebra::DMatrix;
+use nalgebra::{DMatrix, DVector};
 
-use super::chain::lagrange;
+use super::chain::{angles_trig, lagrange_rhs};
 use super::loads::tip_load;
-use super::mass::chain_mass_matrix;
+use super::mass::chain_inertia;
 use super::params::{Load, Model};
 use super::state::{StateVec, StateViewMut, state_len};
 
@@ -44,15 +44,23 @@ pub fn chain_jacobian(model: &Model, phi: &[f64], rate: &[f64]) -> Option<DMatri
     let mut view = StateViewMut::new(&mut state);
     view.angles_rad().copy_from_slice(phi);
     view.rates_rad_per_s().copy_from_slice(rate);
-    // The equations themselves (`chain::lagrange`): the factored mass
-    // matrix and the accelerations.
-    let mu = chain_mass_matrix(model);
+    // The equations themselves (`chain::lagrange_rhs`): the mass matrix,
+    // factored, and the accelerations. Factored dense here, not by its
+    // structure as in the equations of motion (`chain_factor`): the two
+    // Jacobians agree to 5e-14 of their largest entry, yet with the
+    // structured one the shooting's Newton iterations on a 32-rod chain's
+    // cycle next to its onset (whose monodromy this Jacobian builds) no
+    // longer converged. They are that sensitive there; until that is
+    // mended, this keeps the arithmetic they were tested with.
+    let inertia = chain_inertia(model);
+    let mu = inertia.matrix();
     let tip = tip_load(model, &state).generalized_n_m;
-    let (factor, r) = lagrange(model, &mu, &state, &tip[..n])?;
-    let a = factor.solve(&r);
-
-    let trig: Vec<(f64, f64)> = phi.iter().map(|a| a.sin_cos()).collect();
+    let trig = angles_trig(&state);
+    let r = lagrange_rhs(model, &inertia, &state, &tip[..n], &trig);
     let cos_diff = |j: usize, k: usize| trig[j].1 * trig[k].1 + trig[j].0 * trig[k].0;
+    let factor = DMatrix::from_fn(n, n, |j, k| mu[(j, k)] * cos_diff(j, k)).cholesky()?;
+    let a = factor.solve(&DVector::from_vec(r));
+
     let sin_diff = |j: usize, k: usize| trig[j].0 * trig[k].1 - trig[j].1 * trig[k].0;
     let theta = eta * phi[n - 1];
     let length = |j: usize| column.rod(j).length_m;

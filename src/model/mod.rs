@@ -9,6 +9,7 @@ mod allowed;
 mod assign;
 mod axis;
 mod chain;
+mod chain_factor;
 mod chain_jacobian;
 mod key_table;
 mod keys;
@@ -43,7 +44,7 @@ pub use loads::{
     Friction, RodDrag, SLIP_REGULARIZATION_M_PER_S, TipLoad, friction, joint_torques_nm, rods_drag,
     tip_load,
 };
-pub use mass::{Inertia, chain_mass_matrix};
+pub use mass::{ChainInertia, Inertia, chain_inertia, chain_mass_matrix};
 pub use params::{Column, LARGEST_DERIVED, Load, MAX_RODS, Model, Rod, Roller, SpinInertia};
 pub use presets::{PRESETS, Preset, PresetId, preset};
 pub use quantity::Quantity;

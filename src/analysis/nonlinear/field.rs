@@ -13,8 +13,8 @@
 use nalgebra::{DMatrix, DVector};
 
 use crate::model::{
-    Model, StateVec, chain_derivative_with, chain_jacobian, chain_mass_matrix, friction, state_len,
-    two_rod_derivative,
+    ChainInertia, Model, StateVec, chain_derivative_with, chain_inertia, chain_jacobian, friction,
+    state_len, two_rod_derivative,
 };
 
 /// The reduced field of one model at one load.
@@ -24,8 +24,8 @@ pub struct Field {
     rods: usize,
     /// Whether `psi'` is a coordinate (a roller with mass).
     spin: bool,
-    /// The chain's mass matrix at rest (`chain_mass_matrix`), taken once.
-    mass_at_rest: DMatrix<f64>,
+    /// The chain's mass matrix at rest (`chain_inertia`), taken once.
+    mass_at_rest: ChainInertia,
     /// Equations `f(x, p)` in place of the column's, and their `p`.
     #[cfg(test)]
     constructed: Option<(Constructed, f64)>,
@@ -45,7 +45,7 @@ impl Field {
             model: *model,
             rods: model.column.rods,
             spin: model.roller().is_some_and(|r| r.mass_kg > 0.0),
-            mass_at_rest: chain_mass_matrix(model),
+            mass_at_rest: chain_inertia(model),
             #[cfg(test)]
             constructed: None,
         }

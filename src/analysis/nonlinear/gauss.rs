@@ -166,10 +166,8 @@ impl<'a> Stepper<'a> {
                     for i in 0..STAGES {
                         dk.rows_mut(i * d, d).copy_from(&jy);
                     }
-                    for mut column in dk.column_iter_mut() {
-                        if !split.solve_mut(column.as_mut_slice()) {
-                            return None;
-                        }
+                    if !split.solve_columns_mut(dk.as_mut_slice(), d) {
+                        return None;
                     }
                     dk
                 }
@@ -294,8 +292,8 @@ fn stage_point_into(
 struct SplitStages {
     /// Each pair's `I - h lambda J`, factored (by faer, as [`solve_dense`]).
     lus: Vec<faer::linalg::solvers::PartialPivLu<C64>>,
-    /// Each pair's transformed right-hand side, reused.
-    scratch: Vec<DVector<C64>>,
+    /// Each pair's transformed right-hand sides (column-major), reused.
+    scratch: Vec<Vec<C64>>,
 }
 
 impl SplitStages {
@@ -312,34 +310,49 @@ impl SplitStages {
             .collect();
         Self {
             lus,
-            scratch: vec![DVector::zeros(d); STAGES / 2],
+            scratch: (0..STAGES / 2).map(|_| Vec::with_capacity(d)).collect(),
         }
     }
 
     /// Solves the stage equations' matrix for the stacked stages `r`, in
     /// place; `false` where the solution is not finite (a singular matrix).
     fn solve_mut(&mut self, r: &mut [f64]) -> bool {
+        self.solve_columns_mut(r, 1)
+    }
+
+    /// [`Self::solve_mut`] for `columns` right-hand sides at once, `r`
+    /// column-major (the monodromy's step: one blocked solve of all its
+    /// columns, where one solve per column is bound by each column's
+    /// pass over the factors).
+    fn solve_columns_mut(&mut self, r: &mut [f64], columns: usize) -> bool {
         use faer::linalg::solvers::Solve;
-        let (d, t) = (r.len() / STAGES, &*GAUSS);
+        let t = &*GAUSS;
+        let rows = r.len() / columns;
+        let d = rows / STAGES;
         for (pair, (lu, rho)) in self.lus.iter().zip(&mut self.scratch).enumerate() {
             let row = t.eigenvectors_inverse.row(2 * pair);
-            for (e, rho_e) in rho.iter_mut().enumerate() {
-                *rho_e = (0..STAGES).map(|j| row[j] * r[j * d + e]).sum();
+            rho.resize(d * columns, C64::new(0.0, 0.0));
+            for (rho_c, r_c) in rho.chunks_exact_mut(d).zip(r.chunks_exact(rows)) {
+                for (e, rho_e) in rho_c.iter_mut().enumerate() {
+                    *rho_e = (0..STAGES).map(|j| row[j] * r_c[j * d + e]).sum();
+                }
             }
             lu.solve_in_place(faer::MatMut::from_column_major_slice_mut(
                 rho.as_mut_slice(),
                 d,
-                1,
+                columns,
             ));
         }
-        for i in 0..STAGES {
-            for e in 0..d {
-                r[i * d + e] = self
-                    .scratch
-                    .iter()
-                    .enumerate()
-                    .map(|(pair, w)| 2.0 * (t.eigenvectors[(i, 2 * pair)] * w[e]).re)
-                    .sum();
+        for (c, r_c) in r.chunks_exact_mut(rows).enumerate() {
+            for i in 0..STAGES {
+                for e in 0..d {
+                    r_c[i * d + e] = self
+                        .scratch
+                        .iter()
+                        .enumerate()
+                        .map(|(pair, w)| 2.0 * (t.eigenvectors[(i, 2 * pair)] * w[c * d + e]).re)
+                        .sum();
+                }
             }
         }
         r.iter().all(|v| v.is_finite())
