@@ -138,20 +138,6 @@ fn lagrange(
     Some((MassFactor::new(inertia, &trig)?, rhs))
 }
 
-/// The rods' angular accelerations from Lagrange's equations (see
-/// [`lagrange_rhs`]) under the tip load's generalized forces `tip_q`.
-/// `None` for a mass matrix that cannot be factored.
-fn rod_accelerations(
-    model: &Model,
-    inertia: &ChainInertia,
-    x: &StateVec,
-    tip_q: &[f64],
-) -> Option<Vec<f64>> {
-    let (factor, mut rhs) = lagrange(model, inertia, x, tip_q)?;
-    factor.solve_in_place(&mut rhs);
-    Some(rhs)
-}
-
 /// How the tip answers a force there, from one factorization of the mass
 /// matrix: the mobility `J M(phi)^-1 J^T` (the change of the tip's velocity
 /// per unit impulse, `J = [l_i t_i]` the tip's Jacobian) and the rods'
@@ -199,17 +185,72 @@ pub fn chain_derivative_with(
     inertia: &ChainInertia,
     x: &StateVec,
 ) -> Option<StateVec> {
+    let [derivative] = chain_derivatives_with(model, inertia, [x]);
+    derivative
+}
+
+/// [`chain_derivative_with`] in `L` states at once (a step's stages):
+/// the mass matrices factored and solved side by side
+/// ([`MassFactor::new_lanes`]), each state's derivative the same to the
+/// bit as alone.
+#[must_use]
+pub fn chain_derivatives_with<const L: usize>(
+    model: &Model,
+    inertia: &ChainInertia,
+    xs: [&StateVec; L],
+) -> [Option<StateVec>; L] {
+    let n = model.column.rods;
+    let tips = xs.map(|x| tip_load(model, x));
+    let trigs = xs.map(angles_trig);
+    let mut accelerations: [Vec<f64>; L] = std::array::from_fn(|lane| {
+        lagrange_rhs(
+            model,
+            inertia,
+            xs[lane],
+            &tips[lane].generalized_n_m[..n],
+            &trigs[lane],
+        )
+    });
+    let factors = MassFactor::new_lanes(inertia, trigs.each_ref().map(Vec::as_slice));
+    if let Some(all) = factors
+        .iter()
+        .map(Option::as_ref)
+        .collect::<Option<Vec<_>>>()
+    {
+        let all: [&MassFactor; L] = std::array::from_fn(|lane| all[lane]);
+        MassFactor::solve_lanes(all, &mut accelerations.each_mut().map(Vec::as_mut_slice));
+    } else {
+        for (factor, a) in factors.iter().zip(&mut accelerations) {
+            if let Some(factor) = factor {
+                factor.solve_in_place(a);
+            }
+        }
+    }
+    std::array::from_fn(|lane| {
+        factors[lane].as_ref()?;
+        Some(assemble(
+            model,
+            xs[lane],
+            &tips[lane].generalized_n_m,
+            &accelerations[lane],
+        ))
+    })
+}
+
+/// The state derivative from the rods' `accelerations` and the tip load's
+/// generalized forces `tip_q` (on the rods, then the spin): the roller's
+/// spin obeys `J psi'' = Q_psi`; a massless roller's spin follows its
+/// slaved rate, and `psi''` is that rate's time derivative.
+fn assemble(model: &Model, x: &StateVec, tip_q: &[f64], accelerations: &[f64]) -> StateVec {
     let column = &model.column;
     let n = column.rods;
-    let tip = tip_load(model, x);
-    let accelerations = rod_accelerations(model, inertia, x, &tip.generalized_n_m[..n])?;
     let state = StateView::new(x);
     let (angles, rates) = (state.angles_rad(), state.rates_rad_per_s());
     let (psi_dot, psi_ddot) = match model.roller() {
         None => (0.0, 0.0),
         Some(roller) if roller.mass_kg > 0.0 => (
             state.spin_rate_rad_per_s(),
-            tip.generalized_n_m[n] / roller.spin_inertia_kg_m2(column.rod2.length_m),
+            tip_q[n] / roller.spin_inertia_kg_m2(column.rod2.length_m),
         ),
         Some(roller) => {
             // r psi' = l_N phi_N' + sum_{i<N} l_i phi_i' cos(phi_N - phi_i)
@@ -232,10 +273,10 @@ pub fn chain_derivative_with(
     let mut derivative = StateVec::zeros(x.len());
     let mut write = StateViewMut::new(&mut derivative);
     write.angles_rad().copy_from_slice(rates);
-    write.rates_rad_per_s().copy_from_slice(&accelerations);
+    write.rates_rad_per_s().copy_from_slice(accelerations);
     *write.spin_rad() = psi_dot;
     *write.spin_rate_rad_per_s() = psi_ddot;
-    Some(derivative)
+    derivative
 }
 
 /// Kinetic (rods and roller's spin) and spring energy of the chain, in joules.

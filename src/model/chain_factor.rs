@@ -43,55 +43,92 @@ impl MassFactor {
     /// definite (a pivot not above zero, or not finite).
     #[must_use]
     pub fn new(inertia: &ChainInertia, trig: &[(f64, f64)]) -> Option<Self> {
-        let n = trig.len();
-        let mut factor = Self {
+        let [factor] = Self::new_lanes(inertia, [trig]);
+        factor
+    }
+
+    /// [`Self::new`] for `L` deformations of the same chain at once, their
+    /// operations interleaved, each lane's those of one factorization (so
+    /// each factor is the same to the bit): a factorization is a chain of
+    /// dependent square roots and divisions, and `L` of them side by side
+    /// keep the CPU busy while each waits.
+    #[must_use]
+    pub fn new_lanes<const L: usize>(
+        inertia: &ChainInertia,
+        trigs: [&[(f64, f64)]; L],
+    ) -> [Option<Self>; L] {
+        let n = inertia.diagonal_kg_m2.len();
+        let mut factors: [Self; L] = std::array::from_fn(|_| Self {
             inverse_diagonal: Vec::with_capacity(n),
             rows: Vec::with_capacity(n),
             columns: Vec::with_capacity(n),
-        };
-        // P = sum of w_i w_i^T so far: (xx, xy, yy).
-        let (mut pxx, mut pxy, mut pyy) = (0.0, 0.0, 0.0);
-        for (k, &(sin, cos)) in trig.iter().enumerate() {
-            let lever = inertia.lever_m[k];
-            let moment = inertia.moment_kg_m[k];
-            let v = [moment * cos, moment * sin];
-            let pv = [pxx * v[0] + pxy * v[1], pxy * v[0] + pyy * v[1]];
-            let pivot = inertia.diagonal_kg_m2[k] - dot(v, pv);
-            if !(pivot > 0.0 && pivot.is_finite()) {
-                return None;
+        });
+        // Each lane's P = sum of w_i w_i^T so far: (xx, xy, yy).
+        let mut p = [[0.0; 3]; L];
+        let mut positive = [true; L];
+        let generators = (inertia.lever_m.iter())
+            .zip(&inertia.moment_kg_m)
+            .zip(&inertia.diagonal_kg_m2);
+        for (k, ((&lever, &moment), &diagonal_kg_m2)) in generators.enumerate() {
+            for lane in 0..L {
+                let (sin, cos) = trigs[lane][k];
+                let [pxx, pxy, pyy] = p[lane];
+                let v = [moment * cos, moment * sin];
+                let pv = [pxx * v[0] + pxy * v[1], pxy * v[0] + pyy * v[1]];
+                let pivot = diagonal_kg_m2 - dot(v, pv);
+                positive[lane] &= pivot > 0.0 && pivot.is_finite();
+                let inverse = pivot.sqrt().recip();
+                let w = [
+                    (lever * cos - pv[0]) * inverse,
+                    (lever * sin - pv[1]) * inverse,
+                ];
+                p[lane] = [pxx + w[0] * w[0], pxy + w[0] * w[1], pyy + w[1] * w[1]];
+                let factor = &mut factors[lane];
+                factor.inverse_diagonal.push(inverse);
+                factor.rows.push(v);
+                factor.columns.push(w);
             }
-            let inverse = pivot.sqrt().recip();
-            let w = [
-                (lever * cos - pv[0]) * inverse,
-                (lever * sin - pv[1]) * inverse,
-            ];
-            pxx += w[0] * w[0];
-            pxy += w[0] * w[1];
-            pyy += w[1] * w[1];
-            factor.inverse_diagonal.push(inverse);
-            factor.rows.push(v);
-            factor.columns.push(w);
         }
-        Some(factor)
+        let mut factors = factors.into_iter();
+        std::array::from_fn(|lane| factors.next().filter(|_| positive[lane]))
     }
 
     /// Solves `M a = b` in place (`b` of the chain's length).
     pub fn solve_in_place(&self, b: &mut [f64]) {
+        Self::solve_lanes([self], &mut [b]);
+    }
+
+    /// [`Self::solve_in_place`] for `L` factors and right sides at once,
+    /// interleaved as in [`Self::new_lanes`] (each lane to the bit as
+    /// alone).
+    #[expect(
+        clippy::needless_range_loop,
+        reason = "every lane is taken at the same row"
+    )]
+    pub fn solve_lanes<const L: usize>(factors: [&Self; L], bs: &mut [&mut [f64]; L]) {
+        let n = factors.first().map_or(0, |f| f.inverse_diagonal.len());
         // L y = b, carrying s = sum_{k<j} w_k y_k.
-        let mut carried = [0.0; 2];
-        for (j, value) in b.iter_mut().enumerate() {
-            let y = (*value - dot(self.rows[j], carried)) * self.inverse_diagonal[j];
-            *value = y;
-            carried[0] += self.columns[j][0] * y;
-            carried[1] += self.columns[j][1] * y;
+        let mut carried = [[0.0; 2]; L];
+        for j in 0..n {
+            for lane in 0..L {
+                let (factor, value) = (factors[lane], &mut bs[lane][j]);
+                let y = (*value - dot(factor.rows[j], carried[lane])) * factor.inverse_diagonal[j];
+                *value = y;
+                carried[lane][0] += factor.columns[j][0] * y;
+                carried[lane][1] += factor.columns[j][1] * y;
+            }
         }
         // L^T a = y, carrying t = sum_{j>k} v_j a_j.
-        let mut carried = [0.0; 2];
-        for (k, value) in b.iter_mut().enumerate().rev() {
-            let a = (*value - dot(self.columns[k], carried)) * self.inverse_diagonal[k];
-            *value = a;
-            carried[0] += self.rows[k][0] * a;
-            carried[1] += self.rows[k][1] * a;
+        let mut carried = [[0.0; 2]; L];
+        for k in (0..n).rev() {
+            for lane in 0..L {
+                let (factor, value) = (factors[lane], &mut bs[lane][k]);
+                let a =
+                    (*value - dot(factor.columns[k], carried[lane])) * factor.inverse_diagonal[k];
+                *value = a;
+                carried[lane][0] += factor.rows[k][0] * a;
+                carried[lane][1] += factor.rows[k][1] * a;
+            }
         }
     }
 }
@@ -151,6 +188,57 @@ mod tests {
             let product = (&lower * lower.transpose() - &m).amax();
             assert!(product < 1e-13 * m.amax(), "{product}");
         }
+    }
+
+    /// Factors and solves side by side are each the same to the bit as
+    /// alone, and a lane whose matrix has no factor leaves the others be.
+    #[test]
+    fn lanes_are_each_the_same_as_alone() {
+        let mut model = PresetId::Roller.model();
+        model.column.rods = 9;
+        let inertia = chain_inertia(&model);
+        let trigs: Vec<Vec<(f64, f64)>> = (0..3)
+            .map(|lane| {
+                (0..9)
+                    .map(|i| {
+                        (1.7 * (0.9 * f64::from(i) + f64::from(lane)))
+                            .sin()
+                            .sin_cos()
+                    })
+                    .collect()
+            })
+            .collect();
+        #[expect(clippy::cast_precision_loss, reason = "a few rods")]
+        let rhs =
+            |lane: usize| -> Vec<f64> { (0..9).map(|i| (0.4 * (i + lane) as f64).cos()).collect() };
+        let lanes = MassFactor::new_lanes(&inertia, [&trigs[0], &trigs[1], &trigs[2]]);
+        let factors: Vec<&MassFactor> = lanes
+            .iter()
+            .map(|f| f.as_ref().expect("a factor"))
+            .collect();
+        let (mut b0, mut b1, mut b2) = (rhs(0), rhs(1), rhs(2));
+        MassFactor::solve_lanes(
+            [factors[0], factors[1], factors[2]],
+            &mut [&mut b0, &mut b1, &mut b2],
+        );
+        for (lane, solved) in [b0, b1, b2].iter().enumerate() {
+            let mut alone = rhs(lane);
+            MassFactor::new(&inertia, &trigs[lane])
+                .expect("a factor")
+                .solve_in_place(&mut alone);
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(solved), bits(&alone), "lane {lane}");
+        }
+        // A lane at an angle that is not a number has no factor; the
+        // other's is its own.
+        let mut broken = trigs[1].clone();
+        broken[4] = (f64::NAN, f64::NAN);
+        let [first, second] = MassFactor::new_lanes(&inertia, [&trigs[0], &broken]);
+        assert!(second.is_none());
+        let (mut with, mut alone) = (rhs(0), rhs(0));
+        first.expect("a factor").solve_in_place(&mut with);
+        factors[0].solve_in_place(&mut alone);
+        assert_eq!(with, alone);
     }
 
     /// A matrix that is not positive definite has no factor: a pivot of

@@ -31,8 +31,8 @@ pub use allowed::Allowed;
 pub use assign::{Assignment, apply_assignments, parse_assignment};
 pub use axis::Axis;
 pub use chain::{
-    TipResponse, chain_derivative, chain_derivative_with, chain_energy_j, energy_j,
-    state_derivative, tip_mobility, tip_response,
+    TipResponse, chain_derivative, chain_derivative_with, chain_derivatives_with, chain_energy_j,
+    energy_j, state_derivative, tip_mobility, tip_response,
 };
 pub use chain_jacobian::chain_jacobian;
 pub use key_table::KEYS;

@@ -535,3 +535,31 @@ fn a_stiff_first_joint_does_not_send_the_locus_chasing_rounding() {
         );
     }
 }
+
+/// The equations of motion in four states side by side are each the same
+/// to the bit as alone: a follower chain with drag, and the roller with
+/// and without mass, at large amplitude.
+#[test]
+fn chains_side_by_side_move_as_alone() {
+    for (preset, extra) in [
+        ("uniform-rods", "c_ext=0.04"),
+        ("roller", "m3=0"),
+        ("roller", "load=1"),
+    ] {
+        let chain = model(preset, &["rods=6", extra]);
+        let inertia = zieglerlab::model::chain_inertia(&chain);
+        let states: Vec<StateVec> = (0..4)
+            .map(|lane| wild_state(6) * (0.5 + 0.3 * f64::from(lane)))
+            .collect();
+        let side_by_side = zieglerlab::model::chain_derivatives_with(
+            &chain,
+            &inertia,
+            [&states[0], &states[1], &states[2], &states[3]],
+        );
+        for (x, together) in states.iter().zip(side_by_side) {
+            let alone = chain_derivative(&chain, x).unwrap();
+            let bits = |v: &StateVec| v.iter().map(|a| a.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&together.unwrap()), bits(&alone), "{preset} {extra}");
+        }
+    }
+}

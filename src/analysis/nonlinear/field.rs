@@ -13,8 +13,8 @@
 use nalgebra::{DMatrix, DVector};
 
 use crate::model::{
-    ChainInertia, Model, StateVec, chain_derivative_with, chain_inertia, chain_jacobian, friction,
-    state_len, two_rod_derivative,
+    ChainInertia, Model, StateVec, chain_derivative_with, chain_derivatives_with, chain_inertia,
+    chain_jacobian, friction, state_len, two_rod_derivative,
 };
 
 /// The reduced field of one model at one load.
@@ -133,8 +133,40 @@ impl Field {
             return;
         }
         let full = self.full_state(x);
-        let d = chain_derivative_with(&self.model, &self.mass_at_rest, &full)
-            .unwrap_or_else(|| StateVec::from_element(full.len(), f64::NAN));
+        let d = chain_derivative_with(&self.model, &self.mass_at_rest, &full);
+        self.reduce_into(d, out);
+    }
+
+    /// [`Self::at_into`] at `L` points at once (a step's stages): a
+    /// chain's equations of motion evaluated side by side
+    /// (`chain_derivatives_with`), each to the bit as alone.
+    pub fn at_into_each<const L: usize>(
+        &self,
+        xs: [&DVector<f64>; L],
+        outs: [&mut DVector<f64>; L],
+    ) {
+        #[cfg(test)]
+        let constructed = self.constructed.is_some();
+        #[cfg(not(test))]
+        let constructed = false;
+        if constructed || self.rods == 2 {
+            for (x, out) in xs.into_iter().zip(outs) {
+                self.at_into(x, out);
+            }
+            return;
+        }
+        let fulls = xs.map(|x| self.full_state(x));
+        let derivatives = chain_derivatives_with(&self.model, &self.mass_at_rest, fulls.each_ref());
+        for (d, out) in derivatives.into_iter().zip(outs) {
+            self.reduce_into(d, out);
+        }
+    }
+
+    /// The full state's derivative `d` (NaN where there is none) on the
+    /// reduced state, into `out`.
+    fn reduce_into(&self, d: Option<StateVec>, out: &mut DVector<f64>) {
+        let n = self.rods;
+        let d = d.unwrap_or_else(|| StateVec::from_element(state_len(n), f64::NAN));
         for (i, o) in out.iter_mut().enumerate() {
             *o = match i {
                 i if i < n => d[i],

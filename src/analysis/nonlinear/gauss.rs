@@ -72,10 +72,10 @@ pub struct Stepper<'a> {
     /// The Jacobian the last step was solved with and its stage matrix,
     /// factored.
     newton: Option<(DMatrix<f64>, SplitStages)>,
-    /// Room for a stage point and the field there, reused by every
-    /// iteration (the inner loop allocates nothing).
-    point: DVector<f64>,
-    at_point: DVector<f64>,
+    /// Room for the stage points and the field there, reused by every
+    /// iteration.
+    points: [DVector<f64>; STAGES],
+    at_points: [DVector<f64>; STAGES],
 }
 
 impl<'a> Stepper<'a> {
@@ -87,8 +87,8 @@ impl<'a> Stepper<'a> {
             h,
             stages: None,
             newton: None,
-            point: DVector::zeros(d),
-            at_point: DVector::zeros(d),
+            points: std::array::from_fn(|_| DVector::zeros(d)),
+            at_points: std::array::from_fn(|_| DVector::zeros(d)),
         }
     }
 
@@ -150,8 +150,9 @@ impl<'a> Stepper<'a> {
             let dk = match (monodromy, &mut self.newton) {
                 (Monodromy::Exact | Monodromy::Multipliers, _) => {
                     let jacobians: [DMatrix<f64>; STAGES] = std::array::from_fn(|i| {
-                        stage_point_into(x, &k, h, i, &mut self.point);
-                        self.field.jacobian_extrapolated(&self.point, JACOBIAN_STEP)
+                        stage_point_into(x, &k, h, i, &mut self.points[i]);
+                        self.field
+                            .jacobian_extrapolated(&self.points[i], JACOBIAN_STEP)
                     });
                     let mut dk = DMatrix::zeros(STAGES * d, d);
                     for (i, j) in jacobians.iter().enumerate() {
@@ -252,14 +253,18 @@ impl<'a> Stepper<'a> {
     }
 
     /// The stage equations' residual `K_i - f(x + h sum_j a_ij K_j)`, into
-    /// `out`.
+    /// `out`. The stages' fields are evaluated side by side
+    /// ([`Field::at_into_each`]).
     fn residual(&mut self, x: &DVector<f64>, k: &DVector<f64>, out: &mut DVector<f64>) {
         let d = x.len();
-        for i in 0..STAGES {
-            stage_point_into(x, k, self.h, i, &mut self.point);
-            self.field.at_into(&self.point, &mut self.at_point);
+        for (i, point) in self.points.iter_mut().enumerate() {
+            stage_point_into(x, k, self.h, i, point);
+        }
+        self.field
+            .at_into_each(self.points.each_ref(), self.at_points.each_mut());
+        for (i, at_point) in self.at_points.iter().enumerate() {
             for r in 0..d {
-                out[i * d + r] = k[i * d + r] - self.at_point[r];
+                out[i * d + r] = k[i * d + r] - at_point[r];
             }
         }
     }
