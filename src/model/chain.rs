@@ -212,20 +212,10 @@ pub fn chain_derivatives_with<const L: usize>(
         )
     });
     let factors = MassFactor::new_lanes(inertia, trigs.each_ref().map(Vec::as_slice));
-    if let Some(all) = factors
-        .iter()
-        .map(Option::as_ref)
-        .collect::<Option<Vec<_>>>()
-    {
-        let all: [&MassFactor; L] = std::array::from_fn(|lane| all[lane]);
-        MassFactor::solve_lanes(all, &mut accelerations.each_mut().map(Vec::as_mut_slice));
-    } else {
-        for (factor, a) in factors.iter().zip(&mut accelerations) {
-            if let Some(factor) = factor {
-                factor.solve_in_place(a);
-            }
-        }
-    }
+    MassFactor::solve_lanes(
+        factors.each_ref().map(Option::as_ref),
+        &mut accelerations.each_mut().map(Vec::as_mut_slice),
+    );
     std::array::from_fn(|lane| {
         factors[lane].as_ref()?;
         Some(assemble(

@@ -95,23 +95,26 @@ impl MassFactor {
 
     /// Solves `M a = b` in place (`b` of the chain's length).
     pub fn solve_in_place(&self, b: &mut [f64]) {
-        Self::solve_lanes([self], &mut [b]);
+        Self::solve_lanes([Some(self)], &mut [b]);
     }
 
     /// [`Self::solve_in_place`] for `L` factors and right sides at once,
     /// interleaved as in [`Self::new_lanes`] (each lane to the bit as
-    /// alone).
+    /// alone); a lane without a factor is left as it is.
     #[expect(
         clippy::needless_range_loop,
         reason = "every lane is taken at the same row"
     )]
-    pub fn solve_lanes<const L: usize>(factors: [&Self; L], bs: &mut [&mut [f64]; L]) {
-        let n = factors.first().map_or(0, |f| f.inverse_diagonal.len());
+    pub fn solve_lanes<const L: usize>(factors: [Option<&Self>; L], bs: &mut [&mut [f64]; L]) {
+        let n = bs.first().map_or(0, |b| b.len());
         // L y = b, carrying s = sum_{k<j} w_k y_k.
         let mut carried = [[0.0; 2]; L];
         for j in 0..n {
             for lane in 0..L {
-                let (factor, value) = (factors[lane], &mut bs[lane][j]);
+                let Some(factor) = factors[lane] else {
+                    continue;
+                };
+                let value = &mut bs[lane][j];
                 let y = (*value - dot(factor.rows[j], carried[lane])) * factor.inverse_diagonal[j];
                 *value = y;
                 carried[lane][0] += factor.columns[j][0] * y;
@@ -122,7 +125,10 @@ impl MassFactor {
         let mut carried = [[0.0; 2]; L];
         for k in (0..n).rev() {
             for lane in 0..L {
-                let (factor, value) = (factors[lane], &mut bs[lane][k]);
+                let Some(factor) = factors[lane] else {
+                    continue;
+                };
+                let value = &mut bs[lane][k];
                 let a =
                     (*value - dot(factor.columns[k], carried[lane])) * factor.inverse_diagonal[k];
                 *value = a;
@@ -218,7 +224,7 @@ mod tests {
             .collect();
         let (mut b0, mut b1, mut b2) = (rhs(0), rhs(1), rhs(2));
         MassFactor::solve_lanes(
-            [factors[0], factors[1], factors[2]],
+            [Some(factors[0]), Some(factors[1]), Some(factors[2])],
             &mut [&mut b0, &mut b1, &mut b2],
         );
         for (lane, solved) in [b0, b1, b2].iter().enumerate() {
@@ -230,15 +236,20 @@ mod tests {
             assert_eq!(bits(solved), bits(&alone), "lane {lane}");
         }
         // A lane at an angle that is not a number has no factor; the
-        // other's is its own.
+        // other's is its own, and solved beside the empty lane, which is
+        // left as it was, it is the same as alone.
         let mut broken = trigs[1].clone();
         broken[4] = (f64::NAN, f64::NAN);
         let [first, second] = MassFactor::new_lanes(&inertia, [&trigs[0], &broken]);
         assert!(second.is_none());
-        let (mut with, mut alone) = (rhs(0), rhs(0));
-        first.expect("a factor").solve_in_place(&mut with);
+        let (mut with, mut untouched, mut alone) = (rhs(0), rhs(1), rhs(0));
+        MassFactor::solve_lanes(
+            [first.as_ref(), second.as_ref()],
+            &mut [&mut with, &mut untouched],
+        );
         factors[0].solve_in_place(&mut alone);
         assert_eq!(with, alone);
+        assert_eq!(untouched, rhs(1));
     }
 
     /// A matrix that is not positive definite has no factor: a pivot of
