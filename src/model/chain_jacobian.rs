@@ -18,7 +18,7 @@
 //! `-P (cos theta, sin theta)`, `theta = eta phi_N`, works on rod j through
 //! `l_j (-sin phi_j, cos phi_j)`: `T_j = -P l_j sin(theta - phi_j)`.
 
-use nalgebra::{DMatrix, DVector};
+use nalgebra::DMatrix;
 
 use super::chain::{angles_trig, lagrange_rhs};
 use super::loads::tip_load;
@@ -56,10 +56,10 @@ pub fn chain_jacobian(model: &Model, phi: &[f64], rate: &[f64]) -> Option<DMatri
     let mu = inertia.matrix();
     let tip = tip_load(model, &state).generalized_n_m;
     let trig = angles_trig(&state);
-    let r = lagrange_rhs(model, &inertia, &state, &tip[..n], &trig);
+    let mut a = lagrange_rhs(model, &inertia, &state, &tip[..n], &trig);
     let cos_diff = |j: usize, k: usize| trig[j].1 * trig[k].1 + trig[j].0 * trig[k].0;
     let factor = DMatrix::from_fn(n, n, |j, k| mu[(j, k)] * cos_diff(j, k)).cholesky()?;
-    let a = factor.solve(&DVector::from_vec(r));
+    cholesky_solve_rows(factor.l_dirty(), &mut a);
 
     let sin_diff = |j: usize, k: usize| trig[j].0 * trig[k].1 - trig[j].1 * trig[k].0;
     let theta = eta * phi[n - 1];
