@@ -8,7 +8,7 @@ use nalgebra::{DMatrix, DVector, Matrix2, Vector2};
 
 use super::chain_factor::MassFactor;
 use super::kinematics::normal;
-use super::loads::{joint_torques_nm, rods_drag, slaved_spin_rate, tip_load};
+use super::loads::{angles_trig, joint_torques_nm, rods_drag, slaved_spin_rate, tip_load_trig};
 use super::mass::{ChainInertia, chain_inertia, chain_mass_matrix};
 use super::params::{Column, Model};
 use super::state::{StateVec, StateView, StateViewMut};
@@ -119,11 +119,6 @@ pub(super) fn lagrange_rhs(
     rhs
 }
 
-/// Each angle's `(sin, cos)`.
-pub(super) fn angles_trig(x: &StateVec) -> Vec<(f64, f64)> {
-    angles_and_rates(x).0.iter().map(|a| a.sin_cos()).collect()
-}
-
 /// Lagrange's equations in state `x` (see [`lagrange_rhs`]): the factored
 /// mass matrix and the right side. `None` for a mass matrix that cannot
 /// be factored.
@@ -200,8 +195,8 @@ pub fn chain_derivatives_with<const L: usize>(
     xs: [&StateVec; L],
 ) -> [Option<StateVec>; L] {
     let n = model.column.rods;
-    let tips = xs.map(|x| tip_load(model, x));
     let trigs = xs.map(angles_trig);
+    let tips = std::array::from_fn::<_, L, _>(|lane| tip_load_trig(model, xs[lane], &trigs[lane]));
     let mut accelerations: [Vec<f64>; L] = std::array::from_fn(|lane| {
         lagrange_rhs(
             model,

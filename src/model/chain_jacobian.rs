@@ -20,8 +20,8 @@
 
 use nalgebra::DMatrix;
 
-use super::chain::{angles_trig, lagrange_rhs};
-use super::loads::tip_load;
+use super::chain::lagrange_rhs;
+use super::loads::{angles_trig, tip_load_trig};
 use super::mass::chain_inertia;
 use super::params::{Load, Model};
 use super::state::{StateVec, StateViewMut, state_len};
@@ -54,8 +54,8 @@ pub fn chain_jacobian(model: &Model, phi: &[f64], rate: &[f64]) -> Option<DMatri
     // mended, this keeps the arithmetic they were tested with.
     let inertia = chain_inertia(model);
     let mu = inertia.matrix();
-    let tip = tip_load(model, &state).generalized_n_m;
     let trig = angles_trig(&state);
+    let tip = tip_load_trig(model, &state, &trig).generalized_n_m;
     let mut a = lagrange_rhs(model, &inertia, &state, &tip[..n], &trig);
     let cos_diff = |j: usize, k: usize| trig[j].1 * trig[k].1 + trig[j].0 * trig[k].0;
     let factor = DMatrix::from_fn(n, n, |j, k| mu[(j, k)] * cos_diff(j, k)).cholesky()?;

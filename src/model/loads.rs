@@ -74,7 +74,7 @@ pub fn friction(column: &Column, roller: &Roller, x: &StateVec) -> Friction {
     let regularized = speed < SLIP_REGULARIZATION_M_PER_S;
     let force_n = -roller.friction_force_n() * slip / speed.max(SLIP_REGULARIZATION_M_PER_S);
     let delta_rad = slip.dot(&t_last).atan2(slip.dot(&unit(angles[last])));
-    let mut generalized_n_m = rods_generalized(column, x, force_n);
+    let mut generalized_n_m = rods_generalized(column, &angles_trig(x), force_n);
     generalized_n_m.push(-r / l_last * generalized_n_m[last]);
     Friction {
         slip_m_per_s: slip,
@@ -86,13 +86,26 @@ pub fn friction(column: &Column, roller: &Roller, x: &StateVec) -> Friction {
 }
 
 /// The generalized forces on the rods' angles of a force at the tip:
-/// `Q_i = F . l_i t_i`.
-fn rods_generalized(column: &Column, x: &StateVec, force_n: Vector2<f64>) -> Vec<f64> {
+/// `Q_i = F . l_i t_i`, from each angle's `(sin, cos)`.
+fn rods_generalized(column: &Column, trig: &[(f64, f64)], force_n: Vector2<f64>) -> Vec<f64> {
     // Room for the spin's entry, which the callers push.
     let mut q = Vec::with_capacity(column.rods + 1);
-    let angles = StateView::new(x).angles_rad();
-    q.extend((0..column.rods).map(|i| force_n.dot(&(column.rod(i).length_m * normal(angles[i])))));
+    q.extend(
+        trig.iter().enumerate().map(|(i, &(sin, cos))| {
+            force_n.dot(&(column.rod(i).length_m * Vector2::new(-sin, cos)))
+        }),
+    );
     q
+}
+
+/// Each angle's `(sin, cos)` in state `x`.
+#[must_use]
+pub(super) fn angles_trig(x: &StateVec) -> Vec<(f64, f64)> {
+    StateView::new(x)
+        .angles_rad()
+        .iter()
+        .map(|a| a.sin_cos())
+        .collect()
 }
 
 /// The load at the tip in one state, whatever its kind.
@@ -111,10 +124,17 @@ pub struct TipLoad {
 /// The tip load of `model` in state `x` (section 2).
 #[must_use]
 pub fn tip_load(model: &Model, x: &StateVec) -> TipLoad {
+    tip_load_trig(model, x, &angles_trig(x))
+}
+
+/// [`tip_load`] with each angle's `(sin, cos)` in `x` given
+/// ([`angles_trig`]), for a caller that has them already.
+#[must_use]
+pub(super) fn tip_load_trig(model: &Model, x: &StateVec, trig: &[(f64, f64)]) -> TipLoad {
     match model.load {
         Load::Follower { force_n, eta } => {
             let force_n = -force_n * unit(eta * StateView::new(x).last_angle_rad());
-            let mut generalized_n_m = rods_generalized(&model.column, x, force_n);
+            let mut generalized_n_m = rods_generalized(&model.column, trig, force_n);
             generalized_n_m.push(0.0);
             TipLoad {
                 force_n,
