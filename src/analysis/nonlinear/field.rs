@@ -86,6 +86,18 @@ impl Field {
         self.rods
     }
 
+    /// Whether the reduced state is `(phi, phi')` alone, so that the
+    /// field's first half is exactly the state's second (a column without
+    /// the spin; not a constructed field).
+    #[must_use]
+    pub fn mechanical(&self) -> bool {
+        #[cfg(test)]
+        if self.constructed.is_some() {
+            return false;
+        }
+        !self.spin
+    }
+
     /// The reduced state's length.
     #[must_use]
     pub fn dimension(&self) -> usize {

@@ -17,7 +17,8 @@
 //! Each step solves its stage equations `K_i = f(x + h sum_j a_ij K_j)` by
 //! Newton's method with the field's Jacobian at the step's start, its
 //! matrix `I - h (A ⊗ J)` split by `A`'s eigenvalues into two complex
-//! systems of the state's size (see [`SplitStages`]); the monodromy is
+//! systems of the state's size, or of half of it for a column's state of
+//! angles and rates (see [`SplitStages`]); the monodromy is
 //! carried by the derivative of the step, `dK_i = J_i (dx + h sum_j a_ij
 //! dK_j)`, with `J_i` at the stages (the exact derivative of the computed
 //! flow) or `J` at the start held over them (cheaper, for Newton's
@@ -25,8 +26,8 @@
 
 use nalgebra::{DMatrix, DVector};
 
+use super::split_stages::SplitStages;
 use super::tableau::{GAUSS, STAGES};
-use crate::analysis::C64;
 use crate::analysis::field::Field;
 
 /// How much of the flow's derivative (the monodromy) a step carries.
@@ -140,7 +141,7 @@ impl<'a> Stepper<'a> {
                     self.field.jacobian_one_sided(x, JACOBIAN_STEP)
                 }
             };
-            let split = SplitStages::new(&jacobian, h);
+            let split = SplitStages::new(&jacobian, h, self.field.mechanical());
             self.newton = Some((jacobian, split));
             if self.solve_stages(x, &mut k, STAGE_ITERATIONS, true) != Some(true) {
                 return None;
@@ -286,84 +287,6 @@ fn stage_point_into(
     }
 }
 
-/// The stage equations' matrix `I - h (A ⊗ J)` for one Jacobian `J`,
-/// split by `A`'s eigenvalues (Butcher's transformation, as Radau codes
-/// do): with `A = V diag(lambda) V^-1` it is
-/// `(V ⊗ I) diag(I - h lambda_k J) (V^-1 ⊗ I)`, so a solve is one complex
-/// `d x d` solve per conjugate pair of eigenvalues (the pair's other half
-/// is its conjugate for a real right-hand side) instead of one real
-/// `s d x s d` solve: for four stages an eighth of the operations to
-/// factor, about half to solve.
-struct SplitStages {
-    /// Each pair's `I - h lambda J`, factored (by faer, as [`solve_dense`]).
-    lus: Vec<faer::linalg::solvers::PartialPivLu<C64>>,
-    /// Each pair's transformed right-hand sides (column-major), reused.
-    scratch: Vec<Vec<C64>>,
-}
-
-impl SplitStages {
-    fn new(jacobian: &DMatrix<f64>, h: f64) -> Self {
-        let d = jacobian.nrows();
-        let lus = (0..STAGES / 2)
-            .map(|pair| {
-                let lambda = GAUSS.eigenvalues[2 * pair] * h;
-                faer::Mat::from_fn(d, d, |r, c| {
-                    C64::new(f64::from(u8::from(r == c)), 0.0) - lambda * jacobian[(r, c)]
-                })
-                .partial_piv_lu()
-            })
-            .collect();
-        Self {
-            lus,
-            scratch: (0..STAGES / 2).map(|_| Vec::with_capacity(d)).collect(),
-        }
-    }
-
-    /// Solves the stage equations' matrix for the stacked stages `r`, in
-    /// place; `false` where the solution is not finite (a singular matrix).
-    fn solve_mut(&mut self, r: &mut [f64]) -> bool {
-        self.solve_columns_mut(r, 1)
-    }
-
-    /// [`Self::solve_mut`] for `columns` right-hand sides at once, `r`
-    /// column-major (the monodromy's step: one blocked solve of all its
-    /// columns, where one solve per column is bound by each column's
-    /// pass over the factors).
-    fn solve_columns_mut(&mut self, r: &mut [f64], columns: usize) -> bool {
-        use faer::linalg::solvers::Solve;
-        let t = &*GAUSS;
-        let rows = r.len() / columns;
-        let d = rows / STAGES;
-        for (pair, (lu, rho)) in self.lus.iter().zip(&mut self.scratch).enumerate() {
-            let row = t.eigenvectors_inverse.row(2 * pair);
-            rho.resize(d * columns, C64::new(0.0, 0.0));
-            for (rho_c, r_c) in rho.chunks_exact_mut(d).zip(r.chunks_exact(rows)) {
-                for (e, rho_e) in rho_c.iter_mut().enumerate() {
-                    *rho_e = (0..STAGES).map(|j| row[j] * r_c[j * d + e]).sum();
-                }
-            }
-            lu.solve_in_place(faer::MatMut::from_column_major_slice_mut(
-                rho.as_mut_slice(),
-                d,
-                columns,
-            ));
-        }
-        for (c, r_c) in r.chunks_exact_mut(rows).enumerate() {
-            for i in 0..STAGES {
-                for e in 0..d {
-                    r_c[i * d + e] = self
-                        .scratch
-                        .iter()
-                        .enumerate()
-                        .map(|(pair, w)| 2.0 * (t.eigenvectors[(i, 2 * pair)] * w[c * d + e]).re)
-                        .sum();
-                }
-            }
-        }
-        r.iter().all(|v| v.is_finite())
-    }
-}
-
 /// Solves `matrix x = rhs` in place by faer's LU decomposition with
 /// partial pivoting (blocked and vectorized: at four stages of a 16-rod
 /// chain the matrix is 128 x 128, and nalgebra's unblocked LU took a
@@ -465,24 +388,38 @@ mod tests {
     }
 
     /// The split solve is the stage matrix's: against a dense solve of
-    /// `I - h (A ⊗ J)` for a Jacobian with real and complex eigenvalues.
+    /// `I - h (A ⊗ J)` for a Jacobian with real and complex eigenvalues,
+    /// whole and, for a mechanical state's `J = [[0, I], [A, B]]`, by
+    /// halves, for one right-hand side and for several.
     #[test]
     fn the_split_stages_solve_the_stage_matrix() {
-        let d = 5;
-        let jacobian = DMatrix::from_fn(d, d, |r, c| {
+        let entry = |r: usize, c: usize| {
             f64::from(u8::try_from((r * 7 + c * 3) % 11).unwrap()) / 3.0 - 1.5
                 + if r == c { -2.0 } else { 0.0 }
+        };
+        let general = DMatrix::from_fn(5, 5, entry);
+        let n = 4;
+        let mechanical = DMatrix::from_fn(2 * n, 2 * n, |r, c| match (r < n, c < n) {
+            (true, true) => 0.0,
+            (true, false) => f64::from(u8::from(c - n == r)),
+            (false, _) => entry(r, c),
         });
         let h = 0.4;
-        let rhs = DVector::from_fn(STAGES * d, |i, _| {
-            f64::from(u8::try_from((i * 5) % 13).unwrap()) - 6.0
-        });
-        let mut split = rhs.clone();
-        assert!(SplitStages::new(&jacobian, h).solve_mut(split.as_mut_slice()));
-        let mut dense = DMatrix::from_column_slice(STAGES * d, 1, rhs.as_slice());
-        solve_dense(&stage_matrix(&[&jacobian; STAGES], h), &mut dense).expect("regular");
-        let off = (DVector::from_column_slice(dense.as_slice()) - &split).amax();
-        assert!(off < 1e-12 * split.amax(), "{off}");
+        for (jacobian, halves) in [(&general, false), (&mechanical, true)] {
+            let rows = STAGES * jacobian.nrows();
+            for columns in [1, 3] {
+                let rhs = DMatrix::from_fn(rows, columns, |i, c| {
+                    f64::from(u8::try_from((i * 5 + c * 3) % 13).unwrap()) - 6.0
+                });
+                let mut split = rhs.clone();
+                let mut stages = SplitStages::new(jacobian, h, halves);
+                assert!(stages.solve_columns_mut(split.as_mut_slice(), columns));
+                let mut dense = rhs.clone();
+                solve_dense(&stage_matrix(&[jacobian; STAGES], h), &mut dense).expect("regular");
+                let off = (&dense - &split).amax();
+                assert!(off < 1e-12 * split.amax(), "{halves} {columns}: {off}");
+            }
+        }
     }
 
     /// At rest the flow is linear, and the step maps each undamped mode's

@@ -21,4 +21,5 @@ pub(super) mod hopf;
 pub(super) mod jet;
 pub(super) mod kick;
 mod shooting;
+mod split_stages;
 mod tableau;
