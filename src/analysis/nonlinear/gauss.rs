@@ -155,12 +155,7 @@ impl<'a> Stepper<'a> {
                         self.field
                             .jacobian_extrapolated(&self.points[i], JACOBIAN_STEP)
                     });
-                    let mut dk = DMatrix::zeros(STAGES * d, d);
-                    for (i, j) in jacobians.iter().enumerate() {
-                        dk.rows_mut(i * d, d).copy_from(&(j * &*y));
-                    }
-                    solve_dense(&stage_matrix(&jacobians.each_ref(), h), &mut dk)?;
-                    dk
+                    stage_derivatives(&jacobians.each_ref(), y, h, self.field.mechanical())?
                 }
                 (Monodromy::HeldPerStep | Monodromy::None, Some((jacobian, split))) => {
                     let jy = &*jacobian * &*y;
@@ -305,6 +300,62 @@ fn solve_dense(matrix: &DMatrix<f64>, rhs: &mut DMatrix<f64>) -> Option<()> {
     rhs.iter().all(|v| v.is_finite()).then_some(())
 }
 
+/// The stages' derivatives `dK` (stacked, `s d x d`) of a step from the
+/// monodromy `y` so far, with stage `i`'s Jacobian `J_i`: the solution of
+/// `dK_i = J_i (y + h sum_j a_ij dK_j)`. For a `mechanical` state `(q,
+/// q')` (`J_i = [[0, I], [A_i, B_i]]`, taken so whatever its first half of
+/// rows holds) the angles' halves `dU_i = Y' + h sum_j a_ij dV_j` are
+/// eliminated (`y = [Y; Y']`), leaving for the rates' halves
+///
+/// ```text
+/// dV_i - h^2 A_i sum_k (a^2)_ik dV_k - h B_i sum_k a_ik dV_k
+///     = A_i (Y + h c_i Y') + B_i Y',     c_i = sum_j a_ij,
+/// ```
+///
+/// a system of half the size (an eighth of the work to factor). `None`
+/// where the solution is not finite.
+fn stage_derivatives(
+    jacobians: &[&DMatrix<f64>; STAGES],
+    y: &DMatrix<f64>,
+    h: f64,
+    mechanical: bool,
+) -> Option<DMatrix<f64>> {
+    let d = y.nrows();
+    let mut dk = DMatrix::zeros(STAGES * d, y.ncols());
+    if !(mechanical && d.is_multiple_of(2)) {
+        for (i, j) in jacobians.iter().enumerate() {
+            dk.rows_mut(i * d, d).copy_from(&(*j * y));
+        }
+        solve_dense(&stage_matrix(jacobians, h), &mut dk)?;
+        return Some(dk);
+    }
+    let (n, a) = (d / 2, &GAUSS.a);
+    let a2 = |i: usize, k: usize| (0..STAGES).map(|j| a[i][j] * a[j][k]).sum::<f64>();
+    let (upper, lower) = (y.rows(0, n), y.rows(n, n));
+    let mut matrix = DMatrix::identity(STAGES * n, STAGES * n);
+    let mut dv = DMatrix::zeros(STAGES * n, y.ncols());
+    for (i, j) in jacobians.iter().enumerate() {
+        let (a_i, b_i) = (j.view((n, 0), (n, n)), j.view((n, n), (n, n)));
+        for (k, a_ik) in a[i].iter().enumerate() {
+            let mut block = matrix.view_mut((i * n, k * n), (n, n));
+            block -= a_i * (h * h * a2(i, k)) + b_i * (h * a_ik);
+        }
+        let c_i: f64 = a[i].iter().sum();
+        dv.rows_mut(i * n, n)
+            .copy_from(&(a_i * (upper + lower * (h * c_i)) + b_i * lower));
+    }
+    solve_dense(&matrix, &mut dv)?;
+    for (i, row) in a.iter().enumerate() {
+        let mut du = lower.into_owned();
+        for (j, a_ij) in row.iter().enumerate() {
+            du += dv.rows(j * n, n) * (h * a_ij);
+        }
+        dk.rows_mut(i * d, n).copy_from(&du);
+        dk.rows_mut(i * d + n, n).copy_from(&dv.rows(i * n, n));
+    }
+    Some(dk)
+}
+
 /// `I - h [a_ij J_i]`: the stage equations' matrix with stage `i`'s
 /// Jacobian `J_i`.
 fn stage_matrix(jacobians: &[&DMatrix<f64>; STAGES], h: f64) -> DMatrix<f64> {
@@ -420,6 +471,32 @@ mod tests {
                 assert!(off < 1e-12 * split.amax(), "{halves} {columns}: {off}");
             }
         }
+    }
+
+    /// The stages' derivatives by halves are the dense solve's: four
+    /// different mechanical Jacobians `[[0, I], [A_i, B_i]]` and a full
+    /// monodromy so far.
+    #[test]
+    fn the_stage_derivatives_by_halves_are_the_dense_ones() {
+        let n = 3;
+        let jacobians: [DMatrix<f64>; STAGES] = std::array::from_fn(|stage| {
+            DMatrix::from_fn(2 * n, 2 * n, |r, c| match (r < n, c < n) {
+                (true, true) => 0.0,
+                (true, false) => f64::from(u8::from(c - n == r)),
+                (false, _) => {
+                    f64::from(u8::try_from((r * 7 + c * 3 + stage * 5) % 11).unwrap()) / 3.0 - 1.5
+                }
+            })
+        });
+        let y = DMatrix::from_fn(2 * n, 2 * n, |r, c| {
+            f64::from(u8::try_from((r * 5 + c * 2) % 7).unwrap()) / 4.0
+                + f64::from(u8::from(r == c))
+        });
+        let h = 0.3;
+        let halves = stage_derivatives(&jacobians.each_ref(), &y, h, true).expect("regular");
+        let dense = stage_derivatives(&jacobians.each_ref(), &y, h, false).expect("regular");
+        let off = (&halves - &dense).amax();
+        assert!(off < 1e-12 * dense.amax(), "{off}");
     }
 
     /// At rest the flow is linear, and the step maps each undamped mode's

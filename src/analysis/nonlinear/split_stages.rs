@@ -126,24 +126,28 @@ impl SplitStages {
         let rows = r.len() / columns;
         let d = rows / STAGES;
         for (pair, (lu, rho)) in self.pairs.iter().zip(&mut self.scratch).enumerate() {
-            let row = t.eigenvectors_inverse.row(2 * pair);
+            let row: [C64; STAGES] = std::array::from_fn(|j| t.eigenvectors_inverse[(2 * pair, j)]);
+            rho.clear();
             rho.resize(d * columns, C64::new(0.0, 0.0));
             for (rho_c, r_c) in rho.chunks_exact_mut(d).zip(r.chunks_exact(rows)) {
-                for (e, rho_e) in rho_c.iter_mut().enumerate() {
-                    *rho_e = (0..STAGES).map(|j| row[j] * r_c[j * d + e]).sum();
+                for (w, r_j) in row.iter().zip(r_c.chunks_exact(d)) {
+                    for (rho_e, &x) in rho_c.iter_mut().zip(r_j) {
+                        *rho_e += w * x;
+                    }
                 }
             }
             lu.solve_in_place(rho, d, columns);
         }
         for (c, r_c) in r.chunks_exact_mut(rows).enumerate() {
-            for i in 0..STAGES {
-                for e in 0..d {
-                    r_c[i * d + e] = self
-                        .scratch
-                        .iter()
-                        .enumerate()
-                        .map(|(pair, w)| 2.0 * (t.eigenvectors[(i, 2 * pair)] * w[c * d + e]).re)
-                        .sum();
+            for (i, r_i) in r_c.chunks_exact_mut(d).enumerate() {
+                let back: [C64; STAGES / 2] =
+                    std::array::from_fn(|pair| t.eigenvectors[(i, 2 * pair)]);
+                for (e, r_e) in r_i.iter_mut().enumerate() {
+                    let mut sum = 0.0;
+                    for (v, w) in back.iter().zip(&self.scratch) {
+                        sum += 2.0 * (v * w[c * d + e]).re;
+                    }
+                    *r_e = sum;
                 }
             }
         }
