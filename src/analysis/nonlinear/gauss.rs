@@ -171,7 +171,7 @@ impl<'a> Stepper<'a> {
                 (_, None) => return None,
             };
             for (j, b) in t.b.iter().enumerate() {
-                *y += dk.rows(j * d, d) * (h * b);
+                y.zip_apply(&dk.rows(j * d, d), |y, dk| *y += dk * (h * b));
             }
         }
         for (j, b) in t.b.iter().enumerate() {
@@ -334,24 +334,30 @@ fn stage_derivatives(
     let (upper, lower) = (y.rows(0, n), y.rows(n, n));
     let mut matrix = DMatrix::identity(STAGES * n, STAGES * n);
     let mut dv = DMatrix::zeros(STAGES * n, y.ncols());
+    let mut shifted = upper.clone_owned();
     for (i, j) in jacobians.iter().enumerate() {
         let (a_i, b_i) = (j.view((n, 0), (n, n)), j.view((n, n), (n, n)));
         for (k, a_ik) in a[i].iter().enumerate() {
-            let mut block = matrix.view_mut((i * n, k * n), (n, n));
-            block -= a_i * (h * h * a2(i, k)) + b_i * (h * a_ik);
+            let (x, z) = (h * h * a2(i, k), h * a_ik);
+            matrix
+                .view_mut((i * n, k * n), (n, n))
+                .zip_zip_apply(&a_i, &b_i, |m, a, b| *m -= a * x + b * z);
         }
         let c_i: f64 = a[i].iter().sum();
-        dv.rows_mut(i * n, n)
-            .copy_from(&(a_i * (upper + lower * (h * c_i)) + b_i * lower));
+        shifted.copy_from(&upper);
+        shifted.zip_apply(&lower, |s, l| *s += l * (h * c_i));
+        let mut dv_i = dv.rows_mut(i * n, n);
+        dv_i.gemm(1.0, &a_i, &shifted, 0.0);
+        dv_i.gemm(1.0, &b_i, &lower, 1.0);
     }
     solve_dense(&matrix, &mut dv)?;
     for (i, row) in a.iter().enumerate() {
-        let mut du = lower.into_owned();
-        for (j, a_ij) in row.iter().enumerate() {
-            du += dv.rows(j * n, n) * (h * a_ij);
-        }
-        dk.rows_mut(i * d, n).copy_from(&du);
         dk.rows_mut(i * d + n, n).copy_from(&dv.rows(i * n, n));
+        let mut du = dk.rows_mut(i * d, n);
+        du.copy_from(&lower);
+        for (j, a_ij) in row.iter().enumerate() {
+            du.zip_apply(&dv.rows(j * n, n), |u, v| *u += v * (h * a_ij));
+        }
     }
     Some(dk)
 }
