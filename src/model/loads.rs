@@ -98,13 +98,15 @@ fn rods_generalized(column: &Column, trig: &[(f64, f64)], force_n: Vector2<f64>)
     q
 }
 
-/// Each angle's `(sin, cos)` in state `x`.
+/// Each angle's `(sin, cos)` in state `x`, by `libm` (musl's routines,
+/// within an ulp as the system's): glibc's save and restore the rounding
+/// mode on every call, which took a tenth of a long chain's flow.
 #[must_use]
 pub(super) fn angles_trig(x: &StateVec) -> Vec<(f64, f64)> {
     StateView::new(x)
         .angles_rad()
         .iter()
-        .map(|a| a.sin_cos())
+        .map(|&a| libm::sincos(a))
         .collect()
 }
 
