@@ -9,6 +9,7 @@ mod amplitude;
 pub(super) mod arclength;
 mod bautin;
 pub(super) mod boundary;
+mod column_lu;
 mod convergence;
 pub(super) mod curve;
 mod cycle;

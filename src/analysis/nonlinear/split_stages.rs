@@ -4,6 +4,7 @@
 
 use nalgebra::DMatrix;
 
+use super::column_lu::ColumnLu;
 use super::tableau::{GAUSS, STAGES};
 use crate::analysis::C64;
 
@@ -20,9 +21,15 @@ pub(super) struct SplitStages {
     pairs: Vec<PairLu>,
     /// Each pair's transformed right-hand sides (column-major), reused.
     scratch: Vec<Vec<C64>>,
+    /// Room for a single column's solve by halves, reused.
+    parts: Vec<f64>,
 }
 
 /// One conjugate pair's `I - mu J` (`mu = h lambda`), factored by faer.
+#[expect(
+    clippy::large_enum_variant,
+    reason = "two per Newton matrix, each holding kilobytes of factors"
+)]
 enum PairLu {
     /// The whole matrix.
     Whole(faer::linalg::solvers::PartialPivLu<C64>),
@@ -31,11 +38,15 @@ enum PairLu {
     /// `u - mu v = r_1`, `-mu A u + (I - mu B) v = r_2`, so
     /// `(I - mu B - mu^2 A) v = r_2 + mu A r_1` and `u = r_1 + mu v`: one
     /// factorization of half the size (an eighth of the operations) and
-    /// solves of a quarter, for one product with `mu A`.
+    /// solves of a quarter, for one product with `mu A`. The factors
+    /// twice: faer's for many right-hand sides, and laid out for one
+    /// ([`ColumnLu`], with `mu A`'s parts apart likewise).
     Half {
         mu: C64,
         mu_a: faer::Mat<C64>,
         lu: faer::linalg::solvers::PartialPivLu<C64>,
+        single: ColumnLu,
+        mu_a_parts: [Vec<f64>; 2],
     },
 }
 
@@ -53,10 +64,15 @@ impl PairLu {
             );
             let schur =
                 faer::Mat::from_fn(n, n, |r, c| delta(r, c) - mu * b(r, c) - mu * mu * a(r, c));
+            let mu_a = faer::Mat::from_fn(n, n, |r, c| mu * a(r, c));
+            let part = |of: fn(C64) -> f64| (0..n * n).map(|k| of(mu_a[(k % n, k / n)])).collect();
+            let lu = schur.partial_piv_lu();
             Self::Half {
                 mu,
-                mu_a: faer::Mat::from_fn(n, n, |r, c| mu * a(r, c)),
-                lu: schur.partial_piv_lu(),
+                single: ColumnLu::new(&lu),
+                mu_a_parts: [part(|z| z.re), part(|z| z.im)],
+                mu_a,
+                lu,
             }
         } else {
             Self::Whole(
@@ -67,14 +83,22 @@ impl PairLu {
     }
 
     /// Solves in place for the `d x columns` right-hand sides `rho`
-    /// (column-major).
-    fn solve_in_place(&self, rho: &mut [C64], d: usize, columns: usize) {
+    /// (column-major), with room `parts` for a single column's.
+    fn solve_in_place(&self, rho: &mut [C64], d: usize, columns: usize, parts: &mut Vec<f64>) {
         use faer::linalg::solvers::Solve;
         use faer::reborrow::{Reborrow, ReborrowMut};
-        let all = faer::MatMut::from_column_major_slice_mut(rho, d, columns);
         match self {
-            Self::Whole(lu) => lu.solve_in_place(all),
-            Self::Half { mu, mu_a, lu } => {
+            Self::Half {
+                mu,
+                single,
+                mu_a_parts,
+                ..
+            } if columns == 1 => solve_half_column(*mu, single, mu_a_parts, rho, parts),
+            Self::Whole(lu) => {
+                lu.solve_in_place(faer::MatMut::from_column_major_slice_mut(rho, d, columns));
+            }
+            Self::Half { mu, mu_a, lu, .. } => {
+                let all = faer::MatMut::from_column_major_slice_mut(rho, d, columns);
                 let (top, mut bottom) = all.split_at_row_mut(d / 2);
                 faer::linalg::matmul::matmul(
                     bottom.rb_mut(),
@@ -96,6 +120,90 @@ impl PairLu {
     }
 }
 
+/// [`PairLu::Half`]'s solve of one column `(r_1, r_2)` in place, by plain
+/// loops over the parts (`mu A` as `mu_a_parts`, re and im by columns),
+/// compiled for the machine's vector units by pulp's dispatch.
+fn solve_half_column(
+    mu: C64,
+    lu: &ColumnLu,
+    mu_a_parts: &[Vec<f64>; 2],
+    column: &mut [C64],
+    parts: &mut Vec<f64>,
+) {
+    parts.clear();
+    parts.resize(6 * lu.size(), 0.0);
+    pulp::Arch::new().dispatch(HalfColumn {
+        mu,
+        lu,
+        mu_a_parts,
+        column,
+        parts,
+    });
+}
+
+/// The work of [`solve_half_column`], for pulp's dispatch (a closure is
+/// not inlined into its vectorized body).
+struct HalfColumn<'a> {
+    mu: C64,
+    lu: &'a ColumnLu,
+    mu_a_parts: &'a [Vec<f64>; 2],
+    column: &'a mut [C64],
+    parts: &'a mut [f64],
+}
+
+impl pulp::WithSimd for HalfColumn<'_> {
+    type Output = ();
+
+    #[expect(
+        clippy::inline_always,
+        reason = "inlined into pulp's dispatch, whose body is compiled for the vector units"
+    )]
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _simd: S) {
+        let Self {
+            mu,
+            lu,
+            mu_a_parts,
+            column,
+            parts,
+        } = self;
+        let n = lu.size();
+        let (u, rest) = parts.split_at_mut(2 * n);
+        let (r, v) = rest.split_at_mut(2 * n);
+        let ((u_re, u_im), (r_re, r_im), (v_re, v_im)) =
+            (u.split_at_mut(n), r.split_at_mut(n), v.split_at_mut(n));
+        for (k, z) in column[..n].iter().enumerate() {
+            (u_re[k], u_im[k]) = (z.re, z.im);
+        }
+        for (k, z) in column[n..].iter().enumerate() {
+            (r_re[k], r_im[k]) = (z.re, z.im);
+        }
+        // r_2 + mu A r_1, by columns of mu A.
+        for j in 0..n {
+            let (a, b) = (u_re[j], u_im[j]);
+            let (m_re, m_im) = (
+                &mu_a_parts[0][j * n..(j + 1) * n],
+                &mu_a_parts[1][j * n..(j + 1) * n],
+            );
+            for ((x, y), (p, q)) in r_re
+                .iter_mut()
+                .zip(r_im.iter_mut())
+                .zip(m_re.iter().zip(m_im))
+            {
+                *x += p * a - q * b;
+                *y += p * b + q * a;
+            }
+        }
+        lu.gather(r_re, r_im, v_re, v_im);
+        lu.sweep(v_re, v_im);
+        for k in 0..n {
+            let v = C64::new(v_re[k], v_im[k]);
+            column[n + k] = v;
+            column[k] = C64::new(u_re[k], u_im[k]) + mu * v;
+        }
+    }
+}
+
 impl SplitStages {
     /// The split matrix for `jacobian` at step `h`, by halves where the
     /// state is `mechanical` (see [`PairLu::Half`]).
@@ -108,6 +216,7 @@ impl SplitStages {
             scratch: (0..STAGES / 2)
                 .map(|_| Vec::with_capacity(jacobian.nrows()))
                 .collect(),
+            parts: Vec::new(),
         }
     }
 
@@ -136,7 +245,7 @@ impl SplitStages {
                     }
                 }
             }
-            lu.solve_in_place(rho, d, columns);
+            lu.solve_in_place(rho, d, columns, &mut self.parts);
         }
         for (c, r_c) in r.chunks_exact_mut(rows).enumerate() {
             for (i, r_i) in r_c.chunks_exact_mut(d).enumerate() {
