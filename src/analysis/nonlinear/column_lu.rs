@@ -28,16 +28,13 @@ impl ColumnLu {
     pub(super) fn new(lu: &PartialPivLu<C64>) -> Self {
         let (l, u) = (lu.L(), lu.U());
         let n = l.nrows();
-        let entries = |m: faer::MatRef<'_, C64>, part: fn(C64) -> f64| {
-            (0..n * n).map(|k| part(m[(k % n, k / n)])).collect()
-        };
         Self {
             n,
             forward: lu.P().arrays().0.to_vec(),
-            l_re: entries(l, |z| z.re),
-            l_im: entries(l, |z| z.im),
-            u_re: entries(u, |z| z.re),
-            u_im: entries(u, |z| z.im),
+            l_re: parts_by_columns(l, |z| z.re),
+            l_im: parts_by_columns(l, |z| z.im),
+            u_re: parts_by_columns(u, |z| z.re),
+            u_im: parts_by_columns(u, |z| z.im),
             inverse_diagonal: (0..n).map(|j| u[(j, j)].inv()).collect(),
         }
     }
@@ -99,6 +96,15 @@ impl ColumnLu {
             (*x, *y) = (b_re[from], b_im[from]);
         }
     }
+}
+
+/// `part` of each of `m`'s entries, column by column.
+pub(super) fn parts_by_columns(m: faer::MatRef<'_, C64>, part: fn(C64) -> f64) -> Vec<f64> {
+    let mut out = Vec::with_capacity(m.nrows() * m.ncols());
+    for c in 0..m.ncols() {
+        out.extend(m.col(c).iter().map(|&z| part(z)));
+    }
+    out
 }
 
 #[cfg(test)]

@@ -4,7 +4,7 @@
 
 use nalgebra::DMatrix;
 
-use super::column_lu::ColumnLu;
+use super::column_lu::{ColumnLu, parts_by_columns};
 use super::tableau::{GAUSS, STAGES};
 use crate::analysis::C64;
 
@@ -65,7 +65,7 @@ impl PairLu {
             let schur =
                 faer::Mat::from_fn(n, n, |r, c| delta(r, c) - mu * b(r, c) - mu * mu * a(r, c));
             let mu_a = faer::Mat::from_fn(n, n, |r, c| mu * a(r, c));
-            let part = |of: fn(C64) -> f64| (0..n * n).map(|k| of(mu_a[(k % n, k / n)])).collect();
+            let part = |of: fn(C64) -> f64| parts_by_columns(mu_a.as_ref(), of);
             let lu = schur.partial_piv_lu();
             Self::Half {
                 mu,
