@@ -55,6 +55,12 @@ pub(super) fn slaved_spin_rate(column: &Column, roller: &Roller, x: &StateVec) -
 /// the ideal follower force `P = mu R` while the contact slips forward.
 #[must_use]
 pub fn friction(column: &Column, roller: &Roller, x: &StateVec) -> Friction {
+    friction_trig(column, roller, x, &angles_trig(x))
+}
+
+/// [`friction`] with each angle's `(sin, cos)` in `x` given
+/// ([`angles_trig`]), for a caller that has them already.
+fn friction_trig(column: &Column, roller: &Roller, x: &StateVec, trig: &[(f64, f64)]) -> Friction {
     let state = StateView::new(x);
     let (last, r) = (column.rods - 1, roller.radius_m);
     let l_last = column.rod(last).length_m;
@@ -74,7 +80,7 @@ pub fn friction(column: &Column, roller: &Roller, x: &StateVec) -> Friction {
     let regularized = speed < SLIP_REGULARIZATION_M_PER_S;
     let force_n = -roller.friction_force_n() * slip / speed.max(SLIP_REGULARIZATION_M_PER_S);
     let delta_rad = slip.dot(&t_last).atan2(slip.dot(&unit(angles[last])));
-    let mut generalized_n_m = rods_generalized(column, &angles_trig(x), force_n);
+    let mut generalized_n_m = rods_generalized(column, trig, force_n);
     generalized_n_m.push(-r / l_last * generalized_n_m[last]);
     Friction {
         slip_m_per_s: slip,
@@ -146,7 +152,7 @@ pub(super) fn tip_load_trig(model: &Model, x: &StateVec, trig: &[(f64, f64)]) ->
             }
         }
         Load::Roller(roller) => {
-            let f = friction(&model.column, &roller, x);
+            let f = friction_trig(&model.column, &roller, x, trig);
             TipLoad {
                 force_n: f.force_n,
                 generalized_n_m: f.generalized_n_m,

@@ -55,33 +55,18 @@ impl ColumnLu {
         let n = self.n;
         // L y = P b, by columns of L.
         for j in 0..n {
-            let (a, b) = (re[j], im[j]);
+            let y = C64::new(re[j], im[j]);
             let column = j * n + j + 1..(j + 1) * n;
-            let (l_re, l_im) = (&self.l_re[column.clone()], &self.l_im[column]);
-            let (x_re, x_im) = (&mut re[j + 1..], &mut im[j + 1..]);
-            for ((x, y), (p, q)) in x_re
-                .iter_mut()
-                .zip(x_im.iter_mut())
-                .zip(l_re.iter().zip(l_im))
-            {
-                *x -= p * a - q * b;
-                *y -= p * b + q * a;
-            }
+            let l = (&self.l_re[column.clone()], &self.l_im[column]);
+            sub_product((&mut re[j + 1..], &mut im[j + 1..]), l, y);
         }
         // U x = y, by columns of U from the last.
         for j in (0..n).rev() {
             let z = C64::new(re[j], im[j]) * self.inverse_diagonal[j];
             (re[j], im[j]) = (z.re, z.im);
             let column = j * n..j * n + j;
-            let (u_re, u_im) = (&self.u_re[column.clone()], &self.u_im[column]);
-            for ((x, y), (p, q)) in re[..j]
-                .iter_mut()
-                .zip(im[..j].iter_mut())
-                .zip(u_re.iter().zip(u_im))
-            {
-                *x -= p * z.re - q * z.im;
-                *y -= p * z.im + q * z.re;
-            }
+            let u = (&self.u_re[column.clone()], &self.u_im[column]);
+            sub_product((&mut re[..j], &mut im[..j]), u, z);
         }
     }
 
@@ -95,6 +80,27 @@ impl ColumnLu {
         for ((x, y), &from) in re.iter_mut().zip(im.iter_mut()).zip(&self.forward) {
             (*x, *y) = (b_re[from], b_im[from]);
         }
+    }
+}
+
+/// `x -= p z` over vectors given by their parts `(re, im)`, elementwise.
+#[expect(
+    clippy::inline_always,
+    reason = "inlined into pulp's dispatch, whose body is compiled for the vector units"
+)]
+#[inline(always)]
+pub(super) fn sub_product(
+    (x_re, x_im): (&mut [f64], &mut [f64]),
+    (p_re, p_im): (&[f64], &[f64]),
+    z: C64,
+) {
+    for ((x, y), (p, q)) in x_re
+        .iter_mut()
+        .zip(x_im.iter_mut())
+        .zip(p_re.iter().zip(p_im))
+    {
+        *x -= p * z.re - q * z.im;
+        *y -= p * z.im + q * z.re;
     }
 }
 

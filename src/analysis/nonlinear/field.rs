@@ -91,11 +91,26 @@ impl Field {
     /// the spin; not a constructed field).
     #[must_use]
     pub fn mechanical(&self) -> bool {
+        !self.spin && !self.is_constructed()
+    }
+
+    /// Whether constructed equations stand in for the column's (tests only).
+    #[cfg_attr(
+        not(test),
+        expect(
+            clippy::unused_self,
+            reason = "constructed equations exist in tests only"
+        )
+    )]
+    fn is_constructed(&self) -> bool {
         #[cfg(test)]
-        if self.constructed.is_some() {
-            return false;
+        {
+            self.constructed.is_some()
         }
-        !self.spin
+        #[cfg(not(test))]
+        {
+            false
+        }
     }
 
     /// The reduced state's length.
@@ -157,11 +172,7 @@ impl Field {
         xs: [&DVector<f64>; L],
         outs: [&mut DVector<f64>; L],
     ) {
-        #[cfg(test)]
-        let constructed = self.constructed.is_some();
-        #[cfg(not(test))]
-        let constructed = false;
-        if constructed || self.rods == 2 {
+        if self.is_constructed() || self.rods == 2 {
             for (x, out) in xs.into_iter().zip(outs) {
                 self.at_into(x, out);
             }
@@ -211,14 +222,10 @@ impl Field {
     /// joints' springs and dampers; not the drag or the roller), else
     /// `None`.
     fn closed_form_jacobian(&self, x: &DVector<f64>) -> Option<DMatrix<f64>> {
-        #[cfg(test)]
-        if self.constructed.is_some() {
+        if self.spin || self.is_constructed() {
             return None;
         }
         let n = self.rods;
-        if self.spin {
-            return None;
-        }
         chain_jacobian(&self.model, &x.as_slice()[..n], &x.as_slice()[n..2 * n])
     }
 

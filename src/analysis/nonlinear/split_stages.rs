@@ -4,7 +4,7 @@
 
 use nalgebra::DMatrix;
 
-use super::column_lu::{ColumnLu, parts_by_columns};
+use super::column_lu::{ColumnLu, parts_by_columns, sub_product};
 use super::tableau::{GAUSS, STAGES};
 use crate::analysis::C64;
 
@@ -178,21 +178,12 @@ impl pulp::WithSimd for HalfColumn<'_> {
         for (k, z) in column[n..].iter().enumerate() {
             (r_re[k], r_im[k]) = (z.re, z.im);
         }
-        // r_2 + mu A r_1, by columns of mu A.
+        // r_2 + mu A r_1, by columns of mu A (less the product with
+        // -r_1, the same in every bit).
         for j in 0..n {
-            let (a, b) = (u_re[j], u_im[j]);
-            let (m_re, m_im) = (
-                &mu_a_parts[0][j * n..(j + 1) * n],
-                &mu_a_parts[1][j * n..(j + 1) * n],
-            );
-            for ((x, y), (p, q)) in r_re
-                .iter_mut()
-                .zip(r_im.iter_mut())
-                .zip(m_re.iter().zip(m_im))
-            {
-                *x += p * a - q * b;
-                *y += p * b + q * a;
-            }
+            let column = j * n..(j + 1) * n;
+            let m = (&mu_a_parts[0][column.clone()], &mu_a_parts[1][column]);
+            sub_product((&mut *r_re, &mut *r_im), m, -C64::new(u_re[j], u_im[j]));
         }
         lu.gather(r_re, r_im, v_re, v_im);
         lu.sweep(v_re, v_im);
