@@ -24,7 +24,7 @@ pub use critical::{
 };
 pub use crossing::{Transition, stability_ranges};
 pub use curve::{Boundary, BoundaryKind, BoundaryPoint, BoundarySpec, CurveEnd, load_on_chord};
-pub use cycle_bifurcations::{CycleBifurcation, CycleBifurcationKind, cycle_bifurcations};
+pub use cycle_bifurcations::{CycleBifurcation, CycleBifurcationKind};
 pub use cycle_fold::{CycleFold, FoldEnd, FoldPoint};
 pub use cycles::{
     Branch, BranchEnd, Cycle, MAX_AMPLITUDE_RAD, MAX_PERIOD_GROWTH, MAX_POINTS, NoBranch, Onset,

@@ -12,7 +12,7 @@ use serde_json::json;
 
 use zieglerlab::analysis::{
     AffinePencil, Branch, Cycle, CycleBifurcationKind, NoBranch, Onset, State, classify,
-    cycle_bifurcations, cycle_branches, cycles_at,
+    cycle_branches, cycles_at,
 };
 use zieglerlab::figure::{self, Page, render};
 use zieglerlab::format::{Exact, Shown};
@@ -242,14 +242,19 @@ pub fn report(onset: f64, found: &Result<Branch, NoBranch>) {
     };
     eprintln!("{}", printable(&line));
     if let Ok(branch) = found {
-        for found in cycle_bifurcations(&branch.cycles) {
+        for found in &branch.bifurcations {
             let kind = match found.kind {
                 CycleBifurcationKind::Fold => "fold of cycles",
                 CycleBifurcationKind::PeriodDoubling => "period doubling",
                 CycleBifurcationKind::NeimarkSacker => "Neimark-Sacker (torus)",
             };
+            let placed = if found.refined {
+                ""
+            } else {
+                ", interpolated between two cycles: not solved for"
+            };
             eprintln!(
-                "{}: {kind} at p = {} (largest angle {:.4} rad)",
+                "{}: {kind} at p = {} (largest angle {:.4} rad{placed})",
                 branch.name(),
                 Shown(found.load),
                 found.amplitude_rad
@@ -379,7 +384,7 @@ fn write_csv(
         .iter()
         .filter_map(|onset| onset.branch.as_ref().ok())
     {
-        for event in cycle_bifurcations(&branch.cycles) {
+        for event in &branch.bifurcations {
             if (lo..=hi).contains(&event.load) {
                 writeln!(
                     out,
@@ -417,7 +422,7 @@ fn write_json(
                 "hopf": branch.hopf(),
                 "branch": branch.name(),
                 "cycles_followed": branch.cycles.len(),
-                "cycle_bifurcations": cycle_bifurcations(&branch.cycles),
+                "cycle_bifurcations": branch.bifurcations,
                 "end": branch.end.to_string(),
             }),
             Err(why) => {

@@ -8,7 +8,7 @@
 use super::spec::{Entry, Ink, Mark, OffView, Plot, Sheet, Size, Swatch, Ticks, View, Weight};
 use crate::analysis::{
     AffinePencil, AnalysisError, Branch, CycleBifurcation, CycleBifurcationKind, Onset, State,
-    classify, critical_loads, cycle_bifurcations, stability_ranges,
+    classify, critical_loads, stability_ranges,
 };
 use crate::i18n::Words;
 use crate::tr;
@@ -104,7 +104,7 @@ impl Diagram<'_> {
     fn cycle_bifurcations(&self) -> Vec<CycleBifurcation> {
         self.branches
             .iter()
-            .flat_map(|b| cycle_bifurcations(&b.cycles))
+            .flat_map(|b| b.bifurcations.iter().copied())
             .collect()
     }
 

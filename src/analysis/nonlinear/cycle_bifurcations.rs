@@ -2,17 +2,45 @@
 //! from their Floquet multipliers: a fold of cycles (a real multiplier
 //! through +1, where the branch turns back in the load), a period doubling
 //! (a real multiplier through -1) and a Neimark-Sacker (torus) bifurcation
-//! (a complex pair through the unit circle), each placed between the two
-//! cycles it lies between where the multiplier's modulus passes 1.
+//! (a complex pair through the unit circle). Each is bracketed by the two
+//! cycles of the branch it lies between and placed by regula falsi on the
+//! cycles between them (`chord`): a period doubling or a torus where the
+//! modulus of the multiplier of its kind nearest the circle passes 1, a
+//! fold where the load's rate along the branch passes zero (there the
+//! multiplier is a double 1, known to the square root of the monodromy's
+//! accuracy only, while the rate is a simple root).
 
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use nalgebra::DVector;
 use serde::Serialize;
 
+use super::chord::{Chord, OnChord};
 use super::cycle::Cycle;
+use super::falsi::{Stop, illinois};
+use super::shooting::Shooting;
 use crate::analysis::C64;
 
 /// A multiplier is real when its imaginary part is at most this share of
 /// its modulus.
 const REAL: f64 = 1e-8;
+/// Where regula falsi stops for a modulus: within 1e-12 of its bracket's
+/// size (a multiplier's modulus is known to about 1e-10), or the bracket
+/// narrowed to 1e-9 of the chord, in at most 30 cycles.
+const MODULUS_STOP: Stop = Stop {
+    value: 1e-12,
+    width: 1e-9,
+    steps: 30,
+};
+/// The same for the load's rate, which is known to a few 1e-10 of its
+/// bracket's (it takes the flow's derivative in the load by differences):
+/// where it is 1e-8 of that, the fold's share is off by about as much of
+/// the chord, and its load (the least or the most along the branch) by the
+/// square of that.
+const RATE_STOP: Stop = Stop {
+    value: 1e-8,
+    ..MODULUS_STOP
+};
 
 /// What changes at a bifurcation of the cycles.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -30,10 +58,38 @@ pub enum CycleBifurcationKind {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct CycleBifurcation {
     pub kind: CycleBifurcationKind,
-    /// The load, interpolated between the two cycles.
+    /// The load.
     pub load: f64,
-    /// The largest angle's amplitude there, interpolated, in rad.
+    /// The largest angle's amplitude there, in rad.
     pub amplitude_rad: f64,
+    /// Whether the cycle at the bifurcation was solved for (else both
+    /// values are interpolated linearly between the two cycles it lies
+    /// between: the multiplier's modulus or the load's rate did not change
+    /// sign between them, or a solve failed).
+    pub refined: bool,
+}
+
+/// Two neighbouring cycles of a branch with a bifurcation between them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Bracket {
+    /// The first of the two cycles' index.
+    pub(super) after: usize,
+    pub(super) kind: CycleBifurcationKind,
+    /// The distance `|m| - 1` from the circle of the multiplier of the
+    /// kind nearest it, at each cycle (where it has one).
+    pub(super) moduli: [Option<f64>; 2],
+}
+
+impl Bracket {
+    /// The share of the way from the first cycle to the second where the
+    /// modulus passes 1 on the line between them (the middle where the
+    /// moduli do not straddle 1).
+    fn linear_share(&self) -> f64 {
+        match self.moduli {
+            [Some(ra), Some(rb)] if ra * rb < 0.0 => ra / (ra - rb),
+            _ => 0.5,
+        }
+    }
 }
 
 /// The class of a multiplier other than the trivial one.
@@ -62,40 +118,111 @@ fn outside(cycle: &Cycle, kind: CycleBifurcationKind) -> (usize, Option<f64>) {
     (count, nearest)
 }
 
-/// Every bifurcation along `cycles` (in the order of the continuation):
-/// where the count of multipliers of a kind outside the unit circle
-/// changes between two cycles, placed where the modulus of the one
-/// nearest the circle passes 1, linearly between them.
-#[must_use]
-pub fn cycle_bifurcations(cycles: &[Cycle]) -> Vec<CycleBifurcation> {
+/// Every pair of neighbouring `cycles` (in the order of the continuation)
+/// between which the count of multipliers of a kind outside the unit
+/// circle changes.
+pub(super) fn brackets(cycles: &[Cycle]) -> Vec<Bracket> {
     use CycleBifurcationKind::{Fold, NeimarkSacker, PeriodDoubling};
     let mut out = Vec::new();
-    for pair in cycles.windows(2) {
+    for (after, pair) in cycles.windows(2).enumerate() {
         let [a, b] = pair else { continue };
         for kind in [Fold, PeriodDoubling, NeimarkSacker] {
             let ((count_a, near_a), (count_b, near_b)) = (outside(a, kind), outside(b, kind));
-            if count_a == count_b {
-                continue;
+            if count_a != count_b {
+                out.push(Bracket {
+                    after,
+                    kind,
+                    moduli: [near_a, near_b],
+                });
             }
-            let t = match (near_a, near_b) {
-                (Some(ra), Some(rb)) if ra * rb < 0.0 => ra / (ra - rb),
-                _ => 0.5,
-            };
-            let along = |x: f64, y: f64| x + t * (y - x);
-            out.push(CycleBifurcation {
-                kind,
-                load: along(a.load, b.load),
-                amplitude_rad: along(a.largest_amplitude_rad(), b.largest_amplitude_rad()),
-            });
         }
     }
     out
 }
 
+/// Every bifurcation along the branch `cycles` of `shooting`'s column, in
+/// the order of the continuation, each solved for between the two cycles
+/// it lies between (see [`CycleBifurcation::refined`]); `scales` are the
+/// continuation's scales of the unknowns. Once `cancel` is set the rest
+/// are interpolated.
+pub(super) fn cycle_bifurcations(
+    shooting: &Shooting,
+    cycles: &[Cycle],
+    scales: &DVector<f64>,
+    cancel: &AtomicBool,
+) -> Vec<CycleBifurcation> {
+    brackets(cycles)
+        .into_iter()
+        .map(|bracket| {
+            let (a, b) = (&cycles[bracket.after], &cycles[bracket.after + 1]);
+            let refined = if cancel.load(Ordering::Relaxed) {
+                None
+            } else {
+                Chord::new(shooting, (a, b), scales).and_then(|chord| refine(&chord, &bracket))
+            };
+            if let Some(on) = refined {
+                CycleBifurcation {
+                    kind: bracket.kind,
+                    load: on.solved.cycle.load,
+                    amplitude_rad: on.solved.cycle.largest_amplitude_rad(),
+                    refined: true,
+                }
+            } else {
+                let t = bracket.linear_share();
+                let along = |x: f64, y: f64| x + t * (y - x);
+                CycleBifurcation {
+                    kind: bracket.kind,
+                    load: along(a.load, b.load),
+                    amplitude_rad: along(a.largest_amplitude_rad(), b.largest_amplitude_rad()),
+                    refined: false,
+                }
+            }
+        })
+        .collect()
+}
+
+/// The cycle at `bracket`'s bifurcation on `chord` between its two cycles:
+/// a fold where the load's rate passes zero (solved at both ends for it),
+/// else (a real multiplier through +1 where the load does not turn, or
+/// another kind) where the modulus passes 1, as read off the two cycles.
+fn refine(chord: &Chord, bracket: &Bracket) -> Option<OnChord> {
+    type Sample = (f64, f64, Option<OnChord>);
+    let solve =
+        |share: f64, near: &Option<OnChord>| chord.solve(share, near.as_ref().map(|on| &on.solved));
+    if bracket.kind == CycleBifurcationKind::Fold {
+        let rated =
+            |on: OnChord| -> Option<Sample> { Some((on.share, chord.load_rate(&on)?, Some(on))) };
+        let low = rated(solve(0.0, &None)?)?;
+        let high = rated(solve(1.0, &low.2)?)?;
+        if low.1 * high.1 < 0.0 {
+            return illinois(low, high, RATE_STOP, |share, near| {
+                rated(solve(share, near)?)
+            })?
+            .2;
+        }
+    }
+    let [Some(low), Some(high)] = bracket.moduli else {
+        return None;
+    };
+    let moduli = |on: OnChord| -> Option<Sample> {
+        Some((
+            on.share,
+            outside(&on.solved.cycle, bracket.kind).1?,
+            Some(on),
+        ))
+    };
+    illinois(
+        (0.0, low, None),
+        (1.0, high, None),
+        MODULUS_STOP,
+        |share, near| moduli(solve(share, near)?),
+    )?
+    .2
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::DVector;
 
     /// A cycle at `load` with the trivial multiplier and `others`.
     fn cycle(load: f64, others: &[C64]) -> Cycle {
@@ -112,16 +239,18 @@ mod tests {
         }
     }
 
-    /// Each kind is read where its multiplier's modulus passes 1 (the
-    /// moduli here change linearly with the load, so the placement is
-    /// exact): a real one through -1 at p = 1.25, a complex pair through
-    /// the circle at p = 2.5, a real one through +1 at p = 3.75.
+    /// Each kind is bracketed where its multiplier's modulus passes 1, and
+    /// the line between the two cycles puts it there when the moduli
+    /// change linearly with the load (as here): a real one through -1 at
+    /// p = 1.25, a complex pair through the circle at p = 2.5, a real one
+    /// through +1 at p = 3.75.
     #[test]
-    fn each_kind_is_read_where_its_multiplier_leaves_the_circle() {
+    fn each_kind_is_bracketed_where_its_multiplier_leaves_the_circle() {
         let pd = |p: f64| C64::new(-(0.5 + 0.4 * p), 0.0);
         let ns = |p: f64| C64::from_polar(0.5 + 0.2 * p, 1.0);
         let fold = |p: f64| C64::new(0.25 + 0.2 * p, 0.0);
-        let cycles: Vec<Cycle> = [1.0, 1.5, 2.0, 3.0, 3.5, 4.0]
+        let loads = [1.0, 1.5, 2.0, 3.0, 3.5, 4.0];
+        let cycles: Vec<Cycle> = loads
             .iter()
             .map(|&p| {
                 cycle(
@@ -130,19 +259,20 @@ mod tests {
                 )
             })
             .collect();
-        let found = cycle_bifurcations(&cycles);
-        let kinds: Vec<_> = found.iter().map(|b| b.kind).collect();
+        let found = brackets(&cycles);
+        let kinds: Vec<_> = found.iter().map(|b| (b.after, b.kind)).collect();
         assert_eq!(
             kinds,
             [
-                CycleBifurcationKind::PeriodDoubling,
-                CycleBifurcationKind::NeimarkSacker,
-                CycleBifurcationKind::Fold
+                (0, CycleBifurcationKind::PeriodDoubling),
+                (2, CycleBifurcationKind::NeimarkSacker),
+                (4, CycleBifurcationKind::Fold)
             ]
         );
         for (b, at) in found.iter().zip([1.25, 2.5, 3.75]) {
-            assert!((b.load - at).abs() < 1e-12, "{b:?}");
-            assert!((b.amplitude_rad - at).abs() < 1e-12, "{b:?}");
+            let (pa, pb) = (loads[b.after], loads[b.after + 1]);
+            let linear = pa + b.linear_share() * (pb - pa);
+            assert!((linear - at).abs() < 1e-12, "{b:?}");
         }
     }
 
@@ -181,15 +311,14 @@ mod tests {
         out[3] = l * v + d * (y * u - x * v) + w / 2.0 * u - cubic * v;
     }
 
-    /// The shooting, its multipliers and the reading of the bifurcations
-    /// on a field whose period doubling is known in closed form (above):
-    /// every cycle's multipliers are the closed form's to 1e-8, and the
-    /// doubling is read at `DOUBLING_P` to the linear placement's own
-    /// error, `T h^2 / 8` for loads `h` apart (the modulus
+    /// The shooting, its multipliers and the bifurcations on a field whose
+    /// period doubling is known in closed form (above): every cycle's
+    /// multipliers are the closed form's to 1e-8; the doubling is solved
+    /// for at `DOUBLING_P` to 1e-9, where the line between its two cycles
+    /// puts it `T h^2 / 8` away for loads `h` apart (the modulus
     /// `exp((p - DOUBLING_P) T)` is not linear in the load).
     #[test]
     fn a_constructed_period_doubling_is_found_where_it_is() {
-        use crate::analysis::nonlinear::shooting::{Constraint, Shooting};
         let field = crate::analysis::field::Field::constructed(doubling_field, 2, 0.3);
         let shooting = Shooting::on(field);
         let h = 0.02;
@@ -197,11 +326,7 @@ mod tests {
             .map(|i| {
                 let p = 0.3 + h * f64::from(i);
                 let period = std::f64::consts::TAU / omega(p);
-                let guess = DVector::from_vec(vec![1.0, 0.0, 0.0, 0.0, period, p]);
-                let cycle = shooting
-                    .solve(&guess, &Constraint::Load(p))
-                    .expect("a cycle")
-                    .cycle;
+                let cycle = solved_at(&shooting, &[1.0, 0.0, 0.0, 0.0], period, p);
                 assert!((cycle.period_secs - period).abs() < 1e-9 * period);
                 let expected = [1.0, (-2.0 * period).exp()]
                     .into_iter()
@@ -217,11 +342,98 @@ mod tests {
                 cycle
             })
             .collect();
-        let found = cycle_bifurcations(&cycles);
+        let found = bifurcations(&shooting, &cycles);
         assert_eq!(found.len(), 1, "{found:?}");
+        let doubling = found[0];
+        assert_eq!(doubling.kind, CycleBifurcationKind::PeriodDoubling);
+        assert!(doubling.refined);
+        assert!((doubling.load - DOUBLING_P).abs() < 1e-9, "{doubling:?}");
+        let bracket = brackets(&cycles)[0];
+        let (pa, pb) = (cycles[bracket.after].load, cycles[bracket.after + 1].load);
+        let linear = pa + bracket.linear_share() * (pb - pa);
         let period = std::f64::consts::TAU / omega(DOUBLING_P);
-        assert_eq!(found[0].kind, CycleBifurcationKind::PeriodDoubling);
-        let off = (found[0].load - DOUBLING_P).abs();
-        assert!(off < period * h * h / 8.0, "{:?}: {off}", found[0]);
+        let off = (linear - DOUBLING_P).abs();
+        assert!(off < period * h * h / 8.0, "{linear}: {off}");
+        assert!(off > 1e-5, "the line alone is this close: {off}");
+    }
+
+    /// Where the field below has its Hopf point and its fold of cycles.
+    const BAUTIN_HOPF_P: f64 = 1.5;
+    const FOLD_P: f64 = BAUTIN_HOPF_P - 1.0;
+
+    /// The load of the field below's cycle of radius `r`.
+    fn fold_field_load(r: f64) -> f64 {
+        BAUTIN_HOPF_P - 2.0 * r * r + r.powi(4)
+    }
+
+    /// A plane field with a hard Hopf point and a fold of cycles at known
+    /// loads (Bautin's normal form): in polar coordinates `r' = r g`,
+    /// `theta' = -1`, `g = p - BAUTIN_HOPF_P + 2 r^2 - r^4`, turning the
+    /// way that makes `y` the rate of the angle `x` on a cycle. Its cycles
+    /// `g = 0` have the load [`fold_field_load`], least at `r = 1`: the
+    /// fold, at `FOLD_P`. A cycle's nontrivial multiplier is `exp(T
+    /// div f) = exp(2 pi 4 r^2 (1 - r^2))`: 1 at the fold, outside the
+    /// circle on the small (unstable) cycles, inside on the large ones.
+    fn fold_field(s: &DVector<f64>, p: f64, out: &mut DVector<f64>) {
+        let (x, y) = (s[0], s[1]);
+        let r2 = x * x + y * y;
+        let g = p - BAUTIN_HOPF_P + 2.0 * r2 - r2 * r2;
+        out[0] = x * g + y;
+        out[1] = y * g - x;
+    }
+
+    /// The fold of cycles of the field above, from cycles on both sides
+    /// of it (radii 0.8 to 1.2): solved for at `FOLD_P` to 1e-10 and on
+    /// the cycle of radius 1 to 1e-5 (the load is the least there, so an
+    /// error in where the fold is costs the load its square only), where
+    /// the line between the two cycles round it misses by 0.04.
+    #[test]
+    fn a_constructed_fold_of_cycles_is_found_where_it_is() {
+        let field = crate::analysis::field::Field::constructed(fold_field, 1, FOLD_P);
+        let shooting = Shooting::on(field);
+        let cycles: Vec<Cycle> = [0.8, 0.9, 1.1, 1.2]
+            .iter()
+            .map(|&r| {
+                let p = fold_field_load(r);
+                let cycle = solved_at(&shooting, &[r, 0.0], std::f64::consts::TAU, p);
+                let growth = (std::f64::consts::TAU * 4.0 * r * r * (1.0 - r * r)).exp();
+                let off = (cycle.nontrivial_multipliers().next().unwrap() - growth).norm();
+                assert!(
+                    off < 1e-8 * growth.max(1.0),
+                    "r = {r}: {:?}",
+                    cycle.multipliers
+                );
+                assert!((cycle.largest_amplitude_rad() - r).abs() < 1e-9);
+                cycle
+            })
+            .collect();
+        let found = bifurcations(&shooting, &cycles);
+        assert_eq!(found.len(), 1, "{found:?}");
+        let fold = found[0];
+        assert_eq!(fold.kind, CycleBifurcationKind::Fold);
+        assert!(fold.refined);
+        assert!((fold.load - FOLD_P).abs() < 1e-10, "{fold:?}");
+        assert!((fold.amplitude_rad - 1.0).abs() < 1e-5, "{fold:?}");
+        let bracket = brackets(&cycles)[0];
+        let (pa, pb) = (cycles[1].load, cycles[2].load);
+        let linear = pa + bracket.linear_share() * (pb - pa);
+        assert!((linear - FOLD_P).abs() > 0.03, "{linear}");
+    }
+
+    /// The cycle through `(start, period)` at load `p`, solved there.
+    fn solved_at(shooting: &Shooting, start: &[f64], period: f64, p: f64) -> Cycle {
+        use crate::analysis::nonlinear::shooting::Constraint;
+        let guess =
+            DVector::from_iterator(start.len() + 2, start.iter().copied().chain([period, p]));
+        shooting
+            .solve(&guess, &Constraint::Load(p))
+            .expect("a cycle")
+            .cycle
+    }
+
+    /// The bifurcations along `cycles`, with every unknown's scale 1.
+    fn bifurcations(shooting: &Shooting, cycles: &[Cycle]) -> Vec<CycleBifurcation> {
+        let scales = DVector::from_element(cycles[0].start.len() + 2, 1.0);
+        cycle_bifurcations(shooting, cycles, &scales, &AtomicBool::new(false))
     }
 }

@@ -21,6 +21,7 @@ use super::arclength::{Accuracy, Curve, Defining, End, Node, Plane, follow_both}
 use super::curve::{Boundary, BoundaryKind, BoundaryPoint, BoundarySpec, near_polyline};
 use super::cycle::Cycle;
 use super::cycles::{MAX_AMPLITUDE_RAD, STICK_FRACTION};
+use super::falsi::{Stop, illinois};
 use super::hopf::{Steps, hopf_point};
 use super::shooting::Shooting;
 use crate::analysis::{AnalysisError, C64};
@@ -36,7 +37,7 @@ const LARGEST_AMPLITUDE_RAD: f64 = MAX_AMPLITUDE_RAD;
 const MARCH_GROWTH: f64 = 1.5;
 const MARCH_MOST_RAD: f64 = 0.2;
 const MARCH_STEPS: usize = 200;
-/// Regula falsi steps for a fold between two cycles of a march.
+/// Regula falsi points for a fold between two cycles of a march.
 const FALSI_STEPS: usize = 40;
 /// A fold point this near (scaled) a fold followed already is on it.
 const SAME_FOLD: f64 = 0.01;
@@ -247,7 +248,7 @@ fn march(
 type Sample = (f64, f64, Found);
 
 /// The fold between two cycles of a march at `value` whose rates `dp/da`
-/// have opposite signs, by regula falsi (Illinois) in the amplitude.
+/// have opposite signs, by regula falsi in the amplitude.
 fn falsi(
     rate: &LoadRate<'_>,
     plane: &Plane,
@@ -255,36 +256,16 @@ fn falsi(
     low: &Sample,
     high: &Sample,
 ) -> Option<Node<Found>> {
-    let (mut low, mut high) = (low.clone(), high.clone());
-    let mut side = 0i8;
-    for _ in 0..FALSI_STEPS {
-        let a = (low.0 * high.1 - high.0 * low.1) / (high.1 - low.1);
-        let nearer = if (a - low.0).abs() < (a - high.0).abs() {
-            &low.2
-        } else {
-            &high.2
-        };
+    let stop = Stop {
+        value: 1e-10,
+        width: 1e-10 * low.0.max(high.0),
+        steps: FALSI_STEPS,
+    };
+    let (a, _, found) = illinois(low.clone(), high.clone(), stop, |a, nearer| {
         let found = rate.solve(value, a, (&nearer.0, Some(&nearer.2)))?;
-        let sample = (a, found.load_per_rad, found.found());
-        let g = sample.1;
-        if g.abs() <= 1e-10 * (low.1.abs() + high.1.abs()) || (high.0 - low.0).abs() <= 1e-10 * a {
-            return Some((plane.scaled(value, a), sample.2));
-        }
-        if g * low.1 > 0.0 {
-            low = sample;
-            if side == -1 {
-                high.1 *= 0.5;
-            }
-            side = -1;
-        } else {
-            high = sample;
-            if side == 1 {
-                low.1 *= 0.5;
-            }
-            side = 1;
-        }
-    }
-    None
+        Some((a, found.load_per_rad, found.found()))
+    })?;
+    Some((plane.scaled(value, a), found))
 }
 
 /// A followed fold as its points.
@@ -323,4 +304,66 @@ fn second_nearest_one(cycle: &Cycle) -> C64 {
         .nontrivial_multipliers()
         .min_by(|a, b| (a - 1.0).norm().total_cmp(&(b - 1.0).norm()))
         .unwrap_or(C64::new(f64::NAN, 0.0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::analysis::CycleBifurcationKind;
+    use crate::analysis::cycles::cycle_branches;
+    use crate::model::{Axis, Model};
+
+    /// `model` with `key` set to `value`.
+    fn set(model: &Model, key: &str, value: f64) -> Model {
+        Axis::parse(key, model)
+            .unwrap()
+            .apply(model, value)
+            .unwrap()
+    }
+
+    /// The hard onset of the two-rod column with an external damper 0.05
+    /// and a first rod of mass 0.2: the fold of its branch of cycles, found
+    /// along the branch (regula falsi on the load's rate in the share of
+    /// the chord between two of its cycles) and by the march from the
+    /// onset (regula falsi on `dp/da`, the cycles held at the first angle's
+    /// amplitude) — two parametrizations of the branch, two phase
+    /// conditions — is at one load to 1e-10 of it.
+    #[test]
+    fn the_fold_along_a_branch_is_the_march_s() {
+        let base = crate::model::preset("ziegler-1952").unwrap().model();
+        let model = set(&set(&base, "c_ext", 0.05), "m1", 0.2);
+        let cancel = AtomicBool::new(false);
+        let onsets = cycle_branches(&model, 2.1, 2.2, &cancel).unwrap();
+        let branch = onsets[0].branch.as_ref().unwrap();
+        let folds: Vec<_> = branch
+            .bifurcations
+            .iter()
+            .filter(|b| b.kind == CycleBifurcationKind::Fold)
+            .collect();
+        assert_eq!(folds.len(), 1, "{:?}", branch.bifurcations);
+        assert!(folds[0].refined);
+        let spec = BoundarySpec {
+            model,
+            axis: Axis::parse("m1", &model).unwrap(),
+            axis_range: (0.1, 0.3),
+            load_range: (2.0, 2.3),
+        };
+        let rate = LoadRate {
+            spec: &spec,
+            cancel: &cancel,
+        };
+        let plane = Plane {
+            y: spec.axis_range,
+            p: (SMALLEST_AMPLITUDE_RAD, LARGEST_AMPLITUDE_RAD),
+        };
+        let seeds = march(&rate, &plane, 0.2, branch.hopf().load).unwrap();
+        assert_eq!(seeds.len(), 1);
+        let (_, (u, ..)) = &seeds[0];
+        let marched = u[u.len() - 1];
+        assert!(
+            (folds[0].load - marched).abs() < 1e-10 * marched,
+            "along the branch {}, marched {marched}",
+            folds[0].load
+        );
+    }
 }

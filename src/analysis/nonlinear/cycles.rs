@@ -42,6 +42,7 @@ use crate::model::Model;
 
 pub use super::cycle::Cycle;
 use super::cycle::LOAD_SCALE_FLOOR;
+use super::cycle_bifurcations::{CycleBifurcation, cycle_bifurcations};
 use super::shooting::{Constraint, Shooting, Update};
 
 /// Why a branch's continuation stopped.
@@ -110,6 +111,8 @@ pub struct Branch {
     name: String,
     /// In the order of the continuation, starting next to the Hopf point.
     pub cycles: Vec<Cycle>,
+    /// The cycles' own bifurcations, in the order of the continuation.
+    pub bifurcations: Vec<CycleBifurcation>,
     pub end: BranchEnd,
 }
 
@@ -327,10 +330,12 @@ fn branch(
             None => break BranchEnd::Lost { load: last.load },
         }
     };
+    let bifurcations = cycle_bifurcations(&shooting, &cycles, &scales, cancel);
     Some(Branch {
         onset: point.clone(),
         name,
         cycles,
+        bifurcations,
         end,
     })
 }
