@@ -16,7 +16,6 @@ const SCALES: [f64; 9] = [2.0, 1.75, 1.5, 1.3, 1.15, 1.0, 0.85, 0.7, 0.6];
 /// summed-area table per state.
 struct Counts {
     columns: usize,
-    rows: usize,
     /// `(columns + 1) * (rows + 1)` prefix sums per state.
     sums: [Vec<u32>; 3],
 }
@@ -49,11 +48,7 @@ impl Counts {
                 }
             }
         }
-        Self {
-            columns,
-            rows,
-            sums,
-        }
+        Self { columns, sums }
     }
 
     /// How many of columns `i0..i1` by rows `j0..j1` are `state`'s.
@@ -65,35 +60,31 @@ impl Counts {
             - table[j1 * width + i0]
     }
 
-    /// The cells (columns, rows) that a box of half sizes `half` (in
-    /// cells) centred on cell `(i, j)` covers, if it lies inside the grid.
-    fn covered(
-        &self,
-        (i, j): (usize, usize),
-        half: (f64, f64),
-    ) -> Option<((usize, usize), (usize, usize))> {
-        #[expect(clippy::cast_precision_loss, reason = "cell counts")]
-        let span = |at: usize, half: f64, n: usize| {
-            let centre = at as f64 + 0.5;
-            let (lo, hi) = (centre - half, centre + half);
-            #[expect(
-                clippy::cast_possible_truncation,
-                clippy::cast_sign_loss,
-                reason = "inside [0, n] by the check before"
-            )]
-            (lo >= 0.0 && hi <= n as f64).then(|| (lo.floor() as usize, hi.ceil() as usize))
-        };
-        Some((span(i, half.0, self.columns)?, span(j, half.1, self.rows)?))
+    /// Whether columns `is` by rows `js` are `state`'s cells alone.
+    fn filled(&self, state: State, is: (usize, usize), js: (usize, usize)) -> bool {
+        let area = (is.1 - is.0) * (js.1 - js.0);
+        usize::try_from(self.count(state, is, js)).is_ok_and(|n| n == area)
     }
+}
 
-    /// Whether the box of half sizes `half` centred on `(i, j)` lies in the
-    /// grid on `state`'s cells alone.
-    fn fits(&self, state: State, at: (usize, usize), half: (f64, f64)) -> bool {
-        self.covered(at, half).is_some_and(|(is, js)| {
-            let area = (is.1 - is.0) * (js.1 - js.0);
-            usize::try_from(self.count(state, is, js)).is_ok_and(|n| n == area)
-        })
-    }
+/// Where a box centred on each cell along one axis begins and ends.
+type Spans = Vec<Option<(usize, usize)>>;
+
+/// Along one axis of `n` cells, the cells that a box of half size `half`
+/// (in cells) centred on each cell covers, where it lies inside the grid.
+fn spans(n: usize, half: f64) -> Spans {
+    #[expect(clippy::cast_precision_loss, reason = "cell counts")]
+    let span = |at: usize| {
+        let centre = at as f64 + 0.5;
+        let (lo, hi) = (centre - half, centre + half);
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "inside [0, n] by the check before"
+        )]
+        (lo >= 0.0 && hi <= n as f64).then(|| (lo.floor() as usize, hi.ceil() as usize))
+    };
+    (0..n).map(span).collect()
 }
 
 /// Each state's name's place on the map `(x, y)` drawn from `grid`, as
@@ -107,23 +98,38 @@ pub fn state_words(grid: &CellGrid, x: (f64, f64), y: (f64, f64)) -> Vec<([f64; 
     let counts = Counts::new(grid);
     #[expect(clippy::cast_precision_loss, reason = "cell counts")]
     let (columns, rows) = (grid.columns as f64, grid.rows as f64);
+    // Each scale's box's cells about every column and every row: the same
+    // for every cell of a column (row), so found once, not once a cell.
+    let boxes: Vec<_> = SCALES
+        .iter()
+        .map(|&scale| {
+            (
+                spans(grid.columns, 0.5 * BOX_FRACTION.0 * scale * columns),
+                spans(grid.rows, 0.5 * BOX_FRACTION.1 * scale * rows),
+            )
+        })
+        .collect();
     let mut words = Vec::new();
     for state in [State::Stable, State::Flutter, State::Divergence] {
-        let at_scale = |scale: f64| {
-            let half = (
-                0.5 * BOX_FRACTION.0 * scale * columns,
-                0.5 * BOX_FRACTION.1 * scale * rows,
-            );
-            (0..grid.rows)
-                .flat_map(|j| (0..grid.columns).map(move |i| (i, j)))
-                .filter(|&at| counts.fits(state, at, half))
+        // A box covers the cell it is centred on, so only the state's own
+        // cells can centre one.
+        let own: Vec<(usize, usize)> = (0..grid.rows)
+            .flat_map(|j| (0..grid.columns).map(move |i| (i, j)))
+            .filter(|&(i, j)| {
+                let cell = grid.cells.get(j * grid.columns + i).copied().flatten();
+                cell.is_some_and(|(s, _)| s == state)
+            })
+            .collect();
+        let at_scale = |(is, js): &(Spans, Spans)| {
+            own.iter()
+                .copied()
+                .filter(|&(i, j)| match (is[i], js[j]) {
+                    (Some(across), Some(up)) => counts.filled(state, across, up),
+                    _ => false,
+                })
                 .collect::<Vec<_>>()
         };
-        let Some(fitting) = SCALES
-            .iter()
-            .map(|&scale| at_scale(scale))
-            .find(|cells| !cells.is_empty())
-        else {
+        let Some(fitting) = boxes.iter().map(at_scale).find(|cells| !cells.is_empty()) else {
             continue;
         };
         #[expect(clippy::cast_precision_loss, reason = "cell counts")]
@@ -228,3 +234,4 @@ mod tests {
         assert!(stable[1] > 0.5 && stable[0] < 0.5, "{stable:?}");
     }
 }
+
