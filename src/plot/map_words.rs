@@ -234,4 +234,3 @@ mod tests {
         assert!(stable[1] > 0.5 && stable[0] < 0.5, "{stable:?}");
     }
 }
-

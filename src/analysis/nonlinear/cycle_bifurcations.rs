@@ -143,8 +143,8 @@ pub(super) fn brackets(cycles: &[Cycle]) -> Vec<Bracket> {
 /// Every bifurcation along the branch `cycles` of `shooting`'s column, in
 /// the order of the continuation, each solved for between the two cycles
 /// it lies between (see [`CycleBifurcation::refined`]); `scales` are the
-/// continuation's scales of the unknowns. Once `cancel` is set the rest
-/// are interpolated.
+/// continuation's scales of the unknowns. Once `cancel` is set no cycle
+/// is solved: the rest are interpolated.
 pub(super) fn cycle_bifurcations(
     shooting: &Shooting,
     cycles: &[Cycle],
@@ -155,11 +155,8 @@ pub(super) fn cycle_bifurcations(
         .into_iter()
         .map(|bracket| {
             let (a, b) = (&cycles[bracket.after], &cycles[bracket.after + 1]);
-            let refined = if cancel.load(Ordering::Relaxed) {
-                None
-            } else {
-                Chord::new(shooting, (a, b), scales).and_then(|chord| refine(&chord, &bracket))
-            };
+            let refined = Chord::new(shooting, (a, b), scales)
+                .and_then(|chord| refine(&chord, &bracket, cancel));
             if let Some(on) = refined {
                 CycleBifurcation {
                     kind: bracket.kind,
@@ -185,10 +182,15 @@ pub(super) fn cycle_bifurcations(
 /// a fold where the load's rate passes zero (solved at both ends for it),
 /// else (a real multiplier through +1 where the load does not turn, or
 /// another kind) where the modulus passes 1, as read off the two cycles.
-fn refine(chord: &Chord, bracket: &Bracket) -> Option<OnChord> {
+/// `None` where that fails or once `cancel` is set.
+fn refine(chord: &Chord, bracket: &Bracket, cancel: &AtomicBool) -> Option<OnChord> {
     type Sample = (f64, f64, Option<OnChord>);
-    let solve =
-        |share: f64, near: &Option<OnChord>| chord.solve(share, near.as_ref().map(|on| &on.solved));
+    let solve = |share: f64, near: &Option<OnChord>| {
+        if cancel.load(Ordering::Relaxed) {
+            return None;
+        }
+        chord.solve(share, near.as_ref().map(|on| &on.solved))
+    };
     if bracket.kind == CycleBifurcationKind::Fold {
         let rated =
             |on: OnChord| -> Option<Sample> { Some((on.share, chord.load_rate(&on)?, Some(on))) };
@@ -386,7 +388,8 @@ mod tests {
     /// of it (radii 0.8 to 1.2): solved for at `FOLD_P` to 1e-10 and on
     /// the cycle of radius 1 to 1e-5 (the load is the least there, so an
     /// error in where the fold is costs the load its square only), where
-    /// the line between the two cycles round it misses by 0.04.
+    /// the line between the two cycles round it misses by 0.04 (and is
+    /// what a cancelled refinement gives, marked so).
     #[test]
     fn a_constructed_fold_of_cycles_is_found_where_it_is() {
         let field = crate::analysis::field::Field::constructed(fold_field, 1, FOLD_P);
@@ -415,9 +418,24 @@ mod tests {
         assert!((fold.load - FOLD_P).abs() < 1e-10, "{fold:?}");
         assert!((fold.amplitude_rad - 1.0).abs() < 1e-5, "{fold:?}");
         let bracket = brackets(&cycles)[0];
-        let (pa, pb) = (cycles[1].load, cycles[2].load);
-        let linear = pa + bracket.linear_share() * (pb - pa);
+        let along = |a: f64, b: f64| a + bracket.linear_share() * (b - a);
+        let linear = along(cycles[1].load, cycles[2].load);
         assert!((linear - FOLD_P).abs() > 0.03, "{linear}");
+        // Asked to stop, it solves nothing and says so.
+        let scales = DVector::from_element(4, 1.0);
+        let stopped = cycle_bifurcations(&shooting, &cycles, &scales, &AtomicBool::new(true));
+        assert_eq!(
+            stopped,
+            [CycleBifurcation {
+                load: linear,
+                amplitude_rad: along(
+                    cycles[1].largest_amplitude_rad(),
+                    cycles[2].largest_amplitude_rad()
+                ),
+                refined: false,
+                ..fold
+            }]
+        );
     }
 
     /// The cycle through `(start, period)` at load `p`, solved there.
