@@ -3,12 +3,15 @@
 //! through +1, where the branch turns back in the load), a period doubling
 //! (a real multiplier through -1) and a Neimark-Sacker (torus) bifurcation
 //! (a complex pair through the unit circle). Each is bracketed by the two
-//! cycles of the branch it lies between and placed by regula falsi on the
-//! cycles between them (`chord`): a period doubling or a torus where the
-//! modulus of the multiplier of its kind nearest the circle passes 1, a
-//! fold where the load's rate along the branch passes zero (there the
-//! multiplier is a double 1, known to the square root of the monodromy's
-//! accuracy only, while the rate is a simple root).
+//! cycles of the branch it lies between (the count of multipliers outside
+//! the circle changes, and the count of one kind with it) and placed by
+//! regula falsi on the cycles between them (`chord`): a period doubling or
+//! a torus where the crossing multiplier's modulus passes 1 (the k-th
+//! largest of its kind, k the count of the kind outside at the cycle with
+//! more: a continuous function of the cycle whatever other multipliers of
+//! the kind do), a fold where the load's rate along the branch passes zero
+//! (there the multiplier is a double 1, known to the square root of the
+//! monodromy's accuracy only, while the rate is a simple root).
 
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -75,8 +78,12 @@ pub(super) struct Bracket {
     /// The first of the two cycles' index.
     pub(super) after: usize,
     pub(super) kind: CycleBifurcationKind,
-    /// The distance `|m| - 1` from the circle of the multiplier of the
-    /// kind nearest it, at each cycle (where it has one).
+    /// Which multiplier of the kind crosses the circle, counted from the
+    /// largest modulus (0 the largest): the last one outside at the cycle
+    /// with more outside.
+    pub(super) rank: usize,
+    /// Its distance `|m| - 1` from the circle at each cycle (where the
+    /// cycle has that many of the kind): of opposite signs.
     pub(super) moduli: [Option<f64>; 2],
 }
 
@@ -89,6 +96,12 @@ impl Bracket {
             [Some(ra), Some(rb)] if ra * rb < 0.0 => ra / (ra - rb),
             _ => 0.5,
         }
+    }
+
+    /// The crossing multiplier's distance `|m| - 1` from the circle on
+    /// `cycle`, where it has that many of the kind.
+    fn modulus(&self, cycle: &Cycle) -> Option<f64> {
+        of_kind(cycle, self.kind).get(self.rank).copied()
     }
 }
 
@@ -103,38 +116,56 @@ fn class_of(m: C64) -> CycleBifurcationKind {
     }
 }
 
-/// How many multipliers of `kind` lie outside the unit circle, and the
-/// distance `|m| - 1` of the one of that kind nearest the circle.
-fn outside(cycle: &Cycle, kind: CycleBifurcationKind) -> (usize, Option<f64>) {
-    let of_kind: Vec<f64> = cycle
+/// The distances `|m| - 1` from the unit circle of the multipliers of
+/// `kind` (but the trivial one), largest first.
+fn of_kind(cycle: &Cycle, kind: CycleBifurcationKind) -> Vec<f64> {
+    let mut moduli: Vec<f64> = cycle
         .nontrivial_multipliers()
         .filter(|m| class_of(*m) == kind)
         .map(|m| m.norm() - 1.0)
         .collect();
-    let count = of_kind.iter().filter(|&&r| r > 0.0).count();
-    let nearest = of_kind
-        .into_iter()
-        .min_by(|a, b| a.abs().total_cmp(&b.abs()));
-    (count, nearest)
+    moduli.sort_by(|a, b| b.total_cmp(a));
+    moduli
+}
+
+/// How many of `moduli` (distances from the circle) lie outside it.
+fn outside(moduli: &[f64]) -> usize {
+    moduli.iter().filter(|&&r| r > 0.0).count()
 }
 
 /// Every pair of neighbouring `cycles` (in the order of the continuation)
-/// between which the count of multipliers of a kind outside the unit
-/// circle changes.
+/// between which multipliers cross the unit circle: the count outside it
+/// changes, and with it (the same way) the count of a kind. A pair of
+/// multipliers that turns from complex to real (or back) outside the
+/// circle changes the counts of two kinds and not the whole count: no
+/// bifurcation.
 pub(super) fn brackets(cycles: &[Cycle]) -> Vec<Bracket> {
     use CycleBifurcationKind::{Fold, NeimarkSacker, PeriodDoubling};
     let mut out = Vec::new();
     for (after, pair) in cycles.windows(2).enumerate() {
         let [a, b] = pair else { continue };
-        for kind in [Fold, PeriodDoubling, NeimarkSacker] {
-            let ((count_a, near_a), (count_b, near_b)) = (outside(a, kind), outside(b, kind));
-            if count_a != count_b {
-                out.push(Bracket {
-                    after,
-                    kind,
-                    moduli: [near_a, near_b],
-                });
+        let kinds = [Fold, PeriodDoubling, NeimarkSacker];
+        let (moduli_a, moduli_b) = (kinds.map(|k| of_kind(a, k)), kinds.map(|k| of_kind(b, k)));
+        let total = |moduli: &[Vec<f64>; 3]| moduli.iter().map(|m| outside(m)).sum::<usize>();
+        let (total_a, total_b) = (total(&moduli_a), total(&moduli_b));
+        if total_a == total_b {
+            continue;
+        }
+        for (k, kind) in kinds.into_iter().enumerate() {
+            let (count_a, count_b) = (outside(&moduli_a[k]), outside(&moduli_b[k]));
+            if count_a == count_b || (count_b > count_a) != (total_b > total_a) {
+                continue;
             }
+            let rank = count_a.max(count_b) - 1;
+            out.push(Bracket {
+                after,
+                kind,
+                rank,
+                moduli: [
+                    moduli_a[k].get(rank).copied(),
+                    moduli_b[k].get(rank).copied(),
+                ],
+            });
         }
     }
     out
@@ -207,11 +238,7 @@ fn refine(chord: &Chord, bracket: &Bracket, cancel: &AtomicBool) -> Option<OnCho
         return None;
     };
     let moduli = |on: OnChord| -> Option<Sample> {
-        Some((
-            on.share,
-            outside(&on.solved.cycle, bracket.kind).1?,
-            Some(on),
-        ))
+        Some((on.share, bracket.modulus(&on.solved.cycle)?, Some(on)))
     };
     illinois(
         (0.0, low, None),
@@ -276,6 +303,40 @@ mod tests {
             let linear = pa + b.linear_share() * (pb - pa);
             assert!((linear - at).abs() < 1e-12, "{b:?}");
         }
+    }
+
+    /// A complex pair outside the circle that turns into two real
+    /// multipliers outside it (the counts of two kinds change, the whole
+    /// count does not) is no bifurcation. Where another pair of the kind
+    /// hugs the circle from inside, the test function is the second
+    /// largest modulus (the last outside once the pair has crossed): it
+    /// goes from the hugging pair's at the first cycle to the crossing
+    /// pair's at the second, and is 1 exactly where the crossing pair is.
+    /// The nearest pair's modulus, read before, did not change sign.
+    #[test]
+    fn only_multipliers_that_cross_the_circle_are_read() {
+        let pair = |r: f64, angle: f64| [C64::from_polar(r, angle), C64::from_polar(r, -angle)];
+        let turning = [
+            cycle(1.0, &pair(1.2, 0.1)),
+            cycle(1.1, &[C64::new(1.25, 0.0), C64::new(1.15, 0.0)]),
+        ];
+        assert_eq!(brackets(&turning), []);
+        let hugging = pair(0.999_99, 2.0);
+        let crossing = |r: f64| [hugging, pair(r, 1.0)].concat();
+        let cycles = [cycle(2.0, &crossing(0.99)), cycle(2.1, &crossing(1.03))];
+        let found = brackets(&cycles);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert_eq!(found[0].kind, CycleBifurcationKind::NeimarkSacker);
+        assert_eq!(found[0].rank, 1);
+        let [Some(ra), Some(rb)] = found[0].moduli else {
+            panic!("{found:?}")
+        };
+        assert!(
+            (ra + 1e-5).abs() < 1e-12 && (rb - 0.03).abs() < 1e-12,
+            "{found:?}"
+        );
+        let at_one = cycle(2.05, &crossing(1.0));
+        assert!(found[0].modulus(&at_one).unwrap().abs() < 1e-15);
     }
 
     /// Where the constructed field below has its period doubling.
