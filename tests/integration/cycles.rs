@@ -405,8 +405,9 @@ fn the_diagram_figure_draws_each_cycle_at_its_amplitude() {
 /// on Ziegler's column): a hard onset (l1 > 0). From the Hopf point the
 /// cycles are unstable and lie below the onset, with the normal form's
 /// amplitudes; the branch folds back at a lower load, where the cycles turn
-/// stable (one change of stability along the branch, at its fold), and the
-/// large stable cycles go on past the onset.
+/// stable (one change of stability along the branch, at its fold: the
+/// diagram's unstable and stable runs meet there), and the large stable
+/// cycles go on past the onset.
 #[test]
 fn a_hard_onset_s_unstable_cycles_fold_back_into_large_stable_ones() {
     let m = hard_onset_column();
@@ -430,6 +431,17 @@ fn a_hard_onset_s_unstable_cycles_fold_back_into_large_stable_ones() {
     assert_eq!(runs.iter().map(|r| r.1).collect::<Vec<_>>(), [false, true]);
     let first_stable = branch.cycles.iter().position(|c| c.stable).unwrap();
     assert!(first_stable.abs_diff(fold) <= 1, "{first_stable} vs {fold}");
+    // The two runs meet at the fold of cycles solved for between two
+    // cycles, not at either of them.
+    let [turn] = branch.bifurcations[..] else {
+        panic!("{:?}", branch.bifurcations)
+    };
+    let at = [turn.load, turn.amplitude_rad];
+    assert_eq!(
+        (runs[0].0.last(), runs[1].0.first()),
+        (Some(&at), Some(&at))
+    );
+    assert!(branch.cycles.iter().all(|c| c.load > turn.load));
     assert!(branch.cycles.last().unwrap().load > hopf.load);
     // Near the onset the unstable cycles are the normal form's, below it.
     let per_sqrt = hopf.amplitude_per_sqrt_load_rad[0];

@@ -70,6 +70,9 @@ pub struct CycleBifurcation {
     /// between: the multiplier's modulus or the load's rate did not change
     /// sign between them, or a solve failed).
     pub refined: bool,
+    /// The index of the first of the two cycles it lies between.
+    #[serde(skip)]
+    pub(in crate::analysis) after: usize,
 }
 
 /// Two neighbouring cycles of a branch with a bifurcation between them.
@@ -194,6 +197,7 @@ pub(super) fn cycle_bifurcations(
                     load: on.solved.cycle.load,
                     amplitude_rad: on.solved.cycle.largest_amplitude_rad(),
                     refined: true,
+                    after: bracket.after,
                 }
             } else {
                 let t = bracket.linear_share();
@@ -203,6 +207,7 @@ pub(super) fn cycle_bifurcations(
                     load: along(a.load, b.load),
                     amplitude_rad: along(a.largest_amplitude_rad(), b.largest_amplitude_rad()),
                     refined: false,
+                    after: bracket.after,
                 }
             }
         })

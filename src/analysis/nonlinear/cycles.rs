@@ -125,16 +125,33 @@ impl Branch {
 
     /// The branch as runs of equal stability, each a polyline of
     /// `[load, largest angle's amplitude]` from the Hopf point on (each run
-    /// starts where the one before ended, so the curve is unbroken).
+    /// starts where the one before ended, so the curve is unbroken). Where
+    /// the stability changes at a bifurcation of the cycles, the runs meet
+    /// there (on the curve between the two cycles it lies between), else
+    /// at the last cycle before the change.
     #[must_use]
     pub fn runs(&self) -> Vec<(Vec<[f64; 2]>, bool)> {
         let mut runs: Vec<(Vec<[f64; 2]>, bool)> = Vec::new();
         let mut last = [self.hopf().load, 0.0];
-        for cycle in &self.cycles {
+        for (i, cycle) in self.cycles.iter().enumerate() {
             let point = [cycle.load, cycle.largest_amplitude_rad()];
             match runs.last_mut() {
-                Some((points, stable)) if *stable == cycle.stable => points.push(point),
-                _ => runs.push((vec![last, point], cycle.stable)),
+                Some(run) if run.1 == cycle.stable => run.0.push(point),
+                before => {
+                    let between = self
+                        .bifurcations
+                        .iter()
+                        .find(|b| b.after + 1 == i)
+                        .map(|b| [b.load, b.amplitude_rad]);
+                    let start = match (between, before) {
+                        (Some(at), Some(run)) => {
+                            run.0.push(at);
+                            at
+                        }
+                        _ => last,
+                    };
+                    runs.push((vec![start, point], cycle.stable));
+                }
             }
             last = point;
         }
