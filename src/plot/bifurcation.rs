@@ -100,29 +100,39 @@ pub struct Diagram<'a> {
 }
 
 impl Diagram<'_> {
-    /// The cycles' own bifurcations along every branch.
-    fn cycle_bifurcations(&self) -> Vec<CycleBifurcation> {
+    /// The cycles' own bifurcations along every branch, each with the way
+    /// its branch opens there (see [`Branch::opening`]).
+    fn cycle_bifurcations(&self) -> Vec<(CycleBifurcation, f64)> {
         self.branches
             .iter()
-            .flat_map(|b| b.bifurcations.iter().copied())
+            .flat_map(|b| b.bifurcations.iter().map(|t| (*t, b.opening(t))))
             .collect()
     }
 
-    /// The cycles' bifurcations ringed, each named `above` its ring.
-    fn turn_marks(&self, above: f64) -> Vec<Mark> {
+    /// The cycles' bifurcations ringed, each named `above` its ring, or at a
+    /// fold `aside` it where the branch is not (the name would hide the
+    /// branch's turn).
+    fn turn_marks(&self, above: f64, aside: f64) -> Vec<Mark> {
         let turns = self.cycle_bifurcations();
         if turns.is_empty() {
             return Vec::new();
         }
         let mut marks = vec![Mark::Markers {
-            points: turns.iter().map(|t| [t.load, t.amplitude_rad]).collect(),
+            points: turns
+                .iter()
+                .map(|(t, _)| [t.load, t.amplitude_rad])
+                .collect(),
             ink: Ink::Main,
             size: Size::Large,
             filled: false,
             off_view: OffView::Hidden,
         }];
-        marks.extend(turns.iter().map(|t| Mark::Label {
-            at: [t.load, t.amplitude_rad + above],
+        marks.extend(turns.iter().map(|(t, opening)| Mark::Label {
+            at: if *opening == 0.0 {
+                [t.load, t.amplitude_rad + above]
+            } else {
+                [t.load - opening * aside, t.amplitude_rad]
+            },
             text: short_name(t.kind).to_owned(),
         }));
         marks
@@ -177,7 +187,8 @@ impl Diagram<'_> {
                 off_view: OffView::Hidden,
             });
         }
-        marks.extend(self.turn_marks(0.06 * highest));
+        let (lo, hi) = self.load_range;
+        marks.extend(self.turn_marks(0.06 * highest, 0.08 * (hi - lo)));
         for upward in [true, false] {
             let points: Vec<[f64; 2]> = self
                 .sweep
@@ -282,7 +293,7 @@ impl Diagram<'_> {
             (CycleBifurcationKind::NeimarkSacker, "legend-cycle-torus"),
         ]
         .into_iter()
-        .filter(|(kind, _)| turns.iter().any(|t| t.kind == *kind))
+        .filter(|(kind, _)| turns.iter().any(|(t, _)| t.kind == *kind))
         .map(|(_, id)| words.get(id).into_owned())
         .collect();
         if !kinds.is_empty() {

@@ -697,8 +697,9 @@ fn the_fold_of_cycles_is_where_the_branch_turns_and_a_multiplier_is_one() {
         .map(|m| (m - 1.0).norm())
         .fold(f64::INFINITY, f64::min);
     assert!(second < 0.02, "{second} {:?}", cycle.multipliers);
-    // The diagram rings and names it there, and its legend says what
-    // the name means.
+    // The diagram rings it there and names it beside the ring, on the
+    // side away from the branch (a name above would hide the turn), and
+    // its legend says what the name means.
     let sheet = zieglerlab::plot::bifurcation::Diagram {
         load_range: (2.1, 2.2),
         equilibrium: &[],
@@ -710,7 +711,7 @@ fn the_fold_of_cycles_is_where_the_branch_turns_and_a_multiplier_is_one() {
     .sheet();
     let named = sheet.plots[0].marks.iter().any(|mark| {
         matches!(mark, zieglerlab::plot::spec::Mark::Label { at, text }
-            if text == "LPC" && at[0] == fold)
+            if text == "LPC" && at[0] < fold && at[1] == folds[0].amplitude_rad)
     });
     assert!(named, "{:?}", sheet.plots[0].marks.len());
     assert!(

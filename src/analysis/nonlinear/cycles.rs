@@ -158,6 +158,19 @@ impl Branch {
         runs
     }
 
+    /// Which way the branch opens at its bifurcation `at`: 1 at a fold
+    /// where its cycles on both sides have higher loads (the least load
+    /// along it), -1 at one where they have lower, 0 elsewhere.
+    #[must_use]
+    pub fn opening(&self, at: &CycleBifurcation) -> f64 {
+        let sides = (self.cycles.get(at.after), self.cycles.get(at.after + 1));
+        match sides {
+            (Some(a), Some(b)) if a.load > at.load && b.load > at.load => 1.0,
+            (Some(a), Some(b)) if a.load < at.load && b.load < at.load => -1.0,
+            _ => 0.0,
+        }
+    }
+
     /// "soft" or "hard": how flutter sets in at the branch's onset.
     #[must_use]
     pub fn onset_word(&self) -> &'static str {
