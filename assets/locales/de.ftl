@@ -446,6 +446,8 @@ describe-range = { $state } von { $from } bis { $to }
 describe-ranges = Bereiche: { $ranges }
 describe-mark = { $name } bei { $x }
 describe-marked = markiert: { $marks }
+describe-point = { $name } bei ({ $x }, { $y })
+describe-points = benannt: { $points }
 describe-bands = getönt zwischen einer Falte der Zyklen und einem harten Flatterbeginn: das Band der Hysterese, in dem Ruhe und großes Schwingen beide stabil sind
 describe-curves = { $count ->
     [one] { $count } Kurve

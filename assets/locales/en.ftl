@@ -442,6 +442,8 @@ describe-range = { $state } from { $from } to { $to }
 describe-ranges = ranges: { $ranges }
 describe-mark = { $name } at { $x }
 describe-marked = marked: { $marks }
+describe-point = { $name } at ({ $x }, { $y })
+describe-points = named: { $points }
 describe-bands = tinted between a fold of cycles and a hard flutter onset: the band of hysteresis, where rest and a large swing are both stable
 describe-curves = { $count ->
     [one] { $count } curve

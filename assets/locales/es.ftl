@@ -446,6 +446,8 @@ describe-range = { $state } de { $from } a { $to }
 describe-ranges = intervalos: { $ranges }
 describe-mark = { $name } en { $x }
 describe-marked = marcados: { $marks }
+describe-point = { $name } en ({ $x }, { $y })
+describe-points = con nombre: { $points }
 describe-bands = sombreada entre un pliegue de ciclos y un inicio brusco del flameo: la banda de histéresis, donde reposo y oscilación grande son ambos estables
 describe-curves = { $count ->
     [one] { $count } curva

@@ -446,6 +446,8 @@ describe-range = { $state } de { $from } à { $to }
 describe-ranges = intervalles : { $ranges }
 describe-mark = { $name } à { $x }
 describe-marked = repères : { $marks }
+describe-point = { $name } en ({ $x } ; { $y })
+describe-points = points nommés : { $points }
 describe-bands = teintée entre un pli des cycles et un début brutal du flottement : la bande d'hystérésis, où repos et grande oscillation sont tous deux stables
 describe-curves = { $count ->
     [one] { $count } courbe

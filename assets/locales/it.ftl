@@ -446,6 +446,8 @@ describe-range = { $state } da { $from } a { $to }
 describe-ranges = intervalli: { $ranges }
 describe-mark = { $name } a { $x }
 describe-marked = segnati: { $marks }
+describe-point = { $name } in ({ $x }, { $y })
+describe-points = punti con nome: { $points }
 describe-bands = colorata tra una piega dei cicli e un inizio brusco del flutter: la banda di isteresi, dove quiete e grande oscillazione sono entrambe stabili
 describe-curves = { $count ->
     [one] { $count } curva

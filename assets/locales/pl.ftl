@@ -453,6 +453,8 @@ describe-range = { $state } od { $from } do { $to }
 describe-ranges = zakresy: { $ranges }
 describe-mark = { $name } przy { $x }
 describe-marked = zaznaczone: { $marks }
+describe-point = { $name } w punkcie ({ $x }, { $y })
+describe-points = nazwane punkty: { $points }
 describe-bands = zabarwione między fałdą cykli a gwałtownym początkiem flatteru: pas histerezy, gdzie spoczynek i duże drganie są oba stabilne
 describe-curves = { $count ->
     [one] { $count } krzywa

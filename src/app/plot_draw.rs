@@ -279,7 +279,7 @@ fn mark_ui<'a>(
             upper,
             state,
         } => band_ui(plot_ui, lower, upper, *state, theme),
-        Mark::Label { at, text } => {
+        Mark::Label { at, text, .. } => {
             // Spaces pad the plate on both sides of the word.
             let word = egui::RichText::new(format!(" {text} "))
                 .size(theme.text_size)

@@ -206,7 +206,7 @@ where
                 upper,
                 state,
             } => band(&mut chart, (lower, upper), *state)?,
-            Mark::Label { at, text } => label(&mut chart, *at, text, ink)?,
+            Mark::Label { at, text, .. } => label(&mut chart, *at, text, ink)?,
         }
     }
     drawn.notes.extend(

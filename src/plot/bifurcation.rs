@@ -134,6 +134,7 @@ impl Diagram<'_> {
                 [t.load - opening * aside, t.amplitude_rad]
             },
             text: short_name(t.kind).to_owned(),
+            of: Some([t.load, t.amplitude_rad]),
         }));
         marks
     }

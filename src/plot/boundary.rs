@@ -238,6 +238,7 @@ impl<'a> BoundaryPlane<'a> {
         marks.extend(special.iter().map(|s| Mark::Label {
             at: at([s.value, s.load + name_offset]),
             text: short_name(s.kind).to_owned(),
+            of: Some(at([s.value, s.load])),
         }));
         marks
     }

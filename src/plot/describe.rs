@@ -1,7 +1,8 @@
 //! A plot in words, for a screen reader (and whoever cannot see its
 //! colours): what it plots against what, the ranges of each state, the
-//! lines marked, the present's eigenvalues on the right of the axis, the
-//! map's share of each state. Medium-independent: built from the plot's
+//! lines marked, the points named (a diagram's bifurcations), the
+//! present's eigenvalues on the right of the axis, the map's share of
+//! each state. Medium-independent: built from the plot's
 //! description, as both renderers are.
 
 use super::spec::{Ink, Mark, Plot};
@@ -51,6 +52,25 @@ pub fn describe(plot: &Plot, words: &'static Words) -> String {
         .collect();
     if !marked.is_empty() {
         sentences.push(tr!(words, "describe-marked", marks = marked.join("; ")));
+    }
+    let named: Vec<String> = plot
+        .marks
+        .iter()
+        .filter_map(|mark| match mark {
+            Mark::Label {
+                text, of: Some(at), ..
+            } => Some(tr!(
+                words,
+                "describe-point",
+                name = text.clone(),
+                x = number_text(at[0]),
+                y = number_text(at[1])
+            )),
+            _ => None,
+        })
+        .collect();
+    if !named.is_empty() {
+        sentences.push(tr!(words, "describe-points", points = named.join("; ")));
     }
     let curves = plot
         .marks
@@ -199,6 +219,27 @@ mod tests {
         let divergence = describe(&plane(vec![[0.3, 0.0], [-0.3, 0.0]]), english());
         assert!(divergence.contains("divergence"), "{divergence}");
         assert!(divergence.starts_with("Im λ (rad/s) against Re λ (1/s)"));
+    }
+
+    /// A name beside a ringed point is read with the point it names (a
+    /// bifurcation's load and amplitude), not where the word stands; a
+    /// word that names no point (a map's state) is not read as one.
+    #[test]
+    fn a_named_point_is_read_where_it_is() {
+        let mut plot = plane(vec![[-0.1, 1.0]]);
+        plot.marks.push(Mark::Label {
+            at: [2.05, 0.3517],
+            text: "LPC".to_owned(),
+            of: Some([2.1304, 0.3517]),
+        });
+        plot.marks.push(Mark::Label {
+            at: [1.0, 1.0],
+            text: "stable".to_owned(),
+            of: None,
+        });
+        let said = describe(&plot, english());
+        assert!(said.contains(". named: LPC at (2.1304, 0.3517)."), "{said}");
+        assert!(!said.contains("stable at"), "{said}");
     }
 
     /// A branch coloured along the load is drawn in pieces but is one

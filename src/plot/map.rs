@@ -192,6 +192,7 @@ impl StabilityMap<'_> {
                 .map(|(at, state)| Mark::Label {
                     at,
                     text: state_name(self.words, state),
+                    of: None,
                 }),
         );
         if let Some(now) = self.now {
@@ -385,7 +386,7 @@ mod tests {
             .marks
             .iter()
             .filter_map(|mark| match mark {
-                Mark::Label { at, text } => Some((at[0], text.as_str())),
+                Mark::Label { at, text, .. } => Some((at[0], text.as_str())),
                 _ => None,
             })
             .collect();

@@ -143,8 +143,14 @@ pub enum Mark {
         state: State,
     },
     /// A word written on the plot, centred at `at`, on a plate of the
-    /// background so that it reads over cells and lines.
-    Label { at: [f64; 2], text: String },
+    /// background so that it reads over cells and lines; `of`, the point
+    /// it names (a ringed bifurcation beside it), which is what a screen
+    /// reader is told.
+    Label {
+        at: [f64; 2],
+        text: String,
+        of: Option<[f64; 2]>,
+    },
 }
 
 /// How a plot's default view is set.

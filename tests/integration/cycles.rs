@@ -710,7 +710,7 @@ fn the_fold_of_cycles_is_where_the_branch_turns_and_a_multiplier_is_one() {
     }
     .sheet();
     let named = sheet.plots[0].marks.iter().any(|mark| {
-        matches!(mark, zieglerlab::plot::spec::Mark::Label { at, text }
+        matches!(mark, zieglerlab::plot::spec::Mark::Label { at, text, .. }
             if text == "LPC" && at[0] < fold && at[1] == folds[0].amplitude_rad)
     });
     assert!(named, "{:?}", sheet.plots[0].marks.len());
