@@ -193,3 +193,46 @@ fn a_window_zoomed_past_its_size_scrolls_its_layout() {
         );
     }
 }
+
+/// The post-critical diagram tells a screen reader where the cycles'
+/// bifurcations are, not only that there are words on it: on the hard
+/// onset (`ziegler-1952`, `c_ext = 0.05`, `m1 = 0.2`) its two folds of
+/// cycles, at the loads and amplitudes `bifurcation` gives (p = 2.1303849
+/// and 2.6903797, largest angles 0.3517 and 1.9298 rad).
+#[test]
+fn the_diagram_names_its_folds_with_their_loads() {
+    use zieglerlab::app::Tab;
+    use zieglerlab::model::PresetId;
+    let mut harness = app_harness();
+    let app = harness.state_mut();
+    app.apply(Action::Preset(PresetId::Ziegler1952));
+    app.apply(Action::Enter {
+        key: Key::CExt,
+        value: 0.05,
+    });
+    app.apply(Action::Enter {
+        key: Key::M1,
+        value: 0.2,
+    });
+    app.apply(Action::Tab(Tab::PostCritical));
+    let mut said = String::new();
+    // The branches are computed off the UI thread: frames until they are in.
+    for _ in 0..1500 {
+        harness.run_steps(1);
+        said = harness
+            .query_all_by(|node| {
+                node.role() == Role::Image && node.label().is_some_and(|l| l.starts_with("plot: "))
+            })
+            .map(|plot| plot.accesskit_node().description().unwrap_or_default())
+            .collect::<Vec<_>>()
+            .join(" | ");
+        if said.contains("named:") {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    assert!(
+        said.contains("named: LPC at (2.13038, 0.351688); LPC at (2.69038, 1.92983)"),
+        "{said}"
+    );
+}
