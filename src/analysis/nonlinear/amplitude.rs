@@ -19,7 +19,6 @@ use nalgebra::{DMatrix, DVector};
 
 use super::hopf::HopfPoint;
 use super::shooting::{Constraint, Phase, Shooting, Solved, Update};
-use crate::analysis::gauss::Monodromy;
 
 /// A cycle at a held amplitude and the load's rate along its branch.
 pub(in crate::analysis) struct AtAmplitude {
@@ -60,15 +59,7 @@ impl Shooting {
         let mut start = guess.clone();
         start[0] = amplitude_rad;
         start[rods] = 0.0;
-        let solved = [
-            known.map(Update::Matrix),
-            Some(Update::Broyden(None)),
-            Some(Update::Newton(Monodromy::HeldPerStep)),
-            Some(Update::Newton(Monodromy::Exact)),
-        ]
-        .into_iter()
-        .flatten()
-        .find_map(|update| self.newton_on(&start, &constraint, update, &phase))?;
+        let solved = self.solve_on(&start, &constraint, &phase, known.map(Update::Matrix))?;
         let cycle = &solved.cycle;
         let matrix = self.newton_matrix(
             (&cycle.start, cycle.period_secs, cycle.load),

@@ -21,7 +21,6 @@ use nalgebra::DVector;
 
 use super::cycle::Cycle;
 use super::shooting::{Constraint, Phase, Shooting, Solved, Update};
-use crate::analysis::gauss::Monodromy;
 
 /// The chord between two cycles of a branch.
 pub(super) struct Chord<'a> {
@@ -67,25 +66,11 @@ impl<'a> Chord<'a> {
     /// when given, a nearby cycle's monodromy; `None` where Newton fails.
     pub(super) fn solve(&self, share: f64, near: Option<&Solved>) -> Option<OnChord> {
         let predicted = &self.from + &self.along * share;
-        let constraint = self.constraint(&predicted);
-        let d = self.shooting.field.dimension();
-        let point = predicted.rows(0, d).into_owned();
-        let phase = Phase {
-            normal: self.shooting.field.at_load(predicted[d + 1]).at(&point),
-            point,
-        };
-        let solved = [
-            near.map(|n| Update::Broyden(Some(&n.monodromy))),
-            Some(Update::Broyden(None)),
-            Some(Update::Newton(Monodromy::HeldPerStep)),
-            Some(Update::Newton(Monodromy::Exact)),
-        ]
-        .into_iter()
-        .flatten()
-        .find_map(|update| {
+        let phase = self.shooting.phase_through(&predicted);
+        let first = near.map(|n| Update::Broyden(Some(&n.monodromy)));
+        let solved =
             self.shooting
-                .newton_on(&predicted, &constraint, update, &phase)
-        })?;
+                .solve_on(&predicted, &self.constraint(&predicted), &phase, first)?;
         Some(OnChord {
             share,
             solved,

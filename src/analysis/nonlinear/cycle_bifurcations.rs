@@ -101,6 +101,21 @@ impl Bracket {
         }
     }
 
+    /// The bifurcation placed on the line between its two cycles of
+    /// `cycles`, where the modulus passes 1 on it: not solved for.
+    fn interpolated(&self, cycles: &[Cycle]) -> CycleBifurcation {
+        let (a, b) = (&cycles[self.after], &cycles[self.after + 1]);
+        let t = self.linear_share();
+        let along = |x: f64, y: f64| x + t * (y - x);
+        CycleBifurcation {
+            kind: self.kind,
+            load: along(a.load, b.load),
+            amplitude_rad: along(a.largest_amplitude_rad(), b.largest_amplitude_rad()),
+            refined: false,
+            after: self.after,
+        }
+    }
+
     /// The crossing multiplier's distance `|m| - 1` from the circle on
     /// `cycle`, where it has that many of the kind.
     fn modulus(&self, cycle: &Cycle) -> Option<f64> {
@@ -191,25 +206,16 @@ pub(super) fn cycle_bifurcations(
             let (a, b) = (&cycles[bracket.after], &cycles[bracket.after + 1]);
             let refined = Chord::new(shooting, (a, b), scales)
                 .and_then(|chord| refine(&chord, &bracket, cancel));
-            if let Some(on) = refined {
-                CycleBifurcation {
+            refined.map_or_else(
+                || bracket.interpolated(cycles),
+                |on| CycleBifurcation {
                     kind: bracket.kind,
                     load: on.solved.cycle.load,
                     amplitude_rad: on.solved.cycle.largest_amplitude_rad(),
                     refined: true,
                     after: bracket.after,
-                }
-            } else {
-                let t = bracket.linear_share();
-                let along = |x: f64, y: f64| x + t * (y - x);
-                CycleBifurcation {
-                    kind: bracket.kind,
-                    load: along(a.load, b.load),
-                    amplitude_rad: along(a.largest_amplitude_rad(), b.largest_amplitude_rad()),
-                    refined: false,
-                    after: bracket.after,
-                }
-            }
+                },
+            )
         })
         .collect()
 }
@@ -304,9 +310,9 @@ mod tests {
             ]
         );
         for (b, at) in found.iter().zip([1.25, 2.5, 3.75]) {
-            let (pa, pb) = (loads[b.after], loads[b.after + 1]);
-            let linear = pa + b.linear_share() * (pb - pa);
-            assert!((linear - at).abs() < 1e-12, "{b:?}");
+            let linear = b.interpolated(&cycles);
+            assert!((linear.load - at).abs() < 1e-12, "{b:?}");
+            assert!((linear.amplitude_rad - at).abs() < 1e-12, "{b:?}");
         }
     }
 
@@ -416,9 +422,7 @@ mod tests {
         assert_eq!(doubling.kind, CycleBifurcationKind::PeriodDoubling);
         assert!(doubling.refined);
         assert!((doubling.load - DOUBLING_P).abs() < 1e-9, "{doubling:?}");
-        let bracket = brackets(&cycles)[0];
-        let (pa, pb) = (cycles[bracket.after].load, cycles[bracket.after + 1].load);
-        let linear = pa + bracket.linear_share() * (pb - pa);
+        let linear = brackets(&cycles)[0].interpolated(&cycles).load;
         let period = std::f64::consts::TAU / omega(DOUBLING_P);
         let off = (linear - DOUBLING_P).abs();
         assert!(off < period * h * h / 8.0, "{linear}: {off}");
@@ -483,25 +487,13 @@ mod tests {
         assert!(fold.refined);
         assert!((fold.load - FOLD_P).abs() < 1e-10, "{fold:?}");
         assert!((fold.amplitude_rad - 1.0).abs() < 1e-5, "{fold:?}");
-        let bracket = brackets(&cycles)[0];
-        let along = |a: f64, b: f64| a + bracket.linear_share() * (b - a);
-        let linear = along(cycles[1].load, cycles[2].load);
-        assert!((linear - FOLD_P).abs() > 0.03, "{linear}");
+        let linear = brackets(&cycles)[0].interpolated(&cycles);
+        assert!((linear.load - FOLD_P).abs() > 0.03, "{linear:?}");
         // Asked to stop, it solves nothing and says so.
         let scales = DVector::from_element(4, 1.0);
         let stopped = cycle_bifurcations(&shooting, &cycles, &scales, &AtomicBool::new(true));
-        assert_eq!(
-            stopped,
-            [CycleBifurcation {
-                load: linear,
-                amplitude_rad: along(
-                    cycles[1].largest_amplitude_rad(),
-                    cycles[2].largest_amplitude_rad()
-                ),
-                refined: false,
-                ..fold
-            }]
-        );
+        assert_eq!(stopped, [linear]);
+        assert!(!linear.refined && linear.kind == fold.kind && linear.after == 1);
     }
 
     /// The cycle through `(start, period)` at load `p`, solved there.

@@ -211,9 +211,27 @@ impl Shooting {
         guess: &DVector<f64>,
         constraint: &Constraint,
     ) -> Option<Solved> {
-        self.newton(guess, constraint, Update::Broyden(None))
-            .or_else(|| self.newton(guess, constraint, Update::Newton(Monodromy::HeldPerStep)))
-            .or_else(|| self.newton(guess, constraint, Update::Newton(Monodromy::Exact)))
+        self.solve_on(guess, constraint, &self.phase_through(guess), None)
+    }
+
+    /// [`Self::solve`] with the start held on `phase`'s plane, first (when
+    /// given) with Newton's matrix updated as `first` says.
+    pub(in crate::analysis) fn solve_on(
+        &self,
+        guess: &DVector<f64>,
+        constraint: &Constraint,
+        phase: &Phase,
+        first: Option<Update>,
+    ) -> Option<Solved> {
+        [
+            first,
+            Some(Update::Broyden(None)),
+            Some(Update::Newton(Monodromy::HeldPerStep)),
+            Some(Update::Newton(Monodromy::Exact)),
+        ]
+        .into_iter()
+        .flatten()
+        .find_map(|update| self.newton_on(guess, constraint, update, phase))
     }
 
     /// [`Self::solve`] with Newton's matrix updated as `update` says, the
@@ -224,13 +242,18 @@ impl Shooting {
         constraint: &Constraint,
         update: Update,
     ) -> Option<Solved> {
+        self.newton_on(guess, constraint, update, &self.phase_through(guess))
+    }
+
+    /// The plane through the start of the unknowns `guess = (x0, T, p)`
+    /// across the flow there.
+    pub(in crate::analysis) fn phase_through(&self, guess: &DVector<f64>) -> Phase {
         let d = self.field.dimension();
         let point = guess.rows(0, d).into_owned();
-        let phase = Phase {
+        Phase {
             normal: self.field.at_load(guess[d + 1]).at(&point),
             point,
-        };
-        self.newton_on(guess, constraint, update, &phase)
+        }
     }
 
     /// [`Self::newton`] with the start held on `phase`'s plane.
