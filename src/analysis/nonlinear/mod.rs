@@ -23,6 +23,7 @@ pub(super) mod gauss;
 pub(super) mod hopf;
 pub(super) mod jet;
 pub(super) mod kick;
+mod period_steps;
 mod shooting;
 mod split_stages;
 mod tableau;
