@@ -365,25 +365,32 @@ fn cell_image(grid: &CellGrid, theme: &Theme) -> egui::ColorImage {
     let spacing = 1.0 / pattern::MAP_STRIPES_PER_VIEW;
     #[expect(clippy::cast_precision_loss, reason = "pixel counts")]
     let fraction = |pixel: usize, of: usize| (pixel as f64 + 0.5) / of as f64;
+    let across: Vec<f64> = (0..width).map(|column| fraction(column, width)).collect();
+    let stripe = color(theme.palette.background);
     for (k, cell) in grid.cells.iter().enumerate() {
         let (j, i) = (k / columns, k % columns);
         let Some((state, strength)) = *cell else {
             continue;
         };
         let fill = ink_color(&Ink::Cell(state, strength), theme);
+        let columns_of_cell = i * scale..(i + 1) * scale;
         for row in (grid.rows - 1 - j) * scale..(grid.rows - j) * scale {
-            for column in i * scale..(i + 1) * scale {
-                let on = pattern::striped(state)
-                    && pattern::on_stripe(
-                        fraction(column, width),
-                        fraction(height - 1 - row, height),
-                        spacing,
-                    );
-                image.pixels[row * width + column] = if on {
-                    color(theme.palette.background)
-                } else {
-                    fill
-                };
+            let start = row * width;
+            let pixels =
+                &mut image.pixels[start + columns_of_cell.start..start + columns_of_cell.end];
+            if pattern::striped(state) {
+                let up = fraction(height - 1 - row, height);
+                for (pixel, &x) in pixels.iter_mut().zip(&across[columns_of_cell.clone()]) {
+                    *pixel = if pattern::on_stripe(x, up, spacing) {
+                        stripe
+                    } else {
+                        fill
+                    };
+                }
+            } else {
+                // A cell's row of pixels in one fill: a 256-cell map is a
+                // million pixels, remade as each row of cells comes in.
+                pixels.fill(fill);
             }
         }
     }
