@@ -134,9 +134,10 @@ pub fn plot_ui(
     let shown = show_framed(egui_plot, ui, |plot_ui| {
         let keyed = plot_keys::keys_ui(plot_ui, theme);
         let settled = view_settled(plot_ui, refit);
+        let zoom = view_zoom(plot.view, &plot_ui.plot_bounds());
         let mut edge_marked = Vec::new();
         for mark in &plot.marks {
-            if let Some(points) = mark_ui(plot_ui, plot.id, mark, settled, theme) {
+            if let Some(points) = mark_ui(plot_ui, (plot.id, zoom), mark, settled, theme) {
                 edge_marked.extend(points.iter().map(|p| C64::new(p[0], p[1])));
             }
         }
@@ -184,11 +185,50 @@ pub fn plot_ui(
     shown
 }
 
-/// Draws one mark; the points of markers to mark on the view's edge when
+/// How many times the default view's extent the view shows, along x and
+/// y (1 at the default view, 2 zoomed out twofold); 1 for a view of equal
+/// scales, whose default extent follows the plot's shape.
+fn view_zoom(view: View, bounds: &egui_plot::PlotBounds) -> [f64; 2] {
+    match view {
+        View::Ranges { x, y } => {
+            let ratio = |shown: f64, default: f64| {
+                let zoom = shown / default;
+                if zoom.is_finite() && zoom > 0.0 {
+                    zoom
+                } else {
+                    1.0
+                }
+            };
+            [
+                ratio(bounds.width(), x.1 - x.0),
+                ratio(bounds.height(), y.1 - y.0),
+            ]
+        }
+        View::Equal { .. } => [1.0, 1.0],
+    }
+}
+
+/// Where a name set at `at` beside the point `of` it names is drawn in a
+/// view zoomed by `zoom` (see [`view_zoom`]): its offset from the point
+/// scaled with the view, so that on the screen the name keeps its place
+/// beside its ring however far the view is zoomed; at `at` itself in the
+/// default view.
+fn label_at(at: [f64; 2], of: Option<[f64; 2]>, zoom: [f64; 2]) -> [f64; 2] {
+    match of {
+        Some(of) if zoom != [1.0, 1.0] => [
+            of[0] + (at[0] - of[0]) * zoom[0],
+            of[1] + (at[1] - of[1]) * zoom[1],
+        ],
+        _ => at,
+    }
+}
+
+/// Draws one mark (in the plot `plot_id`, its view zoomed by `zoom`, see
+/// [`view_zoom`]); the points of markers to mark on the view's edge when
 /// off it come back.
 fn mark_ui<'a>(
     plot_ui: &mut egui_plot::PlotUi<'_>,
-    plot_id: &str,
+    (plot_id, zoom): (&str, [f64; 2]),
     mark: &'a Mark,
     settled: bool,
     theme: &Theme,
@@ -279,7 +319,8 @@ fn mark_ui<'a>(
             upper,
             state,
         } => band_ui(plot_ui, lower, upper, *state, theme),
-        Mark::Label { at, text, .. } => {
+        Mark::Label { at, text, of } => {
+            let at = label_at(*at, *of, zoom);
             // Spaces pad the plate on both sides of the word.
             let word = egui::RichText::new(format!(" {text} "))
                 .size(theme.text_size)
@@ -472,5 +513,45 @@ fn edge_marks_ui(plot_ui: &mut egui_plot::PlotUi<'_>, marks: &[EdgeMark], theme:
             .color(color(theme.palette.now))
             .anchor(anchor),
         );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A name beside its ring keeps its place on the screen as the view
+    /// zooms: its offset from the ring, in the plot's units, grows with the
+    /// view's extent (twice the extent, twice the offset: the same pixels),
+    /// and in the default view it is where the plot put it, to the bit. A
+    /// name of no point (a map's state) and a view of equal scales are left
+    /// as they are.
+    #[test]
+    fn a_name_keeps_its_pixels_from_its_ring_as_the_view_zooms() {
+        let view = View::Ranges {
+            x: (0.0, 3.3),
+            y: (0.0, 2.1),
+        };
+        let default = egui_plot::PlotBounds::from_min_max([0.0, 0.0], [3.3, 2.1]);
+        assert_eq!(view_zoom(view, &default), [1.0, 1.0]);
+        let (ring, name) = ([2.130_384_928, 0.351_7], [2.130_384_928 - 0.264, 0.351_7]);
+        assert_eq!(label_at(name, Some(ring), [1.0, 1.0]), name);
+        let out = egui_plot::PlotBounds::from_min_max([-1.0, -0.7], [5.6, 3.5]);
+        let zoom = view_zoom(view, &out);
+        assert!(
+            (zoom[0] - 2.0).abs() < 1e-12 && (zoom[1] - 2.0).abs() < 1e-12,
+            "{zoom:?}"
+        );
+        let drawn = label_at(name, Some(ring), zoom);
+        assert!(
+            (drawn[0] - (ring[0] - 2.0 * 0.264)).abs() < 1e-12,
+            "{drawn:?}"
+        );
+        assert!((drawn[1] - ring[1]).abs() < 1e-12, "{drawn:?}");
+        assert_eq!(label_at(name, None, zoom), name);
+        let equal = View::Equal { extent: (1.0, 1.0) };
+        assert_eq!(view_zoom(equal, &out), [1.0, 1.0]);
+        let flat = egui_plot::PlotBounds::from_min_max([0.0, 1.0], [0.0, 1.0]);
+        assert_eq!(view_zoom(view, &flat), [1.0, 1.0]);
     }
 }
