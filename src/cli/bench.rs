@@ -106,7 +106,7 @@ const LINES: [(&str, Figure, &str, &str, Option<Target>); 26] = [
         "frame_ms_p99_map",
         |r| r.frame_ms_p99_map,
         "ms",
-        "the same drag with the stability-map tab open: p99",
+        "the stability-map tab open, rho dragged (restarts the map): p99",
         Some(Target::AtMost(8.0)),
     ),
     (
