@@ -274,8 +274,7 @@ impl Shooting {
             if converged(&step, &u, d) || periodic_to_rounding(&residual, &step, &u, d) {
                 let (cycle, monodromy, (steps, end)) = self.cycle(&u)?;
                 let scale = self.steps_scale.get();
-                let field = self.field.at_load(u[d + 1]);
-                let error = || discretization_error(&field, &u, steps, &end);
+                let error = || discretization_error(&self.field.at_load(u[d + 1]), &u, steps, &end);
                 let state = u.rows(0, d).amax();
                 if let Some(raised) = raised_scale(scale, || coarseness(error(), state)) {
                     // The flow's steps are too coarse for this cycle: again
@@ -470,19 +469,28 @@ mod tests {
     use super::*;
     use crate::analysis::nonlinear::period_steps::DISCRETIZATION_TOLERANCE;
 
+    /// The damped Ziegler column swinging at large amplitude: its field,
+    /// the unknowns of its flow over 10 s, and that flow's end in a number
+    /// of steps.
+    fn swinging_flows() -> (Field, DVector<f64>, impl Fn(usize) -> DVector<f64>) {
+        let (field, x0) = crate::analysis::gauss::swinging_column();
+        let u = DVector::from_iterator(6, x0.iter().copied().chain([10.0, 2.2]));
+        let flown = field.clone();
+        let end = move |steps| {
+            flow(&flown, &x0, 10.0, steps, Monodromy::None)
+                .expect("a flow")
+                .end
+        };
+        (field, u, end)
+    }
+
     /// The half-step estimate of a flow's error is its error: a damped
     /// Ziegler column swinging at large amplitude for 10 s, at 6 to 12
     /// steps (errors from 3e-10 to 1e-12), against the same flow at 1024
     /// steps: within 25 %.
     #[test]
     fn the_half_step_estimate_is_the_flow_s_error() {
-        let (field, x0) = crate::analysis::gauss::swinging_column();
-        let u = DVector::from_iterator(6, x0.iter().copied().chain([10.0, 2.2]));
-        let end = |steps| {
-            flow(&field, &x0, 10.0, steps, Monodromy::None)
-                .expect("a flow")
-                .end
-        };
+        let (field, u, end) = swinging_flows();
         let exact = end(1024);
         for steps in [6, 8, 12] {
             let at = end(steps);
@@ -506,20 +514,15 @@ mod tests {
     /// times too coarse), its error against 1024 steps.
     #[test]
     fn raised_steps_meet_the_tolerance_at_once() {
-        let (field, x0) = crate::analysis::gauss::swinging_column();
-        let u = DVector::from_iterator(6, x0.iter().copied().chain([10.0, 2.2]));
-        let end = |steps| {
-            flow(&field, &x0, 10.0, steps, Monodromy::None)
-                .expect("a flow")
-                .end
-        };
+        let (field, u, end) = swinging_flows();
         let exact = end(1024);
         // The tolerance in the state's units, as `coarseness` measures it.
-        let tolerance = DISCRETIZATION_TOLERANCE * u.rows(0, 4).amax();
+        let state = u.rows(0, 4).amax();
+        let tolerance = DISCRETIZATION_TOLERANCE * state;
         let coarse = 6;
         let coarseness = coarseness(
             discretization_error(&field, &u, coarse, &end(coarse)),
-            u.rows(0, 4).amax(),
+            state,
         );
         assert!(
             (1.5..10.0).contains(&coarseness),
