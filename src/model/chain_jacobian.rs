@@ -1,9 +1,9 @@
 //! The Jacobian of a chain's equations of motion in closed form, for a
-//! tip force that turns with the last rod (follower, partial or dead load)
-//! and the joints' springs and dampers: one factorization of the mass
-//! matrix and 2N solves, where differences take 2N or more evaluations of
-//! the equations (each its own factorization). Drag along the rods and the
-//! roller are not written here.
+//! tip force that turns with the last rod (follower, partial or dead load),
+//! the joints' springs and dampers and the drag along the rods: one
+//! factorization of the mass matrix and 2N solves, where differences take
+//! 2N or more evaluations of the equations (each its own factorization).
+//! The roller is not written here.
 //!
 //! With `M(phi) phi'' = r(phi, phi')` (Lagrange's equations, see `chain`),
 //! `M_jl = mu_jl cos(phi_j - phi_l)`, and `r_j = Q_j + T_j - sum_k mu_jk
@@ -28,17 +28,14 @@ use super::state::{StateVec, StateViewMut, state_len};
 
 /// The Jacobian of the reduced field `(phi, phi') -> (phi', phi'')` of
 /// `model`'s chain at these angles and rates, `2N x 2N`; `None` where the
-/// equations are not covered (drag along the rods, the roller) or the mass
-/// matrix cannot be factored.
+/// equations are not covered (the roller) or the mass matrix cannot be
+/// factored.
 #[must_use]
 pub fn chain_jacobian(model: &Model, phi: &[f64], rate: &[f64]) -> Option<DMatrix<f64>> {
     let column = &model.column;
     let Load::Follower { force_n, eta } = model.load else {
         return None;
     };
-    if column.drag_ns_per_m2 != 0.0 {
-        return None;
-    }
     let n = phi.len();
     let mut state = StateVec::zeros(state_len(n));
     let mut view = StateViewMut::new(&mut state);
@@ -100,6 +97,9 @@ pub fn chain_jacobian(model: &Model, phi: &[f64], rate: &[f64]) -> Option<DMatri
             rhs_t[(n + m, j)] -= 2.0 * mu[(j, m)] * s * rate[m];
         }
     }
+    if column.drag_ns_per_m2 != 0.0 {
+        add_drag_derivatives(column, rate, &trig, &mut rhs_t);
+    }
     cholesky_solve_rows(factor.l_dirty(), rhs_t.as_mut_slice());
     let mut jacobian = DMatrix::<f64>::zeros(2 * n, 2 * n);
     for i in 0..n {
@@ -109,6 +109,75 @@ pub fn chain_jacobian(model: &Model, phi: &[f64], rate: &[f64]) -> Option<DMatri
         .view_mut((n, 0), (n, 2 * n))
         .copy_from(&rhs_t.transpose());
     Some(jacobian)
+}
+
+/// Adds to `rhs_t` (laid out as in [`chain_jacobian`]: row `m` and `n + m`
+/// the derivatives by `phi_m` and `phi'_m`, column `j` those of `Q_j`) the
+/// derivatives of the drag's generalized forces (`chain`'s
+/// `joint_and_drag_forces`, physics.md's external drag):
+///
+/// ```text
+/// Q_m = -c (M_m + l_m sum_{i>m} cos(phi_i - phi_m) T_i),
+/// T_i = l_i u_i + l_i^2/2 phi_i',   M_i = l_i^2/2 u_i + l_i^3/3 phi_i',
+/// u_i = sum_{j<i} l_j cos(phi_i - phi_j) phi_j'
+/// ```
+///
+/// (`T_i` and `M_i` the integrals of the velocity across rod i and of its
+/// moment about the rod's inner joint). Its derivative by the rates is the
+/// Rayleigh function's Hessian, symmetric; O(N^3) in all, as the solve.
+fn add_drag_derivatives(
+    column: &super::params::Column,
+    rate: &[f64],
+    trig: &[(f64, f64)],
+    rhs_t: &mut DMatrix<f64>,
+) {
+    let n = rate.len();
+    let c = column.drag_ns_per_m2;
+    let l: Vec<f64> = (0..n).map(|i| column.rod(i).length_m).collect();
+    let cos = |i: usize, j: usize| trig[i].1 * trig[j].1 + trig[i].0 * trig[j].0;
+    let sin = |i: usize, j: usize| trig[i].0 * trig[j].1 - trig[i].1 * trig[j].0;
+    // u_i, its derivative by phi_i (-v_i) and the rod's integral T_i.
+    let u: Vec<f64> = (0..n)
+        .map(|i| (0..i).map(|j| l[j] * cos(i, j) * rate[j]).sum())
+        .collect();
+    let v: Vec<f64> = (0..n)
+        .map(|i| (0..i).map(|j| l[j] * sin(i, j) * rate[j]).sum())
+        .collect();
+    let total: Vec<f64> = (0..n)
+        .map(|i| l[i] * u[i] + l[i] * l[i] / 2.0 * rate[i])
+        .collect();
+    for m in 0..n {
+        for k in 0..n {
+            // The rods beyond both m and k, through u_i's dependence on phi_k
+            // and phi_k'.
+            let (mut by_rate, mut by_angle) = (0.0, 0.0);
+            for (i, &l_i) in l.iter().enumerate().skip(m.max(k) + 1) {
+                by_rate += cos(i, m) * l_i * cos(i, k);
+                by_angle += cos(i, m) * l_i * sin(i, k);
+            }
+            let mut d_rate = l[m] * l[k] * by_rate;
+            let mut d_angle = l[m] * l[k] * rate[k] * by_angle;
+            match k.cmp(&m) {
+                std::cmp::Ordering::Less => {
+                    // M_m through u_m.
+                    d_rate += l[m] * l[m] / 2.0 * l[k] * cos(m, k);
+                    d_angle += l[m] * l[m] / 2.0 * l[k] * sin(m, k) * rate[k];
+                }
+                std::cmp::Ordering::Equal => {
+                    d_rate += l[m].powi(3) / 3.0;
+                    let turned: f64 = (m + 1..n).map(|i| sin(i, m) * total[i]).sum();
+                    d_angle += -l[m] * l[m] / 2.0 * v[m] + l[m] * turned;
+                }
+                std::cmp::Ordering::Greater => {
+                    // T_k itself, its cosine and its u_k.
+                    d_rate += l[m] * cos(k, m) * l[k] * l[k] / 2.0;
+                    d_angle += l[m] * (-sin(k, m) * total[k] - cos(k, m) * l[k] * v[k]);
+                }
+            }
+            rhs_t[(k, m)] -= c * d_angle;
+            rhs_t[(n + k, m)] -= c * d_rate;
+        }
+    }
 }
 
 /// Solves `L L^T X = B` in place, `L` the lower triangle of `l` (column
@@ -251,12 +320,23 @@ mod tests {
     /// spring and damper, a tip mass and a partial follower, the closed
     /// form agrees with differences of the equations of motion (the
     /// chain's general ones for five rods, the closed form of `two_rods`
-    /// for two) to their accuracy; likewise for a follower and a dead load.
+    /// for two) to their accuracy; likewise for a follower and a dead load,
+    /// and with the drag along the rods (rods of unequal lengths).
     #[test]
     fn the_closed_form_is_the_derivative_of_the_equations() {
-        for (rods, eta) in [(5, 0.6), (2, 1.0), (3, 0.0), (2, 0.3)] {
+        for (rods, eta, drag) in [
+            (5, 0.6, 0.0),
+            (2, 1.0, 0.0),
+            (3, 0.0, 0.0),
+            (2, 0.3, 0.0),
+            (5, 0.6, 0.07),
+            (2, 1.0, 0.05),
+            (4, 1.0, 0.3),
+        ] {
             let mut model = PresetId::UniformRods.model().at_load(1.7);
             model.column.rods = rods;
+            model.column.drag_ns_per_m2 = drag;
+            model.column.rod1.length_m = 1.3;
             model.column.c1_nms_per_rad = 0.3;
             model.column.c2_nms_per_rad = 0.2;
             model.column.k2_nm_per_rad = 0.13;
@@ -273,17 +353,14 @@ mod tests {
             let off = (&closed - &reference).amax();
             assert!(
                 off < 1e-8 * reference.amax(),
-                "{rods} rods, eta {eta}: {off}\n{closed}\n{reference}"
+                "{rods} rods, eta {eta}, drag {drag}: {off}\n{closed}\n{reference}"
             );
         }
     }
 
-    /// The drag along the rods and the roller are left to differences.
+    /// The roller is left to differences.
     #[test]
-    fn drag_and_the_roller_are_not_covered() {
-        let mut model = PresetId::Ziegler1952.model();
-        model.column.drag_ns_per_m2 = 0.05;
-        assert!(chain_jacobian(&model, &[0.1, 0.2], &[0.0, 0.0]).is_none());
+    fn the_roller_is_not_covered() {
         let roller = PresetId::Roller.model();
         assert!(chain_jacobian(&roller, &[0.1, 0.2], &[0.0, 0.0]).is_none());
     }

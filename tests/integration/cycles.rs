@@ -659,9 +659,12 @@ fn one_load_gives_the_cycle_a_range_gives_there() {
 /// loads turn. The fold of cycles read from a real multiplier through +1
 /// is solved for between the two cycles it lies between: at a load below
 /// every cycle's of the branch (it is the least the branch reaches) and
-/// within 1e-4 of the least of them; the cycle nearest it has a second
-/// multiplier within 0.02 of 1 besides the trivial one (seen 0.0072; the
-/// other two are 0.37 in modulus), and the branch has no period doubling
+/// within 1e-4 of the least of them. The cycle nearest it has one
+/// multiplier outside the unit circle, real and within 0.1 of 1 besides
+/// the trivial one (seen 0.059: the continuation's step passes the fold
+/// 0.04 rad of amplitude from it; 0.0072 when it stepped nearer), the
+/// other two 0.3 or more from 1, and the cycle after the fold none: one
+/// real multiplier has gone through +1. The branch has no period doubling
 /// and no torus.
 #[test]
 fn the_fold_of_cycles_is_where_the_branch_turns_and_a_multiplier_is_one() {
@@ -688,15 +691,32 @@ fn the_fold_of_cycles_is_where_the_branch_turns_and_a_multiplier_is_one() {
         fold <= turn && turn - fold <= 1e-4 * turn,
         "fold at p = {fold}, the branch turns at p = {turn}"
     );
-    let cycle = &branch.cycles[at];
-    let trivial = cycle.trivial_multiplier();
-    let second = cycle
-        .multipliers
-        .iter()
-        .filter(|m| **m != trivial)
-        .map(|m| (m - 1.0).norm())
-        .fold(f64::INFINITY, f64::min);
-    assert!(second < 0.02, "{second} {:?}", cycle.multipliers);
+    let nontrivial = |cycle: &Cycle| -> Vec<_> {
+        let trivial = cycle.trivial_multiplier();
+        let mut others: Vec<_> = cycle
+            .multipliers
+            .iter()
+            .copied()
+            .filter(|m| *m != trivial)
+            .collect();
+        others.sort_by(|a, b| (a - 1.0).norm().total_cmp(&(b - 1.0).norm()));
+        others
+    };
+    let (nearest, after) = (
+        nontrivial(&branch.cycles[at]),
+        nontrivial(&branch.cycles[at + 1]),
+    );
+    let crossing = nearest[0];
+    assert!(
+        crossing.im == 0.0 && crossing.re > 1.0 && crossing.re < 1.1,
+        "{nearest:?}"
+    );
+    assert!(
+        nearest[1..]
+            .iter()
+            .all(|m| (m - 1.0).norm() > 0.3 && m.norm() < 1.0)
+    );
+    assert!(after.iter().all(|m| m.norm() < 1.0), "{after:?}");
     // The diagram rings it there and names it beside the ring, on the
     // side away from the branch (a name above would hide the turn), and
     // its legend says what the name means.

@@ -219,8 +219,8 @@ impl Field {
 
     /// The Jacobian of `f` at `x` in closed form where the equations are
     /// covered (`chain_jacobian`: a tip force turning with the last rod,
-    /// joints' springs and dampers; not the drag or the roller), else
-    /// `None`.
+    /// joints' springs and dampers, the drag along the rods; not the
+    /// roller), else `None`.
     fn closed_form_jacobian(&self, x: &DVector<f64>) -> Option<DMatrix<f64>> {
         if self.spin || self.is_constructed() {
             return None;
