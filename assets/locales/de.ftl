@@ -431,6 +431,7 @@ legend-hopf-point = Flatterbeginn (Hopf-Punkt)
 legend-cycle-fold = LPC: Falte der Zyklen
 legend-cycle-period-doubling = PD: Periodenverdopplung
 legend-cycle-torus = NS: Torus (Neimark-Sacker)
+legend-cycle-symmetry-breaking = BPC: Symmetriebruch (Verzweigungspunkt der Zyklen)
 legend-sweep-up = Durchlauf aufwärts (ein Lauf)
 legend-sweep-down = Durchlauf abwärts (ein Lauf)
 legend-seen-in-ramp = während der Rampe gesehen

@@ -427,6 +427,7 @@ legend-hopf-point = flutter onset (Hopf point)
 legend-cycle-fold = LPC: fold of cycles
 legend-cycle-period-doubling = PD: period doubling
 legend-cycle-torus = NS: torus (Neimark-Sacker)
+legend-cycle-symmetry-breaking = BPC: symmetry breaks (branch point of cycles)
 legend-sweep-up = sweep up (a run)
 legend-sweep-down = sweep down (a run)
 legend-seen-in-ramp = seen during the ramp

@@ -431,6 +431,7 @@ legend-hopf-point = inicio del flameo (punto de Hopf)
 legend-cycle-fold = LPC: pliegue de ciclos
 legend-cycle-period-doubling = PD: duplicación del periodo
 legend-cycle-torus = NS: toro (Neimark-Sacker)
+legend-cycle-symmetry-breaking = BPC: ruptura de simetría (punto de ramificación de ciclos)
 legend-sweep-up = barrido hacia arriba (una simulación)
 legend-sweep-down = barrido hacia abajo (una simulación)
 legend-seen-in-ramp = visto durante la rampa

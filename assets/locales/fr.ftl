@@ -431,6 +431,7 @@ legend-hopf-point = début du flottement (point de Hopf)
 legend-cycle-fold = LPC : pli des cycles
 legend-cycle-period-doubling = PD : doublement de période
 legend-cycle-torus = NS : tore (Neimark-Sacker)
+legend-cycle-symmetry-breaking = BPC : brisure de symétrie (point de branchement des cycles)
 legend-sweep-up = balayage montant (une simulation)
 legend-sweep-down = balayage descendant (une simulation)
 legend-seen-in-ramp = vu pendant la rampe

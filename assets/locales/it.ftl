@@ -431,6 +431,7 @@ legend-hopf-point = inizio del flutter (punto di Hopf)
 legend-cycle-fold = LPC: piega dei cicli
 legend-cycle-period-doubling = PD: raddoppio del periodo
 legend-cycle-torus = NS: toro (Neimark-Sacker)
+legend-cycle-symmetry-breaking = BPC: rottura di simmetria (punto di diramazione dei cicli)
 legend-sweep-up = scansione in salita (una simulazione)
 legend-sweep-down = scansione in discesa (una simulazione)
 legend-seen-in-ramp = visto durante la rampa

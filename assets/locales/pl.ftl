@@ -438,6 +438,7 @@ legend-hopf-point = początek flatteru (punkt Hopfa)
 legend-cycle-fold = LPC: fałda cykli
 legend-cycle-period-doubling = PD: podwojenie okresu
 legend-cycle-torus = NS: torus (Neimark-Sacker)
+legend-cycle-symmetry-breaking = BPC: złamanie symetrii (punkt rozgałęzienia cykli)
 legend-sweep-up = przejście w górę (jedna symulacja)
 legend-sweep-down = przejście w dół (jedna symulacja)
 legend-seen-in-ramp = widziane podczas rampy

@@ -247,6 +247,9 @@ pub fn report(onset: f64, found: &Result<Branch, NoBranch>) {
                 CycleBifurcationKind::Fold => "fold of cycles",
                 CycleBifurcationKind::PeriodDoubling => "period doubling",
                 CycleBifurcationKind::NeimarkSacker => "Neimark-Sacker (torus)",
+                CycleBifurcationKind::SymmetryBreaking => {
+                    "break of the mirror symmetry (branch point of cycles)"
+                }
             };
             let placed = if found.refined {
                 ""
@@ -405,6 +408,7 @@ fn bifurcation_word(kind: CycleBifurcationKind) -> &'static str {
         CycleBifurcationKind::Fold => "fold",
         CycleBifurcationKind::PeriodDoubling => "period-doubling",
         CycleBifurcationKind::NeimarkSacker => "neimark-sacker",
+        CycleBifurcationKind::SymmetryBreaking => "symmetry-breaking",
     }
 }
 

@@ -292,6 +292,10 @@ impl Diagram<'_> {
                 "legend-cycle-period-doubling",
             ),
             (CycleBifurcationKind::NeimarkSacker, "legend-cycle-torus"),
+            (
+                CycleBifurcationKind::SymmetryBreaking,
+                "legend-cycle-symmetry-breaking",
+            ),
         ]
         .into_iter()
         .filter(|(kind, _)| turns.iter().any(|(t, _)| t.kind == *kind))
@@ -337,5 +341,6 @@ fn short_name(kind: CycleBifurcationKind) -> &'static str {
         CycleBifurcationKind::Fold => "LPC",
         CycleBifurcationKind::PeriodDoubling => "PD",
         CycleBifurcationKind::NeimarkSacker => "NS",
+        CycleBifurcationKind::SymmetryBreaking => "BPC",
     }
 }

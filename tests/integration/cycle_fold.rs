@@ -204,8 +204,8 @@ fn a_kick_settles_below_the_fold_and_jumps_past_a_hard_onset() {
 /// multiplier is within 1e-8 of 1 (by differences of the equations they
 /// strayed 1e-7 to 1.2e-6 from it past the second fold, noise that more
 /// steps did not cut, and the branch ended "not resolved" at p = 2.1475),
-/// and the branch goes on until an angle passes 3 rad. Its first three
-/// folds are solved for; past the third (at 2.0 rad) the branch has large
+/// and the branch goes on until an angle passes 3 rad. Its three folds
+/// are solved for; past the third (at 2.0 rad) the branch has large
 /// stable cycles, and a run of the reference integrator from the one whose
 /// perturbations die fastest, every coordinate 1 % larger, settles back
 /// onto it after 60 periods: the multipliers' verdict and the branch's
@@ -214,10 +214,7 @@ fn a_kick_settles_below_the_fold_and_jumps_past_a_hard_onset() {
 fn the_hard_onset_s_branch_is_resolved_up_to_where_the_column_swings_round() {
     use zieglerlab::analysis::{BranchEnd, CycleBifurcationKind};
     use zieglerlab::sim::{EngineKind, Simulation};
-    let m = model("ziegler-1952", &["c_ext=0.05", "m1=0.2"]);
-    let never = std::sync::atomic::AtomicBool::new(false);
-    let onset = cycle_branches(&m, 0.0, 8.0, &never).unwrap().remove(0);
-    let branch = onset.branch.expect("a branch");
+    let (m, branch) = hard_onset_branch();
     assert_eq!(branch.end, BranchEnd::LargeAmplitude, "{}", branch.end);
     for cycle in &branch.cycles {
         let off = (cycle.trivial_multiplier() - 1.0).norm();
@@ -232,8 +229,8 @@ fn the_hard_onset_s_branch_is_resolved_up_to_where_the_column_swings_round() {
         .iter()
         .filter(|b| b.kind == CycleBifurcationKind::Fold)
         .collect();
-    assert!(folds.len() >= 3, "{folds:?}");
-    assert!(folds[..3].iter().all(|f| f.refined), "{folds:?}");
+    assert_eq!(folds.len(), 3, "{folds:?}");
+    assert!(folds.iter().all(|f| f.refined), "{folds:?}");
     let third = folds[2];
     assert!((third.amplitude_rad - 2.0).abs() < 0.05, "{third:?}");
     // The slowest decay of a perturbation over a period: the largest
@@ -271,4 +268,148 @@ fn the_hard_onset_s_branch_is_resolved_up_to_where_the_column_swings_round() {
             cycle.load
         );
     }
+}
+
+/// The branch of cycles of the hard onset (Ziegler's column with drag
+/// `c_ext = 0.05` and a light first rod, `m1 = 0.2`) over the window's
+/// loads, 0 to 8, computed once.
+fn hard_onset_branch() -> &'static (zieglerlab::model::Model, zieglerlab::analysis::Branch) {
+    static BRANCH: std::sync::OnceLock<(zieglerlab::model::Model, zieglerlab::analysis::Branch)> =
+        std::sync::OnceLock::new();
+    BRANCH.get_or_init(|| {
+        let m = model("ziegler-1952", &["c_ext=0.05", "m1=0.2"]);
+        let never = std::sync::atomic::AtomicBool::new(false);
+        let onset = cycle_branches(&m, 0.0, 8.0, &never).unwrap().remove(0);
+        (m, onset.branch.expect("a branch"))
+    })
+}
+
+/// The half-period map `R = -D Phi(T/2)` of `cycle` on the angles and
+/// rates, and `|x(T/2) + x(0)|` (zero for a cycle that is its own mirror
+/// image half a period on), by a plain fourth-order Runge-Kutta run of the
+/// equations of motion (`state_derivative`, 4000 steps a half period) and
+/// central differences: independent of the shooting's Gauss-Legendre
+/// steps and their exact derivative.
+fn half_period_map(
+    m: &zieglerlab::model::Model,
+    cycle: &zieglerlab::analysis::Cycle,
+) -> (nalgebra::DMatrix<f64>, f64) {
+    use zieglerlab::model::state_derivative;
+    let at = m.at_load(cycle.load);
+    let steps = 4000;
+    let h = cycle.period_secs / 2.0 / f64::from(steps);
+    let run = |mut x: nalgebra::DVector<f64>| {
+        for _ in 0..steps {
+            let k1 = state_derivative(&at, &x);
+            let k2 = state_derivative(&at, &(&x + &k1 * (h / 2.0)));
+            let k3 = state_derivative(&at, &(&x + &k2 * (h / 2.0)));
+            let k4 = state_derivative(&at, &(&x + &k3 * h));
+            x += (k1 + k2 * 2.0 + k3 * 2.0 + k4) * (h / 6.0);
+        }
+        x
+    };
+    let x0 = cycle.start_state(&at);
+    let mirror = (run(x0.clone()) + &x0).amax();
+    // The angles and rates of the two rods (the spin entries stay zero).
+    let moving = [0, 1, 3, 4];
+    let step = 1e-6;
+    let mut map = nalgebra::DMatrix::zeros(4, 4);
+    for (column, &k) in moving.iter().enumerate() {
+        let (mut plus, mut minus) = (x0.clone(), x0.clone());
+        plus[k] += step;
+        minus[k] -= step;
+        let derivative = (run(plus) - run(minus)) / (2.0 * step);
+        for (row, &r) in moving.iter().enumerate() {
+            map[(row, column)] = -derivative[r];
+        }
+    }
+    (map, mirror)
+}
+
+/// Past the third fold the stable large cycles lose their stability where
+/// a real multiplier goes through +1 while the load goes on growing (the
+/// cycles' loads rise through it): no fold but a break of the mirror
+/// symmetry, named so and solved for. Checked by an independent
+/// integrator: the cycles on either side are their own mirror images half
+/// a period on (`x(T/2) = -x(0)` to 1e-7), so the monodromy is the square
+/// of the half-period map `R`; on the cycle after the break `R` has a real
+/// multiplier below -1 whose square is the shooting's multiplier above 1
+/// (to 1e-4), and on the cycle before it none: `rho` went through -1, the
+/// signature of a pitchfork of symmetric cycles (through +1 it would be a
+/// fold).
+#[test]
+fn the_hard_onset_s_large_cycles_break_their_symmetry_where_no_fold_is() {
+    use zieglerlab::analysis::CycleBifurcationKind;
+    let (m, branch) = hard_onset_branch();
+    let broken: Vec<_> = branch
+        .bifurcations
+        .iter()
+        .filter(|b| b.kind == CycleBifurcationKind::SymmetryBreaking)
+        .collect();
+    let [bp] = broken[..] else {
+        panic!("{:?}", branch.bifurcations)
+    };
+    assert!(bp.refined, "{bp:?}");
+    assert!((2.29..2.30).contains(&bp.load), "{bp:?}");
+    // The cycles of the branch next to it, by load, among those of its
+    // amplitude.
+    let near: Vec<_> = branch
+        .cycles
+        .iter()
+        .filter(|c| (c.largest_amplitude_rad() - bp.amplitude_rad).abs() < 0.1)
+        .collect();
+    let before = near
+        .iter()
+        .filter(|c| c.load < bp.load)
+        .max_by(|a, b| a.load.total_cmp(&b.load))
+        .expect("a cycle before");
+    let after = near
+        .iter()
+        .filter(|c| c.load > bp.load)
+        .min_by(|a, b| a.load.total_cmp(&b.load))
+        .expect("a cycle after");
+    assert!(before.stable && !after.stable);
+    assert!(before.largest_amplitude_rad() < bp.amplitude_rad);
+    assert!(bp.amplitude_rad < after.largest_amplitude_rad());
+    let below_minus_one = |map: &nalgebra::DMatrix<f64>| -> Vec<f64> {
+        map.complex_eigenvalues()
+            .iter()
+            .filter(|rho| rho.im.abs() < 1e-9 && rho.re < -1.0)
+            .map(|rho| rho.re)
+            .collect()
+    };
+    let (map_before, mirror_before) = half_period_map(m, before);
+    let (map_after, mirror_after) = half_period_map(m, after);
+    assert!(
+        mirror_before < 1e-7 && mirror_after < 1e-7,
+        "{mirror_before} {mirror_after}"
+    );
+    assert!(below_minus_one(&map_before).is_empty(), "{map_before}");
+    let [rho] = below_minus_one(&map_after)[..] else {
+        panic!("{map_after}")
+    };
+    let mu = after.multipliers[0];
+    assert!(mu.im == 0.0 && mu.re > 1.0, "{:?}", after.multipliers);
+    assert!((rho * rho / mu.re - 1.0).abs() < 1e-4, "{rho} {mu}");
+    // The diagram names it BPC, its key spells that out, and a screen
+    // reader hears it among the named points.
+    let words = zieglerlab::i18n::words(zieglerlab::i18n::Language::English);
+    let sheet = zieglerlab::plot::bifurcation::Diagram {
+        load_range: (0.0, 8.0),
+        equilibrium: &[],
+        branches: vec![branch],
+        sweep: &[],
+        present: None,
+        words,
+    }
+    .sheet();
+    assert!(
+        sheet.legend.iter().any(|e| e
+            .text
+            .contains("BPC: symmetry breaks (branch point of cycles)")),
+        "{:?}",
+        sheet.legend
+    );
+    let said = zieglerlab::plot::describe::describe(&sheet.plots[0], words);
+    assert!(said.contains("BPC at"), "{said}");
 }

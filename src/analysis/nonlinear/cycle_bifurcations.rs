@@ -2,16 +2,28 @@
 //! from their Floquet multipliers: a fold of cycles (a real multiplier
 //! through +1, where the branch turns back in the load), a period doubling
 //! (a real multiplier through -1) and a Neimark-Sacker (torus) bifurcation
-//! (a complex pair through the unit circle). Each is bracketed by the two
+//! (a complex pair through the unit circle), and a break of the mirror
+//! symmetry (a real multiplier through +1 where the branch goes on: a
+//! pitchfork, from which two mirror images of each other branch off).
+//! Each is bracketed by the two
 //! cycles of the branch it lies between (the count of multipliers outside
 //! the circle changes, and the count of one kind with it) and placed by
-//! regula falsi on the cycles between them (`chord`): a period doubling or
-//! a torus where the crossing multiplier's modulus passes 1 (the k-th
-//! largest of its kind, k the count of the kind outside at the cycle with
-//! more: a continuous function of the cycle whatever other multipliers of
-//! the kind do), a fold where the load's rate along the branch passes zero
-//! (there the multiplier is a double 1, known to the square root of the
-//! monodromy's accuracy only, while the rate is a simple root).
+//! regula falsi on the cycles between them (`chord`): a period doubling, a
+//! torus or a break of symmetry where the crossing multiplier's modulus
+//! passes 1 (the k-th largest of its kind, k the count of the kind outside
+//! at the cycle with more: a continuous function of the cycle whatever
+//! other multipliers of the kind do), a fold where the load's rate along
+//! the branch passes zero (there the multiplier is a double 1, known to
+//! the square root of the monodromy's accuracy only, while the rate is a
+//! simple root).
+//!
+//! Fold or break of symmetry: a cycle of a mirror-symmetric column born at
+//! a Hopf point is its own mirror image half a period on, `x(T/2) = -x(0)`
+//! (the field is odd), so its monodromy is `R^2`, with `R = -Phi(T/2)` the
+//! half-period map. A multiplier `mu = rho^2` passes +1 where a real
+//! multiplier `rho` of `R` passes +1 (a fold: the branch turns back) or -1
+//! (the branch of symmetric cycles goes on, and two asymmetric cycles,
+//! mirror images of each other, branch off it).
 
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -21,12 +33,17 @@ use serde::Serialize;
 use super::chord::{Chord, OnChord};
 use super::cycle::Cycle;
 use super::falsi::{Stop, illinois};
-use super::shooting::Shooting;
+use super::shooting::{Shooting, sorted_multipliers};
 use crate::analysis::C64;
 
 /// A multiplier is real when its imaginary part is at most this share of
 /// its modulus.
 const REAL: f64 = 1e-8;
+/// A cycle is its own mirror image half a period on when `x(T/2) + x(0)`
+/// is within this share of `x(0)`'s largest coordinate (the flow's error
+/// is about 1e-9 of it; a cycle of the roller, whose band has a
+/// direction, is off by a tenth or more).
+const MIRROR: f64 = 1e-6;
 /// Where regula falsi stops for a modulus: within 1e-12 of its bracket's
 /// size (a multiplier's modulus is known to about 1e-10), or the bracket
 /// narrowed to 1e-9 of the chord, in at most 30 cycles.
@@ -55,6 +72,9 @@ pub enum CycleBifurcationKind {
     PeriodDoubling,
     /// A complex pair through the unit circle: a torus is born.
     NeimarkSacker,
+    /// A real multiplier through +1 where the branch goes on: the mirror
+    /// symmetry breaks (a pitchfork of cycles; see the module's notes).
+    SymmetryBreaking,
 }
 
 /// A bifurcation of the cycles along a branch.
@@ -101,14 +121,15 @@ impl Bracket {
         }
     }
 
-    /// The bifurcation placed on the line between its two cycles of
-    /// `cycles`, where the modulus passes 1 on it: not solved for.
-    fn interpolated(&self, cycles: &[Cycle]) -> CycleBifurcation {
+    /// The bifurcation of `kind` placed on the line between its two
+    /// cycles of `cycles`, where the modulus passes 1 on it: not solved
+    /// for.
+    fn interpolated(&self, cycles: &[Cycle], kind: CycleBifurcationKind) -> CycleBifurcation {
         let (a, b) = (&cycles[self.after], &cycles[self.after + 1]);
         let t = self.linear_share();
         let along = |x: f64, y: f64| x + t * (y - x);
         CycleBifurcation {
-            kind: self.kind,
+            kind,
             load: along(a.load, b.load),
             amplitude_rad: along(a.largest_amplitude_rad(), b.largest_amplitude_rad()),
             refined: false,
@@ -204,12 +225,20 @@ pub(super) fn cycle_bifurcations(
         .into_iter()
         .map(|bracket| {
             let (a, b) = (&cycles[bracket.after], &cycles[bracket.after + 1]);
+            let kind = if bracket.kind == CycleBifurcationKind::Fold
+                && !cancel.load(Ordering::Relaxed)
+                && breaks_symmetry(shooting, a, b)
+            {
+                CycleBifurcationKind::SymmetryBreaking
+            } else {
+                bracket.kind
+            };
             let refined = Chord::new(shooting, (a, b), scales)
-                .and_then(|chord| refine(&chord, &bracket, cancel));
+                .and_then(|chord| refine(&chord, &bracket, kind, cancel));
             refined.map_or_else(
-                || bracket.interpolated(cycles),
+                || bracket.interpolated(cycles, kind),
                 |on| CycleBifurcation {
-                    kind: bracket.kind,
+                    kind,
                     load: on.solved.cycle.load,
                     amplitude_rad: on.solved.cycle.largest_amplitude_rad(),
                     refined: true,
@@ -220,12 +249,45 @@ pub(super) fn cycle_bifurcations(
         .collect()
 }
 
-/// The cycle at `bracket`'s bifurcation on `chord` between its two cycles:
-/// a fold where the load's rate passes zero (solved at both ends for it),
-/// else (a real multiplier through +1 where the load does not turn, or
-/// another kind) where the modulus passes 1, as read off the two cycles.
-/// `None` where that fails or once `cancel` is set.
-fn refine(chord: &Chord, bracket: &Bracket, cancel: &AtomicBool) -> Option<OnChord> {
+/// Whether the multiplier through +1 between the neighbouring cycles `a`
+/// and `b` of `shooting`'s branch breaks the mirror symmetry: both cycles
+/// are their own mirror images half a period on (to [`MIRROR`] of their
+/// largest coordinate) and the count of real multipliers of the
+/// half-period map `R = -Phi(T/2)` below -1 differs between them (see the
+/// module's notes). `false` where a cycle is not symmetric (the roller's
+/// band has a direction) or its half period cannot be flowed.
+fn breaks_symmetry(shooting: &Shooting, a: &Cycle, b: &Cycle) -> bool {
+    let below_minus_one = |cycle: &Cycle| -> Option<usize> {
+        let half = shooting.half_period(cycle)?;
+        if (&half.end + &cycle.start).amax() > MIRROR * cycle.start.amax() {
+            return None;
+        }
+        let map = -half.monodromy?;
+        Some(
+            sorted_multipliers(&map)
+                .iter()
+                .filter(|rho| rho.im.abs() <= REAL * rho.norm() && rho.re < -1.0)
+                .count(),
+        )
+    };
+    matches!(
+        (below_minus_one(a), below_minus_one(b)),
+        (Some(x), Some(y)) if x != y
+    )
+}
+
+/// The cycle at `bracket`'s bifurcation (of `kind`) on `chord` between its
+/// two cycles: a fold where the load's rate passes zero (solved at both
+/// ends for it), else (a real multiplier through +1 where the load does
+/// not turn, a break of symmetry, or another kind) where the modulus
+/// passes 1, as read off the two cycles. `None` where that fails or once
+/// `cancel` is set.
+fn refine(
+    chord: &Chord,
+    bracket: &Bracket,
+    kind: CycleBifurcationKind,
+    cancel: &AtomicBool,
+) -> Option<OnChord> {
     type Sample = (f64, f64, Option<OnChord>);
     let solve = |share: f64, near: &Option<OnChord>| {
         if cancel.load(Ordering::Relaxed) {
@@ -233,7 +295,7 @@ fn refine(chord: &Chord, bracket: &Bracket, cancel: &AtomicBool) -> Option<OnCho
         }
         chord.solve(share, near.as_ref().map(|on| &on.solved))
     };
-    if bracket.kind == CycleBifurcationKind::Fold {
+    if kind == CycleBifurcationKind::Fold {
         let rated =
             |on: OnChord| -> Option<Sample> { Some((on.share, chord.load_rate(&on)?, Some(on))) };
         let low = rated(solve(0.0, &None)?)?;
@@ -310,7 +372,7 @@ mod tests {
             ]
         );
         for (b, at) in found.iter().zip([1.25, 2.5, 3.75]) {
-            let linear = b.interpolated(&cycles);
+            let linear = b.interpolated(&cycles, b.kind);
             assert!((linear.load - at).abs() < 1e-12, "{b:?}");
             assert!((linear.amplitude_rad - at).abs() < 1e-12, "{b:?}");
         }
@@ -422,7 +484,11 @@ mod tests {
         assert_eq!(doubling.kind, CycleBifurcationKind::PeriodDoubling);
         assert!(doubling.refined);
         assert!((doubling.load - DOUBLING_P).abs() < 1e-9, "{doubling:?}");
-        let linear = brackets(&cycles)[0].interpolated(&cycles).load;
+        let linear = {
+            let b = brackets(&cycles)[0];
+            b.interpolated(&cycles, b.kind)
+        }
+        .load;
         let period = std::f64::consts::TAU / omega(DOUBLING_P);
         let off = (linear - DOUBLING_P).abs();
         assert!(off < period * h * h / 8.0, "{linear}: {off}");
@@ -487,7 +553,10 @@ mod tests {
         assert!(fold.refined);
         assert!((fold.load - FOLD_P).abs() < 1e-10, "{fold:?}");
         assert!((fold.amplitude_rad - 1.0).abs() < 1e-5, "{fold:?}");
-        let linear = brackets(&cycles)[0].interpolated(&cycles);
+        let linear = {
+            let b = brackets(&cycles)[0];
+            b.interpolated(&cycles, b.kind)
+        };
         assert!((linear.load - FOLD_P).abs() > 0.03, "{linear:?}");
         // Asked to stop, it solves nothing and says so.
         let scales = DVector::from_element(4, 1.0);

@@ -371,6 +371,22 @@ impl Shooting {
         Some((cycle, monodromy, (steps, orbit.end)))
     }
 
+    /// The flow over the first half of `cycle`'s period from its start,
+    /// with its derivative, at the pace of the cycle's own steps: the
+    /// half-period map that tells a fold from a break of the mirror
+    /// symmetry (see `cycle_bifurcations`).
+    pub(in crate::analysis) fn half_period(&self, cycle: &Cycle) -> Option<Orbit> {
+        let half = cycle.period_secs / 2.0;
+        let steps = scaled_steps(steps_for(half, self.fastest_per_s), self.steps_scale.get());
+        flow(
+            &self.field.at_load(cycle.load),
+            &cycle.start,
+            half,
+            steps,
+            Monodromy::Multipliers,
+        )
+    }
+
     /// The flow over `period` with its monodromy, and the steps it took.
     /// The roller's slip damping grows as the slip slows (its rate is the
     /// friction over the spin inertia and the slip speed), so an orbit
