@@ -121,15 +121,14 @@ impl Bracket {
         }
     }
 
-    /// The bifurcation of `kind` placed on the line between its two
-    /// cycles of `cycles`, where the modulus passes 1 on it: not solved
-    /// for.
-    fn interpolated(&self, cycles: &[Cycle], kind: CycleBifurcationKind) -> CycleBifurcation {
+    /// The bifurcation placed on the line between its two cycles of
+    /// `cycles`, where the modulus passes 1 on it: not solved for.
+    fn interpolated(&self, cycles: &[Cycle]) -> CycleBifurcation {
         let (a, b) = (&cycles[self.after], &cycles[self.after + 1]);
         let t = self.linear_share();
         let along = |x: f64, y: f64| x + t * (y - x);
         CycleBifurcation {
-            kind,
+            kind: self.kind,
             load: along(a.load, b.load),
             amplitude_rad: along(a.largest_amplitude_rad(), b.largest_amplitude_rad()),
             refined: false,
@@ -236,7 +235,10 @@ pub(super) fn cycle_bifurcations(
             let refined = Chord::new(shooting, (a, b), scales)
                 .and_then(|chord| refine(&chord, &bracket, kind, cancel));
             refined.map_or_else(
-                || bracket.interpolated(cycles, kind),
+                || CycleBifurcation {
+                    kind,
+                    ..bracket.interpolated(cycles)
+                },
                 |on| CycleBifurcation {
                     kind,
                     load: on.solved.cycle.load,
@@ -372,7 +374,7 @@ mod tests {
             ]
         );
         for (b, at) in found.iter().zip([1.25, 2.5, 3.75]) {
-            let linear = b.interpolated(&cycles, b.kind);
+            let linear = b.interpolated(&cycles);
             assert!((linear.load - at).abs() < 1e-12, "{b:?}");
             assert!((linear.amplitude_rad - at).abs() < 1e-12, "{b:?}");
         }
@@ -484,11 +486,7 @@ mod tests {
         assert_eq!(doubling.kind, CycleBifurcationKind::PeriodDoubling);
         assert!(doubling.refined);
         assert!((doubling.load - DOUBLING_P).abs() < 1e-9, "{doubling:?}");
-        let linear = {
-            let b = brackets(&cycles)[0];
-            b.interpolated(&cycles, b.kind)
-        }
-        .load;
+        let linear = brackets(&cycles)[0].interpolated(&cycles).load;
         let period = std::f64::consts::TAU / omega(DOUBLING_P);
         let off = (linear - DOUBLING_P).abs();
         assert!(off < period * h * h / 8.0, "{linear}: {off}");
@@ -553,10 +551,7 @@ mod tests {
         assert!(fold.refined);
         assert!((fold.load - FOLD_P).abs() < 1e-10, "{fold:?}");
         assert!((fold.amplitude_rad - 1.0).abs() < 1e-5, "{fold:?}");
-        let linear = {
-            let b = brackets(&cycles)[0];
-            b.interpolated(&cycles, b.kind)
-        };
+        let linear = brackets(&cycles)[0].interpolated(&cycles);
         assert!((linear.load - FOLD_P).abs() > 0.03, "{linear:?}");
         // Asked to stop, it solves nothing and says so.
         let scales = DVector::from_element(4, 1.0);
