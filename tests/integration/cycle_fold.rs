@@ -336,7 +336,8 @@ fn half_period_map(
 /// multiplier below -1 whose square is the shooting's multiplier above 1
 /// (to 1e-4), and on the cycle before it none: `rho` went through -1, the
 /// signature of a pitchfork of symmetric cycles (through +1 it would be a
-/// fold).
+/// fold). Solved for on the symmetric cycles, its load is the same to
+/// 1e-10 on another load range.
 #[test]
 fn the_hard_onset_s_large_cycles_break_their_symmetry_where_no_fold_is() {
     use zieglerlab::analysis::CycleBifurcationKind;
@@ -351,6 +352,22 @@ fn the_hard_onset_s_large_cycles_break_their_symmetry_where_no_fold_is() {
     };
     assert!(bp.refined, "{bp:?}");
     assert!((2.29..2.30).contains(&bp.load), "{bp:?}");
+    // Solved for on the symmetric cycles, it does not move with the
+    // continuation's steps: a narrower load range (steps of a fifth the
+    // load) puts it at the same load (seen 3e-14 apart).
+    let never = std::sync::atomic::AtomicBool::new(false);
+    let narrower = cycle_branches(m, 2.0, 2.8, &never).unwrap().remove(0);
+    let again = narrower
+        .branch
+        .expect("a branch")
+        .bifurcations
+        .into_iter()
+        .find(|b| b.kind == CycleBifurcationKind::SymmetryBreaking)
+        .expect("the break of symmetry again");
+    assert!(
+        again.refined && (again.load - bp.load).abs() < 1e-10 * bp.load,
+        "{again:?} {bp:?}"
+    );
     // The cycles of the branch next to it, by load, among those of its
     // amplitude.
     let near: Vec<_> = branch

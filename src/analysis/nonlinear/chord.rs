@@ -1,6 +1,8 @@
 //! The cycles between two neighbouring cycles of a branch: each solved on
 //! the plane across the chord between them at a share `s` of it, with the
-//! load's rate `dp/ds` along the branch there (zero at a fold of cycles).
+//! load's rate `dp/ds` along the branch there (zero at a fold of cycles);
+//! or, where the mirror symmetry breaks between them, the symmetric cycles
+//! on those planes (`symmetric`).
 //!
 //! For the cycles' unknowns `u_a`, `u_b` (`u = (x0, T, p)`) and the
 //! continuation's scales `w`, the chord is `c = u_b - u_a` and the plane
@@ -17,10 +19,14 @@
 //! J⁻¹ e` (`e` the last unit vector) has its load entry zero exactly at a
 //! fold. Pure: no UI, no clock.
 
+use std::sync::atomic::{AtomicBool, Ordering};
+
 use nalgebra::DVector;
 
 use super::cycle::Cycle;
+use super::falsi::{Stop, illinois};
 use super::shooting::{Constraint, Phase, Shooting, Solved, Update};
+use super::symmetric::{Symmetric, solve_symmetric};
 
 /// The chord between two cycles of a branch.
 pub(super) struct Chord<'a> {
@@ -76,6 +82,35 @@ impl<'a> Chord<'a> {
             solved,
             phase,
         })
+    }
+
+    /// The symmetric cycle at `share` of the chord (see `symmetric`), from
+    /// the guess on the chord; `None` where Newton fails.
+    fn symmetric(&self, share: f64) -> Option<Symmetric> {
+        let predicted = &self.from + &self.along * share;
+        let phase = self.shooting.phase_through(&predicted);
+        solve_symmetric(self.shooting, &predicted, &self.tangent, &phase)
+    }
+
+    /// The load and largest amplitude where the mirror symmetry breaks on
+    /// the chord: the symmetric cycles on it are solved for at both ends,
+    /// and regula falsi (stopping at `stop`) drives `det(I + R)` of their
+    /// half-period map `R` to zero, whose sign changes where a real
+    /// multiplier goes through -1 (a simple root, where the whole period's
+    /// Newton matrix is singular; the multiplier may have been one of a
+    /// complex pair at the other end). `None` where a solve fails, the sign
+    /// does not change between the ends, or once `cancel` is set.
+    pub(super) fn symmetry_break(&self, stop: Stop, cancel: &AtomicBool) -> Option<(f64, f64)> {
+        let at = |share: f64| {
+            if cancel.load(Ordering::Relaxed) {
+                return None;
+            }
+            let cycle = self.symmetric(share)?;
+            Some((share, cycle.shifted_determinant, cycle))
+        };
+        let (_, _, found) = illinois(at(0.0)?, at(1.0)?, stop, |share, _| at(share))?;
+        let load = found.unknowns[found.unknowns.len() - 1];
+        Some((load, found.amplitude_rad))
     }
 
     /// The load's rate `dp/ds` along the branch at `on`, from Newton's

@@ -8,14 +8,15 @@
 //! Each is bracketed by the two
 //! cycles of the branch it lies between (the count of multipliers outside
 //! the circle changes, and the count of one kind with it) and placed by
-//! regula falsi on the cycles between them (`chord`): a period doubling, a
-//! torus or a break of symmetry where the crossing multiplier's modulus
-//! passes 1 (the k-th largest of its kind, k the count of the kind outside
-//! at the cycle with more: a continuous function of the cycle whatever
-//! other multipliers of the kind do), a fold where the load's rate along
-//! the branch passes zero (there the multiplier is a double 1, known to
-//! the square root of the monodromy's accuracy only, while the rate is a
-//! simple root).
+//! regula falsi on the cycles between them (`chord`): a period doubling or
+//! a torus where the crossing multiplier's modulus passes 1 (the k-th
+//! largest of its kind, k the count of the kind outside at the cycle with
+//! more: a continuous function of the cycle whatever other multipliers of
+//! the kind do), a fold where the load's rate along the branch passes zero
+//! (there the multiplier is a double 1, known to the square root of the
+//! monodromy's accuracy only, while the rate is a simple root), a break of
+//! symmetry on the symmetric cycles (`symmetric`) where `det(I + R)`
+//! passes zero.
 //!
 //! Fold or break of symmetry: a cycle of a mirror-symmetric column born at
 //! a Hopf point is its own mirror image half a period on, `x(T/2) = -x(0)`
@@ -232,17 +233,26 @@ pub(super) fn cycle_bifurcations(
             } else {
                 bracket.kind
             };
-            let refined = Chord::new(shooting, (a, b), scales)
-                .and_then(|chord| refine(&chord, &bracket, kind, cancel));
+            let chord = Chord::new(shooting, (a, b), scales);
+            let refined = if kind == CycleBifurcationKind::SymmetryBreaking {
+                chord.and_then(|chord| chord.symmetry_break(MODULUS_STOP, cancel))
+            } else {
+                chord
+                    .and_then(|chord| refine(&chord, &bracket, kind, cancel))
+                    .map(|on| {
+                        let cycle = &on.solved.cycle;
+                        (cycle.load, cycle.largest_amplitude_rad())
+                    })
+            };
             refined.map_or_else(
                 || CycleBifurcation {
                     kind,
                     ..bracket.interpolated(cycles)
                 },
-                |on| CycleBifurcation {
+                |(load, amplitude_rad)| CycleBifurcation {
                     kind,
-                    load: on.solved.cycle.load,
-                    amplitude_rad: on.solved.cycle.largest_amplitude_rad(),
+                    load,
+                    amplitude_rad,
                     refined: true,
                     after: bracket.after,
                 },
@@ -281,8 +291,8 @@ fn breaks_symmetry(shooting: &Shooting, a: &Cycle, b: &Cycle) -> bool {
 /// The cycle at `bracket`'s bifurcation (of `kind`) on `chord` between its
 /// two cycles: a fold where the load's rate passes zero (solved at both
 /// ends for it), else (a real multiplier through +1 where the load does
-/// not turn, a break of symmetry, or another kind) where the modulus
-/// passes 1, as read off the two cycles. `None` where that fails or once
+/// not turn, or another kind) where the modulus passes 1, as read off the
+/// two cycles. `None` where that fails or once
 /// `cancel` is set.
 fn refine(
     chord: &Chord,

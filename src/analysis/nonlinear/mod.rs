@@ -26,4 +26,5 @@ pub(super) mod kick;
 mod period_steps;
 mod shooting;
 mod split_stages;
+mod symmetric;
 mod tableau;

@@ -376,15 +376,22 @@ impl Shooting {
     /// half-period map that tells a fold from a break of the mirror
     /// symmetry (see `cycle_bifurcations`).
     pub(in crate::analysis) fn half_period(&self, cycle: &Cycle) -> Option<Orbit> {
-        let half = cycle.period_secs / 2.0;
-        let steps = scaled_steps(steps_for(half, self.fastest_per_s), self.steps_scale.get());
-        flow(
-            &self.field.at_load(cycle.load),
-            &cycle.start,
-            half,
-            steps,
+        self.half_flow(
+            (&cycle.start, cycle.period_secs, cycle.load),
             Monodromy::Multipliers,
         )
+    }
+
+    /// The flow from `x0` over half of `period` at `load`, with the
+    /// derivative as asked, at the pace of the branch's cycles' steps.
+    pub(in crate::analysis) fn half_flow(
+        &self,
+        (x0, period, load): (&DVector<f64>, f64, f64),
+        monodromy: Monodromy,
+    ) -> Option<Orbit> {
+        let half = period / 2.0;
+        let steps = scaled_steps(steps_for(half, self.fastest_per_s), self.steps_scale.get());
+        flow(&self.field.at_load(load), x0, half, steps, monodromy)
     }
 
     /// The flow over `period` with its monodromy, and the steps it took.
