@@ -35,7 +35,24 @@ pub fn legend_row(ui: &mut egui::Ui, entries: &[(Swatch, String)]) {
             // The gap between entries before each swatch, so that it wraps
             // with it: after the last label it ran past the panel's edge,
             // and widened every plot under the row by as much.
-            let gap = if k == 0 { 0.0 } else { ENTRY_GAP };
+            let mut gap = if k == 0 { 0.0 } else { ENTRY_GAP };
+            // A swatch starts a new row where its words' first would not
+            // follow it on this one (a long entry's swatch was left at
+            // the end of a row, its words below).
+            let first_word = text.split_whitespace().next().unwrap_or_default();
+            let font = egui::TextStyle::Body.resolve(ui.style());
+            let word_width = ui
+                .painter()
+                .layout_no_wrap(first_word.to_owned(), font, Color32::WHITE)
+                .size()
+                .x;
+            // (With a spacing's room to spare: a word that fitted to the
+            // pixel was still wrapped.)
+            let needed = gap + width + 2.0 * ui.spacing().item_spacing.x + word_width;
+            if k > 0 && ui.available_size_before_wrap().x < needed {
+                ui.end_row();
+                gap = 0.0;
+            }
             let (cell, _) = ui.allocate_exact_size(vec2(gap + width, 12.0), Sense::hover());
             let rect = egui::Rect::from_min_max(cell.min + vec2(gap, 0.0), cell.max);
             let painter = ui.painter();
