@@ -7,7 +7,7 @@
 //! half-period map `R = -Phi'(T/2)` has a multiplier +1 besides the
 //! trivial one (a fold), not where one is -1: there the whole period's
 //! Newton matrix is singular (a branch point, where asymmetric cycles
-//! branch off), and this one places it as a simple root of `rho + 1`.
+//! branch off), and this one places it as a simple root of `det(I + R)`.
 //! Pure: no UI, no clock.
 
 use nalgebra::{DMatrix, DVector};
