@@ -54,11 +54,9 @@ pub fn chain_jacobian(model: &Model, phi: &[f64], rate: &[f64]) -> Option<DMatri
     let trig = angles_trig(&state);
     let tip = tip_load_trig(model, &state, &trig).generalized_n_m;
     let mut a = lagrange_rhs(model, &inertia, &state, &tip[..n], &trig);
-    let cos_diff = |j: usize, k: usize| trig[j].1 * trig[k].1 + trig[j].0 * trig[k].0;
-    let factor = DMatrix::from_fn(n, n, |j, k| mu[(j, k)] * cos_diff(j, k)).cholesky()?;
+    let factor = DMatrix::from_fn(n, n, |j, k| mu[(j, k)] * cos_diff(&trig, j, k)).cholesky()?;
     cholesky_solve_rows(factor.l_dirty(), &mut a);
 
-    let sin_diff = |j: usize, k: usize| trig[j].0 * trig[k].1 - trig[j].1 * trig[k].0;
     let theta = eta * phi[n - 1];
     let length = |j: usize| column.rod(j).length_m;
 
@@ -90,7 +88,7 @@ pub fn chain_jacobian(model: &Model, phi: &[f64], rate: &[f64]) -> Option<DMatri
         rhs_t[(j, j)] += tip_slope;
         rhs_t[(n - 1, j)] -= eta * tip_slope;
         for m in (0..n).filter(|&m| m != j) {
-            let (s, c) = (sin_diff(j, m), cos_diff(j, m));
+            let (s, c) = (sin_diff(&trig, j, m), cos_diff(&trig, j, m));
             // The centripetal term's and dM/dphi_m a's parts.
             rhs_t[(m, j)] += mu[(j, m)] * c * rate[m] * rate[m] - mu[(j, m)] * s * a[m];
             rhs_t[(j, j)] -= mu[(j, m)] * c * rate[m] * rate[m] - mu[(j, m)] * s * a[m];
@@ -134,8 +132,8 @@ fn add_drag_derivatives(
     let n = rate.len();
     let c = column.drag_ns_per_m2;
     let l: Vec<f64> = (0..n).map(|i| column.rod(i).length_m).collect();
-    let cos = |i: usize, j: usize| trig[i].1 * trig[j].1 + trig[i].0 * trig[j].0;
-    let sin = |i: usize, j: usize| trig[i].0 * trig[j].1 - trig[i].1 * trig[j].0;
+    let cos = |i: usize, j: usize| cos_diff(trig, i, j);
+    let sin = |i: usize, j: usize| sin_diff(trig, i, j);
     // u_i, its derivative by phi_i (-v_i) and the rod's integral T_i.
     let u: Vec<f64> = (0..n)
         .map(|i| (0..i).map(|j| l[j] * cos(i, j) * rate[j]).sum())
@@ -178,6 +176,16 @@ fn add_drag_derivatives(
             rhs_t[(n + k, m)] -= c * d_rate;
         }
     }
+}
+
+/// `cos(phi_j - phi_k)` from each angle's `(sin, cos)` in `trig`.
+fn cos_diff(trig: &[(f64, f64)], j: usize, k: usize) -> f64 {
+    trig[j].1 * trig[k].1 + trig[j].0 * trig[k].0
+}
+
+/// `sin(phi_j - phi_k)` from each angle's `(sin, cos)` in `trig`.
+fn sin_diff(trig: &[(f64, f64)], j: usize, k: usize) -> f64 {
+    trig[j].0 * trig[k].1 - trig[j].1 * trig[k].0
 }
 
 /// Solves `L L^T X = B` in place, `L` the lower triangle of `l` (column

@@ -254,3 +254,17 @@ pub fn drag_column_boundaries() -> &'static (
         (spec, found)
     })
 }
+
+/// The largest `|phi_i|` of a two-rod column over two periods after 60
+/// periods of a run from `x0` on `engine` (steps of 1/240 s).
+pub fn settled(m: &Model, engine: EngineKind, x0: nalgebra::DVector<f64>, period: f64) -> Vec<f64> {
+    let mut sim = Simulation::new(*m, engine, x0, 1.0 / 240.0).expect("a run");
+    sim.run(60.0 * period, |_| ());
+    let mut largest = vec![0.0_f64; 2];
+    sim.run(2.0 * period, |o| {
+        for (most, angle) in largest.iter_mut().zip(&o.angles_rad) {
+            *most = most.max(angle.abs());
+        }
+    });
+    largest
+}

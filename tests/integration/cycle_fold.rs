@@ -10,7 +10,7 @@ use zieglerlab::analysis::{
     AffinePencil, FoldEnd, Kick, SpecialKind, State, critical_loads, cycle_branches,
 };
 
-use crate::common::{drag_column_boundaries, model};
+use crate::common::{drag_column_boundaries, model, settled};
 
 /// The first flutter onset of the drag column with first rod `m1`.
 fn onset(m1: f64) -> f64 {
@@ -213,7 +213,7 @@ fn a_kick_settles_below_the_fold_and_jumps_past_a_hard_onset() {
 #[test]
 fn the_hard_onset_s_branch_is_resolved_up_to_where_the_column_swings_round() {
     use zieglerlab::analysis::{BranchEnd, CycleBifurcationKind};
-    use zieglerlab::sim::{EngineKind, Simulation};
+    use zieglerlab::sim::EngineKind;
     let (m, branch) = hard_onset_branch();
     assert_eq!(branch.end, BranchEnd::LargeAmplitude, "{}", branch.end);
     for cycle in &branch.cycles {
@@ -253,14 +253,7 @@ fn the_hard_onset_s_branch_is_resolved_up_to_where_the_column_swings_round() {
     assert!(decay(cycle) < 0.9, "{:?}", cycle.multipliers);
     let at = m.at_load(cycle.load);
     let x0 = cycle.start_state(&at) * 1.01;
-    let mut sim = Simulation::new(at, EngineKind::Reference, x0, 1.0 / 240.0).expect("a run");
-    sim.run(60.0 * cycle.period_secs, |_| ());
-    let mut largest = [0.0_f64; 2];
-    sim.run(2.0 * cycle.period_secs, |o| {
-        for (most, angle) in largest.iter_mut().zip(&o.angles_rad) {
-            *most = most.max(angle.abs());
-        }
-    });
+    let largest = settled(&at, EngineKind::Reference, x0, cycle.period_secs);
     for (seen, computed) in largest.iter().zip(&cycle.amplitude_rad) {
         assert!(
             (seen / computed - 1.0).abs() < 1e-3,

@@ -7,7 +7,7 @@
 //! hard onset's unstable cycles fold back into stable ones, and a sweep
 //! over it shows hysteresis.
 
-use crate::common::{eigenvalues, model};
+use crate::common::{eigenvalues, model, settled};
 use zieglerlab::analysis::{Branch, BranchEnd, Cycle, HopfKind, cycle_branches, cycles_at};
 use zieglerlab::model::{Model, StateVec};
 use zieglerlab::sim::{EngineKind, Simulation, initial_state};
@@ -141,20 +141,6 @@ fn a_cycle_is_a_periodic_orbit_of_the_reference_integrator() {
     let branch = first_branch(&m, 1.8, 2.4);
     let cycle = cycles_at(&m, &branch, 2.2).remove(0);
     assert_reference_orbit(&m, &cycle, 2.2, 1e-7, 2e-6);
-}
-
-/// The largest `|phi_i|` over two periods after 60 periods of a run from
-/// `x0` on `engine`.
-fn settled(m: &Model, engine: EngineKind, x0: nalgebra::DVector<f64>, period: f64) -> Vec<f64> {
-    let mut sim = Simulation::new(*m, engine, x0, 1.0 / 240.0).expect("a run");
-    sim.run(60.0 * period, |_| ());
-    let mut largest = vec![0.0_f64; 2];
-    sim.run(2.0 * period, |o| {
-        for (most, angle) in largest.iter_mut().zip(&o.angles_rad) {
-            *most = most.max(angle.abs());
-        }
-    });
-    largest
 }
 
 #[test]

@@ -36,6 +36,7 @@ use super::cycle::Cycle;
 use super::falsi::{Stop, illinois};
 use super::shooting::{Shooting, sorted_multipliers};
 use crate::analysis::C64;
+use crate::analysis::gauss::Monodromy;
 
 /// A multiplier is real when its imaginary part is at most this share of
 /// its modulus.
@@ -270,7 +271,10 @@ pub(super) fn cycle_bifurcations(
 /// band has a direction) or its half period cannot be flowed.
 fn breaks_symmetry(shooting: &Shooting, a: &Cycle, b: &Cycle) -> bool {
     let below_minus_one = |cycle: &Cycle| -> Option<usize> {
-        let half = shooting.half_period(cycle)?;
+        let half = shooting.half_flow(
+            (&cycle.start, cycle.period_secs, cycle.load),
+            Monodromy::Multipliers,
+        )?;
         if (&half.end + &cycle.start).amax() > MIRROR * cycle.start.amax() {
             return None;
         }

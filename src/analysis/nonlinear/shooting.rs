@@ -324,15 +324,11 @@ impl Shooting {
         match constraint {
             Constraint::Load(_) => jacobian[(d + 1, d + 1)] = 1.0,
             Constraint::Arclength { tangent, .. } => {
-                let delta = 1e-6 * load.abs().max(1e-3);
-                let end = |p| {
+                let by_load = load_derivative(load, |p| {
                     flow(&self.field.at_load(p), x0, period, steps, Monodromy::None)
                         .map(|orbit| orbit.end)
-                };
-                let (plus, minus) = (end(load + delta)?, end(load - delta)?);
-                jacobian
-                    .view_mut((0, d + 1), (d, 1))
-                    .copy_from(&((plus - minus) / (2.0 * delta)));
+                })?;
+                jacobian.view_mut((0, d + 1), (d, 1)).copy_from(&by_load);
                 jacobian
                     .view_mut((d + 1, 0), (1, d + 2))
                     .copy_from(&tangent.transpose());
@@ -371,19 +367,9 @@ impl Shooting {
         Some((cycle, monodromy, (steps, orbit.end)))
     }
 
-    /// The flow over the first half of `cycle`'s period from its start,
-    /// with its derivative, at the pace of the cycle's own steps: the
-    /// half-period map that tells a fold from a break of the mirror
-    /// symmetry (see `cycle_bifurcations`).
-    pub(in crate::analysis) fn half_period(&self, cycle: &Cycle) -> Option<Orbit> {
-        self.half_flow(
-            (&cycle.start, cycle.period_secs, cycle.load),
-            Monodromy::Multipliers,
-        )
-    }
-
     /// The flow from `x0` over half of `period` at `load`, with the
-    /// derivative as asked, at the pace of the branch's cycles' steps.
+    /// derivative as asked, at the pace of the branch's cycles' steps: the
+    /// half-period map of a symmetric cycle (see `symmetric`).
     pub(in crate::analysis) fn half_flow(
         &self,
         (x0, period, load): (&DVector<f64>, f64, f64),
@@ -466,6 +452,17 @@ impl Shooting {
         });
         self.solve(&guess, &Constraint::Load(load))
     }
+}
+
+/// The derivative in the load of a flow's end, `end(p)`, at `load`, by
+/// central differences (steps of 1e-6 of the load, at least 1e-9).
+pub(in crate::analysis) fn load_derivative(
+    load: f64,
+    end: impl Fn(f64) -> Option<DVector<f64>>,
+) -> Option<DVector<f64>> {
+    let delta = 1e-6 * load.abs().max(1e-3);
+    let (plus, minus) = (end(load + delta)?, end(load - delta)?);
+    Some((plus - minus) / (2.0 * delta))
 }
 
 /// Eigenvalues of the monodromy, largest modulus first.

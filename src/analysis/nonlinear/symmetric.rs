@@ -13,7 +13,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::convergence::converged;
-use super::shooting::{Phase, Shooting};
+use super::shooting::{Phase, Shooting, load_derivative};
 use crate::analysis::gauss::Monodromy;
 
 /// Newton iterations for one symmetric cycle.
@@ -59,15 +59,12 @@ pub(super) fn solve_symmetric(
         matrix
             .view_mut((0, d), (d, 1))
             .copy_from(&(field.at(&orbit.end) / 2.0));
-        let delta = 1e-6 * load.abs().max(1e-3);
-        let end = |p: f64| {
+        let by_load = load_derivative(load, |p| {
             shooting
                 .half_flow((&x0, period, p), Monodromy::None)
                 .map(|orbit| orbit.end)
-        };
-        matrix
-            .view_mut((0, d + 1), (d, 1))
-            .copy_from(&((end(load + delta)? - end(load - delta)?) / (2.0 * delta)));
+        })?;
+        matrix.view_mut((0, d + 1), (d, 1)).copy_from(&by_load);
         matrix
             .view_mut((d, 0), (1, d))
             .copy_from(&phase.normal.transpose());
