@@ -705,6 +705,7 @@ cycles-no-onset = kein Flatterbeginn im Bereich der Lastleiste: keine Grenzzykle
 cycles-chain-too-long = eine Kette aus { $rods } Stäben zu verfolgen dauert im Fenster zu lange (16 Stäbe brauchen auf zwei Kernen etwa 20 s, und die Arbeit wächst schneller als die Zahl der Stäbe); `zieglerlab bifurcation` berechnet ihre Zyklen auf der Kommandozeile
 cycles-no-thread = kein Thread für die Zyklen: { $why }
 cycles-branch = { $name }: { $onset } Einsatz bei p = { $at }; der Zweig endete: { $end }
+cycles-offshoot = { $name }: asymmetrische Zyklen (und ihre Spiegelbilder) ab dem BPC bei p = { $at }; der Zweig endete: { $end }
 cycles-onset-soft = weicher
 cycles-onset-hard = harter
 cycles-no-branch = Flatterbeginn bei p = { $at }: { $why }

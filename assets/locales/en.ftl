@@ -704,6 +704,7 @@ cycles-no-onset = no flutter onset in the load bar's range: no limit cycles
 cycles-chain-too-long = a chain of { $rods } rods takes too long to follow in the window (16 rods take about 20 s on two cores, and the work grows faster than the number of rods); `zieglerlab bifurcation` computes its cycles from the command line
 cycles-no-thread = no thread for the cycles: { $why }
 cycles-branch = { $name }: { $onset } onset at p = { $at }; the branch ended: { $end }
+cycles-offshoot = { $name }: asymmetric cycles (and their mirror images) from the BPC at p = { $at }; the branch ended: { $end }
 cycles-onset-soft = soft
 cycles-onset-hard = hard
 cycles-no-branch = flutter onset at p = { $at }: { $why }

@@ -705,6 +705,7 @@ cycles-no-onset = ningún inicio del flameo en el rango de la barra de carga: no
 cycles-chain-too-long = una cadena de { $rods } barras tarda demasiado en seguirse en la ventana (16 barras tardan unos 20 s en dos núcleos, y el trabajo crece más deprisa que el número de barras); `zieglerlab bifurcation` calcula sus ciclos desde la línea de órdenes
 cycles-no-thread = no hay hilo para los ciclos: { $why }
 cycles-branch = { $name }: inicio { $onset } en p = { $at }; la rama terminó: { $end }
+cycles-offshoot = { $name }: ciclos asimétricos (y sus imágenes especulares) desde el BPC en p = { $at }; la rama terminó: { $end }
 cycles-onset-soft = suave
 cycles-onset-hard = brusco
 cycles-no-branch = inicio del flameo en p = { $at }: { $why }

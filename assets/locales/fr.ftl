@@ -705,6 +705,7 @@ cycles-no-onset = aucun début du flottement dans la plage de la barre de charge
 cycles-chain-too-long = une chaîne de { $rods } barres est trop longue à suivre dans la fenêtre (16 barres prennent environ 20 s sur deux cœurs, et le travail croît plus vite que le nombre de barres) ; `zieglerlab bifurcation` calcule ses cycles en ligne de commande
 cycles-no-thread = pas de fil d'exécution pour les cycles : { $why }
 cycles-branch = { $name } : apparition { $onset } à p = { $at } ; la branche s'est arrêtée : { $end }
+cycles-offshoot = { $name } : cycles asymétriques (et leurs images miroir) depuis le BPC à p = { $at } ; la branche s'est arrêtée : { $end }
 cycles-onset-soft = douce
 cycles-onset-hard = brutale
 cycles-no-branch = début du flottement à p = { $at } : { $why }

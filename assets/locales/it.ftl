@@ -705,6 +705,7 @@ cycles-no-onset = nessun inizio del flutter nell'intervallo della barra del cari
 cycles-chain-too-long = una catena di { $rods } aste richiede troppo tempo per essere seguita nella finestra (16 aste richiedono circa 20 s su due core, e il lavoro cresce più in fretta del numero di aste); `zieglerlab bifurcation` ne calcola i cicli dalla riga di comando
 cycles-no-thread = nessun thread per i cicli: { $why }
 cycles-branch = { $name }: insorgenza { $onset } a p = { $at }; il ramo è terminato: { $end }
+cycles-offshoot = { $name }: cicli asimmetrici (e le loro immagini speculari) dal BPC a p = { $at }; il ramo è terminato: { $end }
 cycles-onset-soft = dolce
 cycles-onset-hard = brusca
 cycles-no-branch = inizio del flutter a p = { $at }: { $why }

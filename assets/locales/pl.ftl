@@ -715,6 +715,7 @@ cycles-no-onset = brak początku flatteru w zakresie paska obciążenia: brak cy
 cycles-chain-too-long = śledzenie łańcucha { $rods } prętów trwa w oknie zbyt długo (16 prętów zajmuje około 20 s na dwóch rdzeniach, a praca rośnie szybciej niż liczba prętów); `zieglerlab bifurcation` oblicza jego cykle z wiersza poleceń
 cycles-no-thread = brak wątku dla cykli: { $why }
 cycles-branch = { $name }: { $onset } początek przy p = { $at }; gałąź zakończyła się: { $end }
+cycles-offshoot = { $name }: cykle niesymetryczne (i ich odbicia lustrzane) od BPC przy p = { $at }; gałąź zakończyła się: { $end }
 cycles-onset-soft = łagodny
 cycles-onset-hard = gwałtowny
 cycles-no-branch = początek flatteru przy p = { $at }: { $why }

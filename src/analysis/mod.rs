@@ -27,8 +27,8 @@ pub use curve::{Boundary, BoundaryKind, BoundaryPoint, BoundarySpec, CurveEnd, l
 pub use cycle_bifurcations::{CycleBifurcation, CycleBifurcationKind};
 pub use cycle_fold::{CycleFold, FoldEnd, FoldPoint};
 pub use cycles::{
-    Branch, BranchEnd, Cycle, MAX_AMPLITUDE_RAD, MAX_PERIOD_GROWTH, MAX_POINTS, NoBranch, Onset,
-    TRIVIAL_TOLERANCE, cycle_branches, cycles_at,
+    Branch, BranchEnd, Cycle, MAX_AMPLITUDE_RAD, MAX_PERIOD_GROWTH, MAX_POINTS, NoBranch, Offshoot,
+    Onset, TRIVIAL_TOLERANCE, cycle_branches, cycles_at,
 };
 pub use hopf::{Derivatives, Hopf, HopfKind, NoHopf, Steps as HopfSteps, hopf_at, is_hopf};
 pub use kick::Kick;

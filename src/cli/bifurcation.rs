@@ -11,8 +11,8 @@ use clap::ValueEnum;
 use serde_json::json;
 
 use zieglerlab::analysis::{
-    AffinePencil, Branch, Cycle, CycleBifurcationKind, NoBranch, Onset, State, classify,
-    cycle_branches, cycles_at,
+    AffinePencil, Branch, Cycle, CycleBifurcation, CycleBifurcationKind, NoBranch, Onset, State,
+    classify, cycle_branches, cycles_at,
 };
 use zieglerlab::figure::{self, Page, render};
 use zieglerlab::format::{Exact, Shown};
@@ -144,7 +144,14 @@ pub fn run(args: &Args) -> Result<()> {
     for onset in &branches {
         report(onset.load, &onset.branch);
         if let Ok(branch) = &onset.branch {
-            rows.extend(cycle_rows(&model, branch, &loads));
+            rows.extend(cycle_rows(branch.name(), &loads, |p| {
+                cycles_at(&model, branch, p)
+            }));
+            for offshoot in &branch.offshoots {
+                rows.extend(cycle_rows(offshoot.name(), &loads, |p| {
+                    offshoot.cycles_at(&model, p)
+                }));
+            }
         }
     }
     if args.sweep {
@@ -242,27 +249,43 @@ pub fn report(onset: f64, found: &Result<Branch, NoBranch>) {
     };
     eprintln!("{}", printable(&line));
     if let Ok(branch) = found {
-        for found in &branch.bifurcations {
-            let kind = match found.kind {
-                CycleBifurcationKind::Fold => "fold of cycles",
-                CycleBifurcationKind::PeriodDoubling => "period doubling",
-                CycleBifurcationKind::NeimarkSacker => "Neimark-Sacker (torus)",
-                CycleBifurcationKind::SymmetryBreaking => {
-                    "break of the mirror symmetry (branch point of cycles)"
-                }
-            };
-            let placed = if found.refined {
-                ""
-            } else {
-                ", interpolated between two cycles: not solved for"
-            };
+        report_bifurcations(branch.name(), &branch.bifurcations);
+        for offshoot in &branch.offshoots {
             eprintln!(
-                "{}: {kind} at p = {} (largest angle {:.4} rad{placed})",
+                "{}: asymmetric cycles born at the break of {}'s mirror symmetry at p = {}, {} cycles followed (and their mirror images); the branch ended: {}",
+                offshoot.name(),
                 branch.name(),
-                Shown(found.load),
-                found.amplitude_rad
+                Shown(offshoot.born.load),
+                offshoot.cycles.len(),
+                offshoot.end
             );
+            report_bifurcations(offshoot.name(), &offshoot.bifurcations);
         }
+    }
+}
+
+/// A line on stderr for each of the bifurcations `found` on the branch
+/// `name`.
+fn report_bifurcations(name: &str, found: &[CycleBifurcation]) {
+    for found in found {
+        let kind = match found.kind {
+            CycleBifurcationKind::Fold => "fold of cycles",
+            CycleBifurcationKind::PeriodDoubling => "period doubling",
+            CycleBifurcationKind::NeimarkSacker => "Neimark-Sacker (torus)",
+            CycleBifurcationKind::SymmetryBreaking => {
+                "break of the mirror symmetry (branch point of cycles)"
+            }
+        };
+        let placed = if found.refined {
+            ""
+        } else {
+            ", interpolated between two cycles: not solved for"
+        };
+        eprintln!(
+            "{name}: {kind} at p = {} (largest angle {:.4} rad{placed})",
+            Shown(found.load),
+            found.amplitude_rad
+        );
     }
 }
 
@@ -277,17 +300,17 @@ fn cycle_row(cycle: &Cycle, branch: &str) -> Row {
     }
 }
 
-/// The branch's cycles at each grid load (two where it folds back).
-fn cycle_rows(model: &Model, branch: &Branch, loads: &[f64]) -> Vec<Row> {
-    let name = branch.name().to_owned();
+/// The cycles of the branch `name` at each grid load (two where it folds
+/// back), as `at` solves for them at a load.
+fn cycle_rows(name: &str, loads: &[f64], at: impl Fn(f64) -> Vec<Cycle>) -> Vec<Row> {
     let progress = progress_bar(loads.len() as u64, &format!("{name} at the loads"));
     let rows = loads
         .iter()
         .flat_map(|&p| {
             progress.inc(1);
-            cycles_at(model, branch, p)
+            at(p)
         })
-        .map(|cycle| cycle_row(&cycle, &name))
+        .map(|cycle| cycle_row(&cycle, name))
         .collect();
     progress.finish_and_clear();
     rows
@@ -383,17 +406,21 @@ fn write_csv(
         )?;
     }
     let empty = ",".repeat(rods);
-    for branch in branches
+    let paths = branches
         .iter()
         .filter_map(|onset| onset.branch.as_ref().ok())
-    {
-        for event in &branch.bifurcations {
+        .flat_map(|branch| {
+            let offshoots = branch.offshoots.iter();
+            std::iter::once((branch.name(), &branch.bifurcations))
+                .chain(offshoots.map(|o| (o.name(), &o.bifurcations)))
+        });
+    for (name, events) in paths {
+        for event in events {
             if (lo..=hi).contains(&event.load) {
                 writeln!(
                     out,
-                    "{},{},,,{empty}{}",
+                    "{},{name},,,{empty}{}",
                     Exact(event.load),
-                    branch.name(),
                     bifurcation_word(event.kind)
                 )?;
             }
@@ -428,6 +455,13 @@ fn write_json(
                 "cycles_followed": branch.cycles.len(),
                 "cycle_bifurcations": branch.bifurcations,
                 "end": branch.end.to_string(),
+                "offshoots": branch.offshoots.iter().map(|o| json!({
+                    "branch": o.name(),
+                    "born_at_load": o.born.load,
+                    "cycles_followed": o.cycles.len(),
+                    "cycle_bifurcations": o.bifurcations,
+                    "end": o.end.to_string(),
+                })).collect::<Vec<_>>(),
             }),
             Err(why) => {
                 json!({"load": load, "branch": null, "why": format!("{why:?}").to_lowercase()})

@@ -7,8 +7,8 @@
 
 use super::spec::{Entry, Ink, Mark, OffView, Plot, Sheet, Size, Swatch, Ticks, View, Weight};
 use crate::analysis::{
-    AffinePencil, AnalysisError, Branch, CycleBifurcation, CycleBifurcationKind, Onset, State,
-    classify, critical_loads, stability_ranges,
+    AffinePencil, AnalysisError, Branch, CycleBifurcation, CycleBifurcationKind, Offshoot, Onset,
+    State, classify, critical_loads, stability_ranges,
 };
 use crate::i18n::Words;
 use crate::tr;
@@ -100,12 +100,20 @@ pub struct Diagram<'a> {
 }
 
 impl Diagram<'_> {
-    /// The cycles' own bifurcations along every branch, each with the way
-    /// its branch opens there (see [`Branch::opening`]).
+    /// The cycles' own bifurcations along every branch and the asymmetric
+    /// branches born on it, each with the way its branch opens there (see
+    /// [`Branch::opening`]).
     fn cycle_bifurcations(&self) -> Vec<(CycleBifurcation, f64)> {
         self.branches
             .iter()
-            .flat_map(|b| b.bifurcations.iter().map(|t| (*t, b.opening(t))))
+            .flat_map(|b| {
+                let own = b.bifurcations.iter().map(|t| (*t, b.opening(t)));
+                let offshoots = b
+                    .offshoots
+                    .iter()
+                    .flat_map(|o| o.bifurcations.iter().map(move |t| (*t, o.opening(t))));
+                own.chain(offshoots).collect::<Vec<_>>()
+            })
             .collect()
     }
 
@@ -139,9 +147,15 @@ impl Diagram<'_> {
         marks
     }
 
-    /// The cycles as runs of equal stability.
+    /// The cycles as runs of equal stability, the asymmetric branches' too.
     fn runs(&self) -> Vec<(Vec<[f64; 2]>, bool)> {
-        self.branches.iter().flat_map(|b| b.runs()).collect()
+        self.branches
+            .iter()
+            .flat_map(|b| {
+                let offshoots = b.offshoots.iter().flat_map(Offshoot::runs);
+                b.runs().into_iter().chain(offshoots).collect::<Vec<_>>()
+            })
+            .collect()
     }
 
     /// The diagram and its legend.

@@ -3,7 +3,7 @@
 //! it never hangs).
 
 #![allow(dead_code, reason = "each test module uses a different subset")]
-use zieglerlab::analysis::{AffinePencil, C64, Transition, critical_loads};
+use zieglerlab::analysis::{AffinePencil, C64, Transition, critical_loads, cycle_branches};
 use zieglerlab::model::{
     Model, StateVec, apply_assignments, energy_j, parse_assignment, preset, state_derivative,
 };
@@ -267,4 +267,89 @@ pub fn settled(m: &Model, engine: EngineKind, x0: nalgebra::DVector<f64>, period
         }
     });
     largest
+}
+
+/// The branch of cycles of the hard onset (Ziegler's column with drag
+/// `c_ext = 0.05` and a light first rod, `m1 = 0.2`) over the window's
+/// loads, 0 to 8, computed once.
+pub fn hard_onset_branch() -> &'static (zieglerlab::model::Model, zieglerlab::analysis::Branch) {
+    static BRANCH: std::sync::OnceLock<(zieglerlab::model::Model, zieglerlab::analysis::Branch)> =
+        std::sync::OnceLock::new();
+    BRANCH.get_or_init(|| {
+        let m = model("ziegler-1952", &["c_ext=0.05", "m1=0.2"]);
+        let never = std::sync::atomic::AtomicBool::new(false);
+        let onset = cycle_branches(&m, 0.0, 8.0, &never).unwrap().remove(0);
+        (m, onset.branch.expect("a branch"))
+    })
+}
+
+/// The half-period map `R = -D Phi(T/2)` of `cycle` on the angles and
+/// rates, and `|x(T/2) + x(0)|` (zero for a cycle that is its own mirror
+/// image half a period on), by a plain fourth-order Runge-Kutta run of the
+/// equations of motion (`state_derivative`, 4000 steps a half period) and
+/// central differences: independent of the shooting's Gauss-Legendre
+/// steps and their exact derivative.
+pub fn half_period_map(
+    m: &zieglerlab::model::Model,
+    cycle: &zieglerlab::analysis::Cycle,
+) -> (nalgebra::DMatrix<f64>, f64) {
+    let at = m.at_load(cycle.load);
+    let steps = 4000;
+    let run = |x: nalgebra::DVector<f64>| rk4(&at, x, cycle.period_secs / 2.0, steps);
+    let x0 = cycle.start_state(&at);
+    let mirror = (run(x0.clone()) + &x0).amax();
+    // The angles and rates of the two rods (the spin entries stay zero).
+    let moving = [0, 1, 3, 4];
+    let step = 1e-6;
+    let mut map = nalgebra::DMatrix::zeros(4, 4);
+    for (column, &k) in moving.iter().enumerate() {
+        let (mut plus, mut minus) = (x0.clone(), x0.clone());
+        plus[k] += step;
+        minus[k] -= step;
+        let derivative = (run(plus) - run(minus)) / (2.0 * step);
+        for (row, &r) in moving.iter().enumerate() {
+            map[(row, column)] = -derivative[r];
+        }
+    }
+    (map, mirror)
+}
+
+/// What a screen reader hears of the bifurcation diagram of `branch` over
+/// the window's loads (0 to 8), in English, and the diagram's legend.
+pub fn diagram_said(branch: &zieglerlab::analysis::Branch) -> (String, Vec<String>) {
+    let words = zieglerlab::i18n::words(zieglerlab::i18n::Language::English);
+    let sheet = zieglerlab::plot::bifurcation::Diagram {
+        load_range: (0.0, 8.0),
+        equilibrium: &[],
+        branches: vec![branch],
+        sweep: &[],
+        present: None,
+        words,
+    }
+    .sheet();
+    let legend = sheet.legend.iter().map(|e| e.text.clone()).collect();
+    (
+        zieglerlab::plot::describe::describe(&sheet.plots[0], words),
+        legend,
+    )
+}
+
+/// `x` after `secs` of a plain fourth-order Runge-Kutta run of the
+/// equations of motion of `at` in `steps` steps (independent of the
+/// shooting's Gauss-Legendre steps).
+pub fn rk4(
+    at: &Model,
+    mut x: nalgebra::DVector<f64>,
+    secs: f64,
+    steps: u32,
+) -> nalgebra::DVector<f64> {
+    let h = secs / f64::from(steps);
+    for _ in 0..steps {
+        let k1 = state_derivative(at, &x);
+        let k2 = state_derivative(at, &(&x + &k1 * (h / 2.0)));
+        let k3 = state_derivative(at, &(&x + &k2 * (h / 2.0)));
+        let k4 = state_derivative(at, &(&x + &k3 * h));
+        x += (k1 + k2 * 2.0 + k3 * 2.0 + k4) * (h / 6.0);
+    }
+    x
 }

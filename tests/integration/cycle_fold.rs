@@ -10,7 +10,9 @@ use zieglerlab::analysis::{
     AffinePencil, FoldEnd, Kick, SpecialKind, State, critical_loads, cycle_branches,
 };
 
-use crate::common::{drag_column_boundaries, model, settled};
+use crate::common::{
+    diagram_said, drag_column_boundaries, half_period_map, hard_onset_branch, model, settled,
+};
 
 /// The first flutter onset of the drag column with first rod `m1`.
 fn onset(m1: f64) -> f64 {
@@ -263,62 +265,6 @@ fn the_hard_onset_s_branch_is_resolved_up_to_where_the_column_swings_round() {
     }
 }
 
-/// The branch of cycles of the hard onset (Ziegler's column with drag
-/// `c_ext = 0.05` and a light first rod, `m1 = 0.2`) over the window's
-/// loads, 0 to 8, computed once.
-fn hard_onset_branch() -> &'static (zieglerlab::model::Model, zieglerlab::analysis::Branch) {
-    static BRANCH: std::sync::OnceLock<(zieglerlab::model::Model, zieglerlab::analysis::Branch)> =
-        std::sync::OnceLock::new();
-    BRANCH.get_or_init(|| {
-        let m = model("ziegler-1952", &["c_ext=0.05", "m1=0.2"]);
-        let never = std::sync::atomic::AtomicBool::new(false);
-        let onset = cycle_branches(&m, 0.0, 8.0, &never).unwrap().remove(0);
-        (m, onset.branch.expect("a branch"))
-    })
-}
-
-/// The half-period map `R = -D Phi(T/2)` of `cycle` on the angles and
-/// rates, and `|x(T/2) + x(0)|` (zero for a cycle that is its own mirror
-/// image half a period on), by a plain fourth-order Runge-Kutta run of the
-/// equations of motion (`state_derivative`, 4000 steps a half period) and
-/// central differences: independent of the shooting's Gauss-Legendre
-/// steps and their exact derivative.
-fn half_period_map(
-    m: &zieglerlab::model::Model,
-    cycle: &zieglerlab::analysis::Cycle,
-) -> (nalgebra::DMatrix<f64>, f64) {
-    use zieglerlab::model::state_derivative;
-    let at = m.at_load(cycle.load);
-    let steps = 4000;
-    let h = cycle.period_secs / 2.0 / f64::from(steps);
-    let run = |mut x: nalgebra::DVector<f64>| {
-        for _ in 0..steps {
-            let k1 = state_derivative(&at, &x);
-            let k2 = state_derivative(&at, &(&x + &k1 * (h / 2.0)));
-            let k3 = state_derivative(&at, &(&x + &k2 * (h / 2.0)));
-            let k4 = state_derivative(&at, &(&x + &k3 * h));
-            x += (k1 + k2 * 2.0 + k3 * 2.0 + k4) * (h / 6.0);
-        }
-        x
-    };
-    let x0 = cycle.start_state(&at);
-    let mirror = (run(x0.clone()) + &x0).amax();
-    // The angles and rates of the two rods (the spin entries stay zero).
-    let moving = [0, 1, 3, 4];
-    let step = 1e-6;
-    let mut map = nalgebra::DMatrix::zeros(4, 4);
-    for (column, &k) in moving.iter().enumerate() {
-        let (mut plus, mut minus) = (x0.clone(), x0.clone());
-        plus[k] += step;
-        minus[k] -= step;
-        let derivative = (run(plus) - run(minus)) / (2.0 * step);
-        for (row, &r) in moving.iter().enumerate() {
-            map[(row, column)] = -derivative[r];
-        }
-    }
-    (map, mirror)
-}
-
 /// Past the third fold the stable large cycles lose their stability where
 /// a real multiplier goes through +1 while the load goes on growing (the
 /// cycles' loads rise through it): no fold but a break of the mirror
@@ -403,23 +349,12 @@ fn the_hard_onset_s_large_cycles_break_their_symmetry_where_no_fold_is() {
     assert!((rho * rho / mu.re - 1.0).abs() < 1e-4, "{rho} {mu}");
     // The diagram names it BPC, its key spells that out, and a screen
     // reader hears it among the named points.
-    let words = zieglerlab::i18n::words(zieglerlab::i18n::Language::English);
-    let sheet = zieglerlab::plot::bifurcation::Diagram {
-        load_range: (0.0, 8.0),
-        equilibrium: &[],
-        branches: vec![branch],
-        sweep: &[],
-        present: None,
-        words,
-    }
-    .sheet();
+    let (said, legend) = diagram_said(branch);
     assert!(
-        sheet.legend.iter().any(|e| e
-            .text
-            .contains("BPC: symmetry breaks (branch point of cycles)")),
-        "{:?}",
-        sheet.legend
+        legend
+            .iter()
+            .any(|text| text.contains("BPC: symmetry breaks (branch point of cycles)")),
+        "{legend:?}"
     );
-    let said = zieglerlab::plot::describe::describe(&sheet.plots[0], words);
     assert!(said.contains("BPC at"), "{said}");
 }

@@ -8,6 +8,7 @@ mod app_lessons;
 mod app_logic;
 mod app_tools;
 mod as_printed;
+mod asymmetric_cycles;
 mod bad_input;
 mod boundary;
 mod chain_engines;

@@ -92,15 +92,14 @@ impl<'a> Chord<'a> {
         solve_symmetric(self.shooting, &predicted, &self.tangent, &phase)
     }
 
-    /// The load and largest amplitude where the mirror symmetry breaks on
-    /// the chord: the symmetric cycles on it are solved for at both ends,
+    /// The symmetric cycle where the mirror symmetry breaks on the chord: the symmetric cycles on it are solved for at both ends,
     /// and regula falsi (stopping at `stop`) drives `det(I + R)` of their
     /// half-period map `R` to zero, whose sign changes where a real
     /// multiplier goes through -1 (a simple root, where the whole period's
     /// Newton matrix is singular; the multiplier may have been one of a
     /// complex pair at the other end). `None` where a solve fails, the sign
     /// does not change between the ends, or once `cancel` is set.
-    pub(super) fn symmetry_break(&self, stop: Stop, cancel: &AtomicBool) -> Option<(f64, f64)> {
+    pub(super) fn symmetry_break(&self, stop: Stop, cancel: &AtomicBool) -> Option<Symmetric> {
         let at = |share: f64| {
             if cancel.load(Ordering::Relaxed) {
                 return None;
@@ -108,9 +107,7 @@ impl<'a> Chord<'a> {
             let cycle = self.symmetric(share)?;
             Some((share, cycle.shifted_determinant, cycle))
         };
-        let (_, _, found) = illinois(at(0.0)?, at(1.0)?, stop, |share, _| at(share))?;
-        let load = found.unknowns[found.unknowns.len() - 1];
-        Some((load, found.amplitude_rad))
+        Some(illinois(at(0.0)?, at(1.0)?, stop, |share, _| at(share))?.2)
     }
 
     /// The load's rate `dp/ds` along the branch at `on`, from Newton's

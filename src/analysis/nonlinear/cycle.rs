@@ -8,6 +8,10 @@ use crate::analysis::C64;
 use crate::analysis::field::Field;
 use crate::model::{Model, StateVec};
 
+/// A multiplier is real when its imaginary part is at most this share of
+/// its modulus.
+pub(super) const REAL: f64 = 1e-8;
+
 /// The smallest load the load's step is measured against.
 pub(in crate::analysis) const LOAD_SCALE_FLOOR: f64 = 1e-3;
 

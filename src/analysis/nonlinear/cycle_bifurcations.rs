@@ -32,20 +32,12 @@ use nalgebra::DVector;
 use serde::Serialize;
 
 use super::chord::{Chord, OnChord};
-use super::cycle::Cycle;
+use super::cycle::{Cycle, REAL};
 use super::falsi::{Stop, illinois};
-use super::shooting::{Shooting, sorted_multipliers};
+use super::shooting::Shooting;
+use super::symmetric::breaks_symmetry;
 use crate::analysis::C64;
-use crate::analysis::gauss::Monodromy;
 
-/// A multiplier is real when its imaginary part is at most this share of
-/// its modulus.
-const REAL: f64 = 1e-8;
-/// A cycle is its own mirror image half a period on when `x(T/2) + x(0)`
-/// is within this share of `x(0)`'s largest coordinate (the flow's error
-/// is about 1e-9 of it; a cycle of the roller, whose band has a
-/// direction, is off by a tenth or more).
-const MIRROR: f64 = 1e-6;
 /// Where regula falsi stops for a modulus: within 1e-12 of its bracket's
 /// size (a multiplier's modulus is known to about 1e-10), or the bracket
 /// narrowed to 1e-9 of the chord, in at most 30 cycles.
@@ -211,9 +203,18 @@ pub(super) fn brackets(cycles: &[Cycle]) -> Vec<Bracket> {
     out
 }
 
+/// A break of the mirror symmetry solved for: its place among a branch's
+/// bifurcations and the symmetric cycle's unknowns `(x0, T, p)` there,
+/// where the asymmetric cycles branch off (`offshoot`).
+pub(super) struct BreakPoint {
+    pub(super) index: usize,
+    pub(super) unknowns: DVector<f64>,
+}
+
 /// Every bifurcation along the branch `cycles` of `shooting`'s column, in
 /// the order of the continuation, each solved for between the two cycles
-/// it lies between (see [`CycleBifurcation::refined`]); `scales` are the
+/// it lies between (see [`CycleBifurcation::refined`]), and the breaks of
+/// symmetry among them that were solved for; `scales` are the
 /// continuation's scales of the unknowns. Once `cancel` is set no cycle
 /// is solved: the rest are interpolated.
 pub(super) fn cycle_bifurcations(
@@ -221,75 +222,53 @@ pub(super) fn cycle_bifurcations(
     cycles: &[Cycle],
     scales: &DVector<f64>,
     cancel: &AtomicBool,
-) -> Vec<CycleBifurcation> {
-    brackets(cycles)
-        .into_iter()
-        .map(|bracket| {
-            let (a, b) = (&cycles[bracket.after], &cycles[bracket.after + 1]);
-            let kind = if bracket.kind == CycleBifurcationKind::Fold
-                && !cancel.load(Ordering::Relaxed)
-                && breaks_symmetry(shooting, a, b)
-            {
-                CycleBifurcationKind::SymmetryBreaking
-            } else {
-                bracket.kind
-            };
-            let chord = Chord::new(shooting, (a, b), scales);
-            let refined = if kind == CycleBifurcationKind::SymmetryBreaking {
-                chord.and_then(|chord| chord.symmetry_break(MODULUS_STOP, cancel))
-            } else {
-                chord
-                    .and_then(|chord| refine(&chord, &bracket, kind, cancel))
-                    .map(|on| {
-                        let cycle = &on.solved.cycle;
-                        (cycle.load, cycle.largest_amplitude_rad())
-                    })
-            };
-            refined.map_or_else(
-                || CycleBifurcation {
-                    kind,
-                    ..bracket.interpolated(cycles)
-                },
-                |(load, amplitude_rad)| CycleBifurcation {
-                    kind,
-                    load,
-                    amplitude_rad,
-                    refined: true,
-                    after: bracket.after,
-                },
-            )
-        })
-        .collect()
-}
-
-/// Whether the multiplier through +1 between the neighbouring cycles `a`
-/// and `b` of `shooting`'s branch breaks the mirror symmetry: both cycles
-/// are their own mirror images half a period on (to [`MIRROR`] of their
-/// largest coordinate) and the count of real multipliers of the
-/// half-period map `R = -Phi(T/2)` below -1 differs between them (see the
-/// module's notes). `false` where a cycle is not symmetric (the roller's
-/// band has a direction) or its half period cannot be flowed.
-fn breaks_symmetry(shooting: &Shooting, a: &Cycle, b: &Cycle) -> bool {
-    let below_minus_one = |cycle: &Cycle| -> Option<usize> {
-        let half = shooting.half_flow(
-            (&cycle.start, cycle.period_secs, cycle.load),
-            Monodromy::Multipliers,
-        )?;
-        if (&half.end + &cycle.start).amax() > MIRROR * cycle.start.amax() {
-            return None;
-        }
-        let map = -half.monodromy?;
-        Some(
-            sorted_multipliers(&map)
-                .iter()
-                .filter(|rho| rho.im.abs() <= REAL * rho.norm() && rho.re < -1.0)
-                .count(),
-        )
-    };
-    matches!(
-        (below_minus_one(a), below_minus_one(b)),
-        (Some(x), Some(y)) if x != y
-    )
+) -> (Vec<CycleBifurcation>, Vec<BreakPoint>) {
+    let (mut found, mut breaks) = (Vec::new(), Vec::new());
+    for bracket in brackets(cycles) {
+        let (a, b) = (&cycles[bracket.after], &cycles[bracket.after + 1]);
+        let kind = if bracket.kind == CycleBifurcationKind::Fold
+            && !cancel.load(Ordering::Relaxed)
+            && breaks_symmetry(shooting, a, b)
+        {
+            CycleBifurcationKind::SymmetryBreaking
+        } else {
+            bracket.kind
+        };
+        let chord = Chord::new(shooting, (a, b), scales);
+        let refined = if kind == CycleBifurcationKind::SymmetryBreaking {
+            chord
+                .and_then(|chord| chord.symmetry_break(MODULUS_STOP, cancel))
+                .map(|symmetric| {
+                    let load = symmetric.unknowns[symmetric.unknowns.len() - 1];
+                    breaks.push(BreakPoint {
+                        index: found.len(),
+                        unknowns: symmetric.unknowns,
+                    });
+                    (load, symmetric.amplitude_rad)
+                })
+        } else {
+            chord
+                .and_then(|chord| refine(&chord, &bracket, kind, cancel))
+                .map(|on| {
+                    let cycle = &on.solved.cycle;
+                    (cycle.load, cycle.largest_amplitude_rad())
+                })
+        };
+        found.push(refined.map_or_else(
+            || CycleBifurcation {
+                kind,
+                ..bracket.interpolated(cycles)
+            },
+            |(load, amplitude_rad)| CycleBifurcation {
+                kind,
+                load,
+                amplitude_rad,
+                refined: true,
+                after: bracket.after,
+            },
+        ));
+    }
+    (found, breaks)
 }
 
 /// The cycle at `bracket`'s bifurcation (of `kind`) on `chord` between its
@@ -569,8 +548,10 @@ mod tests {
         assert!((linear.load - FOLD_P).abs() > 0.03, "{linear:?}");
         // Asked to stop, it solves nothing and says so.
         let scales = DVector::from_element(4, 1.0);
-        let stopped = cycle_bifurcations(&shooting, &cycles, &scales, &AtomicBool::new(true));
+        let (stopped, breaks) =
+            cycle_bifurcations(&shooting, &cycles, &scales, &AtomicBool::new(true));
         assert_eq!(stopped, [linear]);
+        assert!(breaks.is_empty());
         assert!(!linear.refined && linear.kind == fold.kind && linear.after == 1);
     }
 
@@ -588,6 +569,6 @@ mod tests {
     /// The bifurcations along `cycles`, with every unknown's scale 1.
     fn bifurcations(shooting: &Shooting, cycles: &[Cycle]) -> Vec<CycleBifurcation> {
         let scales = DVector::from_element(cycles[0].start.len() + 2, 1.0);
-        cycle_bifurcations(shooting, cycles, &scales, &AtomicBool::new(false))
+        cycle_bifurcations(shooting, cycles, &scales, &AtomicBool::new(false)).0
     }
 }

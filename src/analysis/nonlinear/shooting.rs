@@ -155,6 +155,18 @@ impl Shooting {
         }
     }
 
+    /// The factor its steps per period stand at (see `steps_scale`).
+    pub(in crate::analysis) fn steps_scale(&self) -> f64 {
+        self.steps_scale.get()
+    }
+
+    /// This shooting problem with its steps per period scaled by `scale`
+    /// from the start: the pace a branch's cycles ended at.
+    pub(in crate::analysis) fn with_steps_scale(self, scale: f64) -> Self {
+        self.steps_scale.set(scale);
+        self
+    }
+
     /// The cycle through the guess `u = (x0, T, p)` under `constraint`,
     /// with its exact monodromy and Newton's iterations, or `None` where
     /// Newton fails: first by Broyden's method (see [`Update::Broyden`]),

@@ -13,8 +13,15 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::convergence::converged;
-use super::shooting::{Phase, Shooting, load_derivative};
+use super::cycle::{Cycle, REAL};
+use super::shooting::{Phase, Shooting, load_derivative, sorted_multipliers};
 use crate::analysis::gauss::Monodromy;
+
+/// A cycle is its own mirror image half a period on when `x(T/2) + x(0)`
+/// is within this share of `x(0)`'s largest coordinate (the flow's error
+/// is about 1e-9 of it; a cycle of the roller, whose band has a
+/// direction, is off by a tenth or more).
+pub(super) const MIRROR: f64 = 1e-6;
 
 /// Newton iterations for one symmetric cycle.
 const ITERATIONS: usize = 12;
@@ -86,6 +93,36 @@ pub(super) fn solve_symmetric(
         }
     }
     None
+}
+
+/// Whether the multiplier through +1 between the neighbouring cycles `a`
+/// and `b` of `shooting`'s branch breaks the mirror symmetry: both cycles
+/// are their own mirror images half a period on (to [`MIRROR`] of their
+/// largest coordinate) and the count of real multipliers of the
+/// half-period map `R = -Phi(T/2)` below -1 differs between them (see the
+/// module's notes). `false` where a cycle is not symmetric (the roller's
+/// band has a direction) or its half period cannot be flowed.
+pub(super) fn breaks_symmetry(shooting: &Shooting, a: &Cycle, b: &Cycle) -> bool {
+    let below_minus_one = |cycle: &Cycle| -> Option<usize> {
+        let half = shooting.half_flow(
+            (&cycle.start, cycle.period_secs, cycle.load),
+            Monodromy::Multipliers,
+        )?;
+        if (&half.end + &cycle.start).amax() > MIRROR * cycle.start.amax() {
+            return None;
+        }
+        let map = -half.monodromy?;
+        Some(
+            sorted_multipliers(&map)
+                .iter()
+                .filter(|rho| rho.im.abs() <= REAL * rho.norm() && rho.re < -1.0)
+                .count(),
+        )
+    };
+    matches!(
+        (below_minus_one(a), below_minus_one(b)),
+        (Some(x), Some(y)) if x != y
+    )
 }
 
 #[cfg(test)]

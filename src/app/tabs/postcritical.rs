@@ -199,7 +199,7 @@ impl View for PostCriticalPanel {
 fn cycles_reach(branches: &[&Branch], load_max: f64) -> Option<f64> {
     let furthest = branches
         .iter()
-        .flat_map(|b| b.cycles.iter().map(|c| c.load))
+        .flat_map(|b| b.every_cycle().map(|c| c.load))
         .reduce(f64::max)?;
     let end = (1.25 * furthest).min(load_max);
     (end > 0.0).then_some(end)
@@ -229,7 +229,7 @@ fn equilibrium(state: &AppState, load_max: f64) -> Vec<(f64, f64, bool)> {
 fn live_swing(history: &History, branches: &[&Branch], load: f64) -> Option<f64> {
     let period = branches
         .iter()
-        .flat_map(|b| b.cycles.iter())
+        .flat_map(|b| b.every_cycle())
         .min_by(|a, b| (a.load - load).abs().total_cmp(&(b.load - load).abs()))
         .map(|cycle| cycle.period_secs)
         .or_else(|| {
@@ -258,27 +258,39 @@ fn notes(onsets: &[Onset], words: &'static Words) -> Vec<String> {
     }
     onsets
         .iter()
-        .map(|onset| {
+        .flat_map(|onset| {
             let at = load_text(onset.load);
             match &onset.branch {
-                Ok(branch) => tr!(
-                    words,
-                    "cycles-branch",
-                    name = branch.name(),
-                    onset = if branch.soft() {
-                        tr!(words, "cycles-onset-soft")
-                    } else {
-                        tr!(words, "cycles-onset-hard")
-                    },
-                    at = at,
-                    end = end_words(words, branch.end)
-                ),
-                Err(why) => tr!(
+                Ok(branch) => {
+                    let own = tr!(
+                        words,
+                        "cycles-branch",
+                        name = branch.name(),
+                        onset = if branch.soft() {
+                            tr!(words, "cycles-onset-soft")
+                        } else {
+                            tr!(words, "cycles-onset-hard")
+                        },
+                        at = at,
+                        end = end_words(words, branch.end)
+                    );
+                    let offshoots = branch.offshoots.iter().map(|o| {
+                        tr!(
+                            words,
+                            "cycles-offshoot",
+                            name = o.name(),
+                            at = load_text(o.born.load),
+                            end = end_words(words, o.end)
+                        )
+                    });
+                    std::iter::once(own).chain(offshoots).collect()
+                }
+                Err(why) => vec![tr!(
                     words,
                     "cycles-no-branch",
                     at = at,
                     why = no_branch_words(words, why)
-                ),
+                )],
             }
         })
         .collect()
