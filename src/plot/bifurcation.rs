@@ -13,6 +13,63 @@ use crate::analysis::{
 use crate::i18n::Words;
 use crate::tr;
 
+/// Where each of `names` (its text, its ring, the way its branch opens
+/// there) goes: the first of [`name_places`] whose plate covers no name
+/// placed before it and no other ring (the first place where none is
+/// free). The plate's size is estimated from `above` and `aside`.
+fn place_names(names: &[(&str, [f64; 2], f64)], above: f64, aside: f64) -> Vec<[f64; 2]> {
+    // A ring reaches about a fifth of `aside` and half of `above` from its
+    // centre.
+    let ring_reach = [aside / 5.0, above / 2.0];
+    let mut taken: Vec<([f64; 2], [f64; 2])> = Vec::new();
+    for (text, ring, opening) in names {
+        // Half a name's plate: a sixth of `aside` a letter and one for the
+        // padding, and 0.6 of `above` (a printed figure's names, the
+        // largest against its data; the window's are smaller).
+        #[expect(clippy::cast_precision_loss, reason = "a few letters")]
+        let half = [(text.len() + 1) as f64 * aside / 6.0, 0.6 * above];
+        let free = |at: [f64; 2]| {
+            let apart = |c: [f64; 2], reach: [f64; 2]| {
+                (at[0] - c[0]).abs() >= half[0] + reach[0]
+                    || (at[1] - c[1]).abs() >= half[1] + reach[1]
+            };
+            taken.iter().all(|&(c, h)| apart(c, h))
+                && names
+                    .iter()
+                    .filter(|(_, other, _)| other != ring)
+                    .all(|(_, other, _)| apart(*other, ring_reach))
+        };
+        let places = name_places(*ring, *opening, above, aside);
+        let at = places
+            .iter()
+            .copied()
+            .find(|&at| free(at))
+            .unwrap_or(places[0]);
+        taken.push((at, half));
+    }
+    taken.into_iter().map(|(at, _)| at).collect()
+}
+
+/// Where the name of the ring at `ring` may go, in order: `above` it, or
+/// at a fold (`opening` not 0) `aside` it where the branch is not; then
+/// below it, on either side, and twice and three times as high.
+fn name_places(ring: [f64; 2], opening: f64, above: f64, aside: f64) -> [[f64; 2]; 6] {
+    let [x, y] = ring;
+    let first = if opening == 0.0 {
+        [x, y + above]
+    } else {
+        [x - opening * aside, y]
+    };
+    [
+        first,
+        [x, y - above],
+        [x + aside, y],
+        [x - aside, y],
+        [x, y + 2.0 * above],
+        [x, y + 3.0 * above],
+    ]
+}
+
 /// What a printed diagram shows, gathered as `bifurcation` and
 /// `figure --kind bifurcation` gather it.
 #[derive(Clone, Debug)]
@@ -119,7 +176,8 @@ impl Diagram<'_> {
 
     /// The cycles' bifurcations ringed, each named `above` its ring, or at a
     /// fold `aside` it where the branch is not (the name would hide the
-    /// branch's turn).
+    /// branch's turn), or where that name would cover another's or another
+    /// ring, at the first free place of [`name_places`].
     fn turn_marks(&self, above: f64, aside: f64) -> Vec<Mark> {
         let turns = self.cycle_bifurcations();
         if turns.is_empty() {
@@ -135,15 +193,21 @@ impl Diagram<'_> {
             filled: false,
             off_view: OffView::Hidden,
         }];
-        marks.extend(turns.iter().map(|(t, opening)| Mark::Label {
-            at: if *opening == 0.0 {
-                [t.load, t.amplitude_rad + above]
-            } else {
-                [t.load - opening * aside, t.amplitude_rad]
-            },
-            text: short_name(t.kind).to_owned(),
-            of: Some([t.load, t.amplitude_rad]),
-        }));
+        let names: Vec<(&str, [f64; 2], f64)> = turns
+            .iter()
+            .map(|(t, opening)| (short_name(t.kind), [t.load, t.amplitude_rad], *opening))
+            .collect();
+        let places = place_names(&names, above, aside);
+        marks.extend(
+            names
+                .iter()
+                .zip(places)
+                .map(|((text, ring, _), at)| Mark::Label {
+                    at,
+                    text: (*text).to_owned(),
+                    of: Some(*ring),
+                }),
+        );
         marks
     }
 
@@ -356,5 +420,61 @@ fn short_name(kind: CycleBifurcationKind) -> &'static str {
         CycleBifurcationKind::PeriodDoubling => "PD",
         CycleBifurcationKind::NeimarkSacker => "NS",
         CycleBifurcationKind::SymmetryBreaking => "BPC",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Whether the estimated plates of the names at `a` and `b` (texts
+    /// `ta`, `tb`) overlap.
+    fn overlap(a: [f64; 2], ta: &str, b: [f64; 2], tb: &str, above: f64, aside: f64) -> bool {
+        #[expect(clippy::cast_precision_loss, reason = "a few letters")]
+        let half = |t: &str| [(t.len() + 1) as f64 * aside / 6.0, 0.6 * above];
+        let (ha, hb) = (half(ta), half(tb));
+        (a[0] - b[0]).abs() < ha[0] + hb[0] && (a[1] - b[1]).abs() < ha[1] + hb[1]
+    }
+
+    /// A lone ring's name stays above it (a fold's beside it, away from
+    /// the branch). Three rings as close as the hard onset's break of
+    /// symmetry and the two tori past it on a printed page (0.1 of the
+    /// load apart) get names on three different sides, none over another
+    /// name or another ring; placed above each, as before, they covered
+    /// each other.
+    #[test]
+    fn crowded_rings_get_names_that_do_not_cover_each_other() {
+        let (above, aside) = (0.18, 0.32);
+        assert_eq!(
+            place_names(&[("NS", [2.0, 1.0], 0.0)], above, aside),
+            [[2.0, 1.18]]
+        );
+        assert_eq!(
+            place_names(&[("LPC", [2.0, 1.0], 1.0)], above, aside),
+            [[1.68, 1.0]]
+        );
+        let names = [
+            ("BPC", [2.297, 2.278], 0.0),
+            ("NS", [2.360, 2.375], 0.0),
+            ("NS", [2.445, 2.451], 0.0),
+        ];
+        let placed = place_names(&names, above, aside);
+        for (i, (a, (ta, ring_a, _))) in placed.iter().zip(&names).enumerate() {
+            for (b, (tb, ring_b, _)) in placed.iter().zip(&names).skip(i + 1) {
+                assert!(!overlap(*a, ta, *b, tb, above, aside), "{placed:?}");
+                assert!(!overlap(*a, ta, *ring_b, "", above, aside), "{placed:?}");
+                assert!(!overlap(*b, tb, *ring_a, "", above, aside), "{placed:?}");
+            }
+        }
+        let above_each: Vec<[f64; 2]> =
+            names.iter().map(|(_, r, _)| [r[0], r[1] + above]).collect();
+        assert!(overlap(
+            above_each[0],
+            "BPC",
+            above_each[1],
+            "NS",
+            above,
+            aside
+        ));
     }
 }
