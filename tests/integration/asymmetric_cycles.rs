@@ -6,7 +6,7 @@ use zieglerlab::analysis::{Cycle, CycleBifurcationKind, cycles_at};
 use zieglerlab::model::Model;
 use zieglerlab::sim::{EngineKind, Simulation};
 
-use crate::common::{diagram_said, half_period_map, hard_onset_branch, rk4};
+use crate::common::{diagram_said, flow_derivative, half_period_map, hard_onset_branch, rk4};
 
 /// The largest and the least value of each rod's angle over `secs` of
 /// a run of the reference engine of `at` from `x0`, after `settle_secs`.
@@ -35,8 +35,9 @@ fn extremes(at: &Model, x0: nalgebra::DVector<f64>, settle_secs: f64, secs: f64)
 /// (the ratio the same to 2 % at its first two cycles, 8.8 there), on the
 /// side where the symmetric cycles are unstable, and the asymmetric ones
 /// there are stable: they take over the stability the symmetric ones
-/// lose. They lose it in turn at a torus bifurcation, solved for, which
-/// the diagram rings and a screen reader names.
+/// lose. They lose it in turn at a torus bifurcation, solved for, and a
+/// period doubling follows, both ringed on the diagram and named to a
+/// screen reader.
 #[test]
 fn asymmetric_cycles_branch_off_where_the_large_cycles_break_their_symmetry() {
     let (m, branch) = hard_onset_branch();
@@ -83,8 +84,32 @@ fn asymmetric_cycles_branch_off_where_the_large_cycles_break_their_symmetry() {
     );
     // The diagram draws the branch from the break and rings its torus (the
     // parent branch has none), and a screen reader hears it.
+    // Past the torus the complex pair meets on the negative real axis
+    // outside the circle and one of the two goes in through -1 (between
+    // two cycles of the branch: found by solving the cycles between them):
+    // a period doubling, solved for, where a plain Runge-Kutta run's
+    // monodromy has a multiplier -1 too.
+    let doubling = offshoot.bifurcations[1];
+    assert_eq!(doubling.kind, CycleBifurcationKind::PeriodDoubling);
+    assert!(
+        doubling.refined && (2.44..2.46).contains(&doubling.load),
+        "{doubling:?}"
+    );
+    let at_doubling = offshoot.cycles_at(m, doubling.load).remove(0);
+    let (monodromy, _) = flow_derivative(m, &at_doubling, at_doubling.period_secs);
+    let flips: Vec<f64> = monodromy
+        .complex_eigenvalues()
+        .iter()
+        .filter(|mu| mu.im.abs() < 1e-9 && mu.re < 0.0)
+        .map(|mu| mu.re)
+        .collect();
+    assert!(
+        flips.iter().any(|mu| (mu + 1.0).abs() < 1e-4),
+        "{flips:?} {:?}",
+        at_doubling.multipliers
+    );
     let (said, _) = diagram_said(branch);
-    assert!(said.contains("NS at"), "{said}");
+    assert!(said.contains("NS at") && said.contains("PD at"), "{said}");
 }
 
 /// Between the break and the torus bifurcation the asymmetric cycles are

@@ -285,19 +285,36 @@ pub fn hard_onset_branch() -> &'static (zieglerlab::model::Model, zieglerlab::an
 
 /// The half-period map `R = -D Phi(T/2)` of `cycle` on the angles and
 /// rates, and `|x(T/2) + x(0)|` (zero for a cycle that is its own mirror
-/// image half a period on), by a plain fourth-order Runge-Kutta run of the
-/// equations of motion (`state_derivative`, 4000 steps a half period) and
-/// central differences: independent of the shooting's Gauss-Legendre
-/// steps and their exact derivative.
+/// image half a period on), by [`flow_derivative`].
 pub fn half_period_map(
     m: &zieglerlab::model::Model,
     cycle: &zieglerlab::analysis::Cycle,
 ) -> (nalgebra::DMatrix<f64>, f64) {
+    let (derivative, end) = flow_derivative(m, cycle, cycle.period_secs / 2.0);
     let at = m.at_load(cycle.load);
-    let steps = 4000;
-    let run = |x: nalgebra::DVector<f64>| rk4(&at, x, cycle.period_secs / 2.0, steps);
+    (-derivative, (end + cycle.start_state(&at)).amax())
+}
+
+/// The derivative `D Phi(secs)` of the flow from `cycle`'s start at its
+/// load on the two rods' angles and rates, and the flow's end, by a plain
+/// fourth-order Runge-Kutta run of the equations of motion
+/// (`state_derivative`, 8000 steps a period) and central differences:
+/// independent of the shooting's Gauss-Legendre steps and their exact
+/// derivative.
+pub fn flow_derivative(
+    m: &zieglerlab::model::Model,
+    cycle: &zieglerlab::analysis::Cycle,
+    secs: f64,
+) -> (nalgebra::DMatrix<f64>, nalgebra::DVector<f64>) {
+    let at = m.at_load(cycle.load);
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "a few thousand steps"
+    )]
+    let steps = (8000.0 * secs / cycle.period_secs).ceil() as u32;
+    let run = |x: nalgebra::DVector<f64>| rk4(&at, x, secs, steps);
     let x0 = cycle.start_state(&at);
-    let mirror = (run(x0.clone()) + &x0).amax();
     // The angles and rates of the two rods (the spin entries stay zero).
     let moving = [0, 1, 3, 4];
     let step = 1e-6;
@@ -308,10 +325,10 @@ pub fn half_period_map(
         minus[k] -= step;
         let derivative = (run(plus) - run(minus)) / (2.0 * step);
         for (row, &r) in moving.iter().enumerate() {
-            map[(row, column)] = -derivative[r];
+            map[(row, column)] = derivative[r];
         }
     }
-    (map, mirror)
+    (map, run(x0))
 }
 
 /// What a screen reader hears of the bifurcation diagram of `branch` over

@@ -31,12 +31,13 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use nalgebra::DVector;
 use serde::Serialize;
 
+pub use super::bracket::CycleBifurcationKind;
+use super::bracket::{Bracket, brackets};
 use super::chord::{Chord, OnChord};
-use super::cycle::{Cycle, REAL};
+use super::cycle::Cycle;
 use super::falsi::{Stop, illinois};
 use super::shooting::Shooting;
 use super::symmetric::breaks_symmetry;
-use crate::analysis::C64;
 
 /// Where regula falsi stops for a modulus: within 1e-12 of its bracket's
 /// size (a multiplier's modulus is known to about 1e-10), or the bracket
@@ -56,21 +57,6 @@ const RATE_STOP: Stop = Stop {
     ..MODULUS_STOP
 };
 
-/// What changes at a bifurcation of the cycles.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum CycleBifurcationKind {
-    /// A real multiplier through +1: the branch folds back in the load.
-    Fold,
-    /// A real multiplier through -1: a cycle of twice the period is born.
-    PeriodDoubling,
-    /// A complex pair through the unit circle: a torus is born.
-    NeimarkSacker,
-    /// A real multiplier through +1 where the branch goes on: the mirror
-    /// symmetry breaks (a pitchfork of cycles; see the module's notes).
-    SymmetryBreaking,
-}
-
 /// A bifurcation of the cycles along a branch.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct CycleBifurcation {
@@ -89,120 +75,6 @@ pub struct CycleBifurcation {
     pub(in crate::analysis) after: usize,
 }
 
-/// Two neighbouring cycles of a branch with a bifurcation between them.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct Bracket {
-    /// The first of the two cycles' index.
-    pub(super) after: usize,
-    pub(super) kind: CycleBifurcationKind,
-    /// Which multiplier of the kind crosses the circle, counted from the
-    /// largest modulus (0 the largest): the last one outside at the cycle
-    /// with more outside.
-    pub(super) rank: usize,
-    /// Its distance `|m| - 1` from the circle at each cycle (where the
-    /// cycle has that many of the kind): of opposite signs.
-    pub(super) moduli: [Option<f64>; 2],
-}
-
-impl Bracket {
-    /// The share of the way from the first cycle to the second where the
-    /// modulus passes 1 on the line between them (the middle where the
-    /// moduli do not straddle 1).
-    fn linear_share(&self) -> f64 {
-        match self.moduli {
-            [Some(ra), Some(rb)] if ra * rb < 0.0 => ra / (ra - rb),
-            _ => 0.5,
-        }
-    }
-
-    /// The bifurcation placed on the line between its two cycles of
-    /// `cycles`, where the modulus passes 1 on it: not solved for.
-    fn interpolated(&self, cycles: &[Cycle]) -> CycleBifurcation {
-        let (a, b) = (&cycles[self.after], &cycles[self.after + 1]);
-        let t = self.linear_share();
-        let along = |x: f64, y: f64| x + t * (y - x);
-        CycleBifurcation {
-            kind: self.kind,
-            load: along(a.load, b.load),
-            amplitude_rad: along(a.largest_amplitude_rad(), b.largest_amplitude_rad()),
-            refined: false,
-            after: self.after,
-        }
-    }
-
-    /// The crossing multiplier's distance `|m| - 1` from the circle on
-    /// `cycle`, where it has that many of the kind.
-    fn modulus(&self, cycle: &Cycle) -> Option<f64> {
-        of_kind(cycle, self.kind).get(self.rank).copied()
-    }
-}
-
-/// The class of a multiplier other than the trivial one.
-fn class_of(m: C64) -> CycleBifurcationKind {
-    if m.im.abs() > REAL * m.norm() {
-        CycleBifurcationKind::NeimarkSacker
-    } else if m.re > 0.0 {
-        CycleBifurcationKind::Fold
-    } else {
-        CycleBifurcationKind::PeriodDoubling
-    }
-}
-
-/// The distances `|m| - 1` from the unit circle of the multipliers of
-/// `kind` (but the trivial one), largest first.
-fn of_kind(cycle: &Cycle, kind: CycleBifurcationKind) -> Vec<f64> {
-    let mut moduli: Vec<f64> = cycle
-        .nontrivial_multipliers()
-        .filter(|m| class_of(*m) == kind)
-        .map(|m| m.norm() - 1.0)
-        .collect();
-    moduli.sort_by(|a, b| b.total_cmp(a));
-    moduli
-}
-
-/// How many of `moduli` (distances from the circle) lie outside it.
-fn outside(moduli: &[f64]) -> usize {
-    moduli.iter().filter(|&&r| r > 0.0).count()
-}
-
-/// Every pair of neighbouring `cycles` (in the order of the continuation)
-/// between which multipliers cross the unit circle: the count outside it
-/// changes, and with it (the same way) the count of a kind. A pair of
-/// multipliers that turns from complex to real (or back) outside the
-/// circle changes the counts of two kinds and not the whole count: no
-/// bifurcation.
-pub(super) fn brackets(cycles: &[Cycle]) -> Vec<Bracket> {
-    use CycleBifurcationKind::{Fold, NeimarkSacker, PeriodDoubling};
-    let mut out = Vec::new();
-    for (after, pair) in cycles.windows(2).enumerate() {
-        let [a, b] = pair else { continue };
-        let kinds = [Fold, PeriodDoubling, NeimarkSacker];
-        let (moduli_a, moduli_b) = (kinds.map(|k| of_kind(a, k)), kinds.map(|k| of_kind(b, k)));
-        let total = |moduli: &[Vec<f64>; 3]| moduli.iter().map(|m| outside(m)).sum::<usize>();
-        let (total_a, total_b) = (total(&moduli_a), total(&moduli_b));
-        if total_a == total_b {
-            continue;
-        }
-        for (k, kind) in kinds.into_iter().enumerate() {
-            let (count_a, count_b) = (outside(&moduli_a[k]), outside(&moduli_b[k]));
-            if count_a == count_b || (count_b > count_a) != (total_b > total_a) {
-                continue;
-            }
-            let rank = count_a.max(count_b) - 1;
-            out.push(Bracket {
-                after,
-                kind,
-                rank,
-                moduli: [
-                    moduli_a[k].get(rank).copied(),
-                    moduli_b[k].get(rank).copied(),
-                ],
-            });
-        }
-    }
-    out
-}
-
 /// A break of the mirror symmetry solved for: its place among a branch's
 /// bifurcations and the symmetric cycle's unknowns `(x0, T, p)` there,
 /// where the asymmetric cycles branch off (`offshoot`).
@@ -211,12 +83,20 @@ pub(super) struct BreakPoint {
     pub(super) unknowns: DVector<f64>,
 }
 
+/// Halvings of the chord between two cycles allowed to untangle what
+/// crosses the circle between them (a chord of 1/4096 of theirs).
+const UNTANGLE_DEPTH: usize = 12;
+
 /// Every bifurcation along the branch `cycles` of `shooting`'s column, in
 /// the order of the continuation, each solved for between the two cycles
 /// it lies between (see [`CycleBifurcation::refined`]), and the breaks of
 /// symmetry among them that were solved for; `scales` are the
-/// continuation's scales of the unknowns. Once `cancel` is set no cycle
-/// is solved: the rest are interpolated.
+/// continuation's scales of the unknowns. Where more than one kind of
+/// multiplier changes its count between two cycles (a complex pair
+/// outside the circle meeting on the real axis and one of the two reals
+/// going inside through -1 between them), the cycles between them are
+/// solved for ([`untangle`]) until each change is one kind's. Once
+/// `cancel` is set no cycle is solved: the rest are interpolated.
 pub(super) fn cycle_bifurcations(
     shooting: &Shooting,
     cycles: &[Cycle],
@@ -224,51 +104,126 @@ pub(super) fn cycle_bifurcations(
     cancel: &AtomicBool,
 ) -> (Vec<CycleBifurcation>, Vec<BreakPoint>) {
     let (mut found, mut breaks) = (Vec::new(), Vec::new());
-    for bracket in brackets(cycles) {
-        let (a, b) = (&cycles[bracket.after], &cycles[bracket.after + 1]);
-        let kind = if bracket.kind == CycleBifurcationKind::Fold
-            && !cancel.load(Ordering::Relaxed)
-            && breaks_symmetry(shooting, a, b)
-        {
-            CycleBifurcationKind::SymmetryBreaking
+    let all = brackets(cycles);
+    for group in all.chunk_by(|x, y| x.after == y.after) {
+        let after = group[0].after;
+        let (a, b) = (&cycles[after], &cycles[after + 1]);
+        let as_read = || group.iter().map(|g| (a.clone(), b.clone(), *g)).collect();
+        let pieces: Vec<(Cycle, Cycle, Bracket)> = if group.iter().all(|g| g.clean) {
+            as_read()
         } else {
-            bracket.kind
+            untangle(shooting, (a, b), scales, UNTANGLE_DEPTH, cancel).unwrap_or_else(as_read)
         };
-        let chord = Chord::new(shooting, (a, b), scales);
-        let refined = if kind == CycleBifurcationKind::SymmetryBreaking {
-            chord
-                .and_then(|chord| chord.symmetry_break(MODULUS_STOP, cancel))
-                .map(|symmetric| {
-                    let load = symmetric.unknowns[symmetric.unknowns.len() - 1];
-                    breaks.push(BreakPoint {
-                        index: found.len(),
-                        unknowns: symmetric.unknowns,
-                    });
-                    (load, symmetric.amplitude_rad)
-                })
-        } else {
-            chord
-                .and_then(|chord| refine(&chord, &bracket, kind, cancel))
-                .map(|on| {
-                    let cycle = &on.solved.cycle;
-                    (cycle.load, cycle.largest_amplitude_rad())
-                })
-        };
-        found.push(refined.map_or_else(
-            || CycleBifurcation {
-                kind,
-                ..bracket.interpolated(cycles)
-            },
-            |(load, amplitude_rad)| CycleBifurcation {
-                kind,
-                load,
-                amplitude_rad,
-                refined: true,
-                after: bracket.after,
-            },
-        ));
+        for (a, b, bracket) in pieces {
+            let bracket = Bracket { after, ..bracket };
+            let (bifurcation, symmetric) = place(shooting, (&a, &b), &bracket, scales, cancel);
+            if let Some(unknowns) = symmetric {
+                breaks.push(BreakPoint {
+                    index: found.len(),
+                    unknowns,
+                });
+            }
+            found.push(bifurcation);
+        }
     }
     (found, breaks)
+}
+
+/// The brackets between the neighbouring cycles `a` and `b` each of one
+/// kind's change alone, with the two cycles each lies between: the chord
+/// between them halved (a cycle solved for at its middle) until each half
+/// is clean, at most `depth` times; `None` where a solve fails, the depth
+/// runs out or `cancel` is set.
+fn untangle(
+    shooting: &Shooting,
+    (a, b): (&Cycle, &Cycle),
+    scales: &DVector<f64>,
+    depth: usize,
+    cancel: &AtomicBool,
+) -> Option<Vec<(Cycle, Cycle, Bracket)>> {
+    if depth == 0 || cancel.load(Ordering::Relaxed) {
+        return None;
+    }
+    let middle = Chord::new(shooting, (a, b), scales)?
+        .solve(0.5, None)?
+        .solved
+        .cycle;
+    let mut found = Vec::new();
+    for (x, y) in [(a, &middle), (&middle, b)] {
+        let halves = brackets(&[x.clone(), y.clone()]);
+        if halves.iter().all(|h| h.clean) {
+            found.extend(halves.into_iter().map(|h| (x.clone(), y.clone(), h)));
+        } else {
+            found.extend(untangle(shooting, (x, y), scales, depth - 1, cancel)?);
+        }
+    }
+    Some(found)
+}
+
+/// `bracket`'s bifurcation between the cycles `a` and `b`, solved for
+/// where that can be done (else interpolated), and where it breaks the
+/// mirror symmetry, the symmetric cycle's unknowns there.
+fn place(
+    shooting: &Shooting,
+    (a, b): (&Cycle, &Cycle),
+    bracket: &Bracket,
+    scales: &DVector<f64>,
+    cancel: &AtomicBool,
+) -> (CycleBifurcation, Option<DVector<f64>>) {
+    let kind = if bracket.kind == CycleBifurcationKind::Fold
+        && !cancel.load(Ordering::Relaxed)
+        && breaks_symmetry(shooting, a, b)
+    {
+        CycleBifurcationKind::SymmetryBreaking
+    } else {
+        bracket.kind
+    };
+    let chord = Chord::new(shooting, (a, b), scales);
+    let mut symmetric_cycle = None;
+    let refined = if kind == CycleBifurcationKind::SymmetryBreaking {
+        chord
+            .and_then(|chord| chord.symmetry_break(MODULUS_STOP, cancel))
+            .map(|symmetric| {
+                let load = symmetric.unknowns[symmetric.unknowns.len() - 1];
+                symmetric_cycle = Some(symmetric.unknowns);
+                (load, symmetric.amplitude_rad)
+            })
+    } else {
+        chord
+            .and_then(|chord| refine(&chord, bracket, kind, cancel))
+            .map(|on| {
+                let cycle = &on.solved.cycle;
+                (cycle.load, cycle.largest_amplitude_rad())
+            })
+    };
+    let bifurcation = refined.map_or_else(
+        || CycleBifurcation {
+            kind,
+            ..interpolated(bracket, a, b)
+        },
+        |(load, amplitude_rad)| CycleBifurcation {
+            kind,
+            load,
+            amplitude_rad,
+            refined: true,
+            after: bracket.after,
+        },
+    );
+    (bifurcation, symmetric_cycle)
+}
+
+/// `bracket`'s bifurcation placed on the line between the cycles `a` and
+/// `b`, where its multiplier's modulus passes 1 on it: not solved for.
+fn interpolated(bracket: &Bracket, a: &Cycle, b: &Cycle) -> CycleBifurcation {
+    let t = bracket.linear_share();
+    let along = |x: f64, y: f64| x + t * (y - x);
+    CycleBifurcation {
+        kind: bracket.kind,
+        load: along(a.load, b.load),
+        amplitude_rad: along(a.largest_amplitude_rad(), b.largest_amplitude_rad()),
+        refined: false,
+        after: bracket.after,
+    }
 }
 
 /// The cycle at `bracket`'s bifurcation (of `kind`) on `chord` between its
@@ -320,92 +275,6 @@ fn refine(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// A cycle at `load` with the trivial multiplier and `others`.
-    fn cycle(load: f64, others: &[C64]) -> Cycle {
-        let mut multipliers = vec![C64::new(1.0, 0.0)];
-        multipliers.extend_from_slice(others);
-        Cycle {
-            load,
-            period_secs: 1.0,
-            start: DVector::zeros(2),
-            amplitude_rad: vec![load],
-            multipliers,
-            stable: true,
-            closest_slip_m_per_s: None,
-        }
-    }
-
-    /// Each kind is bracketed where its multiplier's modulus passes 1, and
-    /// the line between the two cycles puts it there when the moduli
-    /// change linearly with the load (as here): a real one through -1 at
-    /// p = 1.25, a complex pair through the circle at p = 2.5, a real one
-    /// through +1 at p = 3.75.
-    #[test]
-    fn each_kind_is_bracketed_where_its_multiplier_leaves_the_circle() {
-        let pd = |p: f64| C64::new(-(0.5 + 0.4 * p), 0.0);
-        let ns = |p: f64| C64::from_polar(0.5 + 0.2 * p, 1.0);
-        let fold = |p: f64| C64::new(0.25 + 0.2 * p, 0.0);
-        let loads = [1.0, 1.5, 2.0, 3.0, 3.5, 4.0];
-        let cycles: Vec<Cycle> = loads
-            .iter()
-            .map(|&p| {
-                cycle(
-                    p,
-                    &[pd(p.min(1.5)), ns(p.clamp(2.0, 3.0)), fold(p.max(3.5))],
-                )
-            })
-            .collect();
-        let found = brackets(&cycles);
-        let kinds: Vec<_> = found.iter().map(|b| (b.after, b.kind)).collect();
-        assert_eq!(
-            kinds,
-            [
-                (0, CycleBifurcationKind::PeriodDoubling),
-                (2, CycleBifurcationKind::NeimarkSacker),
-                (4, CycleBifurcationKind::Fold)
-            ]
-        );
-        for (b, at) in found.iter().zip([1.25, 2.5, 3.75]) {
-            let linear = b.interpolated(&cycles);
-            assert!((linear.load - at).abs() < 1e-12, "{b:?}");
-            assert!((linear.amplitude_rad - at).abs() < 1e-12, "{b:?}");
-        }
-    }
-
-    /// A complex pair outside the circle that turns into two real
-    /// multipliers outside it (the counts of two kinds change, the whole
-    /// count does not) is no bifurcation. Where another pair of the kind
-    /// hugs the circle from inside, the test function is the second
-    /// largest modulus (the last outside once the pair has crossed): it
-    /// goes from the hugging pair's at the first cycle to the crossing
-    /// pair's at the second, and is 1 exactly where the crossing pair is.
-    /// The nearest pair's modulus, read before, did not change sign.
-    #[test]
-    fn only_multipliers_that_cross_the_circle_are_read() {
-        let pair = |r: f64, angle: f64| [C64::from_polar(r, angle), C64::from_polar(r, -angle)];
-        let turning = [
-            cycle(1.0, &pair(1.2, 0.1)),
-            cycle(1.1, &[C64::new(1.25, 0.0), C64::new(1.15, 0.0)]),
-        ];
-        assert_eq!(brackets(&turning), []);
-        let hugging = pair(0.999_99, 2.0);
-        let crossing = |r: f64| [hugging, pair(r, 1.0)].concat();
-        let cycles = [cycle(2.0, &crossing(0.99)), cycle(2.1, &crossing(1.03))];
-        let found = brackets(&cycles);
-        assert_eq!(found.len(), 1, "{found:?}");
-        assert_eq!(found[0].kind, CycleBifurcationKind::NeimarkSacker);
-        assert_eq!(found[0].rank, 1);
-        let [Some(ra), Some(rb)] = found[0].moduli else {
-            panic!("{found:?}")
-        };
-        assert!(
-            (ra + 1e-5).abs() < 1e-12 && (rb - 0.03).abs() < 1e-12,
-            "{found:?}"
-        );
-        let at_one = cycle(2.05, &crossing(1.0));
-        assert!(found[0].modulus(&at_one).unwrap().abs() < 1e-15);
-    }
 
     /// Where the constructed field below has its period doubling.
     const DOUBLING_P: f64 = 0.61;
@@ -479,7 +348,9 @@ mod tests {
         assert_eq!(doubling.kind, CycleBifurcationKind::PeriodDoubling);
         assert!(doubling.refined);
         assert!((doubling.load - DOUBLING_P).abs() < 1e-9, "{doubling:?}");
-        let linear = brackets(&cycles)[0].interpolated(&cycles).load;
+        let first = &brackets(&cycles)[0];
+        let (a, b) = (&cycles[first.after], &cycles[first.after + 1]);
+        let linear = interpolated(first, a, b).load;
         let period = std::f64::consts::TAU / omega(DOUBLING_P);
         let off = (linear - DOUBLING_P).abs();
         assert!(off < period * h * h / 8.0, "{linear}: {off}");
@@ -544,7 +415,8 @@ mod tests {
         assert!(fold.refined);
         assert!((fold.load - FOLD_P).abs() < 1e-10, "{fold:?}");
         assert!((fold.amplitude_rad - 1.0).abs() < 1e-5, "{fold:?}");
-        let linear = brackets(&cycles)[0].interpolated(&cycles);
+        let first = &brackets(&cycles)[0];
+        let linear = interpolated(first, &cycles[first.after], &cycles[first.after + 1]);
         assert!((linear.load - FOLD_P).abs() > 0.03, "{linear:?}");
         // Asked to stop, it solves nothing and says so.
         let scales = DVector::from_element(4, 1.0);

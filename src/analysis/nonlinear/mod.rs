@@ -9,6 +9,7 @@ mod amplitude;
 pub(super) mod arclength;
 mod bautin;
 pub(super) mod boundary;
+pub(super) mod bracket;
 mod chord;
 mod column_lu;
 mod continuation;
