@@ -16,7 +16,7 @@ use super::continuation::{BranchEnd, Course, cycles_along, follow, opening_at, r
 use super::cycle::Cycle;
 use super::cycle_bifurcations::{CycleBifurcation, cycle_bifurcations};
 use super::shooting::{Constraint, Shooting, Solved};
-use super::symmetric::MIRROR;
+use super::symmetric::own_mirror_image;
 use crate::analysis::gauss::Monodromy;
 use crate::model::Model;
 
@@ -93,7 +93,7 @@ impl Offshoot {
                 shooting.solve(&guess, &Constraint::Load(p))
             })
             .map(|solved| solved.cycle)
-            .filter(|cycle| !symmetric(&shooting, cycle));
+            .filter(|cycle| !own_mirror_image(&shooting, cycle));
         near_break
             .into_iter()
             .chain(cycles_along(&shooting, &self.cycles, p))
@@ -123,7 +123,7 @@ pub(super) fn offshoot(
             predicted: &predicted,
         };
         let solved = shooting.solve(&predicted, &constraint)?;
-        if symmetric(shooting, &solved.cycle) {
+        if own_mirror_image(shooting, &solved.cycle) {
             return None;
         }
         first.push(solved);
@@ -154,15 +154,4 @@ fn breaking_direction(shooting: &Shooting, at: &DVector<f64>) -> Option<DVector<
     let least = svd.singular_values.argmin().0;
     let v_t = svd.v_t?;
     Some(v_t.row(least).transpose())
-}
-
-/// Whether `cycle` is its own mirror image half a period on (to
-/// [`MIRROR`] of its largest coordinate).
-fn symmetric(shooting: &Shooting, cycle: &Cycle) -> bool {
-    shooting
-        .half_flow(
-            (&cycle.start, cycle.period_secs, cycle.load),
-            Monodromy::None,
-        )
-        .is_some_and(|half| (&half.end + &cycle.start).amax() <= MIRROR * cycle.start.amax())
 }

@@ -21,7 +21,7 @@ use crate::analysis::gauss::Monodromy;
 /// is within this share of `x(0)`'s largest coordinate (the flow's error
 /// is about 1e-9 of it; a cycle of the roller, whose band has a
 /// direction, is off by a tenth or more).
-pub(super) const MIRROR: f64 = 1e-6;
+const MIRROR: f64 = 1e-6;
 
 /// Newton iterations for one symmetric cycle.
 const ITERATIONS: usize = 12;
@@ -108,7 +108,7 @@ pub(super) fn breaks_symmetry(shooting: &Shooting, a: &Cycle, b: &Cycle) -> bool
             (&cycle.start, cycle.period_secs, cycle.load),
             Monodromy::Multipliers,
         )?;
-        if (&half.end + &cycle.start).amax() > MIRROR * cycle.start.amax() {
+        if !mirrored(&half.end, &cycle.start) {
             return None;
         }
         let map = -half.monodromy?;
@@ -123,6 +123,24 @@ pub(super) fn breaks_symmetry(shooting: &Shooting, a: &Cycle, b: &Cycle) -> bool
         (below_minus_one(a), below_minus_one(b)),
         (Some(x), Some(y)) if x != y
     )
+}
+
+/// Whether `cycle` is its own mirror image half a period on (to
+/// [`MIRROR`] of its largest coordinate); `false` where its half period
+/// cannot be flowed.
+pub(super) fn own_mirror_image(shooting: &Shooting, cycle: &Cycle) -> bool {
+    shooting
+        .half_flow(
+            (&cycle.start, cycle.period_secs, cycle.load),
+            Monodromy::None,
+        )
+        .is_some_and(|half| mirrored(&half.end, &cycle.start))
+}
+
+/// Whether the flow from `start` ends half a period on at `end = -start`,
+/// to [`MIRROR`] of its largest coordinate.
+fn mirrored(end: &DVector<f64>, start: &DVector<f64>) -> bool {
+    (end + start).amax() <= MIRROR * start.amax()
 }
 
 #[cfg(test)]
