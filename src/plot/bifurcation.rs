@@ -169,7 +169,7 @@ impl Diagram<'_> {
                     .offshoots
                     .iter()
                     .flat_map(|o| o.bifurcations.iter().map(move |t| (*t, o.opening(t))));
-                own.chain(offshoots).collect::<Vec<_>>()
+                own.chain(offshoots)
             })
             .collect()
     }
@@ -217,7 +217,7 @@ impl Diagram<'_> {
             .iter()
             .flat_map(|b| {
                 let offshoots = b.offshoots.iter().flat_map(Offshoot::runs);
-                b.runs().into_iter().chain(offshoots).collect::<Vec<_>>()
+                b.runs().into_iter().chain(offshoots)
             })
             .collect()
     }

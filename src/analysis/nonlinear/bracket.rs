@@ -102,13 +102,15 @@ pub(super) fn brackets(cycles: &[Cycle]) -> Vec<Bracket> {
         let [a, b] = pair else { continue };
         let kinds = [Fold, PeriodDoubling, NeimarkSacker];
         let (moduli_a, moduli_b) = (kinds.map(|k| of_kind(a, k)), kinds.map(|k| of_kind(b, k)));
-        let total = |moduli: &[Vec<f64>; 3]| moduli.iter().map(|m| outside(m)).sum::<usize>();
-        let (total_a, total_b) = (total(&moduli_a), total(&moduli_b));
+        let counts = |moduli: &[Vec<f64>; 3]| moduli.each_ref().map(|m| outside(m));
+        let (counts_a, counts_b) = (counts(&moduli_a), counts(&moduli_b));
+        let (total_a, total_b) = (
+            counts_a.iter().sum::<usize>(),
+            counts_b.iter().sum::<usize>(),
+        );
         if total_a == total_b {
             continue;
         }
-        let counts = |moduli: &[Vec<f64>; 3]| moduli.clone().map(|m| outside(&m));
-        let (counts_a, counts_b) = (counts(&moduli_a), counts(&moduli_b));
         let changed = counts_a
             .iter()
             .zip(&counts_b)

@@ -190,7 +190,7 @@ fn place(
             })
     } else {
         chord
-            .and_then(|chord| refine(&chord, bracket, kind, cancel))
+            .and_then(|chord| refine(&chord, bracket, cancel))
             .map(|on| {
                 let cycle = &on.solved.cycle;
                 (cycle.load, cycle.largest_amplitude_rad())
@@ -226,18 +226,13 @@ fn interpolated(bracket: &Bracket, a: &Cycle, b: &Cycle) -> CycleBifurcation {
     }
 }
 
-/// The cycle at `bracket`'s bifurcation (of `kind`) on `chord` between its
+/// The cycle at `bracket`'s bifurcation on `chord` between its
 /// two cycles: a fold where the load's rate passes zero (solved at both
 /// ends for it), else (a real multiplier through +1 where the load does
 /// not turn, or another kind) where the modulus passes 1, as read off the
 /// two cycles. `None` where that fails or once
 /// `cancel` is set.
-fn refine(
-    chord: &Chord,
-    bracket: &Bracket,
-    kind: CycleBifurcationKind,
-    cancel: &AtomicBool,
-) -> Option<OnChord> {
+fn refine(chord: &Chord, bracket: &Bracket, cancel: &AtomicBool) -> Option<OnChord> {
     type Sample = (f64, f64, Option<OnChord>);
     let solve = |share: f64, near: &Option<OnChord>| {
         if cancel.load(Ordering::Relaxed) {
@@ -245,7 +240,7 @@ fn refine(
         }
         chord.solve(share, near.as_ref().map(|on| &on.solved))
     };
-    if kind == CycleBifurcationKind::Fold {
+    if bracket.kind == CycleBifurcationKind::Fold {
         let rated =
             |on: OnChord| -> Option<Sample> { Some((on.share, chord.load_rate(&on)?, Some(on))) };
         let low = rated(solve(0.0, &None)?)?;

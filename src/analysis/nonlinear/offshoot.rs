@@ -15,7 +15,7 @@ use nalgebra::{DMatrix, DVector};
 use super::continuation::{BranchEnd, Course, cycles_along, follow, opening_at, runs_from};
 use super::cycle::Cycle;
 use super::cycle_bifurcations::{CycleBifurcation, cycle_bifurcations};
-use super::shooting::{Constraint, Shooting, Solved};
+use super::shooting::{Constraint, Shooting};
 use super::symmetric::own_mirror_image;
 use crate::analysis::gauss::Monodromy;
 use crate::model::Model;
@@ -115,7 +115,7 @@ pub(super) fn offshoot(
     let v = breaking_direction(shooting, at)?;
     let tangent = DVector::from_fn(d + 2, |i, _| if i < d { v[i] } else { 0.0 });
     let size = at.rows(0, d).amax().max(1.0);
-    let mut first: Vec<Solved> = Vec::new();
+    let (mut starts, mut monodromy) = (Vec::new(), None);
     for distance in START_DISTANCES {
         let predicted = at + &tangent * (distance * size);
         let constraint = Constraint::Arclength {
@@ -126,11 +126,10 @@ pub(super) fn offshoot(
         if own_mirror_image(shooting, &solved.cycle) {
             return None;
         }
-        first.push(solved);
+        starts.push(solved.cycle);
+        monodromy = Some(solved.monodromy);
     }
-    let monodromy = first.last().map(|s| s.monodromy.clone())?;
-    let starts = first.into_iter().map(|s| s.cycle).collect();
-    let (cycles, end) = follow(course, starts, monodromy)?;
+    let (cycles, end) = follow(course, starts, monodromy?)?;
     let (bifurcations, _) = cycle_bifurcations(shooting, &cycles, &course.scales, course.cancel);
     Some(Offshoot {
         name,
